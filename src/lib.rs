@@ -1,0 +1,9 @@
+//! strahl: a real-time CPU ray tracer for scenes written in POV-Ray's scene language.
+//!
+//! Data flows one way: `pov` parses text into `scene::desc`; `scene::build` turns that into
+//! render-ready data; `render` traces it with `geometry`, `accel` and `shading`; `headless` and
+//! `app` drive `render`.
+
+pub mod error;
+pub mod pov;
+pub mod scene;

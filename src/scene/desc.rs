@@ -1,0 +1,291 @@
+//! The scene as written: plain f64 data produced by `pov::lower`, consumed by `scene::build`.
+//!
+//! Nothing here knows about tokens, BVHs or rays. Every value is in POV-Ray's units and
+//! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
+//! that `build` can fold them into render-ready f32 data relative to the camera.
+
+use glam::{DMat4, DVec3};
+
+/// A POV-Ray colour: red, green, blue, filter, transmit.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Color {
+    pub rgb: DVec3,
+    /// Fraction of light that passes through, tinted by `rgb`.
+    pub filter: f64,
+    /// Fraction of light that passes through untinted.
+    pub transmit: f64,
+}
+
+impl Color {
+    pub const BLACK: Color = Color { rgb: DVec3::ZERO, filter: 0.0, transmit: 0.0 };
+    pub const WHITE: Color = Color { rgb: DVec3::ONE, filter: 0.0, transmit: 0.0 };
+
+    pub fn rgb(r: f64, g: f64, b: f64) -> Color {
+        Color { rgb: DVec3::new(r, g, b), filter: 0.0, transmit: 0.0 }
+    }
+}
+
+/// An affine transform, stored both ways so nobody inverts on the per-ray path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform {
+    /// Maps points from the local (object or pattern) space into the space above it.
+    pub matrix: DMat4,
+    /// The inverse of `matrix`.
+    pub inverse: DMat4,
+}
+
+impl Default for Transform {
+    fn default() -> Self {
+        Transform { matrix: DMat4::IDENTITY, inverse: DMat4::IDENTITY }
+    }
+}
+
+impl Transform {
+    /// `then` is applied after `self` (POV-Ray's order: modifiers compose left to right).
+    pub fn then(&self, then: &Transform) -> Transform {
+        Transform { matrix: then.matrix * self.matrix, inverse: self.inverse * then.inverse }
+    }
+
+    pub fn is_identity(&self) -> bool {
+        self.matrix == DMat4::IDENTITY
+    }
+}
+
+/// `camera { ... }` after all its modifiers; vectors as POV-Ray holds them before `look_at`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraDesc {
+    pub location: DVec3,
+    /// Final viewing direction; its length sets the field of view unless `angle` is given.
+    pub direction: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+    pub sky: DVec3,
+    /// `look_at`, if given (already applied to direction/right/up by `lower`).
+    pub look_at: Option<DVec3>,
+    /// Horizontal field of view in degrees, if given.
+    pub angle: Option<f64>,
+}
+
+impl Default for CameraDesc {
+    fn default() -> Self {
+        CameraDesc {
+            location: DVec3::ZERO,
+            direction: DVec3::Z,
+            right: DVec3::new(1.33, 0.0, 0.0),
+            up: DVec3::Y,
+            sky: DVec3::Y,
+            look_at: None,
+            angle: None,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightDesc {
+    pub position: DVec3,
+    pub color: DVec3,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GlobalSettings {
+    /// `None` when the scene did not say; the effective value then depends on `#version`.
+    pub assumed_gamma: Option<f64>,
+    pub max_trace_level: u32,
+    pub ambient_light: DVec3,
+}
+
+impl Default for GlobalSettings {
+    fn default() -> Self {
+        GlobalSettings { assumed_gamma: None, max_trace_level: 5, ambient_light: DVec3::ONE }
+    }
+}
+
+/// Turbulence (`turbulence`, `octaves`, `omega`, `lambda`) of a pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Turbulence {
+    pub amount: DVec3,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+}
+
+impl Default for Turbulence {
+    /// POV-Ray's defaults once `turbulence` is given: octaves 6, omega 0.5, lambda 2.
+    fn default() -> Self {
+        Turbulence { amount: DVec3::ZERO, octaves: 6, omega: 0.5, lambda: 2.0 }
+    }
+}
+
+/// One `[value color]` entry of a `color_map`; entries are sorted by value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ColorMapEntry {
+    pub value: f64,
+    pub color: Color,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum PigmentPattern {
+    Solid(Color),
+    Checker(Color, Color),
+    /// Rings around the pattern-space z axis, looked up in the map.
+    Wood(Vec<ColorMapEntry>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PigmentDesc {
+    pub pattern: PigmentPattern,
+    /// `None` when the pattern has no turbulence.
+    pub turbulence: Option<Turbulence>,
+    /// Pattern space → world space (accumulates the pigment's own and its object's transforms).
+    pub transform: Transform,
+}
+
+impl Default for PigmentDesc {
+    /// POV-Ray's default pigment is black.
+    fn default() -> Self {
+        PigmentDesc {
+            pattern: PigmentPattern::Solid(Color::BLACK),
+            turbulence: None,
+            transform: Transform::default(),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalPattern {
+    /// `bumps AMOUNT`.
+    Bumps(f64),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalDesc {
+    pub pattern: NormalPattern,
+    pub turbulence: Option<Turbulence>,
+    /// Pattern space → world space.
+    pub transform: Transform,
+}
+
+/// `finish { ... }` with POV-Ray 3.7's defaults.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FinishDesc {
+    pub ambient: DVec3,
+    pub diffuse: f64,
+    pub brilliance: f64,
+    pub phong: f64,
+    pub phong_size: f64,
+    pub specular: f64,
+    pub roughness: f64,
+    pub reflection: DVec3,
+}
+
+impl Default for FinishDesc {
+    fn default() -> Self {
+        FinishDesc {
+            ambient: DVec3::splat(0.1),
+            diffuse: 0.6,
+            brilliance: 1.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            reflection: DVec3::ZERO,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct TextureDesc {
+    pub pigment: PigmentDesc,
+    pub normal: Option<NormalDesc>,
+    pub finish: FinishDesc,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InteriorDesc {
+    pub ior: f64,
+}
+
+impl Default for InteriorDesc {
+    fn default() -> Self {
+        InteriorDesc { ior: 1.0 }
+    }
+}
+
+/// A shape in its own object space, as written.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ShapeDesc {
+    Sphere { center: DVec3, radius: f64 },
+    /// Points `p` with `normal · p = distance` (normal as written, not normalised).
+    Plane { normal: DVec3, distance: f64 },
+    Box { corner1: DVec3, corner2: DVec3 },
+    Triangle { a: DVec3, b: DVec3, c: DVec3 },
+    /// A closed, planar outline (first point repeated at the end is allowed and removed).
+    Polygon { points: Vec<DVec3> },
+}
+
+impl ShapeDesc {
+    /// The keyword POV-Ray uses for this shape, for statistics and messages.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            ShapeDesc::Sphere { .. } => "sphere",
+            ShapeDesc::Plane { .. } => "plane",
+            ShapeDesc::Box { .. } => "box",
+            ShapeDesc::Triangle { .. } => "triangle",
+            ShapeDesc::Polygon { .. } => "polygon",
+        }
+    }
+}
+
+/// Where in the scene files something was written, for messages after parsing.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct SourceRef {
+    pub file: String,
+    pub line: u32,
+    pub col: u32,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ObjectDesc {
+    pub shape: ShapeDesc,
+    /// Object space → world space.
+    pub transform: Transform,
+    pub texture: TextureDesc,
+    pub interior: InteriorDesc,
+    pub source: SourceRef,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneDesc {
+    /// The language version in effect at the end of parsing (`#version`, or 3.7 when none).
+    pub version: f64,
+    pub camera: CameraDesc,
+    pub lights: Vec<LightDesc>,
+    /// `background { color C }`; black by default.
+    pub background: Color,
+    pub global: GlobalSettings,
+    pub objects: Vec<ObjectDesc>,
+}
+
+impl Default for SceneDesc {
+    fn default() -> Self {
+        SceneDesc {
+            version: 3.7,
+            camera: CameraDesc::default(),
+            lights: Vec::new(),
+            background: Color::BLACK,
+            global: GlobalSettings::default(),
+            objects: Vec::new(),
+        }
+    }
+}
+
+impl SceneDesc {
+    /// POV-Ray 3.7: an explicit `assumed_gamma` wins; otherwise a 3.7 scene is linear (1.0) and
+    /// writes sRGB, while a legacy scene gets no gamma handling at all.
+    pub fn writes_srgb(&self) -> bool {
+        match self.global.assumed_gamma {
+            Some(g) => (g - 1.0).abs() < 1e-9,
+            None => self.version >= 3.7 - 1e-9,
+        }
+    }
+}

@@ -1,0 +1,3 @@
+//! Scene data: `desc` (as written, f64) and `build` (render-ready, f32, relative to a render origin).
+
+pub mod desc;

@@ -4,6 +4,12 @@
 //! render-ready data; `render` traces it with `geometry`, `accel` and `shading`; `headless` and
 //! `app` drive `render`.
 
+pub mod accel;
+pub mod camera;
 pub mod error;
+pub mod headless;
+pub mod geometry;
 pub mod pov;
+pub mod render;
 pub mod scene;
+pub mod shading;

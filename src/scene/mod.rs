@@ -1,3 +1,5 @@
 //! Scene data: `desc` (as written, f64) and `build` (render-ready, f32, relative to a render origin).
 
+pub mod build;
 pub mod desc;
+pub mod material;

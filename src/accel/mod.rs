@@ -1,0 +1,59 @@
+//! Acceleration structures over the bounded primitives (chapter 24.4): a BVH, the chapter's
+//! uniform grid, and brute force as the ground truth. Unbounded planes are never in here.
+//!
+//! Every accelerator takes a closure that tests one primitive, so none of them knows shapes.
+
+pub mod aabb;
+pub mod bvh;
+pub mod grid;
+
+use crate::geometry::ray::Ray;
+use crate::scene::build::AccelKind;
+use aabb::Aabb;
+use bvh::Bvh;
+use grid::Grid;
+
+pub enum Accel {
+    Bvh(Bvh),
+    Grid(Grid),
+    /// Brute force over `count` primitives: the chapter's first algorithm.
+    None { count: u32 },
+}
+
+impl Accel {
+    pub fn build(kind: AccelKind, bounds: &[Aabb]) -> Accel {
+        match kind {
+            AccelKind::Bvh => Accel::Bvh(Bvh::build(bounds)),
+            AccelKind::Grid => Accel::Grid(Grid::build(bounds)),
+            AccelKind::None => Accel::None { count: bounds.len() as u32 },
+        }
+    }
+
+    pub fn kind(&self) -> AccelKind {
+        match self {
+            Accel::Bvh(_) => AccelKind::Bvh,
+            Accel::Grid(_) => AccelKind::Grid,
+            Accel::None { .. } => AccelKind::None,
+        }
+    }
+
+    /// Calls `test(prim, t_max)` on candidates front to back as far as the structure can order
+    /// them; `test` returns a hit nearer than `t_max`, which then shrinks the search.
+    /// Returns the number of nodes or cells visited.
+    #[inline]
+    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(&self, ray: &Ray, t_max: f32, mut test: F) -> u32 {
+        match self {
+            Accel::Bvh(b) => b.traverse(ray, t_max, test),
+            Accel::Grid(g) => g.traverse(ray, t_max, test),
+            Accel::None { count } => {
+                let mut t_max = t_max;
+                for p in 0..*count {
+                    if let Some(t) = test(p, t_max) {
+                        t_max = t_max.min(t);
+                    }
+                }
+                0
+            }
+        }
+    }
+}

@@ -1,0 +1,65 @@
+//! Ray/plane intersection. Planes are unbounded, so they live outside every bounding hierarchy.
+
+use glam::Vec3;
+
+use super::ray::Ray;
+
+/// Points `p` with `normal · p = distance`, `normal` of unit length.
+#[derive(Clone, Copy, Debug)]
+pub struct Plane {
+    pub normal: Vec3,
+    pub distance: f32,
+}
+
+impl Plane {
+    /// A ray parallel to the plane never hits it, even when it lies in it.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        let denom = self.normal.dot(ray.dir);
+        if denom == 0.0 {
+            return None;
+        }
+        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
+        (t > t_min && t < t_max).then_some(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const FLOOR: Plane = Plane { normal: Vec3::Y, distance: 0.0 };
+
+    #[test]
+    fn hit_from_above() {
+        let r = Ray::new(Vec3::new(0.0, 2.0, 0.0), -Vec3::Y);
+        assert_eq!(FLOOR.intersect(&r, 0.0, f32::INFINITY), Some(2.0));
+    }
+
+    #[test]
+    fn hit_from_below() {
+        let r = Ray::new(Vec3::new(0.0, -2.0, 0.0), Vec3::Y);
+        assert_eq!(FLOOR.intersect(&r, 0.0, f32::INFINITY), Some(2.0));
+    }
+
+    #[test]
+    fn parallel_misses() {
+        let r = Ray::new(Vec3::new(0.0, 1.0, 0.0), Vec3::X);
+        assert_eq!(FLOOR.intersect(&r, 0.0, f32::INFINITY), None);
+        let in_plane = Ray::new(Vec3::ZERO, Vec3::X);
+        assert_eq!(FLOOR.intersect(&in_plane, 0.0, f32::INFINITY), None);
+    }
+
+    #[test]
+    fn behind_origin_is_no_hit() {
+        let r = Ray::new(Vec3::new(0.0, 2.0, 0.0), Vec3::Y);
+        assert_eq!(FLOOR.intersect(&r, 0.0, f32::INFINITY), None);
+    }
+
+    #[test]
+    fn tangent_grazing_ray_hits_far_away() {
+        let r = Ray::new(Vec3::new(0.0, 1.0, 0.0), Vec3::new(1.0, -1e-6, 0.0).normalize());
+        let t = FLOOR.intersect(&r, 0.0, f32::INFINITY).expect("grazing hit");
+        assert!((t - 1e6).abs() / 1e6 < 1e-3);
+    }
+}

@@ -1,0 +1,78 @@
+//! Headless front ends: `render`, and the shared plumbing (loading, errors, thread pools).
+//! Nothing here touches a window.
+
+pub mod output;
+pub mod render;
+pub mod report;
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use crate::error::LocatedError;
+use crate::pov::{load_scene, IncludePath};
+use crate::scene::desc::SceneDesc;
+
+/// An error for the user, with the process exit code it maps to.
+#[derive(Debug)]
+pub struct CliError {
+    pub message: String,
+    /// 2 for bad input of any kind (scene, path, arguments, unwritable output).
+    pub code: i32,
+}
+
+impl CliError {
+    pub fn user(message: impl Into<String>) -> CliError {
+        CliError { message: message.into(), code: 2 }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl From<LocatedError> for CliError {
+    fn from(e: LocatedError) -> CliError {
+        CliError::user(e.to_string())
+    }
+}
+
+/// The project's own include folder (`scenes/include`), found next to the executable's source
+/// tree at build time, so a fresh clone needs no POV-Ray installation.
+pub fn project_include_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("include")
+}
+
+/// The include path in POV-Ray's order: `-L` dirs, then the project's library. (The including
+/// file's own folder is searched first by the parser.)
+pub fn include_path(user_dirs: &[PathBuf]) -> IncludePath {
+    let mut dirs = user_dirs.to_vec();
+    dirs.push(project_include_dir());
+    IncludePath { dirs }
+}
+
+/// Parses a scene, timing it.
+pub fn load(path: &Path, user_dirs: &[PathBuf]) -> Result<(SceneDesc, Duration), CliError> {
+    let start = Instant::now();
+    let desc = load_scene(path, &include_path(user_dirs))?;
+    Ok((desc, start.elapsed()))
+}
+
+/// Runs `f` on a rayon pool of `threads` workers (0 = one per core).
+pub fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, CliError> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| CliError::user(format!("cannot start {threads} threads: {e}")))?;
+    Ok(pool.install(f))
+}
+
+/// Peak resident memory of this process in bytes, where the OS reports it.
+pub fn peak_memory_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
+}

@@ -1,0 +1,70 @@
+//! Writing files without leaving half-written ones behind: write to a sibling temporary file,
+//! then rename over the target.
+
+use std::fs;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use crate::headless::CliError;
+
+fn temp_sibling(path: &Path) -> PathBuf {
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
+}
+
+/// Writes `bytes` to `path` atomically.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+    let tmp = temp_sibling(path);
+    let result = fs::write(&tmp, bytes).and_then(|_| fs::rename(&tmp, path));
+    if let Err(e) = result {
+        let _ = fs::remove_file(&tmp);
+        return Err(CliError::user(format!("{}: cannot write: {e}", path.display())));
+    }
+    Ok(())
+}
+
+/// Encodes 8-bit RGB as PNG bytes.
+pub fn encode_png(width: u32, height: u32, rgb: &[u8]) -> Vec<u8> {
+    let mut out = Vec::new();
+    {
+        let mut enc = png::Encoder::new(BufWriter::new(&mut out), width, height);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        // Encoding into memory cannot fail for a well-formed buffer; a failure here is a bug.
+        let mut w = enc.write_header().expect("PNG header into memory");
+        w.write_image_data(rgb).expect("PNG data into memory");
+        w.finish().expect("PNG end into memory");
+    }
+    out
+}
+
+/// Writes an 8-bit RGB PNG atomically.
+pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), CliError> {
+    write_atomic(path, &encode_png(width, height, rgb))
+}
+
+/// Reads an 8-bit RGB or RGBA PNG as (width, height, RGB bytes).
+pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), CliError> {
+    let file = fs::File::open(path).map_err(|e| CliError::user(format!("{}: cannot open: {e}", path.display())))?;
+    let mut dec = png::Decoder::new(std::io::BufReader::new(file));
+    dec.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = dec.read_info().map_err(|e| CliError::user(format!("{}: not a PNG: {e}", path.display())))?;
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).map_err(|e| CliError::user(format!("{}: bad PNG: {e}", path.display())))?;
+    let channels = info.color_type.samples();
+    let px = (info.width * info.height) as usize;
+    let mut rgb = Vec::with_capacity(px * 3);
+    for i in 0..px {
+        let s = &buf[i * channels..];
+        match channels {
+            1 | 2 => rgb.extend_from_slice(&[s[0], s[0], s[0]]),
+            _ => rgb.extend_from_slice(&s[..3]),
+        }
+    }
+    Ok((info.width, info.height, rgb))
+}
+
+/// Flushes and ignores a closed pipe (`strahl render ... | head`).
+pub fn flush_stdout() {
+    let _ = std::io::stdout().flush();
+}

@@ -1,0 +1,98 @@
+//! Scene queries: the nearest hit (`intersect`) and yes/no occlusion (`occluded`), over the
+//! accelerator for bounded shapes plus a loop over the unbounded planes.
+
+use glam::Vec3;
+
+use crate::geometry::ray::Ray;
+use crate::render::stats::RenderStats;
+use crate::scene::build::{PrimRef, Scene, ShapeKind};
+
+/// What a ray hit: a bounded primitive (index into `Scene::prims`) or a plane.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HitShape {
+    Prim(u32),
+    Plane(u32),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    pub t: f32,
+    pub shape: HitShape,
+}
+
+impl Scene {
+    /// One primitive test, counted for the statistics.
+    #[inline]
+    pub fn test_prim(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<f32> {
+        let i = p.index as usize;
+        let t = match p.kind {
+            ShapeKind::Sphere => self.spheres[i].intersect(ray, 0.0, t_max),
+            ShapeKind::Ellipsoid => self.ellipsoids[i].intersect(ray, 0.0, t_max),
+            ShapeKind::Box => self.boxes[i].intersect(ray, 0.0, t_max),
+            ShapeKind::Triangle => self.triangles[i].intersect(ray, 0.0, t_max),
+            ShapeKind::Polygon => self.polygons[i].intersect(ray, 0.0, t_max),
+            ShapeKind::Plane => None,
+        };
+        stats.count_test(p.kind, t.is_some());
+        t
+    }
+
+    /// The nearest hit with `0 < t < t_max`.
+    pub fn intersect(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        let mut t_best = t_max;
+        for (i, plane) in self.planes.iter().enumerate() {
+            let t = plane.intersect(ray, 0.0, t_best);
+            stats.count_test(ShapeKind::Plane, t.is_some());
+            if let Some(t) = t {
+                t_best = t;
+                best = Some(Hit { t, shape: HitShape::Plane(i as u32) });
+            }
+        }
+        stats.nodes_visited += self.accel.traverse(ray, t_best, |prim, t_max| {
+            let t = self.test_prim(&self.prims[prim as usize], ray, t_max, stats)?;
+            // Ties go to the lower index so every accelerator picks the same primitive.
+            if best.is_none_or(|b| t < b.t || (t == b.t && b.shape > HitShape::Prim(prim))) {
+                best = Some(Hit { t, shape: HitShape::Prim(prim) });
+            }
+            Some(t)
+        }) as u64;
+        best
+    }
+
+    /// Geometric outward normal at a hit point.
+    pub fn normal_at(&self, shape: HitShape, p: Vec3) -> Vec3 {
+        match shape {
+            HitShape::Plane(i) => self.planes[i as usize].normal,
+            HitShape::Prim(i) => {
+                let r = &self.prims[i as usize];
+                let k = r.index as usize;
+                match r.kind {
+                    ShapeKind::Sphere => self.spheres[k].normal_at(p),
+                    ShapeKind::Ellipsoid => self.ellipsoids[k].normal_at(p),
+                    ShapeKind::Box => self.boxes[k].normal_at(p),
+                    ShapeKind::Triangle => self.triangles[k].normal,
+                    ShapeKind::Polygon => self.polygons[k].normal,
+                    ShapeKind::Plane => Vec3::Y,
+                }
+            }
+        }
+    }
+
+    pub fn material_of(&self, shape: HitShape) -> u32 {
+        match shape {
+            HitShape::Plane(i) => self.plane_materials[i as usize],
+            HitShape::Prim(i) => self.prims[i as usize].material,
+        }
+    }
+}
+
+impl PartialOrd for HitShape {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        let key = |s: &HitShape| match s {
+            HitShape::Plane(i) => (0, *i),
+            HitShape::Prim(i) => (1, *i),
+        };
+        key(self).partial_cmp(&key(other))
+    }
+}

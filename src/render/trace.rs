@@ -1,0 +1,189 @@
+//! Recursive ray tracing (chapter 24.5): `trace` finds the nearest hit, `shade` lights it with
+//! POV-Ray's finish model and recurses into reflected and refracted rays.
+//!
+//! The local model is the chapter's formula in POV-Ray's terms:
+//! `I = ambient·C·ambient_light + Σ_lights S·L·(diffuse·C·(N·L)^brilliance + phong·(R·L)^phong_size
+//!      + specular·(N·H)^(1/roughness)) + reflection·I_r + (filter·C + transmit)·I_t`,
+//! where `S` is the light passed by the shadow ray (tinted by transparent objects on the way).
+
+use glam::Vec3;
+
+use crate::geometry::ray::{offset_origin, Ray};
+use crate::render::intersect::Hit;
+use crate::render::stats::RenderStats;
+use crate::render::Quality;
+use crate::scene::build::Scene;
+
+/// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
+/// not traced.
+const ADC_BAILOUT: f32 = 1.0 / 255.0;
+/// Transparent surfaces a shadow ray may pass before it counts as blocked.
+const MAX_SHADOW_LAYERS: u32 = 16;
+
+pub struct Tracer<'a> {
+    pub scene: &'a Scene,
+    pub quality: &'a Quality,
+    pub stats: RenderStats,
+}
+
+/// The kind of ray being traced, for statistics.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayKind {
+    Primary,
+    Reflected,
+    Refracted,
+}
+
+impl<'a> Tracer<'a> {
+    pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
+        Tracer { scene, quality, stats: RenderStats::default() }
+    }
+
+    fn max_level(&self) -> u32 {
+        self.quality.max_trace_level.unwrap_or(self.scene.max_trace_level).max(1)
+    }
+
+    /// Colour seen along `ray`. `level` is 1 for primary rays; `weight` is how much this ray can
+    /// still change the pixel; `inside_ior` is the index of refraction the ray travels in.
+    pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
+        match kind {
+            RayKind::Primary => self.stats.primary_rays += 1,
+            RayKind::Reflected => self.stats.reflected_rays += 1,
+            RayKind::Refracted => self.stats.refracted_rays += 1,
+        }
+        self.stats.max_depth = self.stats.max_depth.max(level);
+        match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
+            Some(hit) => self.shade(ray, &hit, level, weight),
+            None => self.scene.background.rgb,
+        }
+    }
+
+    fn shade(&mut self, ray: &Ray, hit: &Hit, level: u32, weight: f32) -> Vec3 {
+        let scene = self.scene;
+        let p = ray.at(hit.t);
+        let material = &scene.materials[scene.material_of(hit.shape) as usize];
+        let geometric = scene.normal_at(hit.shape, p);
+        // POV-Ray shades the side the ray sees: flip the normal towards the viewer.
+        let entering = geometric.dot(ray.dir) < 0.0;
+        let facing = if entering { geometric } else { -geometric };
+        let normal = match &material.normal {
+            Some(n) => n.perturb(p, facing, self.quality.max_octaves),
+            None => facing,
+        };
+        let pigment = material.pigment.eval(p, self.quality.max_octaves);
+        let finish = &material.finish;
+        let c = pigment.rgb;
+        // Light passing through the surface does not also light it.
+        let opacity = (1.0 - pigment.filter - pigment.transmit).max(0.0);
+
+        let mut color = finish.ambient * c * scene.ambient_light * opacity;
+        let reflected_dir = ray.dir - 2.0 * ray.dir.dot(normal) * normal;
+        let shadow_origin_normal = facing;
+        for light in &scene.lights {
+            let to_light = light.position - p;
+            let dist = to_light.length();
+            if dist == 0.0 {
+                continue;
+            }
+            let l = to_light / dist;
+            let n_dot_l = normal.dot(l);
+            if n_dot_l <= 0.0 || facing.dot(l) <= 0.0 {
+                continue;
+            }
+            let passed = if self.quality.shadows {
+                self.shadow(offset_origin(p, shadow_origin_normal, l), light.position, l)
+            } else {
+                Vec3::ONE
+            };
+            if passed == Vec3::ZERO {
+                continue;
+            }
+            let light_color = light.color * passed;
+            if finish.diffuse > 0.0 {
+                let d = if finish.brilliance == 1.0 { n_dot_l } else { n_dot_l.powf(finish.brilliance) };
+                color += light_color * c * (finish.diffuse * d * opacity);
+            }
+            if finish.phong > 0.0 {
+                let r_dot_l = reflected_dir.dot(l);
+                if r_dot_l > 0.0 {
+                    color += light_color * (finish.phong * r_dot_l.powf(finish.phong_size));
+                }
+            }
+            if finish.specular > 0.0 {
+                let h = (l - ray.dir).normalize_or_zero();
+                let n_dot_h = normal.dot(h);
+                if n_dot_h > 0.0 {
+                    color += light_color * (finish.specular * n_dot_h.powf(finish.specular_exponent));
+                }
+            }
+        }
+
+        if level < self.max_level() {
+            if finish.reflects() {
+                let w = weight * finish.reflection.max_element();
+                if w >= ADC_BAILOUT {
+                    let r = Ray::new(offset_origin(p, facing, reflected_dir), reflected_dir.normalize());
+                    color += finish.reflection * self.trace(&r, level + 1, w, RayKind::Reflected);
+                }
+            }
+            let transmit = c * pigment.filter + Vec3::splat(pigment.transmit);
+            let w = weight * transmit.max_element();
+            if w >= ADC_BAILOUT {
+                color += transmit * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
+            }
+        }
+        color
+    }
+
+    /// The colour arriving through a transparent surface: Snell's law with the chapter's
+    /// formula; under total internal reflection the ray reflects instead, as in POV-Ray.
+    #[allow(clippy::too_many_arguments)]
+    fn refract(&mut self, ray: &Ray, p: Vec3, facing: Vec3, normal: Vec3, entering: bool, ior: f32, level: u32, weight: f32) -> Vec3 {
+        // n = n1/n2 across the surface; rays leave an object into air (ior 1).
+        let eta = if entering { 1.0 / ior } else { ior };
+        let cos_i = -ray.dir.dot(normal);
+        let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+        let dir = if eta == 1.0 {
+            ray.dir
+        } else if k < 0.0 {
+            // Total internal reflection.
+            ray.dir + 2.0 * cos_i * normal
+        } else {
+            eta * ray.dir + (eta * cos_i - k.sqrt()) * normal
+        };
+        let dir = dir.normalize();
+        let r = Ray::new(offset_origin(p, facing, dir), dir);
+        self.trace(&r, level + 1, weight, RayKind::Refracted)
+    }
+
+    /// Light from a point light reaching `origin`: one for a clear path, zero when blocked,
+    /// tinted by the filter and transmit of transparent surfaces on the way.
+    fn shadow(&mut self, origin: Vec3, light: Vec3, dir: Vec3) -> Vec3 {
+        self.stats.shadow_rays += 1;
+        let scene = self.scene;
+        let mut pass = Vec3::ONE;
+        let mut ray = Ray::new(origin, dir);
+        // Stop just short of the light, so a light lying on a surface still shines.
+        let mut t_max = (light - origin).length() * (1.0 - 4.0 * f32::EPSILON);
+        for _ in 0..MAX_SHADOW_LAYERS {
+            let Some(hit) = scene.intersect(&ray, t_max, &mut self.stats) else {
+                return pass;
+            };
+            if !scene.features.transparency {
+                return Vec3::ZERO;
+            }
+            let p = ray.at(hit.t);
+            let material = &scene.materials[scene.material_of(hit.shape) as usize];
+            let pig = material.pigment.eval(p, self.quality.max_octaves);
+            pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
+            if pass.max_element() < ADC_BAILOUT {
+                return Vec3::ZERO;
+            }
+            let n = scene.normal_at(hit.shape, p);
+            let next = offset_origin(p, n, dir);
+            t_max = (light - next).length() * (1.0 - 4.0 * f32::EPSILON);
+            ray = Ray::new(next, dir);
+        }
+        Vec3::ZERO
+    }
+}

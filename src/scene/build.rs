@@ -1,0 +1,250 @@
+//! SceneDesc (f64, world space) → Scene (f32, render space, arrays of primitives by kind).
+//!
+//! Render space is world space shifted so that `origin` (normally the scene's camera) sits at
+//! zero. Everything is subtracted in f64 before it becomes f32, so a scene translated 1e6 units
+//! away renders with the same precision as one at the world origin.
+
+use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
+
+use crate::accel::aabb::Aabb;
+use crate::accel::Accel;
+use crate::geometry::cuboid::{frame_for, Cuboid};
+use crate::geometry::plane::Plane;
+use crate::geometry::polygon::Polygon;
+use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::triangle::Triangle;
+use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
+use crate::scene::material::Material;
+use crate::shading::Rgbft;
+
+/// The kinds of shape, in the order the statistics report them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+pub enum ShapeKind {
+    Sphere = 0,
+    Box = 1,
+    Triangle = 2,
+    Polygon = 3,
+    Plane = 4,
+    /// A sphere under non-uniform scale; reported as a sphere.
+    Ellipsoid = 5,
+}
+
+impl ShapeKind {
+    pub const ALL: [ShapeKind; 5] =
+        [ShapeKind::Box, ShapeKind::Plane, ShapeKind::Polygon, ShapeKind::Sphere, ShapeKind::Triangle];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            ShapeKind::Sphere | ShapeKind::Ellipsoid => "Sphere",
+            ShapeKind::Box => "Box",
+            ShapeKind::Triangle => "Triangle",
+            ShapeKind::Polygon => "Polygon",
+            ShapeKind::Plane => "Plane",
+        }
+    }
+}
+
+/// A bounded primitive: which array, which entry, which material.
+#[derive(Clone, Copy, Debug)]
+pub struct PrimRef {
+    pub kind: ShapeKind,
+    pub index: u32,
+    pub material: u32,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Light {
+    /// Render space.
+    pub position: Vec3,
+    pub color: Vec3,
+}
+
+/// What the scene uses, so shading pays only for that.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Features {
+    pub transparency: bool,
+    pub reflection: bool,
+    pub normals: bool,
+}
+
+pub struct Scene {
+    /// World-space position of render space's zero.
+    pub origin: DVec3,
+    pub spheres: Vec<Sphere>,
+    pub ellipsoids: Vec<Ellipsoid>,
+    pub boxes: Vec<Cuboid>,
+    pub triangles: Vec<Triangle>,
+    pub polygons: Vec<Polygon>,
+    /// Unbounded: tested for every ray, outside the accelerator.
+    pub planes: Vec<Plane>,
+    pub plane_materials: Vec<u32>,
+    /// Bounded primitives; the accelerator's primitive indices refer to this.
+    pub prims: Vec<PrimRef>,
+    pub materials: Vec<Material>,
+    pub lights: Vec<Light>,
+    pub background: Rgbft,
+    pub ambient_light: Vec3,
+    pub max_trace_level: u32,
+    /// Whether output pixels are sRGB-encoded (3.7 gamma handling) or written linear (legacy).
+    pub srgb: bool,
+    pub features: Features,
+    pub accel: Accel,
+}
+
+/// Which accelerator to build over the bounded primitives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum AccelKind {
+    #[default]
+    Bvh,
+    Grid,
+    None,
+}
+
+impl AccelKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            AccelKind::Bvh => "bvh",
+            AccelKind::Grid => "grid",
+            AccelKind::None => "none",
+        }
+    }
+}
+
+/// An f64 world transform composed with the shift to render space, as f32.
+fn render_from_object(t: &Transform, origin: DVec3) -> Affine3A {
+    let m = DMat4::from_translation(-origin) * t.matrix;
+    let a = DAffine3::from_mat4(m);
+    Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
+}
+
+/// Whether `m`'s linear part is a rotation times a uniform scale (a sphere stays a sphere).
+fn uniform_scale(m: &DMat4) -> Option<f64> {
+    let c = [m.x_axis.truncate(), m.y_axis.truncate(), m.z_axis.truncate()];
+    let s = c[0].length();
+    let ok = c.iter().all(|v| (v.length() - s).abs() <= 1e-9 * s)
+        && c[0].dot(c[1]).abs() <= 1e-9 * s * s
+        && c[1].dot(c[2]).abs() <= 1e-9 * s * s
+        && c[0].dot(c[2]).abs() <= 1e-9 * s * s;
+    ok.then_some(s)
+}
+
+/// Whether `m`'s linear part is diagonal (an axis-aligned box stays axis-aligned).
+fn is_axis_aligned(m: &DMat4) -> bool {
+    m.x_axis.y == 0.0 && m.x_axis.z == 0.0 && m.y_axis.x == 0.0 && m.y_axis.z == 0.0 && m.z_axis.x == 0.0 && m.z_axis.y == 0.0
+}
+
+impl Scene {
+    /// Builds render data with render space centred on `origin` (world space).
+    pub fn build(desc: &SceneDesc, origin: DVec3, accel: AccelKind) -> Scene {
+        let mut scene = Scene {
+            origin,
+            spheres: Vec::new(),
+            ellipsoids: Vec::new(),
+            boxes: Vec::new(),
+            triangles: Vec::new(),
+            polygons: Vec::new(),
+            planes: Vec::new(),
+            plane_materials: Vec::new(),
+            prims: Vec::new(),
+            materials: Vec::with_capacity(desc.objects.len()),
+            lights: desc
+                .lights
+                .iter()
+                .map(|l| Light { position: (l.position - origin).as_vec3(), color: l.color.as_vec3() })
+                .collect(),
+            background: Rgbft::from_desc(&desc.background),
+            ambient_light: desc.global.ambient_light.as_vec3(),
+            max_trace_level: desc.global.max_trace_level.max(1),
+            srgb: desc.writes_srgb(),
+            features: Features::default(),
+            accel: Accel::None { count: 0 },
+        };
+        for object in &desc.objects {
+            let material = scene.materials.len() as u32;
+            let m = Material::from_desc(&object.texture, &object.interior, origin);
+            scene.features.transparency |= m.pigment.may_be_transparent();
+            scene.features.reflection |= m.finish.reflects();
+            scene.features.normals |= m.normal.is_some();
+            scene.materials.push(m);
+            scene.add_shape(&object.shape, &object.transform, material);
+        }
+        scene.accel = Accel::build(accel, &scene.prim_bounds());
+        scene
+    }
+
+    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32) {
+        let world = |p: DVec3| t.matrix.transform_point3(p) - self.origin;
+        let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
+            prims.push(PrimRef { kind, index: index as u32, material })
+        };
+        match shape {
+            ShapeDesc::Sphere { center, radius } => {
+                if let Some(s) = uniform_scale(&t.matrix) {
+                    self.spheres.push(Sphere { center: world(*center).as_vec3(), radius: (radius * s) as f32 });
+                    push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
+                } else {
+                    let xf = render_from_object(t, self.origin)
+                        * Affine3A::from_translation(center.as_vec3())
+                        * Affine3A::from_scale(Vec3::splat(*radius as f32));
+                    self.ellipsoids.push(Ellipsoid::new(xf));
+                    push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
+                }
+            }
+            ShapeDesc::Box { corner1, corner2 } => {
+                let (lo, hi) = (corner1.min(*corner2), corner1.max(*corner2));
+                let cuboid = if is_axis_aligned(&t.matrix) {
+                    let a = world(lo);
+                    let b = world(hi);
+                    Cuboid { min: a.min(b).as_vec3(), max: a.max(b).as_vec3(), frame: None }
+                } else {
+                    Cuboid { min: lo.as_vec3(), max: hi.as_vec3(), frame: Some(frame_for(render_from_object(t, self.origin))) }
+                };
+                self.boxes.push(cuboid);
+                push(ShapeKind::Box, self.boxes.len() - 1, &mut self.prims);
+            }
+            ShapeDesc::Triangle { a, b, c } => {
+                self.triangles.push(Triangle::new(world(*a).as_vec3(), world(*b).as_vec3(), world(*c).as_vec3()));
+                push(ShapeKind::Triangle, self.triangles.len() - 1, &mut self.prims);
+            }
+            ShapeDesc::Polygon { points } => {
+                let pts: Vec<Vec3> = points.iter().map(|p| world(*p).as_vec3()).collect();
+                self.polygons.push(Polygon::new(&pts));
+                push(ShapeKind::Polygon, self.polygons.len() - 1, &mut self.prims);
+            }
+            ShapeDesc::Plane { normal, distance } => {
+                // n·p = d in object space; a point on it maps through the transform and the normal
+                // through the inverse transpose.
+                let n_obj = normal.normalize();
+                let d_obj = distance / normal.length();
+                let p_world = t.matrix.transform_point3(n_obj * d_obj) - self.origin;
+                let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
+                self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_world) as f32 });
+                self.plane_materials.push(material);
+            }
+        }
+    }
+
+    pub fn prim_bounds(&self) -> Vec<Aabb> {
+        self.prims
+            .iter()
+            .map(|p| {
+                let (lo, hi) = match p.kind {
+                    ShapeKind::Sphere => self.spheres[p.index as usize].bounds(),
+                    ShapeKind::Ellipsoid => {
+                        let e = &self.ellipsoids[p.index as usize];
+                        (e.min, e.max)
+                    }
+                    ShapeKind::Box => self.boxes[p.index as usize].bounds(),
+                    ShapeKind::Triangle => self.triangles[p.index as usize].bounds(),
+                    ShapeKind::Polygon => {
+                        let poly = &self.polygons[p.index as usize];
+                        (poly.min, poly.max)
+                    }
+                    ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
+                };
+                Aabb::new(lo, hi)
+            })
+            .collect()
+    }
+}

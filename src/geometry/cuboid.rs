@@ -4,6 +4,7 @@
 
 use glam::{Affine3A, Mat3A, Vec3, Vec3A};
 
+use super::lanes::{self, V3};
 use super::ray::Ray;
 
 /// An axis-aligned box in its own space, plus the map into it when that is not render space.
@@ -38,31 +39,17 @@ pub fn slabs(min: Vec3, max: Vec3, origin: Vec3, inv_dir: Vec3) -> (f32, f32) {
 
 impl Cuboid {
     #[inline]
-    fn local_ray(&self, ray: &Ray) -> (Vec3, Vec3) {
-        match &self.frame {
-            None => (ray.origin, ray.inv_dir),
-            Some(f) => {
-                let o = f.object_from_render.transform_point3(ray.origin);
-                let d = f.object_from_render.transform_vector3(ray.dir);
-                (o, d.recip())
-            }
-        }
-    }
-
-    #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let (o, inv) = self.local_ray(ray);
-        let (near, far) = slabs(self.min, self.max, o, inv);
-        if near > far {
-            return None;
-        }
-        if near > t_min && near < t_max {
-            Some(near)
-        } else if far > t_min && far < t_max {
-            Some(far)
-        } else {
-            None
-        }
+        let (o, d) = (V3::from_vec3(ray.origin), V3::from_vec3(ray.dir));
+        let t = match &self.frame {
+            None => lanes::aabb(V3::from_vec3(self.min), V3::from_vec3(self.max), o, V3::from_vec3(ray.inv_dir), t_min, t_max),
+            Some(f) => {
+                let lo = o.transform_point(&f.object_from_render);
+                let ld = d.transform_vector(&f.object_from_render);
+                lanes::aabb(V3::from_vec3(self.min), V3::from_vec3(self.max), lo, ld.recip(), t_min, t_max)
+            }
+        };
+        (t != lanes::MISS).then_some(t)
     }
 
     /// Outward normal of the face nearest to `p` (a point on the surface, render space).

@@ -2,6 +2,7 @@
 //! open interval `(t_min, t_max)`; normals are computed afterwards, only for the winning hit.
 
 pub mod cuboid;
+pub mod lanes;
 pub mod plane;
 pub mod polygon;
 pub mod ray;

@@ -2,6 +2,7 @@
 
 use glam::Vec3;
 
+use super::lanes::{self, V3};
 use super::ray::Ray;
 
 /// Points `p` with `normal · p = distance`, `normal` of unit length.
@@ -15,12 +16,8 @@ impl Plane {
     /// A ray parallel to the plane never hits it, even when it lies in it.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let denom = self.normal.dot(ray.dir);
-        if denom == 0.0 {
-            return None;
-        }
-        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
-        (t > t_min && t < t_max).then_some(t)
+        let t = lanes::plane(V3::from_vec3(self.normal), self.distance, V3::from_vec3(ray.origin), V3::from_vec3(ray.dir), t_min, t_max);
+        (t != lanes::MISS).then_some(t)
     }
 }
 

@@ -2,6 +2,7 @@
 
 use glam::Vec3;
 
+use super::lanes::{self, V3};
 use super::ray::Ray;
 
 #[derive(Clone, Copy, Debug)]
@@ -12,32 +13,11 @@ pub struct Sphere {
 
 impl Sphere {
     /// Nearest root in `(t_min, t_max)`: the near one from outside, the far one from inside.
-    ///
-    /// The discriminant is computed as `r² - |oc - (oc·d)d|²` (Ray Tracing Gems, ch. 7) instead
-    /// of `b² - c`: the textbook form cancels catastrophically when the sphere is small or far
-    /// away, which shows as holes and speckles at extreme scales.
+    /// The formula (stable against cancellation for small or far spheres) is in `lanes::sphere`.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let oc = ray.origin - self.center;
-        let b = oc.dot(ray.dir);
-        let perp = oc - b * ray.dir;
-        let r2 = self.radius * self.radius;
-        let disc = r2 - perp.length_squared();
-        if disc < 0.0 {
-            return None;
-        }
-        let c = oc.length_squared() - r2;
-        // q has the sign of -b, so t0 = c/q and t1 = q are computed without cancellation.
-        let q = -b - b.signum() * disc.sqrt();
-        let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (c / q, q) };
-        let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-        if near > t_min && near < t_max {
-            Some(near)
-        } else if far > t_min && far < t_max {
-            Some(far)
-        } else {
-            None
-        }
+        let t = lanes::sphere(V3::from_vec3(self.center), self.radius, V3::from_vec3(ray.origin), V3::from_vec3(ray.dir), t_min, t_max);
+        (t != lanes::MISS).then_some(t)
     }
 
     #[inline]

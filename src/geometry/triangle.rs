@@ -2,6 +2,7 @@
 
 use glam::Vec3;
 
+use super::lanes::{self, V3};
 use super::ray::Ray;
 
 #[derive(Clone, Copy, Debug)]
@@ -22,24 +23,16 @@ impl Triangle {
 
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let p = ray.dir.cross(self.e2);
-        let det = self.e1.dot(p);
-        if det == 0.0 {
-            return None;
-        }
-        let inv = 1.0 / det;
-        let s = ray.origin - self.v0;
-        let u = s.dot(p) * inv;
-        if !(0.0..=1.0).contains(&u) {
-            return None;
-        }
-        let q = s.cross(self.e1);
-        let v = ray.dir.dot(q) * inv;
-        if v < 0.0 || u + v > 1.0 {
-            return None;
-        }
-        let t = self.e2.dot(q) * inv;
-        (t > t_min && t < t_max).then_some(t)
+        let t = lanes::triangle(
+            V3::from_vec3(self.v0),
+            V3::from_vec3(self.e1),
+            V3::from_vec3(self.e2),
+            V3::from_vec3(ray.origin),
+            V3::from_vec3(ray.dir),
+            t_min,
+            t_max,
+        );
+        (t != lanes::MISS).then_some(t)
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {

@@ -1,0 +1,436 @@
+//! One set of intersection formulas for single rays (`f32`) and 8-ray packets (`F8`).
+//!
+//! The kernels are written once, generic over `Lane`, so the packet path computes exactly the
+//! same IEEE operations in the same order as the single-ray path: packets and single rays give
+//! bit-identical hits by construction, not by tolerance. `F8` is eight `f32`s operated on with
+//! plain loops; inside a function compiled with AVX2 enabled (see `render::packet`) LLVM turns
+//! each loop into one 256-bit instruction, and elsewhere into two SSE instructions. Neither
+//! contracts `a*b + c` into FMA, so both give the same bits on every x86-64 CPU.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use glam::Vec3;
+
+pub trait Lane: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self> {
+    type Mask: Copy;
+    fn splat(v: f32) -> Self;
+    fn sqrt(self) -> Self;
+    /// `if self < o { self } else { o }`: the minps/maxps rule, so NaN picks `o` in both widths.
+    fn min(self, o: Self) -> Self;
+    fn max(self, o: Self) -> Self;
+    fn lt(self, o: Self) -> Self::Mask;
+    fn le(self, o: Self) -> Self::Mask;
+    fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
+    fn or(a: Self::Mask, b: Self::Mask) -> Self::Mask;
+    fn not(a: Self::Mask) -> Self::Mask;
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    /// 1 for `self >= 0` (including -0), else -1: the sign the stable quadratic needs, never 0.
+    fn sign_or_one(self) -> Self;
+    fn recip(self) -> Self {
+        Self::splat(1.0) / self
+    }
+}
+
+impl Lane for f32 {
+    type Mask = bool;
+    #[inline(always)]
+    fn splat(v: f32) -> f32 {
+        v
+    }
+    #[inline(always)]
+    fn sqrt(self) -> f32 {
+        f32::sqrt(self)
+    }
+    #[inline(always)]
+    fn min(self, o: f32) -> f32 {
+        if self < o {
+            self
+        } else {
+            o
+        }
+    }
+    #[inline(always)]
+    fn max(self, o: f32) -> f32 {
+        if self > o {
+            self
+        } else {
+            o
+        }
+    }
+    #[inline(always)]
+    fn lt(self, o: f32) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn le(self, o: f32) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn and(a: bool, b: bool) -> bool {
+        a & b
+    }
+    #[inline(always)]
+    fn or(a: bool, b: bool) -> bool {
+        a | b
+    }
+    #[inline(always)]
+    fn not(a: bool) -> bool {
+        !a
+    }
+    #[inline(always)]
+    fn select(m: bool, a: f32, b: f32) -> f32 {
+        if m {
+            a
+        } else {
+            b
+        }
+    }
+    #[inline(always)]
+    fn sign_or_one(self) -> f32 {
+        if self >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+}
+
+/// Eight f32 lanes.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(C, align(32))]
+pub struct F8(pub [f32; 8]);
+
+/// Eight lane masks, all-ones or zero, as i32 so selects vectorise to blends.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[repr(C, align(32))]
+pub struct M8(pub [i32; 8]);
+
+impl M8 {
+    #[inline(always)]
+    pub fn any(self) -> bool {
+        self.0.iter().fold(0, |a, &b| a | b) != 0
+    }
+    #[inline(always)]
+    pub fn lane(self, i: usize) -> bool {
+        self.0[i] != 0
+    }
+    #[inline(always)]
+    pub fn from_fn(f: impl Fn(usize) -> bool) -> M8 {
+        M8(std::array::from_fn(|i| -(f(i) as i32)))
+    }
+}
+
+macro_rules! f8_binop {
+    ($tr:ident, $f:ident, $op:tt) => {
+        impl $tr for F8 {
+            type Output = F8;
+            #[inline(always)]
+            fn $f(self, o: F8) -> F8 {
+                let mut r = [0.0; 8];
+                for i in 0..8 {
+                    r[i] = self.0[i] $op o.0[i];
+                }
+                F8(r)
+            }
+        }
+    };
+}
+f8_binop!(Add, add, +);
+f8_binop!(Sub, sub, -);
+f8_binop!(Mul, mul, *);
+f8_binop!(Div, div, /);
+
+impl Neg for F8 {
+    type Output = F8;
+    #[inline(always)]
+    fn neg(self) -> F8 {
+        F8(self.0.map(|v| -v))
+    }
+}
+
+impl F8 {
+    #[inline(always)]
+    fn zip(self, o: F8, f: impl Fn(f32, f32) -> f32) -> F8 {
+        let mut r = [0.0; 8];
+        for i in 0..8 {
+            r[i] = f(self.0[i], o.0[i]);
+        }
+        F8(r)
+    }
+    #[inline(always)]
+    fn cmp(self, o: F8, f: impl Fn(f32, f32) -> bool) -> M8 {
+        let mut r = [0; 8];
+        for i in 0..8 {
+            r[i] = -(f(self.0[i], o.0[i]) as i32);
+        }
+        M8(r)
+    }
+}
+
+impl Lane for F8 {
+    type Mask = M8;
+    #[inline(always)]
+    fn splat(v: f32) -> F8 {
+        F8([v; 8])
+    }
+    #[inline(always)]
+    fn sqrt(self) -> F8 {
+        F8(self.0.map(f32::sqrt))
+    }
+    #[inline(always)]
+    fn min(self, o: F8) -> F8 {
+        self.zip(o, <f32 as Lane>::min)
+    }
+    #[inline(always)]
+    fn max(self, o: F8) -> F8 {
+        self.zip(o, <f32 as Lane>::max)
+    }
+    #[inline(always)]
+    fn lt(self, o: F8) -> M8 {
+        self.cmp(o, |a, b| a < b)
+    }
+    #[inline(always)]
+    fn le(self, o: F8) -> M8 {
+        self.cmp(o, |a, b| a <= b)
+    }
+    #[inline(always)]
+    fn and(a: M8, b: M8) -> M8 {
+        let mut r = [0; 8];
+        for i in 0..8 {
+            r[i] = a.0[i] & b.0[i];
+        }
+        M8(r)
+    }
+    #[inline(always)]
+    fn or(a: M8, b: M8) -> M8 {
+        let mut r = [0; 8];
+        for i in 0..8 {
+            r[i] = a.0[i] | b.0[i];
+        }
+        M8(r)
+    }
+    #[inline(always)]
+    fn not(a: M8) -> M8 {
+        M8(a.0.map(|v| !v))
+    }
+    #[inline(always)]
+    fn select(m: M8, a: F8, b: F8) -> F8 {
+        let mut r = [0.0; 8];
+        for i in 0..8 {
+            r[i] = f32::from_bits((a.0[i].to_bits() & m.0[i] as u32) | (b.0[i].to_bits() & !m.0[i] as u32));
+        }
+        F8(r)
+    }
+    #[inline(always)]
+    fn sign_or_one(self) -> F8 {
+        F8(self.0.map(<f32 as Lane>::sign_or_one))
+    }
+}
+
+/// A vector of lanes.
+#[derive(Clone, Copy, Debug)]
+pub struct V3<L> {
+    pub x: L,
+    pub y: L,
+    pub z: L,
+}
+
+impl<L: Lane> V3<L> {
+    #[inline(always)]
+    pub fn splat(v: Vec3) -> V3<L> {
+        V3 { x: L::splat(v.x), y: L::splat(v.y), z: L::splat(v.z) }
+    }
+    #[inline(always)]
+    pub fn add(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+    }
+    #[inline(always)]
+    pub fn sub(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
+    }
+    #[inline(always)]
+    pub fn scale(self, s: L) -> V3<L> {
+        V3 { x: self.x * s, y: self.y * s, z: self.z * s }
+    }
+    #[inline(always)]
+    pub fn mul(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.x * o.x, y: self.y * o.y, z: self.z * o.z }
+    }
+    #[inline(always)]
+    pub fn dot(self, o: V3<L>) -> L {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+    #[inline(always)]
+    pub fn cross(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.y * o.z - self.z * o.y, y: self.z * o.x - self.x * o.z, z: self.x * o.y - self.y * o.x }
+    }
+    #[inline(always)]
+    pub fn min(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.x.min(o.x), y: self.y.min(o.y), z: self.z.min(o.z) }
+    }
+    #[inline(always)]
+    pub fn max(self, o: V3<L>) -> V3<L> {
+        V3 { x: self.x.max(o.x), y: self.y.max(o.y), z: self.z.max(o.z) }
+    }
+    #[inline(always)]
+    pub fn recip(self) -> V3<L> {
+        V3 { x: self.x.recip(), y: self.y.recip(), z: self.z.recip() }
+    }
+    /// An affine map (column-major 3×3 plus translation) applied to a point.
+    #[inline(always)]
+    pub fn transform_point(self, a: &glam::Affine3A) -> V3<L> {
+        let m = &a.matrix3;
+        V3 {
+            x: self.x * L::splat(m.x_axis.x) + self.y * L::splat(m.y_axis.x) + self.z * L::splat(m.z_axis.x) + L::splat(a.translation.x),
+            y: self.x * L::splat(m.x_axis.y) + self.y * L::splat(m.y_axis.y) + self.z * L::splat(m.z_axis.y) + L::splat(a.translation.y),
+            z: self.x * L::splat(m.x_axis.z) + self.y * L::splat(m.y_axis.z) + self.z * L::splat(m.z_axis.z) + L::splat(a.translation.z),
+        }
+    }
+    #[inline(always)]
+    pub fn transform_vector(self, a: &glam::Affine3A) -> V3<L> {
+        let m = &a.matrix3;
+        V3 {
+            x: self.x * L::splat(m.x_axis.x) + self.y * L::splat(m.y_axis.x) + self.z * L::splat(m.z_axis.x),
+            y: self.x * L::splat(m.x_axis.y) + self.y * L::splat(m.y_axis.y) + self.z * L::splat(m.z_axis.y),
+            z: self.x * L::splat(m.x_axis.z) + self.y * L::splat(m.y_axis.z) + self.z * L::splat(m.z_axis.z),
+        }
+    }
+}
+
+impl V3<f32> {
+    #[inline(always)]
+    pub fn from_vec3(v: Vec3) -> V3<f32> {
+        V3 { x: v.x, y: v.y, z: v.z }
+    }
+}
+
+/// "No hit" distance.
+pub const MISS: f32 = f32::INFINITY;
+
+/// Slab test: (entry, exit) distances of the ray against an axis-aligned box.
+#[inline(always)]
+pub fn slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
+    let t0 = min.sub(o).mul(inv);
+    let t1 = max.sub(o).mul(inv);
+    let near = t0.min(t1);
+    let far = t0.max(t1);
+    (near.x.max(near.y).max(near.z), far.x.min(far.y).min(far.z))
+}
+
+/// Picks the near root if it lies in `(t_min, t_max)`, else the far one, else `MISS`.
+#[inline(always)]
+pub fn pick_root<L: Lane>(valid: L::Mask, near: L, far: L, t_min: L, t_max: L) -> L {
+    let near_ok = L::and(valid, L::and(t_min.lt(near), near.lt(t_max)));
+    let far_ok = L::and(valid, L::and(t_min.lt(far), far.lt(t_max)));
+    L::select(near_ok, near, L::select(far_ok, far, L::splat(MISS)))
+}
+
+/// Ray/sphere in the stable form: the discriminant as `r² - |oc - (oc·d)d|²`, the roots as
+/// `c/q` and `q` with `q = -b - sign(b)·√disc`, so neither cancels catastrophically.
+#[inline(always)]
+pub fn sphere<L: Lane>(center: V3<L>, radius: L, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+    let oc = o.sub(center);
+    let b = oc.dot(d);
+    let perp = oc.sub(d.scale(b));
+    let r2 = radius * radius;
+    let disc = r2 - perp.dot(perp);
+    let valid = L::le(L::splat(0.0), disc);
+    let c = oc.dot(oc) - r2;
+    let q = -b - b.sign_or_one() * disc.max(L::splat(0.0)).sqrt();
+    // q = 0 only when b = 0 and disc = 0: a tangent ray starting at the tangent point.
+    let q_zero = L::and(L::le(q, L::splat(0.0)), L::le(L::splat(0.0), q));
+    let safe_q = L::select(q_zero, L::splat(1.0), q);
+    let t0 = L::select(q_zero, L::splat(0.0), c / safe_q);
+    let t1 = L::select(q_zero, L::splat(0.0), q);
+    pick_root(valid, t0.min(t1), t0.max(t1), t_min, t_max)
+}
+
+/// Ray/plane: `n·p = dist`. Parallel rays (n·d = 0) never hit.
+#[inline(always)]
+pub fn plane<L: Lane>(n: V3<L>, dist: L, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+    let denom = n.dot(d);
+    let t = (dist - n.dot(o)) / denom;
+    let parallel = L::and(L::le(denom, L::splat(0.0)), L::le(L::splat(0.0), denom));
+    let ok = L::and(L::not(parallel), L::and(t_min.lt(t), t.lt(t_max)));
+    L::select(ok, t, L::splat(MISS))
+}
+
+/// Ray/box: the slab test; the far side counts when the origin is inside.
+#[inline(always)]
+pub fn aabb<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>, t_min: L, t_max: L) -> L {
+    let (near, far) = slabs(min, max, o, inv);
+    pick_root(near.le(far), near, far, t_min, t_max)
+}
+
+/// Möller–Trumbore ray/triangle.
+#[inline(always)]
+pub fn triangle<L: Lane>(v0: V3<L>, e1: V3<L>, e2: V3<L>, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+    let p = d.cross(e2);
+    let det = e1.dot(p);
+    let inv = L::splat(1.0) / det;
+    let s = o.sub(v0);
+    let u = s.dot(p) * inv;
+    let q = s.cross(e1);
+    let v = d.dot(q) * inv;
+    let t = e2.dot(q) * inv;
+    let zero = L::splat(0.0);
+    let one = L::splat(1.0);
+    let det_zero = L::and(L::le(det, zero), L::le(zero, det));
+    let inside = L::and(L::and(L::le(zero, u), L::le(u, one)), L::and(L::le(zero, v), L::le(u + v, one)));
+    let ok = L::and(L::and(L::not(det_zero), inside), L::and(t_min.lt(t), t.lt(t_max)));
+    L::select(ok, t, L::splat(MISS))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Deterministic pseudo-random numbers for the property tests (a hash, no shared state).
+    fn rnd(i: u32) -> f32 {
+        let mut x = i.wrapping_mul(0x9E37_79B9) ^ 0x85EB_CA6B;
+        x ^= x >> 16;
+        x = x.wrapping_mul(0x7FEB_352D);
+        x ^= x >> 15;
+        (x >> 8) as f32 / (1u32 << 24) as f32
+    }
+
+    fn lanes(base: u32, f: impl Fn(u32) -> f32) -> F8 {
+        F8(std::array::from_fn(|i| f(base + i as u32)))
+    }
+
+    #[test]
+    fn packet_and_single_ray_kernels_agree_bit_for_bit() {
+        for round in 0..500u32 {
+            let b = round * 64;
+            let o = V3 { x: lanes(b, |i| rnd(i) * 4.0 - 2.0), y: lanes(b + 8, |i| rnd(i) * 4.0 - 2.0), z: lanes(b + 16, |i| -5.0 + rnd(i)) };
+            let d = V3 { x: lanes(b + 24, |i| rnd(i) - 0.5), y: lanes(b + 32, |i| rnd(i) - 0.5), z: lanes(b + 40, |_| 1.0) };
+            let c = Vec3::new(rnd(b + 50) - 0.5, rnd(b + 51) - 0.5, 2.0);
+            let r = 0.5 + rnd(b + 52);
+            let wide = sphere(V3::splat(c), F8::splat(r), o, d, F8::splat(0.0), F8::splat(MISS));
+            let inv = d.recip();
+            let wide_box = aabb(V3::splat(c - 0.7), V3::splat(c + 0.7), o, inv, F8::splat(0.0), F8::splat(MISS));
+            let (e1, e2) = (Vec3::new(1.0, 0.2, 0.3), Vec3::new(-0.1, 1.2, 0.1));
+            let wide_tri = triangle(V3::splat(c), V3::splat(e1), V3::splat(e2), o, d, F8::splat(0.0), F8::splat(MISS));
+            for i in 0..8 {
+                let oi = V3 { x: o.x.0[i], y: o.y.0[i], z: o.z.0[i] };
+                let di = V3 { x: d.x.0[i], y: d.y.0[i], z: d.z.0[i] };
+                let single = sphere(V3::from_vec3(c), r, oi, di, 0.0, MISS);
+                assert_eq!(single.to_bits(), wide.0[i].to_bits());
+                let single_box = aabb(V3::from_vec3(c - 0.7), V3::from_vec3(c + 0.7), oi, di.recip(), 0.0, MISS);
+                assert_eq!(single_box.to_bits(), wide_box.0[i].to_bits());
+                let single_tri = triangle(V3::from_vec3(c), V3::from_vec3(e1), V3::from_vec3(e2), oi, di, 0.0, MISS);
+                assert_eq!(single_tri.to_bits(), wide_tri.0[i].to_bits());
+            }
+        }
+    }
+
+    #[test]
+    fn select_and_masks() {
+        let a = F8::splat(1.0);
+        let b = F8::splat(2.0);
+        let m = M8::from_fn(|i| i % 2 == 0);
+        let s = F8::select(m, a, b);
+        assert_eq!(s.0, [1.0, 2.0, 1.0, 2.0, 1.0, 2.0, 1.0, 2.0]);
+        assert!(m.any() && !M8::default().any());
+    }
+}

@@ -1,0 +1,21 @@
+#!/bin/sh
+# Regenerates the POV-Ray 3.7 reference images that tests/reference.rs compares against.
+# Needs Debian's `povray` and `povray-includes`. Run from anywhere:
+#   sh tests/reference/make_refs.sh
+# Renders at 640x480 without antialiasing (-A), with POV-Ray's own include library, the same
+# way the textbook ran it; seed.pov is the scene as the chapter prints it.
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+inc=/usr/share/povray-3.7/include
+out="$here/expected"
+mkdir -p "$out"
+render() {
+    povray +I"$1" +O"$out/$2.png" +W640 +H480 -A -D -V +L"$inc" +FN >/dev/null 2>&1 \
+        || { echo "povray failed on $1" >&2; exit 1; }
+    echo "wrote $out/$2.png"
+}
+render "$root/scenes/seed.pov" seed
+for s in flat reflection refraction shadows legacy; do
+    render "$here/scenes/$s.pov" "$s"
+done

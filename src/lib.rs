@@ -7,3 +7,4 @@
 pub mod error;
 pub mod pov;
 pub mod scene;
+pub mod shading;

@@ -1,0 +1,8 @@
+//! Procedural textures, render-ready: noise and turbulence, pigments (solid, checker, wood with a
+//! colour map) and normal perturbation (bumps).
+//!
+//! Everything here is f32 and evaluated per hit in render space (world minus the render origin);
+//! conversion from `scene::desc` happens once, in f64, in the `from_desc` constructors. Lighting
+//! and finishes are left to the renderer.
+
+pub mod noise;

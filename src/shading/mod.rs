@@ -6,3 +6,6 @@
 //! and finishes are left to the renderer.
 
 pub mod noise;
+pub mod normal;
+pub mod pattern;
+pub mod pigment;

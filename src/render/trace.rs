@@ -13,6 +13,8 @@ use crate::render::intersect::Hit;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::build::Scene;
+use crate::shading::normal::perturb_normal;
+use crate::shading::pigment::{eval_pigment, PatternQuality};
 
 /// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
 /// not traced.
@@ -37,6 +39,11 @@ pub enum RayKind {
 impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
         Tracer { scene, quality, stats: RenderStats::default() }
+    }
+
+    #[inline]
+    fn pattern_quality(&self) -> PatternQuality {
+        PatternQuality { max_octaves: self.quality.max_octaves }
     }
 
     fn max_level(&self) -> u32 {
@@ -67,10 +74,10 @@ impl<'a> Tracer<'a> {
         let entering = geometric.dot(ray.dir) < 0.0;
         let facing = if entering { geometric } else { -geometric };
         let normal = match &material.normal {
-            Some(n) => n.perturb(p, facing, self.quality.max_octaves),
+            Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
             None => facing,
         };
-        let pigment = material.pigment.eval(p, self.quality.max_octaves);
+        let pigment = eval_pigment(&material.pigment, p, self.pattern_quality());
         let finish = &material.finish;
         let c = pigment.rgb;
         // Light passing through the surface does not also light it.
@@ -174,7 +181,7 @@ impl<'a> Tracer<'a> {
             }
             let p = ray.at(hit.t);
             let material = &scene.materials[scene.material_of(hit.shape) as usize];
-            let pig = material.pigment.eval(p, self.quality.max_octaves);
+            let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
             pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
             if pass.max_element() < ADC_BAILOUT {
                 return Vec3::ZERO;

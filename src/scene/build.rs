@@ -15,7 +15,7 @@ use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 use crate::scene::material::Material;
-use crate::shading::Rgbft;
+use crate::shading::pattern::Rgbft;
 
 /// The kinds of shape, in the order the statistics report them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -163,7 +163,7 @@ impl Scene {
         for object in &desc.objects {
             let material = scene.materials.len() as u32;
             let m = Material::from_desc(&object.texture, &object.interior, origin);
-            scene.features.transparency |= m.pigment.may_be_transparent();
+            scene.features.transparency |= m.may_be_transparent();
             scene.features.reflection |= m.finish.reflects();
             scene.features.normals |= m.normal.is_some();
             scene.materials.push(m);

@@ -3,7 +3,9 @@
 use glam::{DVec3, Vec3};
 
 use crate::scene::desc::{FinishDesc, InteriorDesc, TextureDesc};
-use crate::shading::{Normal, Pigment};
+use crate::shading::normal::NormalF32;
+use crate::shading::pattern::Rgbft;
+use crate::shading::pigment::{Pigment, PigmentPattern32};
 
 /// POV-Ray's finish, with exponents precomputed.
 #[derive(Clone, Copy, Debug)]
@@ -41,16 +43,26 @@ impl Finish {
 #[derive(Clone, Debug)]
 pub struct Material {
     pub pigment: Pigment,
-    pub normal: Option<Normal>,
+    pub normal: Option<NormalF32>,
     pub finish: Finish,
     pub ior: f32,
 }
 
 impl Material {
+    /// Whether any point of the pigment lets light through (filter or transmit above zero).
+    pub fn may_be_transparent(&self) -> bool {
+        let see_through = |c: &Rgbft| c.filter > 0.0 || c.transmit > 0.0;
+        match &self.pigment.pattern {
+            PigmentPattern32::Solid(c) => see_through(c),
+            PigmentPattern32::Checker(cs) => cs.iter().any(see_through),
+            PigmentPattern32::Wood(map) => map.entries().iter().any(|(_, c)| see_through(c)),
+        }
+    }
+
     pub fn from_desc(texture: &TextureDesc, interior: &InteriorDesc, origin: DVec3) -> Material {
         Material {
             pigment: Pigment::from_desc(&texture.pigment, origin),
-            normal: texture.normal.as_ref().map(|n| Normal::from_desc(n, origin)),
+            normal: texture.normal.as_ref().map(|n| NormalF32::from_desc(n, origin)),
             finish: Finish::from_desc(&texture.finish),
             ior: interior.ior as f32,
         }

@@ -1,11 +1,23 @@
 //! POV-Ray's scene language: lexer (tokens with spans) → parser (syntax tree) → lower (SceneDesc).
 //!
-//! This module knows only `scene::desc`: it never builds render data or a BVH.
+//! This module knows only `scene::desc`: it never builds render data or a BVH. `load_scene` reads
+//! files and follows `#include`; every problem comes back as one `LocatedError`.
+
+pub mod ast;
+pub mod lexer;
+mod lower;
+pub mod parser;
+pub mod source;
 
 use std::path::{Path, PathBuf};
 
 use crate::error::LocatedError;
-use crate::scene::desc::SceneDesc;
+use crate::scene::desc::{SceneDesc, SourceRef};
+use ast::Stmt;
+use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
+
+/// How deep `#include` may nest (POV-Ray's own limit is similar); deeper is surely a runaway.
+pub const MAX_INCLUDE_DEPTH: usize = 32;
 
 /// Where `#include` looks, in POV-Ray's order: the including scene's folder, then each `-L` dir,
 /// then the project's `scenes/include`.
@@ -16,6 +28,161 @@ pub struct IncludePath {
 
 /// Loads and lowers a scene file.
 pub fn load_scene(path: &Path, include: &IncludePath) -> Result<SceneDesc, LocatedError> {
-    let _ = include;
-    Err(LocatedError::whole_file(&path.display().to_string(), "the parser is not written yet"))
+    load_scene_with_warnings(path, include).map(|(scene, _)| scene)
+}
+
+/// Like `load_scene`, also returning warnings (POV-Ray's "Scale by 0.0" and the like) for the
+/// caller to print.
+pub fn load_scene_with_warnings(
+    path: &Path,
+    include: &IncludePath,
+) -> Result<(SceneDesc, Vec<LocatedError>), LocatedError> {
+    let mut loader = Loader {
+        map: SourceMap::default(),
+        include,
+        stack: Vec::new(),
+    };
+    let result = loader.load_main(path);
+    result.map_err(|d| loader.map.locate(&d))
+}
+
+struct Loader<'a> {
+    map: SourceMap,
+    include: &'a IncludePath,
+    /// Files being lowered, outermost first, for cycle detection and depth.
+    stack: Vec<(PathBuf, FileId)>,
+}
+
+impl Loader<'_> {
+    fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<LocatedError>)> {
+        let (file, stmts) = self.read_and_parse(path, path.display().to_string())?;
+        self.stack.push((canonical(path), file));
+        let (scene, warnings) = lower::Lowerer::new(self).finish(&stmts)?;
+        let warnings = warnings.iter().map(|d| self.map.locate(d)).collect();
+        Ok((scene, warnings))
+    }
+
+    /// Reads a file into the source map and parses it. Unreadable and non-UTF-8 files still get
+    /// an entry, so their error is located like any other.
+    fn read_and_parse(&mut self, path: &Path, display: String) -> PResult<(FileId, Vec<Stmt>)> {
+        let bytes = std::fs::read(path);
+        let (text, problem) = match bytes {
+            Err(e) => (String::new(), Some((0, format!("cannot read file: {e}")))),
+            Ok(b) if b.len() >= u32::MAX as usize => {
+                (String::new(), Some((0, "file is too large".to_string())))
+            }
+            Ok(b) => match String::from_utf8(b) {
+                Ok(t) => (t, None),
+                Err(e) => {
+                    let at = e.utf8_error().valid_up_to();
+                    let bad = e.as_bytes()[at];
+                    let prefix = String::from_utf8_lossy(&e.as_bytes()[..at]).into_owned();
+                    (
+                        prefix,
+                        Some((at, format!("file is not valid UTF-8 (byte 0x{bad:02x})"))),
+                    )
+                }
+            },
+        };
+        let id = self.map.add(SourceFile {
+            display,
+            path: path.to_path_buf(),
+            text,
+        });
+        if let Some((at, message)) = problem {
+            return Err(Diag::new(Span::new(id, at, at), message));
+        }
+        let text = self.map.file(id).map(|f| f.text.as_str()).unwrap_or("");
+        let tokens = lexer::lex(id, text)?;
+        Ok((id, parser::parse(&tokens, text)?))
+    }
+
+    /// The including file's folder first, then the include path in order.
+    fn resolve(&self, name: &str) -> Option<PathBuf> {
+        let including = self
+            .stack
+            .last()
+            .and_then(|(_, id)| self.map.file(*id))
+            .map(|f| f.path.clone());
+        let here = including
+            .as_deref()
+            .and_then(Path::parent)
+            .map(Path::to_path_buf);
+        here.into_iter()
+            .chain(self.include.dirs.iter().cloned())
+            .map(|d| d.join(name))
+            .find(|p| p.is_file())
+    }
+}
+
+impl lower::Files for Loader<'_> {
+    fn enter_include(
+        &mut self,
+        name: &str,
+        directive: Span,
+        path_span: Span,
+    ) -> PResult<(FileId, Vec<Stmt>)> {
+        let Some(found) = self.resolve(name) else {
+            let searched: Vec<String> = self
+                .include
+                .dirs
+                .iter()
+                .map(|d| d.display().to_string())
+                .collect();
+            return Err(Diag::new(
+                path_span,
+                format!(
+                    "include file \"{name}\" not found (searched the scene's folder{}{})",
+                    if searched.is_empty() { "" } else { ", " },
+                    searched.join(", ")
+                ),
+            ));
+        };
+        let key = canonical(&found);
+        if let Some(pos) = self.stack.iter().position(|(p, _)| *p == key) {
+            let mut chain: Vec<String> = self.stack[pos..]
+                .iter()
+                .map(|(p, _)| short_name(p))
+                .collect();
+            chain.push(short_name(&key));
+            return Err(Diag::new(
+                directive,
+                format!("include cycle: {}", chain.join(" → ")),
+            ));
+        }
+        if self.stack.len() > MAX_INCLUDE_DEPTH {
+            return Err(Diag::new(
+                directive,
+                format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels"),
+            ));
+        }
+        let (id, stmts) = self.read_and_parse(&found, found.display().to_string())?;
+        self.stack.push((key, id));
+        Ok((id, stmts))
+    }
+
+    fn leave_include(&mut self) {
+        self.stack.pop();
+    }
+
+    fn source_ref(&self, span: Span) -> SourceRef {
+        let (line, col) = self.map.line_col(span);
+        let file = self
+            .map
+            .file(span.file)
+            .map(|f| f.display.clone())
+            .unwrap_or_default();
+        SourceRef { file, line, col }
+    }
+}
+
+fn canonical(p: &Path) -> PathBuf {
+    std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf())
+}
+
+fn short_name(p: &Path) -> String {
+    p.file_name().map_or_else(
+        || p.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
 }

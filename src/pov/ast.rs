@@ -1,0 +1,297 @@
+//! Syntax tree of a scene file: what was written, with a span on every node. Identifiers are not
+//! resolved and expressions are not evaluated here; `lower` does both, in file order.
+
+use super::source::Span;
+
+/// A top-level statement.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Stmt {
+    Version {
+        value: Expr,
+        span: Span,
+    },
+    /// `#include "file"`; `path_span` locates the string.
+    Include {
+        path: String,
+        span: Span,
+        path_span: Span,
+    },
+    Declare {
+        name: String,
+        local: bool,
+        value: DeclValue,
+        span: Span,
+    },
+    /// `#ifdef (Name) ... #end` (`negate` for `#ifndef`).
+    IfDef {
+        name: String,
+        negate: bool,
+        body: Vec<Stmt>,
+        span: Span,
+    },
+    Camera {
+        items: Vec<CameraItem>,
+        span: Span,
+    },
+    Light(Light),
+    Background {
+        color: Expr,
+        span: Span,
+    },
+    GlobalSettings {
+        items: Vec<GlobalItem>,
+        span: Span,
+    },
+    Object(Object),
+}
+
+/// The right-hand side of `#declare Name = ...`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeclValue {
+    Expr(Expr),
+    Pigment(Pigment),
+    Normal(Normal),
+    Finish(Finish),
+    Texture(Texture),
+    Interior(Interior),
+    Object(Object),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    Number(f64),
+    /// A built-in vector constant (`x`, `y`, `z`).
+    Vector3([f64; 3]),
+    Ident(String),
+    /// `<a, b, ...>` with 2 to 5 components.
+    Vector(Vec<Expr>),
+    Neg(Box<Expr>),
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// A built-in function such as `sqrt(x)`.
+    Call(String, Vec<Expr>),
+    /// The `version` keyword: the language version in effect.
+    Version,
+    /// `color rgb <..> filter F ...`: items applied left to right to black.
+    Color(Vec<ColorItem>),
+}
+
+/// One part of a colour written with keywords.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorKey {
+    /// A colour-valued expression (declared name, vector, arithmetic) that replaces the colour.
+    Base,
+    Rgb,
+    Rgbf,
+    Rgbt,
+    Rgbft,
+    Red,
+    Green,
+    Blue,
+    Filter,
+    Transmit,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColorItem {
+    pub key: ColorKey,
+    pub value: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TransformKind {
+    Rotate,
+    Scale,
+    Translate,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct TransformItem {
+    pub kind: TransformKind,
+    pub value: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum CameraItem {
+    Location(Expr),
+    LookAt(Expr),
+    Angle(Expr),
+    Right(Expr),
+    Up(Expr),
+    Direction(Expr),
+    Sky(Expr),
+    Transform(TransformItem),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Light {
+    pub position: Expr,
+    pub color: Option<Expr>,
+    pub transforms: Vec<TransformItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum GlobalItem {
+    AssumedGamma(Expr),
+    MaxTraceLevel(Expr),
+    AmbientLight(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Turb {
+    pub kind: TurbKind,
+    pub value: Expr,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TurbKind {
+    Turbulence,
+    Octaves,
+    Omega,
+    Lambda,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapEntry {
+    pub value: Expr,
+    pub color: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum PigmentItem {
+    /// A leading identifier (declared pigment) or colour expression.
+    Base(Expr),
+    /// `color C` / `rgb ...`.
+    Color(Expr),
+    /// `checker C1 C2`; colours optional.
+    Checker(Vec<Expr>, Span),
+    Wood(Span),
+    ColorMap(Vec<MapEntry>, Span),
+    Turb(Turb),
+    Transform(TransformItem),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pigment {
+    pub items: Vec<PigmentItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalItem {
+    /// A leading identifier naming a declared normal.
+    Base(Expr),
+    /// `bumps [AMOUNT]`.
+    Bumps(Option<Expr>, Span),
+    Turb(Turb),
+    Transform(TransformItem),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Normal {
+    pub items: Vec<NormalItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FinishKey {
+    Ambient,
+    Diffuse,
+    Brilliance,
+    Phong,
+    PhongSize,
+    Specular,
+    Roughness,
+    Reflection,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum FinishItem {
+    Base(Expr),
+    Set(FinishKey, Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Finish {
+    pub items: Vec<FinishItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum TextureItem {
+    Base(Expr),
+    Pigment(Pigment),
+    Normal(Normal),
+    Finish(Finish),
+    Transform(TransformItem),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Texture {
+    pub items: Vec<TextureItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum InteriorItem {
+    Base(Expr),
+    Ior(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Interior {
+    pub items: Vec<InteriorItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShapeKind {
+    Sphere,
+    Plane,
+    Box,
+    Triangle,
+    Polygon,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ObjectKind {
+    /// A shape and its arguments as written (checked for count by the parser).
+    Shape(ShapeKind, Vec<Expr>),
+    /// `object { Name ... }`.
+    Ref(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Modifier {
+    Pigment(Pigment),
+    Normal(Normal),
+    Finish(Finish),
+    Texture(Texture),
+    Interior(Interior),
+    Transform(TransformItem),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    pub kind: ObjectKind,
+    pub modifiers: Vec<Modifier>,
+    /// The keyword (`sphere`), where messages about the object point.
+    pub span: Span,
+}

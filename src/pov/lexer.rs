@@ -1,0 +1,310 @@
+//! Lexer: scene text → tokens with byte spans. Comments and whitespace vanish here; keywords stay
+//! identifiers (the parser knows which words are keywords in which block).
+
+use super::source::{Diag, FileId, PResult, Span};
+
+/// The directives strahl understands; any other `#word` is rejected by name.
+pub const DIRECTIVES: &[&str] = &[
+    "version", "include", "declare", "local", "ifdef", "ifndef", "end",
+];
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum TokenKind {
+    Number(f64),
+    /// Identifiers and keywords alike.
+    Ident(String),
+    Str(String),
+    /// `#name`, without the `#`.
+    Directive(String),
+    /// One of `{ } < > ( ) [ ] , ; + - * / =`.
+    Punct(char),
+    Eof,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Token {
+    pub kind: TokenKind,
+    pub span: Span,
+}
+
+impl Token {
+    /// How the token reads in a message: "`sphere`", "number 3", "end of file".
+    pub fn describe(&self) -> String {
+        match &self.kind {
+            TokenKind::Number(v) => format!("number {v}"),
+            TokenKind::Ident(s) => format!("`{s}`"),
+            TokenKind::Str(s) => format!("string \"{s}\""),
+            TokenKind::Directive(d) => format!("`#{d}`"),
+            TokenKind::Punct(c) => format!("`{c}`"),
+            TokenKind::Eof => "end of file".to_string(),
+        }
+    }
+}
+
+const PUNCT: &str = "{}<>()[],;+-*/=";
+
+/// Splits `text` into tokens, ending with one `Eof` token.
+pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
+    let bytes = text.as_bytes();
+    let mut tokens = Vec::new();
+    let mut i = 0;
+    let span = |a: usize, b: usize| Span::new(file, a, b);
+    while i < bytes.len() {
+        let c = bytes[i];
+        let start = i;
+        if c.is_ascii_whitespace() {
+            i += 1;
+        } else if bytes[i..].starts_with(b"//") {
+            while i < bytes.len() && bytes[i] != b'\n' {
+                i += 1;
+            }
+        } else if bytes[i..].starts_with(b"/*") {
+            i = skip_block_comment(bytes, i).ok_or_else(|| {
+                Diag::new(
+                    span(start, start + 2),
+                    "block comment `/*` is never closed with `*/`",
+                )
+            })?;
+        } else if c.is_ascii_digit()
+            || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit))
+        {
+            let (value, end) =
+                lex_number(bytes, i).map_err(|m| Diag::new(span(start, i + 1), m))?;
+            i = end;
+            tokens.push(Token {
+                kind: TokenKind::Number(value),
+                span: span(start, end),
+            });
+        } else if c.is_ascii_alphabetic() || c == b'_' {
+            while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                i += 1;
+            }
+            tokens.push(Token {
+                kind: TokenKind::Ident(text[start..i].to_string()),
+                span: span(start, i),
+            });
+        } else if c == b'"' {
+            let (s, end) = lex_string(text, i).ok_or_else(|| {
+                Diag::new(span(start, start + 1), "string is never closed with `\"`")
+            })?;
+            i = end;
+            tokens.push(Token {
+                kind: TokenKind::Str(s),
+                span: span(start, end),
+            });
+        } else if c == b'#' {
+            i += 1;
+            // POV-Ray allows blanks between `#` and the directive name.
+            while i < bytes.len() && (bytes[i] == b' ' || bytes[i] == b'\t') {
+                i += 1;
+            }
+            let name_start = i;
+            while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                i += 1;
+            }
+            let name = &text[name_start..i];
+            if name.is_empty() {
+                return Err(Diag::new(
+                    span(start, start + 1),
+                    "expected a directive name after `#`",
+                ));
+            }
+            if !DIRECTIVES.contains(&name) {
+                return Err(Diag::new(
+                    span(start, i),
+                    format!(
+                        "`#{name}` is not supported (supported directives: #version, #include, \
+                         #declare, #local, #ifdef, #ifndef, #end)"
+                    ),
+                ));
+            }
+            tokens.push(Token {
+                kind: TokenKind::Directive(name.to_string()),
+                span: span(start, i),
+            });
+        } else if c.is_ascii() && PUNCT.contains(c as char) {
+            i += 1;
+            tokens.push(Token {
+                kind: TokenKind::Punct(c as char),
+                span: span(start, i),
+            });
+        } else {
+            let ch = text[i..].chars().next().unwrap_or('?');
+            return Err(Diag::new(
+                span(start, start + ch.len_utf8()),
+                format!("unexpected character `{ch}`"),
+            ));
+        }
+    }
+    tokens.push(Token {
+        kind: TokenKind::Eof,
+        span: span(bytes.len(), bytes.len()),
+    });
+    Ok(tokens)
+}
+
+/// Returns the offset just past the comment opened at `i`; comments nest, as POV-Ray allows.
+fn skip_block_comment(bytes: &[u8], mut i: usize) -> Option<usize> {
+    let mut depth = 0usize;
+    while i < bytes.len() {
+        if bytes[i..].starts_with(b"/*") {
+            depth += 1;
+            i += 2;
+        } else if bytes[i..].starts_with(b"*/") {
+            depth -= 1;
+            i += 2;
+            if depth == 0 {
+                return Some(i);
+            }
+        } else {
+            i += 1;
+        }
+    }
+    None
+}
+
+/// `1`, `.5`, `2.`, `1e-3`: returns the value and the end offset.
+fn lex_number(bytes: &[u8], start: usize) -> Result<(f64, usize), String> {
+    let mut i = start;
+    let digits = |i: &mut usize| {
+        while *i < bytes.len() && bytes[*i].is_ascii_digit() {
+            *i += 1;
+        }
+    };
+    digits(&mut i);
+    if i < bytes.len() && bytes[i] == b'.' {
+        i += 1;
+        digits(&mut i);
+    }
+    if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+        let mut j = i + 1;
+        if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
+            j += 1;
+        }
+        if j < bytes.len() && bytes[j].is_ascii_digit() {
+            i = j;
+            digits(&mut i);
+        } else {
+            return Err("malformed number: exponent has no digits".to_string());
+        }
+    }
+    // The slice is ASCII digits, '.', 'e' and a sign, so it is valid UTF-8.
+    let s = std::str::from_utf8(&bytes[start..i]).map_err(|_| "malformed number".to_string())?;
+    let s = if s.ends_with('.') {
+        &s[..s.len() - 1]
+    } else {
+        s
+    };
+    let value: f64 = s.parse().map_err(|_| format!("malformed number `{s}`"))?;
+    if !value.is_finite() {
+        return Err("number overflows to infinity".to_string());
+    }
+    Ok((value, i))
+}
+
+/// A string opened at `start`; `\"` and `\\` are escapes. Returns the contents and end offset.
+fn lex_string(text: &str, start: usize) -> Option<(String, usize)> {
+    let mut out = String::new();
+    let mut chars = text[start + 1..].char_indices();
+    while let Some((k, c)) = chars.next() {
+        match c {
+            '"' => return Some((out, start + 1 + k + 1)),
+            '\n' => return None,
+            '\\' => match chars.next() {
+                Some((_, e @ ('"' | '\\'))) => out.push(e),
+                Some((_, 'n')) => out.push('\n'),
+                Some((_, e)) => {
+                    out.push('\\');
+                    out.push(e);
+                }
+                None => return None,
+            },
+            c => out.push(c),
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(text: &str) -> Vec<TokenKind> {
+        lex(0, text).unwrap().into_iter().map(|t| t.kind).collect()
+    }
+
+    #[test]
+    fn numbers_in_all_forms() {
+        assert_eq!(
+            kinds("1 .5 1e-3 2. 3E2"),
+            vec![
+                TokenKind::Number(1.0),
+                TokenKind::Number(0.5),
+                TokenKind::Number(1e-3),
+                TokenKind::Number(2.0),
+                TokenKind::Number(300.0),
+                TokenKind::Eof
+            ]
+        );
+    }
+
+    #[test]
+    fn comments_nest_and_vanish() {
+        assert_eq!(
+            kinds("a // x\n /* b /* c */ d */ e"),
+            vec![
+                TokenKind::Ident("a".into()),
+                TokenKind::Ident("e".into()),
+                TokenKind::Eof
+            ]
+        );
+    }
+
+    #[test]
+    fn spans_are_byte_ranges() {
+        let t = lex(0, "  sphere{").unwrap();
+        assert_eq!((t[0].span.start, t[0].span.end), (2, 8));
+        assert_eq!(t[1].kind, TokenKind::Punct('{'));
+    }
+
+    #[test]
+    fn directives_and_strings() {
+        assert_eq!(
+            kinds("# include \"a b.inc\""),
+            vec![
+                TokenKind::Directive("include".into()),
+                TokenKind::Str("a b.inc".into()),
+                TokenKind::Eof
+            ]
+        );
+    }
+
+    #[test]
+    fn unsupported_directive_is_named() {
+        let e = lex(0, "\n #macro Foo()").unwrap_err();
+        assert!(
+            e.message.starts_with("`#macro` is not supported"),
+            "{}",
+            e.message
+        );
+        assert_eq!(e.span.start, 2);
+    }
+
+    #[test]
+    fn overflow_unclosed_and_stray_bytes_are_errors() {
+        assert_eq!(
+            lex(0, "1e999").unwrap_err().message,
+            "number overflows to infinity"
+        );
+        assert!(lex(0, "/* x").unwrap_err().message.contains("never closed"));
+        assert!(lex(0, "\"abc")
+            .unwrap_err()
+            .message
+            .contains("never closed"));
+        assert_eq!(
+            lex(0, "a @").unwrap_err().message,
+            "unexpected character `@`"
+        );
+        assert!(lex(0, "1e+").is_err());
+    }
+}

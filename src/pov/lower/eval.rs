@@ -1,0 +1,193 @@
+//! Evaluating expressions, colours and transform modifiers.
+
+use glam::{DMat4, DVec3};
+
+use super::value::{binary, color_from, negate, Value};
+use super::Lowerer;
+use crate::pov::ast::{ColorKey, Expr, ExprKind, TransformItem, TransformKind};
+use crate::pov::source::{Diag, PResult};
+use crate::scene::desc::{Color, Transform};
+
+impl Lowerer<'_> {
+    pub(super) fn eval(&self, e: &Expr) -> PResult<Value> {
+        match &e.kind {
+            ExprKind::Number(v) => Ok(Value::Float(*v)),
+            ExprKind::Vector3(v) => Ok(Value::Vector(v.to_vec())),
+            ExprKind::Version => Ok(Value::Float(self.version)),
+            ExprKind::Ident(name) => self.lookup_or_err(name, e.span).cloned(),
+            ExprKind::Vector(parts) => {
+                let mut out = Vec::with_capacity(parts.len());
+                for p in parts {
+                    out.push(self.float(p)?);
+                }
+                Ok(Value::Vector(out))
+            }
+            ExprKind::Neg(inner) => negate(&self.eval(inner)?, e.span),
+            ExprKind::Binary(op, a, b) => {
+                binary(*op, &self.eval(a)?, &self.eval(b)?, a.span, b.span)
+            }
+            ExprKind::Call(name, args) => self.call(name, args, e),
+            ExprKind::Color(items) => {
+                let mut c = Color::BLACK;
+                for item in items {
+                    let v = self.eval(&item.value)?;
+                    let span = item.value.span;
+                    // Components an `rgb`-style keyword reads: a float promotes to all of them.
+                    let comps = |n: usize| -> PResult<Vec<f64>> {
+                        match &v {
+                            Value::Float(f) => Ok(vec![*f; n]),
+                            Value::Vector(c) => {
+                                Ok((0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect())
+                            }
+                            Value::Color(c) => {
+                                Ok([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit][..n].to_vec())
+                            }
+                            other => Err(Diag::new(
+                                span,
+                                format!("expected a color, found {}", other.kind_name()),
+                            )),
+                        }
+                    };
+                    match item.key {
+                        ColorKey::Base => c = v.as_color(span)?,
+                        ColorKey::Rgb => c.rgb = color_from(&comps(3)?).rgb,
+                        ColorKey::Rgbf => {
+                            c = Color {
+                                transmit: c.transmit,
+                                ..color_from(&comps(4)?)
+                            }
+                        }
+                        ColorKey::Rgbt => {
+                            let k = comps(4)?;
+                            c = Color {
+                                rgb: DVec3::new(k[0], k[1], k[2]),
+                                filter: c.filter,
+                                transmit: k[3],
+                            };
+                        }
+                        ColorKey::Rgbft => c = color_from(&comps(5)?),
+                        ColorKey::Red => c.rgb.x = v.as_float(span)?,
+                        ColorKey::Green => c.rgb.y = v.as_float(span)?,
+                        ColorKey::Blue => c.rgb.z = v.as_float(span)?,
+                        ColorKey::Filter => c.filter = v.as_float(span)?,
+                        ColorKey::Transmit => c.transmit = v.as_float(span)?,
+                    }
+                }
+                Ok(Value::Color(c))
+            }
+        }
+    }
+
+    fn call(&self, name: &str, args: &[Expr], e: &Expr) -> PResult<Value> {
+        let f = |i: usize| self.float(&args[i]);
+        let v = |i: usize| self.vec3(&args[i]);
+        let out = match name {
+            "sqrt" => {
+                let a = f(0)?;
+                if a < 0.0 {
+                    return Err(Diag::new(args[0].span, "sqrt of a negative number"));
+                }
+                Value::Float(a.sqrt())
+            }
+            "sin" => Value::Float(f(0)?.sin()),
+            "cos" => Value::Float(f(0)?.cos()),
+            "tan" => Value::Float(f(0)?.tan()),
+            "asin" => Value::Float(f(0)?.asin()),
+            "acos" => Value::Float(f(0)?.acos()),
+            "atan2" => Value::Float(f(0)?.atan2(f(1)?)),
+            "abs" => Value::Float(f(0)?.abs()),
+            "exp" => Value::Float(f(0)?.exp()),
+            "log" => Value::Float(f(0)?.ln()),
+            "floor" => Value::Float(f(0)?.floor()),
+            "ceil" => Value::Float(f(0)?.ceil()),
+            "int" => Value::Float(f(0)?.trunc()),
+            "mod" => {
+                let d = f(1)?;
+                if d == 0.0 {
+                    return Err(Diag::new(args[1].span, "division by zero"));
+                }
+                Value::Float(f(0)? % d)
+            }
+            "radians" => Value::Float(f(0)?.to_radians()),
+            "degrees" => Value::Float(f(0)?.to_degrees()),
+            "pow" => Value::Float(f(0)?.powf(f(1)?)),
+            "min" => Value::Float(f(0)?.min(f(1)?)),
+            "max" => Value::Float(f(0)?.max(f(1)?)),
+            "vlength" => Value::Float(v(0)?.length()),
+            "vdot" => Value::Float(v(0)?.dot(v(1)?)),
+            "vcross" => {
+                let c = v(0)?.cross(v(1)?);
+                Value::Vector(c.to_array().to_vec())
+            }
+            "vnormalize" => {
+                let a = v(0)?;
+                if a.length() == 0.0 {
+                    return Err(Diag::new(
+                        args[0].span,
+                        "vnormalize of a zero-length vector",
+                    ));
+                }
+                Value::Vector(a.normalize().to_array().to_vec())
+            }
+            _ => return Err(Diag::new(e.span, format!("unknown function `{name}`"))),
+        };
+        let finite = match &out {
+            Value::Float(x) => x.is_finite(),
+            Value::Vector(c) => c.iter().all(|x| x.is_finite()),
+            _ => true,
+        };
+        if !finite {
+            return Err(Diag::new(
+                e.span,
+                format!("`{name}` gives no finite result here"),
+            ));
+        }
+        Ok(out)
+    }
+
+    pub(super) fn float(&self, e: &Expr) -> PResult<f64> {
+        self.eval(e)?.as_float(e.span)
+    }
+
+    pub(super) fn vec3(&self, e: &Expr) -> PResult<DVec3> {
+        self.eval(e)?.as_vec3(e.span)
+    }
+
+    pub(super) fn color(&self, e: &Expr) -> PResult<Color> {
+        self.eval(e)?.as_color(e.span)
+    }
+
+    /// `rotate` (degrees; about x, then y, then z), `scale` or `translate`.
+    pub(super) fn transform(&mut self, t: &TransformItem) -> PResult<Transform> {
+        let v = self.vec3(&t.value)?;
+        let matrix = match t.kind {
+            // glam's rotation matrices turn the same way as POV-Ray's: `rotate y*90` takes +x
+            // to -z (checked with a POV-Ray 3.7 render; see tests/pov_parse.rs).
+            TransformKind::Rotate => {
+                let r = v * (std::f64::consts::PI / 180.0);
+                DMat4::from_rotation_z(r.z)
+                    * DMat4::from_rotation_y(r.y)
+                    * DMat4::from_rotation_x(r.x)
+            }
+            TransformKind::Scale => {
+                let mut s = v;
+                for i in 0..3 {
+                    if s[i] == 0.0 {
+                        // POV-Ray's behaviour: warn and keep the axis unscaled.
+                        self.warnings.push(Diag::new(
+                            t.span,
+                            "Illegal Value: Scale by 0.0. Changed to 1.0.",
+                        ));
+                        s[i] = 1.0;
+                    }
+                }
+                DMat4::from_scale(s)
+            }
+            TransformKind::Translate => DMat4::from_translation(v),
+        };
+        Ok(Transform {
+            matrix,
+            inverse: matrix.inverse(),
+        })
+    }
+}

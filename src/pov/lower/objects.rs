@@ -1,0 +1,158 @@
+//! Objects: shape arguments → `ShapeDesc` (with the zero-size checks), then modifiers in written
+//! order. A transform moves the object and the patterns already attached to it; a pigment given
+//! after the transform is not moved, exactly as in POV-Ray.
+
+use glam::DVec3;
+
+use super::textures::transform_texture;
+use super::value::Value;
+use super::Lowerer;
+use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind};
+use crate::pov::source::{Diag, PResult, Span};
+use crate::scene::desc::{InteriorDesc, ObjectDesc, ShapeDesc, TextureDesc, Transform};
+
+impl Lowerer<'_> {
+    pub(super) fn object(&mut self, o: &Object) -> PResult<ObjectDesc> {
+        let mut obj = match &o.kind {
+            ObjectKind::Shape(kind, args) => ObjectDesc {
+                shape: self.shape(*kind, args, o.span)?,
+                transform: Transform::default(),
+                texture: TextureDesc::default(),
+                interior: InteriorDesc::default(),
+                source: self.files.source_ref(o.span),
+            },
+            ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
+                (ExprKind::Ident(_), Value::Object(obj)) => *obj,
+                (_, other) => {
+                    return Err(Diag::new(
+                        e.span,
+                        format!("expected a declared object, found {}", other.kind_name()),
+                    ))
+                }
+            },
+        };
+        for m in &o.modifiers {
+            match m {
+                Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
+                Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
+                Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
+                Modifier::Texture(t) => obj.texture = self.texture(t)?,
+                Modifier::Interior(i) => obj.interior = self.interior(i)?,
+                Modifier::Transform(t) => {
+                    let t = self.transform(t)?;
+                    obj.transform = obj.transform.then(&t);
+                    transform_texture(&mut obj.texture, &t);
+                }
+            }
+        }
+        Ok(obj)
+    }
+
+    fn shape(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
+        // The parser guarantees the argument count for all shapes but polygon.
+        let arg = |i: usize| {
+            args.get(i)
+                .ok_or_else(|| Diag::new(span, "missing argument"))
+        };
+        Ok(match kind {
+            ShapeKind::Sphere => {
+                let center = self.vec3(arg(0)?)?;
+                let radius = self.float(arg(1)?)?;
+                if radius <= 0.0 {
+                    return Err(Diag::new(arg(1)?.span, "sphere radius must be positive"));
+                }
+                ShapeDesc::Sphere { center, radius }
+            }
+            ShapeKind::Plane => {
+                let normal = self.vec3(arg(0)?)?;
+                if normal.length() == 0.0 {
+                    return Err(Diag::new(arg(0)?.span, "plane normal must not be zero"));
+                }
+                ShapeDesc::Plane {
+                    normal,
+                    distance: self.float(arg(1)?)?,
+                }
+            }
+            ShapeKind::Box => ShapeDesc::Box {
+                corner1: self.vec3(arg(0)?)?,
+                corner2: self.vec3(arg(1)?)?,
+            },
+            ShapeKind::Triangle => {
+                let (a, b, c) = (
+                    self.vec3(arg(0)?)?,
+                    self.vec3(arg(1)?)?,
+                    self.vec3(arg(2)?)?,
+                );
+                if collinear(&[a, b, c]) {
+                    return Err(Diag::new(
+                        span,
+                        "triangle is degenerate: its corners are collinear",
+                    ));
+                }
+                ShapeDesc::Triangle { a, b, c }
+            }
+            ShapeKind::Polygon => self.polygon(args, span)?,
+        })
+    }
+
+    fn polygon(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
+        let count_expr = args
+            .first()
+            .ok_or_else(|| Diag::new(span, "polygon needs the number of points"))?;
+        let count = self.float(count_expr)?;
+        let given = args.len() - 1;
+        if count != given as f64 {
+            return Err(Diag::new(
+                count_expr.span,
+                format!("polygon says it has {count} points, but {given} are given"),
+            ));
+        }
+        let mut points = Vec::with_capacity(given);
+        for e in &args[1..] {
+            points.push(self.vec3(e)?);
+        }
+        if points.len() > 1 && points.first() == points.last() {
+            points.pop();
+        }
+        let mut distinct: Vec<DVec3> = Vec::new();
+        for p in &points {
+            if !distinct.contains(p) {
+                distinct.push(*p);
+            }
+        }
+        if distinct.len() < 3 {
+            return Err(Diag::new(
+                span,
+                format!(
+                    "polygon needs at least 3 distinct points, found {}",
+                    distinct.len()
+                ),
+            ));
+        }
+        if collinear(&distinct) {
+            return Err(Diag::new(
+                span,
+                "polygon is degenerate: all its points are collinear",
+            ));
+        }
+        Ok(ShapeDesc::Polygon { points })
+    }
+}
+
+/// True when every point lies on one line (relative tolerance, so tiny and huge shapes agree).
+fn collinear(points: &[DVec3]) -> bool {
+    let a = points[0];
+    let scale = points.iter().map(|p| (*p - a).length()).fold(0.0, f64::max);
+    if scale == 0.0 {
+        return true;
+    }
+    let far = points
+        .iter()
+        .copied()
+        .max_by(|p, q| (*p - a).length().total_cmp(&(*q - a).length()))
+        .unwrap_or(a);
+    let dir = (far - a) / scale;
+    points
+        .iter()
+        .all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
+}

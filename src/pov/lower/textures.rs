@@ -1,0 +1,303 @@
+//! Surface blocks → `PigmentDesc`, `NormalDesc`, `FinishDesc`, `TextureDesc`, `InteriorDesc`.
+//! A block that starts with a declared name copies it, then applies the rest in written order.
+
+use super::value::Value;
+use super::Lowerer;
+use crate::pov::ast::{
+    Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
+    Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
+};
+use crate::pov::source::{Diag, PResult, Span};
+use crate::scene::desc::{
+    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PigmentDesc,
+    PigmentPattern, TextureDesc, Transform, Turbulence,
+};
+
+/// POV-Ray's `bumps` amount when none is written.
+const DEFAULT_BUMPS: f64 = 0.5;
+
+/// The pattern while a pigment block is read; the map is checked against it at the end.
+enum Pattern {
+    Solid(Color),
+    Checker(Color, Color),
+    Wood(Span),
+}
+
+/// Turbulence being built: `octaves` etc. may come before `turbulence`.
+struct TurbState {
+    value: Turbulence,
+    given: bool,
+}
+
+impl TurbState {
+    fn from(t: Option<Turbulence>) -> Self {
+        TurbState {
+            given: t.is_some(),
+            value: t.unwrap_or_default(),
+        }
+    }
+
+    fn finish(self) -> Option<Turbulence> {
+        self.given.then_some(self.value)
+    }
+}
+
+impl Lowerer<'_> {
+    /// A leading name in a block: the declared value, or an error naming what it is.
+    fn declared<'v>(&'v self, e: &Expr) -> PResult<Option<&'v Value>> {
+        match &e.kind {
+            ExprKind::Ident(name) => self.lookup_or_err(name, e.span).map(Some),
+            _ => Ok(None),
+        }
+    }
+
+    fn turb(&self, t: &Turb, state: &mut TurbState) -> PResult<()> {
+        match t.kind {
+            TurbKind::Turbulence => {
+                state.value.amount = self.vec3(&t.value)?;
+                state.given = true;
+            }
+            TurbKind::Octaves => {
+                let n = self.float(&t.value)?;
+                if !(1.0..=10.0).contains(&n) {
+                    return Err(Diag::new(t.value.span, "octaves must be between 1 and 10"));
+                }
+                state.value.octaves = n as u32;
+            }
+            TurbKind::Omega => state.value.omega = self.float(&t.value)?,
+            TurbKind::Lambda => state.value.lambda = self.float(&t.value)?,
+        }
+        Ok(())
+    }
+
+    pub(super) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
+        let mut pattern = Pattern::Solid(Color::BLACK);
+        let mut map: Option<(Vec<ColorMapEntry>, Span)> = None;
+        let mut turb = TurbState::from(None);
+        let mut transform = Transform::default();
+        for item in &p.items {
+            match item {
+                PigmentItem::Base(e) => {
+                    if let Some(Value::Pigment(base)) = self.declared(e)? {
+                        let base = (**base).clone();
+                        pattern = match base.pattern {
+                            PigmentPattern::Solid(c) => Pattern::Solid(c),
+                            PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
+                            PigmentPattern::Wood(m) => {
+                                map = Some((m, e.span));
+                                Pattern::Wood(e.span)
+                            }
+                        };
+                        turb = TurbState::from(base.turbulence);
+                        transform = base.transform;
+                    } else {
+                        pattern = Pattern::Solid(self.eval(e)?.as_color(e.span).map_err(|_| {
+                            Diag::new(
+                                e.span,
+                                "expected a declared pigment or a color at the start of `pigment`",
+                            )
+                        })?);
+                    }
+                }
+                PigmentItem::Color(e) => pattern = Pattern::Solid(self.color(e)?),
+                PigmentItem::Checker(colors, _) => {
+                    // POV-Ray's checker colours when none are given: blue and green.
+                    let a = match colors.first() {
+                        Some(e) => self.color(e)?,
+                        None => Color::rgb(0.0, 0.0, 1.0),
+                    };
+                    let b = match colors.get(1) {
+                        Some(e) => self.color(e)?,
+                        None => Color::rgb(0.0, 1.0, 0.0),
+                    };
+                    pattern = Pattern::Checker(a, b);
+                }
+                PigmentItem::Wood(span) => pattern = Pattern::Wood(*span),
+                PigmentItem::ColorMap(entries, span) => {
+                    let mut out = Vec::with_capacity(entries.len());
+                    for entry in entries {
+                        let value = self.float(&entry.value)?;
+                        if !(0.0..=1.0).contains(&value) {
+                            return Err(Diag::new(
+                                entry.value.span,
+                                "color_map values must be between 0 and 1",
+                            ));
+                        }
+                        out.push(ColorMapEntry {
+                            value,
+                            color: self.color(&entry.color)?,
+                        });
+                    }
+                    // Stable: entries with equal values keep their written order (a hard edge).
+                    out.sort_by(|a, b| a.value.total_cmp(&b.value));
+                    map = Some((out, *span));
+                }
+                PigmentItem::Turb(t) => self.turb(t, &mut turb)?,
+                PigmentItem::Transform(t) => transform = transform.then(&self.transform(t)?),
+            }
+        }
+        let pattern = match (pattern, map) {
+            (Pattern::Wood(_), Some((m, _))) => PigmentPattern::Wood(m),
+            (Pattern::Wood(span), None) => {
+                return Err(Diag::new(
+                    span,
+                    "`wood` needs a color_map (strahl has no default color map)",
+                ))
+            }
+            (_, Some((_, span))) => {
+                return Err(Diag::new(
+                    span,
+                    "color_map needs a pattern that uses it (supported: wood)",
+                ))
+            }
+            (Pattern::Solid(c), None) => PigmentPattern::Solid(c),
+            (Pattern::Checker(a, b), None) => PigmentPattern::Checker(a, b),
+        };
+        Ok(PigmentDesc {
+            pattern,
+            turbulence: turb.finish(),
+            transform,
+        })
+    }
+
+    pub(super) fn normal(&mut self, n: &Normal) -> PResult<NormalDesc> {
+        let mut pattern = None;
+        let mut turb = TurbState::from(None);
+        let mut transform = Transform::default();
+        for item in &n.items {
+            match item {
+                NormalItem::Base(e) => match self.declared(e)? {
+                    Some(Value::Normal(base)) => {
+                        let base = (**base).clone();
+                        pattern = Some(base.pattern);
+                        turb = TurbState::from(base.turbulence);
+                        transform = base.transform;
+                    }
+                    Some(other) => {
+                        return Err(Diag::new(
+                            e.span,
+                            format!("expected a declared normal, found {}", other.kind_name()),
+                        ))
+                    }
+                    None => {
+                        return Err(Diag::new(
+                            e.span,
+                            "expected a declared normal or a normal pattern",
+                        ))
+                    }
+                },
+                NormalItem::Bumps(amount, _) => {
+                    let a = match amount {
+                        Some(e) => self.float(e)?,
+                        None => DEFAULT_BUMPS,
+                    };
+                    pattern = Some(NormalPattern::Bumps(a));
+                }
+                NormalItem::Turb(t) => self.turb(t, &mut turb)?,
+                NormalItem::Transform(t) => transform = transform.then(&self.transform(t)?),
+            }
+        }
+        let pattern = pattern
+            .ok_or_else(|| Diag::new(n.span, "normal needs a pattern (supported: bumps)"))?;
+        Ok(NormalDesc {
+            pattern,
+            turbulence: turb.finish(),
+            transform,
+        })
+    }
+
+    pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {
+        let mut out = FinishDesc::default();
+        for item in &f.items {
+            match item {
+                FinishItem::Base(e) => match self.declared(e)? {
+                    Some(Value::Finish(base)) => out = *base,
+                    Some(other) => {
+                        return Err(Diag::new(
+                            e.span,
+                            format!("expected a declared finish, found {}", other.kind_name()),
+                        ))
+                    }
+                    None => return Err(Diag::new(e.span, "expected a declared finish")),
+                },
+                FinishItem::Set(key, e) => match key {
+                    FinishKey::Ambient => out.ambient = self.color(e)?.rgb,
+                    FinishKey::Reflection => out.reflection = self.color(e)?.rgb,
+                    FinishKey::Diffuse => out.diffuse = self.float(e)?,
+                    FinishKey::Brilliance => out.brilliance = self.float(e)?,
+                    FinishKey::Phong => out.phong = self.float(e)?,
+                    FinishKey::PhongSize => out.phong_size = self.float(e)?,
+                    FinishKey::Specular => out.specular = self.float(e)?,
+                    FinishKey::Roughness => {
+                        let r = self.float(e)?;
+                        if r <= 0.0 {
+                            return Err(Diag::new(e.span, "roughness must be positive"));
+                        }
+                        out.roughness = r;
+                    }
+                },
+            }
+        }
+        Ok(out)
+    }
+
+    pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
+        let mut out = TextureDesc::default();
+        for item in &t.items {
+            match item {
+                TextureItem::Base(e) => match self.declared(e)? {
+                    Some(Value::Texture(base)) => out = (**base).clone(),
+                    Some(other) => {
+                        return Err(Diag::new(
+                            e.span,
+                            format!("expected a declared texture, found {}", other.kind_name()),
+                        ))
+                    }
+                    None => return Err(Diag::new(e.span, "expected a declared texture")),
+                },
+                TextureItem::Pigment(p) => out.pigment = self.pigment(p)?,
+                TextureItem::Normal(n) => out.normal = Some(self.normal(n)?),
+                TextureItem::Finish(f) => out.finish = self.finish_block(f)?,
+                TextureItem::Transform(tr) => {
+                    let tr = self.transform(tr)?;
+                    transform_texture(&mut out, &tr);
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    pub(super) fn interior(&mut self, i: &Interior) -> PResult<InteriorDesc> {
+        let mut out = InteriorDesc::default();
+        for item in &i.items {
+            match item {
+                InteriorItem::Base(e) => match self.declared(e)? {
+                    Some(Value::Interior(base)) => out = *base,
+                    Some(other) => {
+                        return Err(Diag::new(
+                            e.span,
+                            format!("expected a declared interior, found {}", other.kind_name()),
+                        ))
+                    }
+                    None => return Err(Diag::new(e.span, "expected a declared interior")),
+                },
+                InteriorItem::Ior(e) => {
+                    let ior = self.float(e)?;
+                    if ior <= 0.0 {
+                        return Err(Diag::new(e.span, "ior must be positive"));
+                    }
+                    out.ior = ior;
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// Carries a texture's patterns along with a transform applied after them.
+pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
+    t.pigment.transform = t.pigment.transform.then(tr);
+    if let Some(n) = &mut t.normal {
+        n.transform = n.transform.then(tr);
+    }
+}

@@ -1,0 +1,239 @@
+//! Values of evaluated expressions and declarations, with POV-Ray's promotion rules: a float
+//! promotes to every component of a vector or colour, a short vector pads with zeros, and
+//! arithmetic with a colour works on all five components (red, green, blue, filter, transmit).
+
+use glam::DVec3;
+
+use crate::pov::ast::BinOp;
+use crate::pov::source::{Diag, PResult, Span};
+use crate::scene::desc::{
+    Color, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
+};
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Float(f64),
+    /// 2 to 5 components.
+    Vector(Vec<f64>),
+    Color(Color),
+    Pigment(Box<PigmentDesc>),
+    Normal(Box<NormalDesc>),
+    Finish(FinishDesc),
+    Texture(Box<TextureDesc>),
+    Interior(InteriorDesc),
+    Object(Box<ObjectDesc>),
+}
+
+impl Value {
+    /// The kind of value, for "expected a float, found a pigment".
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Value::Float(_) => "a float",
+            Value::Vector(_) => "a vector",
+            Value::Color(_) => "a color",
+            Value::Pigment(_) => "a pigment",
+            Value::Normal(_) => "a normal",
+            Value::Finish(_) => "a finish",
+            Value::Texture(_) => "a texture",
+            Value::Interior(_) => "an interior",
+            Value::Object(_) => "an object",
+        }
+    }
+
+    pub fn as_float(&self, span: Span) -> PResult<f64> {
+        match self {
+            Value::Float(v) => Ok(*v),
+            other => Err(Diag::new(
+                span,
+                format!("expected a float, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    /// A 3D vector: floats promote to all three components, 2D vectors get z = 0.
+    pub fn as_vec3(&self, span: Span) -> PResult<DVec3> {
+        match self {
+            Value::Float(v) => Ok(DVec3::splat(*v)),
+            Value::Vector(c) if c.len() <= 3 => Ok(DVec3::new(
+                c[0],
+                c.get(1).copied().unwrap_or(0.0),
+                c.get(2).copied().unwrap_or(0.0),
+            )),
+            Value::Vector(c) => Err(Diag::new(
+                span,
+                format!(
+                    "expected a 3-component vector, found {} components",
+                    c.len()
+                ),
+            )),
+            other => Err(Diag::new(
+                span,
+                format!("expected a vector, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    /// A colour: a float sets all five components, a vector sets r, g, b[, filter[, transmit]].
+    pub fn as_color(&self, span: Span) -> PResult<Color> {
+        match self {
+            Value::Color(c) => Ok(*c),
+            Value::Float(_) | Value::Vector(_) => Ok(color_from(&self.components(5))),
+            other => Err(Diag::new(
+                span,
+                format!("expected a color, found {}", other.kind_name()),
+            )),
+        }
+    }
+
+    /// The numeric components padded (vectors) or promoted (floats) to `n`.
+    fn components(&self, n: usize) -> Vec<f64> {
+        match self {
+            Value::Float(v) => vec![*v; n],
+            Value::Vector(c) => (0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect(),
+            Value::Color(c) => vec![c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit],
+            _ => Vec::new(),
+        }
+    }
+
+    fn width(&self) -> Option<usize> {
+        match self {
+            Value::Float(_) => Some(1),
+            Value::Vector(c) => Some(c.len()),
+            Value::Color(_) => Some(5),
+            _ => None,
+        }
+    }
+}
+
+pub fn color_from(c: &[f64]) -> Color {
+    let at = |i: usize| c.get(i).copied().unwrap_or(0.0);
+    Color {
+        rgb: DVec3::new(at(0), at(1), at(2)),
+        filter: at(3),
+        transmit: at(4),
+    }
+}
+
+fn finite(v: f64, span: Span) -> PResult<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(Diag::new(span, "number overflows to infinity"))
+    }
+}
+
+/// `a op b` with promotion; `span` covers the whole operation.
+pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PResult<Value> {
+    let span = a_span.to(b_span);
+    let (wa, wb) = match (a.width(), b.width()) {
+        (Some(wa), Some(wb)) => (wa, wb),
+        (None, _) => {
+            return Err(Diag::new(
+                a_span,
+                format!("cannot do arithmetic on {}", a.kind_name()),
+            ))
+        }
+        (_, None) => {
+            return Err(Diag::new(
+                b_span,
+                format!("cannot do arithmetic on {}", b.kind_name()),
+            ))
+        }
+    };
+    let n = wa.max(wb);
+    let (ca, cb) = (a.components(n), b.components(n));
+    let mut out = Vec::with_capacity(n);
+    for (x, y) in ca.iter().zip(&cb) {
+        let v = match op {
+            BinOp::Add => x + y,
+            BinOp::Sub => x - y,
+            BinOp::Mul => x * y,
+            BinOp::Div => {
+                if *y == 0.0 {
+                    return Err(Diag::new(b_span, "division by zero"));
+                }
+                x / y
+            }
+        };
+        out.push(finite(v, span)?);
+    }
+    Ok(
+        if matches!(a, Value::Color(_)) || matches!(b, Value::Color(_)) {
+            Value::Color(color_from(&out))
+        } else if n == 1 {
+            Value::Float(out[0])
+        } else {
+            Value::Vector(out)
+        },
+    )
+}
+
+pub fn negate(v: &Value, span: Span) -> PResult<Value> {
+    binary(BinOp::Mul, v, &Value::Float(-1.0), span, span)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn s() -> Span {
+        Span::default()
+    }
+
+    #[test]
+    fn floats_promote_to_vectors_and_colors() {
+        let v = binary(
+            BinOp::Mul,
+            &Value::Float(2.0),
+            &Value::Vector(vec![0.0, 1.0, 0.0]),
+            s(),
+            s(),
+        );
+        assert_eq!(v.unwrap(), Value::Vector(vec![0.0, 2.0, 0.0]));
+        let white = Value::Color(Color::WHITE);
+        let gray = binary(BinOp::Mul, &white, &Value::Float(0.05), s(), s()).unwrap();
+        assert_eq!(gray, Value::Color(Color::rgb(0.05, 0.05, 0.05)));
+    }
+
+    #[test]
+    fn vectors_multiply_componentwise_and_pad() {
+        let v = binary(
+            BinOp::Mul,
+            &Value::Vector(vec![1.0, 2.0, 3.0]),
+            &Value::Vector(vec![2.0, 2.0]),
+            s(),
+            s(),
+        );
+        assert_eq!(v.unwrap(), Value::Vector(vec![2.0, 4.0, 0.0]));
+    }
+
+    #[test]
+    fn overflow_and_division_by_zero_are_errors() {
+        let e = binary(
+            BinOp::Mul,
+            &Value::Float(1e300),
+            &Value::Float(1e300),
+            s(),
+            s(),
+        )
+        .unwrap_err();
+        assert_eq!(e.message, "number overflows to infinity");
+        let e = binary(
+            BinOp::Div,
+            &Value::Float(1.0),
+            &Value::Vector(vec![1.0, 0.0]),
+            s(),
+            s(),
+        )
+        .unwrap_err();
+        assert_eq!(e.message, "division by zero");
+    }
+
+    #[test]
+    fn two_d_vectors_get_z_zero() {
+        assert_eq!(
+            Value::Vector(vec![1.0, 2.0]).as_vec3(s()).unwrap(),
+            DVec3::new(1.0, 2.0, 0.0)
+        );
+    }
+}

@@ -1,0 +1,264 @@
+//! Expressions (`+ - * /`, unary signs, vectors, built-in functions and constants) and colours
+//! written with keywords (`color rgb <..> filter F`).
+
+use super::Parser;
+use crate::pov::ast::{BinOp, ColorItem, ColorKey, Expr, ExprKind};
+use crate::pov::lexer::TokenKind;
+use crate::pov::source::{Diag, PResult};
+
+/// Built-in functions and how many arguments each takes.
+pub const FUNCTIONS: &[(&str, usize)] = &[
+    ("sqrt", 1),
+    ("sin", 1),
+    ("cos", 1),
+    ("tan", 1),
+    ("asin", 1),
+    ("acos", 1),
+    ("atan2", 2),
+    ("abs", 1),
+    ("exp", 1),
+    ("log", 1),
+    ("floor", 1),
+    ("ceil", 1),
+    ("int", 1),
+    ("mod", 2),
+    ("radians", 1),
+    ("degrees", 1),
+    ("pow", 2),
+    ("min", 2),
+    ("max", 2),
+    ("vlength", 1),
+    ("vnormalize", 1),
+    ("vcross", 2),
+    ("vdot", 2),
+];
+
+pub fn color_key(word: &str) -> Option<ColorKey> {
+    Some(match word {
+        "rgb" => ColorKey::Rgb,
+        "rgbf" => ColorKey::Rgbf,
+        "rgbt" => ColorKey::Rgbt,
+        "rgbft" => ColorKey::Rgbft,
+        "red" => ColorKey::Red,
+        "green" => ColorKey::Green,
+        "blue" => ColorKey::Blue,
+        "filter" => ColorKey::Filter,
+        "transmit" => ColorKey::Transmit,
+        _ => return None,
+    })
+}
+
+impl Parser<'_> {
+    /// A colour in any form (`color` keyword optional), or any other expression.
+    pub(super) fn color(&mut self) -> PResult<Expr> {
+        let start = self.peek().span;
+        let explicit = matches!(self.peek_ident(), Some("color" | "colour"));
+        if explicit {
+            self.bump();
+        }
+        let mut items = Vec::new();
+        if self.peek_ident().and_then(color_key).is_none() {
+            let value = self.expr()?;
+            items.push(ColorItem {
+                key: ColorKey::Base,
+                span: value.span,
+                value,
+            });
+        }
+        while let Some(key) = self.peek_ident().and_then(color_key) {
+            let key_span = self.bump().span;
+            let value = self.expr()?;
+            items.push(ColorItem {
+                key,
+                span: key_span.to(value.span),
+                value,
+            });
+        }
+        if !explicit && items.len() == 1 && items[0].key == ColorKey::Base {
+            return Ok(items.remove(0).value);
+        }
+        let span = start.to(items.last().map_or(start, |i| i.span));
+        Ok(Expr {
+            kind: ExprKind::Color(items),
+            span,
+        })
+    }
+
+    /// True when the next token can start an expression or colour; identifiers in `stop` (the
+    /// keywords of the enclosing block) cannot.
+    pub(super) fn starts_expr(&self, stop: &[&str]) -> bool {
+        match &self.peek().kind {
+            TokenKind::Number(_) => true,
+            TokenKind::Punct(c) => matches!(c, '<' | '(' | '-' | '+'),
+            TokenKind::Ident(w) => !stop.contains(&w.as_str()),
+            _ => false,
+        }
+    }
+
+    pub(super) fn expr(&mut self) -> PResult<Expr> {
+        let mut lhs = self.term()?;
+        loop {
+            let op = match self.peek().kind {
+                TokenKind::Punct('+') => BinOp::Add,
+                TokenKind::Punct('-') => BinOp::Sub,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.term()?;
+            lhs = Expr {
+                span: lhs.span.to(rhs.span),
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+            };
+        }
+    }
+
+    fn term(&mut self) -> PResult<Expr> {
+        let mut lhs = self.unary()?;
+        loop {
+            let op = match self.peek().kind {
+                TokenKind::Punct('*') => BinOp::Mul,
+                TokenKind::Punct('/') => BinOp::Div,
+                _ => return Ok(lhs),
+            };
+            self.bump();
+            let rhs = self.unary()?;
+            lhs = Expr {
+                span: lhs.span.to(rhs.span),
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+            };
+        }
+    }
+
+    fn unary(&mut self) -> PResult<Expr> {
+        let t = self.peek();
+        match t.kind {
+            TokenKind::Punct(c @ ('-' | '+')) => {
+                self.bump();
+                self.enter(t.span)?;
+                let inner = self.unary()?;
+                self.leave();
+                let span = t.span.to(inner.span);
+                Ok(if c == '-' {
+                    Expr {
+                        kind: ExprKind::Neg(Box::new(inner)),
+                        span,
+                    }
+                } else {
+                    inner
+                })
+            }
+            _ => self.primary(),
+        }
+    }
+
+    fn primary(&mut self) -> PResult<Expr> {
+        let t = self.peek();
+        match &t.kind {
+            TokenKind::Number(v) => {
+                self.bump();
+                Ok(Expr {
+                    kind: ExprKind::Number(*v),
+                    span: t.span,
+                })
+            }
+            TokenKind::Punct('(') => {
+                self.bump();
+                self.enter(t.span)?;
+                let inner = self.expr()?;
+                let close = self.expect_punct(')', "to close `(`")?;
+                self.leave();
+                Ok(Expr {
+                    kind: inner.kind,
+                    span: t.span.to(close),
+                })
+            }
+            TokenKind::Punct('<') => {
+                self.bump();
+                self.enter(t.span)?;
+                let mut parts = vec![self.expr()?];
+                while self.eat_punct(',') {
+                    parts.push(self.expr()?);
+                }
+                let close = self.expect_punct('>', "to close the vector")?;
+                self.leave();
+                let span = t.span.to(close);
+                if !(2..=5).contains(&parts.len()) {
+                    return Err(Diag::new(
+                        span,
+                        format!("a vector has 2 to 5 components, found {}", parts.len()),
+                    ));
+                }
+                Ok(Expr {
+                    kind: ExprKind::Vector(parts),
+                    span,
+                })
+            }
+            TokenKind::Ident(word) => self.word(word, t.span),
+            _ => Err(Diag::new(
+                t.span,
+                format!("expected an expression, found {}", t.describe()),
+            )),
+        }
+    }
+
+    fn word(&mut self, word: &str, span: crate::pov::source::Span) -> PResult<Expr> {
+        let constant = match word {
+            "x" => Some(ExprKind::Vector3([1.0, 0.0, 0.0])),
+            "y" => Some(ExprKind::Vector3([0.0, 1.0, 0.0])),
+            "z" => Some(ExprKind::Vector3([0.0, 0.0, 1.0])),
+            "pi" => Some(ExprKind::Number(std::f64::consts::PI)),
+            "true" | "yes" | "on" => Some(ExprKind::Number(1.0)),
+            "false" | "no" | "off" => Some(ExprKind::Number(0.0)),
+            "version" => Some(ExprKind::Version),
+            _ => None,
+        };
+        if let Some(kind) = constant {
+            self.bump();
+            return Ok(Expr { kind, span });
+        }
+        if matches!(word, "color" | "colour") || color_key(word).is_some() {
+            self.enter(span)?;
+            let c = self.color();
+            self.leave();
+            return c;
+        }
+        if let Some(&(_, arity)) = FUNCTIONS.iter().find(|(name, _)| *name == word) {
+            self.bump();
+            self.expect_punct('(', &format!("after `{word}`"))?;
+            self.enter(span)?;
+            let mut args = vec![self.expr()?];
+            while self.eat_punct(',') {
+                args.push(self.expr()?);
+            }
+            let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
+            self.leave();
+            if args.len() != arity {
+                return Err(Diag::new(
+                    span,
+                    format!("`{word}` takes {arity} argument(s), found {}", args.len()),
+                ));
+            }
+            return Ok(Expr {
+                kind: ExprKind::Call(word.to_string(), args),
+                span: span.to(close),
+            });
+        }
+        if super::RESERVED.contains(&word) {
+            return Err(Diag::new(
+                span,
+                format!("expected an expression, found `{word}`"),
+            ));
+        }
+        if super::is_pov_keyword(word) {
+            return Err(Diag::new(
+                span,
+                format!("`{word}` is not supported in an expression"),
+            ));
+        }
+        self.bump();
+        Ok(Expr {
+            kind: ExprKind::Ident(word.to_string()),
+            span,
+        })
+    }
+}

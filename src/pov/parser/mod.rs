@@ -1,0 +1,505 @@
+//! Parser: tokens → syntax tree (`ast`). Knows the grammar of strahl's subset of POV-Ray's
+//! language and rejects everything else by name; evaluates nothing (that is `lower`'s job).
+//!
+//! Split by topic: `expr` (expressions, colours), `scene` (camera, lights, objects) and
+//! `textures` (pigment, normal, finish, texture, interior).
+
+mod expr;
+mod scene;
+mod textures;
+
+use super::ast::{DeclValue, Stmt};
+use super::lexer::{Token, TokenKind};
+use super::source::{Diag, PResult, Span};
+
+/// Deepest nesting of blocks, parentheses and vectors; deeper input is rejected so that hostile
+/// files cannot overflow the stack of this recursive-descent parser.
+pub const MAX_DEPTH: usize = 64;
+
+/// Every word that has a meaning in strahl's subset, and so cannot be `#declare`d.
+const RESERVED: &[&str] = &[
+    "camera",
+    "location",
+    "look_at",
+    "angle",
+    "right",
+    "up",
+    "direction",
+    "sky",
+    "light_source",
+    "background",
+    "global_settings",
+    "assumed_gamma",
+    "max_trace_level",
+    "ambient_light",
+    "sphere",
+    "plane",
+    "box",
+    "triangle",
+    "polygon",
+    "object",
+    "pigment",
+    "normal",
+    "finish",
+    "texture",
+    "interior",
+    "rotate",
+    "scale",
+    "translate",
+    "color",
+    "colour",
+    "rgb",
+    "rgbf",
+    "rgbt",
+    "rgbft",
+    "red",
+    "green",
+    "blue",
+    "filter",
+    "transmit",
+    "checker",
+    "wood",
+    "color_map",
+    "colour_map",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "bumps",
+    "ambient",
+    "diffuse",
+    "brilliance",
+    "phong",
+    "phong_size",
+    "specular",
+    "roughness",
+    "reflection",
+    "ior",
+    "x",
+    "y",
+    "z",
+    "pi",
+    "version",
+    "true",
+    "false",
+    "yes",
+    "no",
+    "on",
+    "off",
+];
+
+/// Parses one file's tokens (`text` is only used to quote positions in messages).
+pub fn parse(tokens: &[Token], text: &str) -> PResult<Vec<Stmt>> {
+    let mut p = Parser {
+        tokens,
+        pos: 0,
+        depth: 0,
+        text,
+    };
+    let stmts = p.stmts(false)?;
+    Ok(stmts)
+}
+
+pub(crate) struct Parser<'a> {
+    tokens: &'a [Token],
+    pos: usize,
+    depth: usize,
+    text: &'a str,
+}
+
+impl<'a> Parser<'a> {
+    // ---- token helpers -------------------------------------------------------------------
+
+    fn peek(&self) -> &'a Token {
+        // `lex` always ends with Eof, and `bump` never moves past it.
+        &self.tokens[self.pos.min(self.tokens.len() - 1)]
+    }
+
+    fn bump(&mut self) -> &'a Token {
+        let t = self.peek();
+        if t.kind != TokenKind::Eof {
+            self.pos += 1;
+        }
+        t
+    }
+
+    fn peek_ident(&self) -> Option<&'a str> {
+        match &self.peek().kind {
+            TokenKind::Ident(s) => Some(s.as_str()),
+            _ => None,
+        }
+    }
+
+    fn is_punct(&self, c: char) -> bool {
+        self.peek().kind == TokenKind::Punct(c)
+    }
+
+    fn eat_punct(&mut self, c: char) -> bool {
+        if self.is_punct(c) {
+            self.bump();
+            true
+        } else {
+            false
+        }
+    }
+
+    fn expect_punct(&mut self, c: char, context: &str) -> PResult<Span> {
+        if self.is_punct(c) {
+            return Ok(self.bump().span);
+        }
+        let t = self.peek();
+        Err(Diag::new(
+            t.span,
+            format!("expected `{c}` {context}, found {}", t.describe()),
+        ))
+    }
+
+    /// "3:1" for a span in this file, for messages that point back at an opener.
+    fn line_col(&self, span: Span) -> String {
+        let before = &self.text[..(span.start as usize).min(self.text.len())];
+        let line = before.matches('\n').count() + 1;
+        let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        format!("{line}:{col}")
+    }
+
+    /// Counts one level of nesting; pair with `leave`.
+    fn enter(&mut self, span: Span) -> PResult<()> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(Diag::new(
+                span,
+                format!("nesting deeper than {MAX_DEPTH} levels"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.depth -= 1;
+    }
+
+    /// Consumes `{` after a block keyword and counts the nesting level.
+    fn open_block(&mut self, keyword: &str, kw_span: Span) -> PResult<()> {
+        self.expect_punct('{', &format!("after `{keyword}`"))?;
+        self.enter(kw_span)
+    }
+
+    /// At the end of a block body: consumes `}` or reports what was found instead.
+    fn close_block(&mut self, keyword: &str, kw_span: Span) -> PResult<Span> {
+        if self.is_punct('}') {
+            self.leave();
+            return Ok(self.bump().span);
+        }
+        let t = self.peek();
+        Err(Diag::new(
+            t.span,
+            format!(
+                "expected `}}` to close `{keyword}` opened at {}, found {}",
+                self.line_col(kw_span),
+                t.describe()
+            ),
+        ))
+    }
+
+    /// True at the end of a block body (`}` or end of file).
+    fn at_block_end(&self) -> bool {
+        matches!(self.peek().kind, TokenKind::Punct('}') | TokenKind::Eof)
+    }
+
+    /// The error for a word a block does not accept.
+    fn unknown_in(&self, context: &str, expected: &[&str]) -> Diag {
+        let t = self.peek();
+        let list = expected.join(", ");
+        let message = match &t.kind {
+            TokenKind::Ident(word) if is_pov_keyword(word) => {
+                format!("`{word}` is not supported in {context} (supported: {list})")
+            }
+            TokenKind::Ident(word) => {
+                format!("unknown keyword `{word}` in {context} (expected one of: {list})")
+            }
+            TokenKind::Eof => {
+                format!("unexpected end of file in {context}")
+            }
+            _ => format!(
+                "unexpected {} in {context} (expected one of: {list})",
+                t.describe()
+            ),
+        };
+        Diag::new(t.span, message)
+    }
+
+    // ---- statements ----------------------------------------------------------------------
+
+    /// Statements until end of file, or until `#end` when `in_conditional`.
+    fn stmts(&mut self, in_conditional: bool) -> PResult<Vec<Stmt>> {
+        let mut out = Vec::new();
+        loop {
+            let t = self.peek();
+            match &t.kind {
+                TokenKind::Eof => {
+                    if in_conditional {
+                        return Err(Diag::new(t.span, "expected `#end`, found end of file"));
+                    }
+                    return Ok(out);
+                }
+                TokenKind::Directive(d) if d == "end" => {
+                    if in_conditional {
+                        return Ok(out);
+                    }
+                    return Err(Diag::new(
+                        t.span,
+                        "`#end` without a matching `#ifdef` or `#ifndef`",
+                    ));
+                }
+                TokenKind::Directive(d) => {
+                    let d = d.clone();
+                    out.push(self.directive(&d)?);
+                }
+                TokenKind::Punct(';') => {
+                    // A stray `;` after an object or declaration, as POV-Ray tolerates.
+                    self.bump();
+                }
+                _ => out.push(self.item()?),
+            }
+        }
+    }
+
+    fn directive(&mut self, name: &str) -> PResult<Stmt> {
+        let start = self.bump().span;
+        match name {
+            "version" => {
+                let value = self.expr()?;
+                self.eat_punct(';');
+                Ok(Stmt::Version {
+                    span: start.to(value.span),
+                    value,
+                })
+            }
+            "include" => {
+                let t = self.bump();
+                match &t.kind {
+                    TokenKind::Str(path) => Ok(Stmt::Include {
+                        path: path.clone(),
+                        span: start,
+                        path_span: t.span,
+                    }),
+                    _ => Err(Diag::new(
+                        t.span,
+                        format!(
+                            "expected a file name string after `#include`, found {}",
+                            t.describe()
+                        ),
+                    )),
+                }
+            }
+            "declare" | "local" => self.declare(name == "local", start),
+            "ifdef" | "ifndef" => {
+                self.enter(start)?;
+                self.expect_punct('(', &format!("after `#{name}`"))?;
+                let t = self.bump();
+                let ident = match &t.kind {
+                    TokenKind::Ident(s) => s.clone(),
+                    _ => {
+                        return Err(Diag::new(
+                            t.span,
+                            format!(
+                                "expected an identifier in `#{name}`, found {}",
+                                t.describe()
+                            ),
+                        ))
+                    }
+                };
+                self.expect_punct(')', &format!("to close `#{name}`"))?;
+                let body = self.stmts(true)?;
+                self.bump(); // the `#end`
+                self.leave();
+                Ok(Stmt::IfDef {
+                    name: ident,
+                    negate: name == "ifndef",
+                    body,
+                    span: start,
+                })
+            }
+            // `lex` rejects every other directive by name; `#end` is handled by `stmts`.
+            _ => Err(Diag::new(start, format!("`#{name}` is not allowed here"))),
+        }
+    }
+
+    fn declare(&mut self, local: bool, start: Span) -> PResult<Stmt> {
+        let t = self.bump();
+        let name = match &t.kind {
+            TokenKind::Ident(s) => s.clone(),
+            _ => {
+                return Err(Diag::new(
+                    t.span,
+                    format!(
+                        "expected an identifier after `#declare`, found {}",
+                        t.describe()
+                    ),
+                ))
+            }
+        };
+        if RESERVED.contains(&name.as_str()) || is_pov_keyword(&name) {
+            return Err(Diag::new(
+                t.span,
+                format!("cannot declare `{name}`: it is a keyword"),
+            ));
+        }
+        let name_span = t.span;
+        self.expect_punct('=', &format!("after `#declare {name}`"))?;
+        let value = match self.peek_ident() {
+            Some("pigment") => DeclValue::Pigment(self.pigment()?),
+            Some("normal") => DeclValue::Normal(self.normal()?),
+            Some("finish") => DeclValue::Finish(self.finish()?),
+            Some("texture") => DeclValue::Texture(self.texture()?),
+            Some("interior") => DeclValue::Interior(self.interior()?),
+            Some(word) if scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
+                DeclValue::Object(self.object()?)
+            }
+            _ => DeclValue::Expr(self.color()?),
+        };
+        self.eat_punct(';');
+        Ok(Stmt::Declare {
+            name,
+            local,
+            value,
+            span: start.to(name_span),
+        })
+    }
+}
+
+/// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
+pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
+    "torus",
+    "cylinder",
+    "cone",
+    "disc",
+    "union",
+    "difference",
+    "intersection",
+    "merge",
+    "blob",
+    "mesh",
+    "mesh2",
+    "height_field",
+    "isosurface",
+    "julia_fractal",
+    "lathe",
+    "prism",
+    "sor",
+    "superellipsoid",
+    "text",
+    "quadric",
+    "cubic",
+    "quartic",
+    "poly",
+    "bicubic_patch",
+    "sphere_sweep",
+    "parametric",
+    "ovus",
+    "lemon",
+    "light_group",
+];
+
+/// Other POV-Ray words strahl knows of but does not support, so messages can say "not supported"
+/// instead of "unknown".
+const UNSUPPORTED_WORDS: &[&str] = &[
+    "media",
+    "photons",
+    "area_light",
+    "spotlight",
+    "cylinder",
+    "parallel",
+    "fog",
+    "radiosity",
+    "sky_sphere",
+    "rainbow",
+    "no_shadow",
+    "no_image",
+    "no_reflection",
+    "hollow",
+    "double_illuminate",
+    "matrix",
+    "transform",
+    "inverse",
+    "bounded_by",
+    "clipped_by",
+    "material",
+    "metallic",
+    "irid",
+    "crand",
+    "conserve_energy",
+    "fresnel",
+    "caustics",
+    "dispersion",
+    "fade_distance",
+    "fade_power",
+    "falloff",
+    "radius",
+    "tightness",
+    "point_at",
+    "shadowless",
+    "looks_like",
+    "projected_through",
+    "orthographic",
+    "fisheye",
+    "ultra_wide_angle",
+    "omnimax",
+    "panoramic",
+    "spherical",
+    "focal_point",
+    "aperture",
+    "blur_samples",
+    "gradient",
+    "marble",
+    "agate",
+    "bozo",
+    "granite",
+    "leopard",
+    "onion",
+    "spiral1",
+    "spiral2",
+    "spotted",
+    "waves",
+    "wrinkles",
+    "ripples",
+    "dents",
+    "crackle",
+    "hexagon",
+    "brick",
+    "image_map",
+    "bump_map",
+    "pigment_map",
+    "normal_map",
+    "texture_map",
+    "material_map",
+    "slope_map",
+    "uv_mapping",
+    "quick_color",
+    "warp",
+    "frequency",
+    "phase",
+    "ramp_wave",
+    "sine_wave",
+    "triangle_wave",
+    "scallop_wave",
+    "cubic_wave",
+    "poly_wave",
+    "noise_generator",
+    "emission",
+    "subsurface",
+    "charset",
+    "hf_gray_16",
+    "max_intersections",
+    "number_of_waves",
+    "adc_bailout",
+    "irid_wavelength",
+    "mm_per_unit",
+];
+
+fn is_pov_keyword(word: &str) -> bool {
+    UNSUPPORTED_SHAPES.contains(&word) || UNSUPPORTED_WORDS.contains(&word)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,322 @@
+//! Top-level items: camera, light_source, background, global_settings and objects with their
+//! modifiers.
+
+use super::{Parser, UNSUPPORTED_SHAPES};
+use crate::pov::ast::{
+    CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
+    TransformKind,
+};
+use crate::pov::source::{Diag, PResult};
+
+const TOP_LEVEL: &[&str] = &[
+    "camera",
+    "light_source",
+    "background",
+    "global_settings",
+    "object",
+    "sphere",
+    "plane",
+    "box",
+    "triangle",
+    "polygon",
+];
+const SHAPES: &str = "sphere, plane, box, triangle, polygon";
+const CAMERA: &[&str] = &[
+    "location",
+    "look_at",
+    "angle",
+    "right",
+    "up",
+    "direction",
+    "sky",
+    "perspective",
+    "rotate",
+    "translate",
+];
+const LIGHT: &[&str] = &[
+    "color",
+    "colour",
+    "rgb",
+    "rgbf",
+    "rgbt",
+    "rgbft",
+    "rotate",
+    "scale",
+    "translate",
+];
+const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
+/// What may follow an object's arguments.
+pub const MODIFIERS: &[&str] = &[
+    "pigment",
+    "normal",
+    "finish",
+    "texture",
+    "interior",
+    "rotate",
+    "scale",
+    "translate",
+];
+
+pub fn is_object_keyword(word: &str) -> bool {
+    shape_kind(word).is_some() || word == "object"
+}
+
+fn shape_kind(word: &str) -> Option<ShapeKind> {
+    Some(match word {
+        "sphere" => ShapeKind::Sphere,
+        "plane" => ShapeKind::Plane,
+        "box" => ShapeKind::Box,
+        "triangle" => ShapeKind::Triangle,
+        "polygon" => ShapeKind::Polygon,
+        _ => return None,
+    })
+}
+
+/// Arguments each shape takes, as named in messages.
+fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
+    match kind {
+        ShapeKind::Sphere => &["center", "radius"],
+        ShapeKind::Plane => &["normal", "distance"],
+        ShapeKind::Box => &["corner1", "corner2"],
+        ShapeKind::Triangle => &["a", "b", "c"],
+        ShapeKind::Polygon => &["number of points", "points"],
+    }
+}
+
+impl Parser<'_> {
+    /// One top-level item (not a directive).
+    pub(super) fn item(&mut self) -> PResult<Stmt> {
+        match self.peek_ident() {
+            Some("camera") => self.camera(),
+            Some("light_source") => self.light().map(Stmt::Light),
+            Some("background") => {
+                let kw = self.bump().span;
+                self.open_block("background", kw)?;
+                let color = self.color()?;
+                self.close_block("background", kw)?;
+                Ok(Stmt::Background { color, span: kw })
+            }
+            Some("global_settings") => self.global_settings(),
+            Some(w) if is_object_keyword(w) => self.object().map(Stmt::Object),
+            Some(w) if UNSUPPORTED_SHAPES.contains(&w) => Err(Diag::new(
+                self.peek().span,
+                format!("`{w}` is not supported (supported: {SHAPES})"),
+            )),
+            _ => Err(self.unknown_in("the scene", TOP_LEVEL)),
+        }
+    }
+
+    fn camera(&mut self) -> PResult<Stmt> {
+        let kw = self.bump().span;
+        self.open_block("camera", kw)?;
+        let mut items = Vec::new();
+        while !self.at_block_end() {
+            let item = match self.peek_ident() {
+                Some("perspective") => {
+                    // The default (and only) projection strahl supports.
+                    self.bump();
+                    continue;
+                }
+                Some("rotate" | "translate") => CameraItem::Transform(self.transform_item()?),
+                Some(
+                    word
+                    @ ("location" | "look_at" | "angle" | "right" | "up" | "direction" | "sky"),
+                ) => {
+                    self.bump();
+                    let e = self.expr()?;
+                    match word {
+                        "location" => CameraItem::Location(e),
+                        "look_at" => CameraItem::LookAt(e),
+                        "angle" => CameraItem::Angle(e),
+                        "right" => CameraItem::Right(e),
+                        "up" => CameraItem::Up(e),
+                        "direction" => CameraItem::Direction(e),
+                        _ => CameraItem::Sky(e),
+                    }
+                }
+                _ => return Err(self.unknown_in("camera", &CAMERA[..7])),
+            };
+            items.push(item);
+        }
+        self.close_block("camera", kw)?;
+        Ok(Stmt::Camera { items, span: kw })
+    }
+
+    fn light(&mut self) -> PResult<Light> {
+        let kw = self.bump().span;
+        self.open_block("light_source", kw)?;
+        if self.at_block_end() {
+            return Err(Diag::new(
+                self.peek().span,
+                "light_source needs a position, found none",
+            ));
+        }
+        let position = self.expr()?;
+        self.eat_punct(',');
+        let mut color = None;
+        let mut transforms = Vec::new();
+        while !self.at_block_end() {
+            match self.peek_ident() {
+                Some("rotate" | "scale" | "translate") => transforms.push(self.transform_item()?),
+                Some(w) if LIGHT.contains(&w) => color = Some(self.color()?),
+                _ => return Err(self.unknown_in("light_source", LIGHT)),
+            }
+        }
+        self.close_block("light_source", kw)?;
+        Ok(Light {
+            position,
+            color,
+            transforms,
+            span: kw,
+        })
+    }
+
+    fn global_settings(&mut self) -> PResult<Stmt> {
+        let kw = self.bump().span;
+        self.open_block("global_settings", kw)?;
+        let mut items = Vec::new();
+        while !self.at_block_end() {
+            let item = match self.peek_ident() {
+                Some("assumed_gamma") => {
+                    self.bump();
+                    GlobalItem::AssumedGamma(self.expr()?)
+                }
+                Some("max_trace_level") => {
+                    self.bump();
+                    GlobalItem::MaxTraceLevel(self.expr()?)
+                }
+                Some("ambient_light") => {
+                    self.bump();
+                    GlobalItem::AmbientLight(self.color()?)
+                }
+                _ => return Err(self.unknown_in("global_settings", GLOBAL)),
+            };
+            items.push(item);
+        }
+        self.close_block("global_settings", kw)?;
+        Ok(Stmt::GlobalSettings { items, span: kw })
+    }
+
+    /// `rotate V`, `scale V` or `translate V`.
+    pub(super) fn transform_item(&mut self) -> PResult<TransformItem> {
+        let t = self.bump();
+        let kind = match self.text.get(t.span.start as usize..t.span.end as usize) {
+            Some("rotate") => TransformKind::Rotate,
+            Some("scale") => TransformKind::Scale,
+            _ => TransformKind::Translate,
+        };
+        let value = self.expr()?;
+        Ok(TransformItem {
+            kind,
+            span: t.span.to(value.span),
+            value,
+        })
+    }
+
+    /// A shape or `object { ... }` with its modifiers.
+    pub(super) fn object(&mut self) -> PResult<Object> {
+        let word = self.peek_ident().unwrap_or("");
+        let kw = self.peek().span;
+        if UNSUPPORTED_SHAPES.contains(&word) {
+            return Err(Diag::new(
+                kw,
+                format!("`{word}` is not supported (supported: {SHAPES})"),
+            ));
+        }
+        let word = word.to_string();
+        self.bump();
+        self.open_block(&word, kw)?;
+        let kind = match shape_kind(&word) {
+            Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
+            None => {
+                if !self.starts_expr(MODIFIERS) {
+                    return Err(Diag::new(
+                        self.peek().span,
+                        format!(
+                            "expected the name of a declared object in `object`, found {}",
+                            self.peek().describe()
+                        ),
+                    ));
+                }
+                ObjectKind::Ref(self.expr()?)
+            }
+        };
+        let mut modifiers = Vec::new();
+        while !self.at_block_end() {
+            let m = match self.peek_ident() {
+                Some("pigment") => Modifier::Pigment(self.pigment()?),
+                Some("normal") => Modifier::Normal(self.normal()?),
+                Some("finish") => Modifier::Finish(self.finish()?),
+                Some("texture") => Modifier::Texture(self.texture()?),
+                Some("interior") => Modifier::Interior(self.interior()?),
+                Some("rotate" | "scale" | "translate") => {
+                    Modifier::Transform(self.transform_item()?)
+                }
+                None if self.is_punct(',') => {
+                    let message = match shape_kind(&word) {
+                        Some(s) if s != ShapeKind::Polygon => {
+                            let names = shape_args(s);
+                            format!(
+                                "{word} takes {} arguments ({}); found an extra `,`",
+                                names.len(),
+                                names.join(", ")
+                            )
+                        }
+                        _ => format!("unexpected `,` in {word}"),
+                    };
+                    return Err(Diag::new(self.peek().span, message));
+                }
+                _ => return Err(self.unknown_in(&word, MODIFIERS)),
+            };
+            modifiers.push(m);
+        }
+        self.close_block(&word, kw)?;
+        Ok(Object {
+            kind,
+            modifiers,
+            span: kw,
+        })
+    }
+
+    /// The comma-separated arguments of a shape; commas are optional, as in POV-Ray.
+    fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
+        let names = shape_args(shape);
+        let mut args = Vec::new();
+        if shape == ShapeKind::Polygon {
+            if !self.starts_expr(MODIFIERS) {
+                return Err(Diag::new(
+                    self.peek().span,
+                    "polygon needs the number of points, then the points",
+                ));
+            }
+            args.push(self.expr()?);
+            loop {
+                let save = self.pos;
+                self.eat_punct(',');
+                if !self.starts_expr(MODIFIERS) {
+                    self.pos = save;
+                    break;
+                }
+                args.push(self.expr()?);
+            }
+            return Ok(args);
+        }
+        for i in 0..names.len() {
+            if i > 0 {
+                self.eat_punct(',');
+            }
+            if !self.starts_expr(MODIFIERS) {
+                return Err(Diag::new(
+                    self.peek().span,
+                    format!(
+                        "{word} needs {} arguments ({}), found {i}",
+                        names.len(),
+                        names.join(", ")
+                    ),
+                ));
+            }
+            args.push(self.expr()?);
+        }
+        Ok(args)
+    }
+}

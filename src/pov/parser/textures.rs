@@ -1,0 +1,288 @@
+//! Surface blocks: pigment, normal, finish, texture and interior.
+
+use super::expr::color_key;
+use super::Parser;
+use crate::pov::ast::{
+    Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal, NormalItem, Pigment,
+    PigmentItem, Texture, TextureItem, Turb, TurbKind,
+};
+use crate::pov::lexer::TokenKind;
+use crate::pov::source::{Diag, PResult};
+
+const PIGMENT: &[&str] = &[
+    "color",
+    "colour",
+    "rgb",
+    "rgbf",
+    "rgbt",
+    "rgbft",
+    "checker",
+    "wood",
+    "color_map",
+    "colour_map",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "rotate",
+    "scale",
+    "translate",
+];
+const NORMAL: &[&str] = &[
+    "bumps",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "rotate",
+    "scale",
+    "translate",
+];
+const FINISH: &[&str] = &[
+    "ambient",
+    "diffuse",
+    "brilliance",
+    "phong",
+    "phong_size",
+    "specular",
+    "roughness",
+    "reflection",
+];
+const TEXTURE: &[&str] = &[
+    "pigment",
+    "normal",
+    "finish",
+    "rotate",
+    "scale",
+    "translate",
+];
+const INTERIOR: &[&str] = &["ior"];
+
+fn turb_kind(word: &str) -> Option<TurbKind> {
+    Some(match word {
+        "turbulence" => TurbKind::Turbulence,
+        "octaves" => TurbKind::Octaves,
+        "omega" => TurbKind::Omega,
+        "lambda" => TurbKind::Lambda,
+        _ => return None,
+    })
+}
+
+impl Parser<'_> {
+    /// A leading declared name (`pigment { DMFWood4 scale 2 }`), if the block starts with one.
+    fn base(&mut self, keywords: &[&str]) -> PResult<Option<crate::pov::ast::Expr>> {
+        match &self.peek().kind {
+            TokenKind::Ident(w) if !keywords.contains(&w.as_str()) && color_key(w).is_none() => {
+                let w = w.clone();
+                if super::is_pov_keyword(&w) || super::RESERVED.contains(&w.as_str()) {
+                    return Ok(None);
+                }
+                Ok(Some(self.expr()?))
+            }
+            _ => Ok(None),
+        }
+    }
+
+    fn turb(&mut self, kind: TurbKind) -> PResult<Turb> {
+        self.bump();
+        Ok(Turb {
+            kind,
+            value: self.expr()?,
+        })
+    }
+
+    pub(super) fn pigment(&mut self) -> PResult<Pigment> {
+        let kw = self.bump().span;
+        self.open_block("pigment", kw)?;
+        let mut items = Vec::new();
+        if let Some(b) = self.base(PIGMENT)? {
+            items.push(PigmentItem::Base(b));
+        }
+        while !self.at_block_end() {
+            let item = match self.peek_ident() {
+                Some(w) if matches!(w, "color" | "colour") || color_key(w).is_some() => {
+                    PigmentItem::Color(self.color()?)
+                }
+                Some("checker") => {
+                    let span = self.bump().span;
+                    let mut colors = Vec::new();
+                    while colors.len() < 2 {
+                        let save = self.pos;
+                        if !colors.is_empty() {
+                            self.eat_punct(',');
+                        }
+                        if !self.starts_expr(&PIGMENT[6..]) {
+                            self.pos = save;
+                            break;
+                        }
+                        colors.push(self.color()?);
+                    }
+                    PigmentItem::Checker(colors, span)
+                }
+                Some("wood") => PigmentItem::Wood(self.bump().span),
+                Some("color_map" | "colour_map") => self.color_map()?,
+                Some(w) if turb_kind(w).is_some() => {
+                    PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
+                }
+                Some("rotate" | "scale" | "translate") => {
+                    PigmentItem::Transform(self.transform_item()?)
+                }
+                _ => return Err(self.unknown_in("pigment", PIGMENT)),
+            };
+            items.push(item);
+        }
+        let end = self.close_block("pigment", kw)?;
+        Ok(Pigment {
+            items,
+            span: kw.to(end),
+        })
+    }
+
+    fn color_map(&mut self) -> PResult<PigmentItem> {
+        let kw = self.bump().span;
+        self.open_block("color_map", kw)?;
+        let mut entries = Vec::new();
+        while !self.at_block_end() {
+            let open = self.expect_punct('[', "to start a color_map entry")?;
+            let value = self.expr()?;
+            self.eat_punct(',');
+            let color = self.color()?;
+            let close = self.expect_punct(']', "to close the color_map entry")?;
+            entries.push(MapEntry {
+                value,
+                color,
+                span: open.to(close),
+            });
+        }
+        self.close_block("color_map", kw)?;
+        if entries.is_empty() {
+            return Err(Diag::new(kw, "color_map needs at least one entry"));
+        }
+        Ok(PigmentItem::ColorMap(entries, kw))
+    }
+
+    pub(super) fn normal(&mut self) -> PResult<Normal> {
+        let kw = self.bump().span;
+        self.open_block("normal", kw)?;
+        let mut items = Vec::new();
+        if let Some(b) = self.base(NORMAL)? {
+            items.push(NormalItem::Base(b));
+        }
+        while !self.at_block_end() {
+            let item = match self.peek_ident() {
+                Some("bumps") => {
+                    let span = self.bump().span;
+                    let amount = if self.starts_expr(NORMAL) {
+                        Some(self.expr()?)
+                    } else {
+                        None
+                    };
+                    NormalItem::Bumps(amount, span)
+                }
+                Some(w) if turb_kind(w).is_some() => {
+                    NormalItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
+                }
+                Some("rotate" | "scale" | "translate") => {
+                    NormalItem::Transform(self.transform_item()?)
+                }
+                _ => return Err(self.unknown_in("normal", NORMAL)),
+            };
+            items.push(item);
+        }
+        let end = self.close_block("normal", kw)?;
+        Ok(Normal {
+            items,
+            span: kw.to(end),
+        })
+    }
+
+    pub(super) fn finish(&mut self) -> PResult<Finish> {
+        let kw = self.bump().span;
+        self.open_block("finish", kw)?;
+        let mut items = Vec::new();
+        if let Some(b) = self.base(FINISH)? {
+            items.push(FinishItem::Base(b));
+        }
+        while !self.at_block_end() {
+            let key = match self.peek_ident() {
+                Some("ambient") => FinishKey::Ambient,
+                Some("diffuse") => FinishKey::Diffuse,
+                Some("brilliance") => FinishKey::Brilliance,
+                Some("phong") => FinishKey::Phong,
+                Some("phong_size") => FinishKey::PhongSize,
+                Some("specular") => FinishKey::Specular,
+                Some("roughness") => FinishKey::Roughness,
+                Some("reflection") => FinishKey::Reflection,
+                _ => return Err(self.unknown_in("finish", FINISH)),
+            };
+            let kw_span = self.bump().span;
+            let value = if key == FinishKey::Reflection && self.is_punct('{') {
+                // `reflection { C }`: only the colour form of the block is supported.
+                self.enter(kw_span)?;
+                self.bump();
+                let c = self.color()?;
+                self.close_block("reflection", kw_span)?;
+                c
+            } else if matches!(key, FinishKey::Ambient | FinishKey::Reflection) {
+                self.color()?
+            } else {
+                self.expr()?
+            };
+            items.push(FinishItem::Set(key, value));
+        }
+        let end = self.close_block("finish", kw)?;
+        Ok(Finish {
+            items,
+            span: kw.to(end),
+        })
+    }
+
+    pub(super) fn texture(&mut self) -> PResult<Texture> {
+        let kw = self.bump().span;
+        self.open_block("texture", kw)?;
+        let mut items = Vec::new();
+        if let Some(b) = self.base(TEXTURE)? {
+            items.push(TextureItem::Base(b));
+        }
+        while !self.at_block_end() {
+            let item = match self.peek_ident() {
+                Some("pigment") => TextureItem::Pigment(self.pigment()?),
+                Some("normal") => TextureItem::Normal(self.normal()?),
+                Some("finish") => TextureItem::Finish(self.finish()?),
+                Some("rotate" | "scale" | "translate") => {
+                    TextureItem::Transform(self.transform_item()?)
+                }
+                _ => return Err(self.unknown_in("texture", TEXTURE)),
+            };
+            items.push(item);
+        }
+        let end = self.close_block("texture", kw)?;
+        Ok(Texture {
+            items,
+            span: kw.to(end),
+        })
+    }
+
+    pub(super) fn interior(&mut self) -> PResult<Interior> {
+        let kw = self.bump().span;
+        self.open_block("interior", kw)?;
+        let mut items = Vec::new();
+        if let Some(b) = self.base(INTERIOR)? {
+            items.push(InteriorItem::Base(b));
+        }
+        while !self.at_block_end() {
+            match self.peek_ident() {
+                Some("ior") => {
+                    self.bump();
+                    items.push(InteriorItem::Ior(self.expr()?));
+                }
+                _ => return Err(self.unknown_in("interior", INTERIOR)),
+            }
+        }
+        let end = self.close_block("interior", kw)?;
+        Ok(Interior {
+            items,
+            span: kw.to(end),
+        })
+    }
+}

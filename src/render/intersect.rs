@@ -60,6 +60,29 @@ impl Scene {
         best
     }
 
+    /// Whether anything lies on `ray` with `0 < t < t_max` (pbrt's `IntersectP`): stops at the
+    /// first hit found, in any order.
+    pub fn occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
+        for plane in &self.planes {
+            let hit = plane.intersect(ray, 0.0, t_max).is_some();
+            stats.count_test(ShapeKind::Plane, hit);
+            if hit {
+                return true;
+            }
+        }
+        let mut blocked = false;
+        stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
+            if blocked {
+                return None;
+            }
+            let t = self.test_prim(&self.prims[prim as usize], ray, t_max, stats)?;
+            blocked = true;
+            // A zero limit culls every remaining node and cell.
+            Some(t.min(0.0))
+        }) as u64;
+        blocked
+    }
+
     /// Geometric outward normal at a hit point.
     pub fn normal_at(&self, shape: HitShape, p: Vec3) -> Vec3 {
         match shape {

@@ -13,6 +13,8 @@ use crate::render::intersect::Hit;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::build::Scene;
+use crate::scene::material::Material;
+use crate::shading::pattern::Rgbft;
 use crate::shading::normal::perturb_normal;
 use crate::shading::pigment::{eval_pigment, PatternQuality};
 
@@ -66,6 +68,13 @@ impl<'a> Tracer<'a> {
     }
 
     fn shade(&mut self, ray: &Ray, hit: &Hit, level: u32, weight: f32) -> Vec3 {
+        let surface = self.surface(ray, hit);
+        self.shade_surface(ray, &surface, level, weight, Shadows::Trace)
+    }
+
+    /// Everything about a hit that lighting needs, computed once.
+    #[inline]
+    pub fn surface(&self, ray: &Ray, hit: &Hit) -> Surface<'a> {
         let scene = self.scene;
         let p = ray.at(hit.t);
         let material = &scene.materials[scene.material_of(hit.shape) as usize];
@@ -78,6 +87,14 @@ impl<'a> Tracer<'a> {
             None => facing,
         };
         let pigment = eval_pigment(&material.pigment, p, self.pattern_quality());
+        Surface { p, facing, normal, entering, material, pigment }
+    }
+
+    /// Lights `surface` and recurses into reflection and refraction. `shadows` says whether
+    /// shadow rays are traced here or were traced already, as packets (`render::packet`).
+    pub fn shade_surface(&mut self, ray: &Ray, surface: &Surface, level: u32, weight: f32, shadows: Shadows) -> Vec3 {
+        let scene = self.scene;
+        let Surface { p, facing, normal, entering, material, pigment } = *surface;
         let finish = &material.finish;
         let c = pigment.rgb;
         // Light passing through the surface does not also light it.
@@ -85,22 +102,14 @@ impl<'a> Tracer<'a> {
 
         let mut color = finish.ambient * c * scene.ambient_light * opacity;
         let reflected_dir = ray.dir - 2.0 * ray.dir.dot(normal) * normal;
-        let shadow_origin_normal = facing;
-        for light in &scene.lights {
-            let to_light = light.position - p;
-            let dist = to_light.length();
-            if dist == 0.0 {
-                continue;
-            }
-            let l = to_light / dist;
+        for (i, light) in scene.lights.iter().enumerate() {
+            let Some(shadow_ray) = shadow_ray_towards(surface, light.position) else { continue };
+            let l = shadow_ray.ray.dir;
             let n_dot_l = normal.dot(l);
-            if n_dot_l <= 0.0 || facing.dot(l) <= 0.0 {
-                continue;
-            }
-            let passed = if self.quality.shadows {
-                self.shadow(offset_origin(p, shadow_origin_normal, l), light.position, l)
-            } else {
-                Vec3::ONE
+            let passed = match shadows {
+                _ if !self.quality.shadows => Vec3::ONE,
+                Shadows::Trace => self.shadow(&shadow_ray),
+                Shadows::Given(pass) => Vec3::splat(pass[i]),
             };
             if passed == Vec3::ZERO {
                 continue;
@@ -163,22 +172,22 @@ impl<'a> Tracer<'a> {
         self.trace(&r, level + 1, weight, RayKind::Refracted)
     }
 
-    /// Light from a point light reaching `origin`: one for a clear path, zero when blocked,
+    /// Light from a point light passed along `shadow`: one for a clear path, zero when blocked,
     /// tinted by the filter and transmit of transparent surfaces on the way.
-    fn shadow(&mut self, origin: Vec3, light: Vec3, dir: Vec3) -> Vec3 {
+    fn shadow(&mut self, shadow: &ShadowRay) -> Vec3 {
         self.stats.shadow_rays += 1;
         let scene = self.scene;
+        if !scene.features.transparency {
+            let blocked = scene.occluded(&shadow.ray, shadow.t_max, &mut self.stats);
+            return if blocked { Vec3::ZERO } else { Vec3::ONE };
+        }
         let mut pass = Vec3::ONE;
-        let mut ray = Ray::new(origin, dir);
-        // Stop just short of the light, so a light lying on a surface still shines.
-        let mut t_max = (light - origin).length() * (1.0 - 4.0 * f32::EPSILON);
+        let mut ray = shadow.ray;
+        let mut t_max = shadow.t_max;
         for _ in 0..MAX_SHADOW_LAYERS {
             let Some(hit) = scene.intersect(&ray, t_max, &mut self.stats) else {
                 return pass;
             };
-            if !scene.features.transparency {
-                return Vec3::ZERO;
-            }
             let p = ray.at(hit.t);
             let material = &scene.materials[scene.material_of(hit.shape) as usize];
             let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
@@ -187,10 +196,63 @@ impl<'a> Tracer<'a> {
                 return Vec3::ZERO;
             }
             let n = scene.normal_at(hit.shape, p);
-            let next = offset_origin(p, n, dir);
-            t_max = (light - next).length() * (1.0 - 4.0 * f32::EPSILON);
-            ray = Ray::new(next, dir);
+            let next = offset_origin(p, n, ray.dir);
+            t_max = (shadow.light - next).length() * SHADOW_T_SHRINK;
+            ray = Ray::new(next, ray.dir);
         }
         Vec3::ZERO
     }
+}
+
+/// What `surface` computes for a hit.
+#[derive(Clone, Copy)]
+pub struct Surface<'a> {
+    pub p: Vec3,
+    /// Geometric normal turned towards the incoming ray.
+    pub facing: Vec3,
+    /// `facing` after the normal pattern (bumps).
+    pub normal: Vec3,
+    /// Whether the ray comes from outside (against the outward normal).
+    pub entering: bool,
+    pub material: &'a Material,
+    pub pigment: Rgbft,
+}
+
+/// Where light visibility comes from while shading.
+#[derive(Clone, Copy)]
+pub enum Shadows<'p> {
+    /// Trace a shadow ray per light now.
+    Trace,
+    /// Already traced: the light passed (0 or 1) per light, in scene order.
+    Given(&'p [f32]),
+}
+
+/// A shadow ray from a surface towards a light, and where it must stop.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowRay {
+    pub ray: Ray,
+    pub t_max: f32,
+    pub light: Vec3,
+}
+
+/// Stop shadow rays just short of the light, so a light lying on a surface still shines.
+const SHADOW_T_SHRINK: f32 = 1.0 - 4.0 * f32::EPSILON;
+
+/// The shadow ray a surface point sends towards a light, or `None` when the light is behind the
+/// surface as the viewer sees it (or on the point itself). Packets and single rays both build
+/// their shadow rays here, so they test the same rays bit for bit.
+#[inline]
+pub fn shadow_ray_towards(s: &Surface, light: Vec3) -> Option<ShadowRay> {
+    let to_light = light - s.p;
+    let dist = to_light.length();
+    if dist == 0.0 {
+        return None;
+    }
+    let l = to_light / dist;
+    if s.normal.dot(l) <= 0.0 || s.facing.dot(l) <= 0.0 {
+        return None;
+    }
+    let origin = offset_origin(s.p, s.facing, l);
+    Some(ShadowRay { ray: Ray::new(origin, l), t_max: (light - origin).length() * SHADOW_T_SHRINK, light })
+
 }

@@ -186,6 +186,7 @@ fn expressions_colors_and_declares() {
         "#include \"colors.inc\"\n#declare A = 2*3 - -1;\n#declare V = <1,2,3>*A/7 + y*(-20);\n\
          #local C = color Red filter 0.5;\n#declare D = Gray50 + rgbft <0,0,0,0.1,0.2>;\n\
          light_source { V color D }\nlight_source { <0,0,0>, rgb <sqrt(4), vlength(<3,4,0>), pow(2,3)> }\n\
+         light_source { <0,1,0>, Red }\n\
          background { rgbt <0.1, 0.2, 0.3, 0.4> }\n\
          global_settings { assumed_gamma 1.0 max_trace_level 7 ambient_light Gray10 }\n\
          sphere { 0, 1 pigment { color red 1 green 0.5 } finish { ambient 0.2 reflection rgb <0.1,0.2,0.3> } interior { ior 1.5 } }\n\
@@ -194,6 +195,7 @@ fn expressions_colors_and_declares() {
     .unwrap();
     assert_eq!(s.lights[0].position, DVec3::new(1.0, -18.0, 3.0));
     assert_eq!(s.lights[0].color, DVec3::splat(0.5));
+    assert_eq!(s.lights[2].color, DVec3::new(1.0, 0.0, 0.0));
     assert_eq!(s.lights[1].color, DVec3::new(2.0, 5.0, 8.0));
     assert_eq!(s.background.transmit, 0.4);
     assert_eq!(s.global.assumed_gamma, Some(1.0));
@@ -371,6 +373,8 @@ fn error_include_too_deep() {
     write(&d, "f40.inc", "");
     let e = load_scene(&d.join("f0.inc"), &IncludePath::default()).unwrap_err();
     assert!(e.message.contains("nested deeper than 32"), "{}", e.message);
+    assert!(e.file.ends_with("f32.inc"), "{}", e.file);
+    assert_eq!((e.line, e.col), (1, 1));
 }
 
 #[test]
@@ -418,6 +422,10 @@ fn error_unreadable_and_not_utf8() {
 
 #[test]
 fn error_deep_nesting_does_not_overflow() {
+    // A long operator chain builds a deep tree too; it must be refused, not recursed into.
+    let text = format!("#declare A = 1{};", "+1".repeat(100_000));
+    let (_, _, m) = err("e_chain", &text);
+    assert!(m.starts_with("nesting deeper than"), "{m}");
     let text = format!(
         "#declare A = {}1{};",
         "(".repeat(50_000),

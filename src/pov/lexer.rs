@@ -190,11 +190,6 @@ fn lex_number(bytes: &[u8], start: usize) -> Result<(f64, usize), String> {
     }
     // The slice is ASCII digits, '.', 'e' and a sign, so it is valid UTF-8.
     let s = std::str::from_utf8(&bytes[start..i]).map_err(|_| "malformed number".to_string())?;
-    let s = if s.ends_with('.') {
-        &s[..s.len() - 1]
-    } else {
-        s
-    };
     let value: f64 = s.parse().map_err(|_| format!("malformed number `{s}`"))?;
     if !value.is_finite() {
         return Err("number overflows to infinity".to_string());
@@ -236,13 +231,14 @@ mod tests {
     #[test]
     fn numbers_in_all_forms() {
         assert_eq!(
-            kinds("1 .5 1e-3 2. 3E2"),
+            kinds("1 .5 1e-3 2. 3E2 1.e1"),
             vec![
                 TokenKind::Number(1.0),
                 TokenKind::Number(0.5),
                 TokenKind::Number(1e-3),
                 TokenKind::Number(2.0),
                 TokenKind::Number(300.0),
+                TokenKind::Number(10.0),
                 TokenKind::Eof
             ]
         );

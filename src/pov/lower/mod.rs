@@ -175,3 +175,6 @@ impl<'f> Lowerer<'f> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -97,13 +97,21 @@ impl Parser<'_> {
 
     pub(super) fn expr(&mut self) -> PResult<Expr> {
         let mut lhs = self.term()?;
+        // Each operator in a chain deepens the (left-leaning) tree that `lower` walks
+        // recursively, so it counts as a level of nesting too.
+        let mut chained = 0;
         loop {
             let op = match self.peek().kind {
                 TokenKind::Punct('+') => BinOp::Add,
                 TokenKind::Punct('-') => BinOp::Sub,
-                _ => return Ok(lhs),
+                _ => {
+                    self.depth -= chained;
+                    return Ok(lhs);
+                }
             };
-            self.bump();
+            let op_span = self.bump().span;
+            self.enter(op_span)?;
+            chained += 1;
             let rhs = self.term()?;
             lhs = Expr {
                 span: lhs.span.to(rhs.span),
@@ -114,13 +122,19 @@ impl Parser<'_> {
 
     fn term(&mut self) -> PResult<Expr> {
         let mut lhs = self.unary()?;
+        let mut chained = 0;
         loop {
             let op = match self.peek().kind {
                 TokenKind::Punct('*') => BinOp::Mul,
                 TokenKind::Punct('/') => BinOp::Div,
-                _ => return Ok(lhs),
+                _ => {
+                    self.depth -= chained;
+                    return Ok(lhs);
+                }
             };
-            self.bump();
+            let op_span = self.bump().span;
+            self.enter(op_span)?;
+            chained += 1;
             let rhs = self.unary()?;
             lhs = Expr {
                 span: lhs.span.to(rhs.span),

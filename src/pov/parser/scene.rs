@@ -159,6 +159,13 @@ impl Parser<'_> {
             match self.peek_ident() {
                 Some("rotate" | "scale" | "translate") => transforms.push(self.transform_item()?),
                 Some(w) if LIGHT.contains(&w) => color = Some(self.color()?),
+                // A bare colour (`light_source { <0,4,-3>, White }`), as POV-Ray accepts.
+                _ if color.is_none()
+                    && self.starts_expr(&LIGHT[6..])
+                    && !self.peek_ident().is_some_and(super::is_pov_keyword) =>
+                {
+                    color = Some(self.color()?)
+                }
                 _ => return Err(self.unknown_in("light_source", LIGHT)),
             }
         }

@@ -79,6 +79,13 @@ impl RayGen {
     }
 }
 
+/// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
+/// for that pixel without antialiasing. For tools that ask what a pixel sees.
+pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u32, y: u32) -> Ray {
+    let gen = RayGen::new(camera, scene.origin);
+    gen.ray((x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32)
+}
+
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));

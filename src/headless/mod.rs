@@ -1,7 +1,15 @@
-//! Headless front ends: `render`, and the shared plumbing (loading, errors, thread pools).
-//! Nothing here touches a window.
+//! Headless front ends: `render`, `capture`, `bench`, and the shared plumbing (loading,
+//! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 
+pub mod bench;
+pub mod capture;
+#[cfg(test)]
+mod determinism;
+pub mod json;
+pub mod manifest;
+pub mod metrics;
 pub mod output;
+pub mod progress;
 pub mod render;
 pub mod report;
 
@@ -23,7 +31,10 @@ pub struct CliError {
 
 impl CliError {
     pub fn user(message: impl Into<String>) -> CliError {
-        CliError { message: message.into(), code: 2 }
+        CliError {
+            message: message.into(),
+            code: 2,
+        }
     }
 }
 
@@ -42,7 +53,9 @@ impl From<LocatedError> for CliError {
 /// The project's own include folder (`scenes/include`), found next to the executable's source
 /// tree at build time, so a fresh clone needs no POV-Ray installation.
 pub fn project_include_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("include")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join("include")
 }
 
 /// The include path in POV-Ray's order: `-L` dirs, then the project's library. (The including

@@ -31,7 +31,11 @@ pub struct Quality {
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality { max_trace_level: None, shadows: true, max_octaves: None }
+        Quality {
+            max_trace_level: None,
+            shadows: true,
+            max_octaves: None,
+        }
     }
 }
 
@@ -44,11 +48,21 @@ pub struct RenderSettings {
     pub quality: Quality,
     /// Tile edge in pixels.
     pub tile: u32,
+    /// Trace coherent primary rays in packets. Reported by `bench`; the packet tracer lands
+    /// later, until then every ray is traced singly whatever this says.
+    pub packets: bool,
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16 }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            aa: 1,
+            quality: Quality::default(),
+            tile: 16,
+            packets: true,
+        }
     }
 }
 
@@ -80,7 +94,12 @@ impl RayGen {
 }
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
-pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    image: &mut Image,
+) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGen::new(camera, scene.origin);
@@ -112,7 +131,15 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     stats
 }
 
-fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32) -> Vec3 {
+fn render_pixel(
+    tracer: &mut Tracer,
+    gen: &RayGen,
+    x: u32,
+    y: u32,
+    w: u32,
+    h: u32,
+    aa: u32,
+) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for sy in 0..aa {
         for sx in 0..aa {

@@ -461,4 +461,24 @@ mod tests {
             assert!((6.0..8.0).contains(&r), "radius {r} at {i}");
         }
     }
+
+    #[test]
+    fn shipped_fly_path_visits_the_hard_cases_without_entering_objects() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+        let path = CameraPath::load(&dir.join("seed.fly.path")).unwrap_or_else(|e| panic!("{e}"));
+        let pts: Vec<DVec3> = (0..=2000).map(|i| path.sample(i as f64 / 2000.0).0).collect();
+        let sphere_gap = pts.iter().map(|p| (*p - DVec3::new(0.0, 2.0, 4.0)).length() - 2.0).fold(f64::INFINITY, f64::min);
+        assert!((0.3..1.0).contains(&sphere_gap), "closest to the sphere: {sphere_gap}");
+        let lowest = pts.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
+        assert!((0.15..0.5).contains(&lowest), "lowest: {lowest}");
+        let farthest = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
+        assert!(farthest > 50.0, "farthest: {farthest}");
+        // Never inside the box (its unrotated frame: x -1..1, y 0..2, z -0.5..1.5, turned -20° about y).
+        let to_box = glam::DMat4::from_rotation_y((-20f64).to_radians()).inverse();
+        for p in &pts {
+            let q = to_box.transform_point3(*p);
+            let inside = (-1.0..=1.0).contains(&q.x) && (0.0..=2.0).contains(&q.y) && (-0.5..=1.5).contains(&q.z);
+            assert!(!inside, "inside the box at {p}");
+        }
+    }
 }

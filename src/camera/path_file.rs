@@ -245,12 +245,14 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
                     return Err(twice("closed"));
                 }
             }
-            other => return Err(p.err(
-                first.offset,
-                format!(
+            other => {
+                return Err(p.err(
+                    first.offset,
+                    format!(
                     "unknown keyword `{other}` (supported: key, spline, constant_speed, closed)"
                 ),
-            )),
+                ))
+            }
         }
         if let Some(extra) = c.next() {
             return Err(p.err(
@@ -466,9 +468,17 @@ mod tests {
     fn shipped_fly_path_visits_the_hard_cases_without_entering_objects() {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
         let path = CameraPath::load(&dir.join("seed.fly.path")).unwrap_or_else(|e| panic!("{e}"));
-        let pts: Vec<DVec3> = (0..=2000).map(|i| path.sample(i as f64 / 2000.0).0).collect();
-        let sphere_gap = pts.iter().map(|p| (*p - DVec3::new(0.0, 2.0, 4.0)).length() - 2.0).fold(f64::INFINITY, f64::min);
-        assert!((0.3..1.0).contains(&sphere_gap), "closest to the sphere: {sphere_gap}");
+        let pts: Vec<DVec3> = (0..=2000)
+            .map(|i| path.sample(i as f64 / 2000.0).0)
+            .collect();
+        let sphere_gap = pts
+            .iter()
+            .map(|p| (*p - DVec3::new(0.0, 2.0, 4.0)).length() - 2.0)
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            (0.3..1.0).contains(&sphere_gap),
+            "closest to the sphere: {sphere_gap}"
+        );
         let lowest = pts.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
         assert!((0.15..0.5).contains(&lowest), "lowest: {lowest}");
         let farthest = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
@@ -477,7 +487,9 @@ mod tests {
         let to_box = glam::DMat4::from_rotation_y((-20f64).to_radians()).inverse();
         for p in &pts {
             let q = to_box.transform_point3(*p);
-            let inside = (-1.0..=1.0).contains(&q.x) && (0.0..=2.0).contains(&q.y) && (-0.5..=1.5).contains(&q.z);
+            let inside = (-1.0..=1.0).contains(&q.x)
+                && (0.0..=2.0).contains(&q.y)
+                && (-0.5..=1.5).contains(&q.z);
             assert!(!inside, "inside the box at {p}");
         }
     }

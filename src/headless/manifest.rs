@@ -334,7 +334,7 @@ mod tests {
     #[test]
     fn merge_rejects_gaps_overlaps_and_strangers() {
         let a = manifest(vec![frame(0, 1.0), frame(1, 1.0)]);
-        assert!(Manifest::merge(&[a.clone()])
+        assert!(Manifest::merge(std::slice::from_ref(&a))
             .unwrap_err()
             .contains("no shard has frame 2, 3 of 4"));
         let b = manifest(vec![frame(1, 1.0), frame(2, 1.0), frame(3, 1.0)]);

@@ -7,8 +7,8 @@
 pub mod accel;
 pub mod camera;
 pub mod error;
-pub mod geometry;
 pub mod headless;
+pub mod geometry;
 pub mod pov;
 pub mod render;
 pub mod scene;

@@ -82,11 +82,7 @@ impl Common {
             width: self.width,
             height: self.height,
             aa: self.aa,
-            quality: Quality {
-                max_trace_level: self.max_depth,
-                shadows: !self.no_shadows,
-                max_octaves: self.max_octaves,
-            },
+            quality: Quality { max_trace_level: self.max_depth, shadows: !self.no_shadows, max_octaves: self.max_octaves },
             ..RenderSettings::default()
         }
     }

@@ -31,11 +31,7 @@ pub struct Quality {
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality {
-            max_trace_level: None,
-            shadows: true,
-            max_octaves: None,
-        }
+        Quality { max_trace_level: None, shadows: true, max_octaves: None }
     }
 }
 
@@ -55,14 +51,7 @@ pub struct RenderSettings {
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings {
-            width: 640,
-            height: 480,
-            aa: 1,
-            quality: Quality::default(),
-            tile: 16,
-            packets: true,
-        }
+        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, packets: true }
     }
 }
 
@@ -94,12 +83,7 @@ impl RayGen {
 }
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
-pub fn render(
-    scene: &Scene,
-    camera: &Camera,
-    settings: &RenderSettings,
-    image: &mut Image,
-) -> RenderStats {
+pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGen::new(camera, scene.origin);
@@ -131,15 +115,7 @@ pub fn render(
     stats
 }
 
-fn render_pixel(
-    tracer: &mut Tracer,
-    gen: &RayGen,
-    x: u32,
-    y: u32,
-    w: u32,
-    h: u32,
-    aa: u32,
-) -> Vec3 {
+fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32) -> Vec3 {
     let mut sum = Vec3::ZERO;
     for sy in 0..aa {
         for sx in 0..aa {

@@ -5,7 +5,8 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use strahl::headless::{self, CliError};
+use strahl::headless::capture::{self, FrameRange};
+use strahl::headless::{self, bench, CliError};
 use strahl::render::{Quality, RenderSettings};
 use strahl::scene::build::AccelKind;
 
@@ -20,6 +21,10 @@ struct Cli {
 enum Command {
     /// Render one still image of a scene to PNG and print POV-Ray-style statistics.
     Render(RenderCmd),
+    /// Render frames along a camera path to DIR/frame_NNNN.png plus DIR/manifest.json.
+    Capture(CaptureCmd),
+    /// Time render() over frames and report frame-time percentiles and rays per second.
+    Bench(BenchCmd),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -97,6 +102,62 @@ struct RenderCmd {
     common: Common,
 }
 
+#[derive(Args)]
+struct CaptureCmd {
+    /// The POV-Ray scene file.
+    #[arg(required_unless_present = "merge")]
+    scene: Option<PathBuf>,
+    /// Camera path file (see docs/camera-paths.md).
+    #[arg(long, required_unless_present = "merge")]
+    path: Option<PathBuf>,
+    /// Frames in the whole capture; frame i is at t = i/(N-1) on the path.
+    #[arg(long, value_name = "N", required_unless_present = "merge", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    frames: Option<u32>,
+    /// Render only frames START..END (END excluded) of the N, e.g. to shard across machines.
+    #[arg(long, value_name = "START..END")]
+    frames_range: Option<FrameRange>,
+    /// Output folder.
+    #[arg(short = 'o', long, value_name = "DIR")]
+    output: PathBuf,
+    /// Tile edge in pixels (does not change the pixels).
+    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    tile: u32,
+    /// Merge the manifests (and frames) of shard folders into -o DIR instead of rendering.
+    #[arg(long, num_args = 1.., value_name = "DIR", conflicts_with_all = ["scene", "path", "frames", "frames_range"])]
+    merge: Vec<PathBuf>,
+    /// Print nothing but errors, and no progress bar.
+    #[arg(short, long)]
+    quiet: bool,
+    #[command(flatten)]
+    common: Common,
+}
+
+#[derive(Args)]
+struct BenchCmd {
+    /// The POV-Ray scene file.
+    scene: PathBuf,
+    /// Camera path to follow; without it the scene's camera stays still.
+    #[arg(long)]
+    path: Option<PathBuf>,
+    /// Timed frames.
+    #[arg(long, value_name = "N", default_value_t = 30, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    frames: u32,
+    /// Untimed frames rendered first.
+    #[arg(long, value_name = "K", default_value_t = 3)]
+    warmup: u32,
+    /// Also write the results as JSON.
+    #[arg(long, value_name = "FILE")]
+    json: Option<PathBuf>,
+    /// Tile edge in pixels.
+    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    tile: u32,
+    /// Also run the bench at 1, 2, ... all cores and print a scaling table.
+    #[arg(long)]
+    threads_sweep: bool,
+    #[command(flatten)]
+    common: Common,
+}
+
 fn run(cli: Cli) -> Result<(), CliError> {
     match cli.command {
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
@@ -107,6 +168,38 @@ fn run(cli: Cli) -> Result<(), CliError> {
             threads: r.common.threads,
             accel: r.common.accel.into(),
             quiet: r.quiet,
+        }),
+        Command::Capture(c) if !c.merge.is_empty() => capture::run_merge(&c.merge, &c.output),
+        Command::Capture(c) => capture::run(&capture::CaptureArgs {
+            // clap enforces these unless --merge is given, which the arm above handles.
+            scene: c.scene.unwrap_or_default(),
+            path: c.path.unwrap_or_default(),
+            frames: c.frames.unwrap_or(0),
+            include: c.common.include.clone(),
+            range: c.frames_range,
+            output: c.output,
+            settings: RenderSettings {
+                tile: c.tile,
+                ..c.common.settings()
+            },
+            threads: c.common.threads,
+            accel: c.common.accel.into(),
+            quiet: c.quiet,
+        }),
+        Command::Bench(b) => bench::run(&bench::BenchArgs {
+            scene: b.scene,
+            include: b.common.include.clone(),
+            path: b.path,
+            frames: b.frames,
+            warmup: b.warmup,
+            json: b.json,
+            settings: RenderSettings {
+                tile: b.tile,
+                ..b.common.settings()
+            },
+            threads: b.common.threads,
+            accel: b.common.accel.into(),
+            threads_sweep: b.threads_sweep,
         }),
     }
 }

@@ -1,7 +1,15 @@
-//! Headless front ends: `render`, and the shared plumbing (loading, errors, thread pools).
-//! Nothing here touches a window.
+//! Headless front ends: `render`, `capture`, `bench`, and the shared plumbing (loading,
+//! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 
+pub mod bench;
+pub mod capture;
+#[cfg(test)]
+mod determinism;
+pub mod json;
+pub mod manifest;
+pub mod metrics;
 pub mod output;
+pub mod progress;
 pub mod render;
 pub mod report;
 

@@ -44,11 +44,14 @@ pub struct RenderSettings {
     pub quality: Quality,
     /// Tile edge in pixels.
     pub tile: u32,
+    /// Trace coherent primary rays in packets. Reported by `bench`; the packet tracer lands
+    /// later, until then every ray is traced singly whatever this says.
+    pub packets: bool,
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16 }
+        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, packets: true }
     }
 }
 

@@ -2,4 +2,5 @@
 
 pub mod build;
 pub mod desc;
+pub mod fixtures;
 pub mod material;

@@ -4,6 +4,12 @@
 //! primary ray through image coordinates (u, v) in [0,1]² points along
 //! `direction + (u - 0.5)·right + (0.5 - v)·up`, exactly as POV-Ray builds it. Rays are made
 //! relative to the scene's render origin (see `scene::build`) before they become f32.
+//!
+//! Camera paths (keyframed flights for capture and bench) live in `path`; their file format in
+//! `path_file`.
+
+pub mod path;
+mod path_file;
 
 use glam::DVec3;
 

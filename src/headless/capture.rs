@@ -1,0 +1,277 @@
+//! `strahl capture`: renders frames along a camera path to PNGs plus `manifest.json`, whole or
+//! as a shard (`--frames-range a..b`), and merges shard manifests (`--merge`).
+//!
+//! Frame i of N sits at t = i/(N-1) on the path, independent of the shard that renders it, and
+//! render space is always centred on the scene's own camera, so a frame's pixels depend only on
+//! (scene, path, N, i, settings): shards merge into exactly what one run would have written.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+use std::time::Instant;
+
+use sha2::{Digest, Sha256};
+
+use crate::camera::path::CameraPath;
+use crate::camera::Camera;
+use crate::headless::json::Json;
+use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Manifest};
+use crate::headless::progress::Progress;
+use crate::headless::{load, output, with_threads, CliError};
+use crate::render::image::Image;
+use crate::render::{render, RenderSettings};
+use crate::scene::build::{AccelKind, Scene};
+
+/// Frames `start..end` (half-open) of a capture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FrameRange {
+    pub start: u32,
+    pub end: u32,
+}
+
+impl FromStr for FrameRange {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<FrameRange, String> {
+        let bad =
+            || format!("`{s}` is not a frame range: write START..END, e.g. 0..12 (END excluded)");
+        let (a, b) = s.split_once("..").ok_or_else(bad)?;
+        let start: u32 = a.trim().parse().map_err(|_| bad())?;
+        let end: u32 = b.trim().parse().map_err(|_| bad())?;
+        if end <= start {
+            return Err(format!(
+                "frame range `{s}` is empty: END must be greater than START"
+            ));
+        }
+        Ok(FrameRange { start, end })
+    }
+}
+
+impl fmt::Display for FrameRange {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}..{}", self.start, self.end)
+    }
+}
+
+impl FrameRange {
+    /// Checks the range against the capture's frame count.
+    pub fn within(self, frames: u32) -> Result<FrameRange, CliError> {
+        if self.end > frames {
+            return Err(CliError::user(format!(
+                "--frames-range {self} is out of bounds: the capture has frames 0..{frames}"
+            )));
+        }
+        Ok(self)
+    }
+}
+
+/// Path position of frame `i` of `n`: 0 for the first, 1 for the last, 0 when there is one.
+pub fn frame_t(i: u32, n: u32) -> f64 {
+    if n <= 1 {
+        0.0
+    } else {
+        i as f64 / (n - 1) as f64
+    }
+}
+
+/// Lower-case hex SHA-256 of a byte buffer.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// Everything `capture` needs besides the loaded scene; `scene_name`/`path_name` go into the
+/// manifest as written by the user.
+pub struct CaptureJob<'a> {
+    pub scene_name: String,
+    pub path_name: String,
+    pub path: &'a CameraPath,
+    pub frames: u32,
+    pub range: FrameRange,
+    pub settings: RenderSettings,
+    pub accel: AccelKind,
+    pub quiet: bool,
+}
+
+/// What, besides the camera, decides the pixels: recorded so shards of different settings never
+/// merge. (Tile size and thread count are left out on purpose: they do not change pixels.)
+pub fn settings_json(s: &RenderSettings, accel: AccelKind) -> Json {
+    Json::object(vec![
+        ("aa", Json::Number(s.aa as f64)),
+        ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
+        ("shadows", Json::Bool(s.quality.shadows)),
+        ("max_octaves", Json::opt_u32(s.quality.max_octaves)),
+        ("accel", Json::str(accel.name())),
+    ])
+}
+
+/// Renders one frame into `image` and returns its 8-bit RGB pixels and the render time in ms.
+pub fn render_rgb8(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    image: &mut Image,
+) -> (Vec<u8>, f64) {
+    let start = Instant::now();
+    render(scene, camera, settings, image);
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    (image.to_rgb8(scene.srgb), ms)
+}
+
+/// Renders the job's frames into `out_dir` (which must exist) and returns their manifest, which
+/// the caller writes. Runs on the current rayon pool.
+pub fn capture(
+    scene: &Scene,
+    base: &Camera,
+    job: &CaptureJob,
+    out_dir: &Path,
+) -> Result<Manifest, CliError> {
+    let mut image = Image::new(job.settings.width, job.settings.height);
+    let progress = Progress::new(
+        (job.range.end - job.range.start) as u64,
+        "frames",
+        job.quiet,
+    );
+    let mut frames = Vec::new();
+    for index in job.range.start..job.range.end {
+        let t = frame_t(index, job.frames);
+        let (location, look_at, angle) = job.path.sample(t);
+        let camera = Camera::looking_at(location, look_at, angle, base);
+        let (rgb, render_ms) = render_rgb8(scene, &camera, &job.settings, &mut image);
+        let file = frame_file_name(index);
+        output::write_png(&out_dir.join(&file), image.width, image.height, &rgb)?;
+        frames.push(FrameRecord {
+            index,
+            t,
+            file,
+            camera: CameraRecord::new(&camera, look_at),
+            sha256: sha256_hex(&rgb),
+            render_ms,
+        });
+        progress.update((index + 1 - job.range.start) as u64);
+    }
+    progress.finish();
+    Ok(Manifest {
+        scene: job.scene_name.clone(),
+        path: job.path_name.clone(),
+        width: job.settings.width,
+        height: job.settings.height,
+        frame_count: job.frames,
+        settings: settings_json(&job.settings, job.accel),
+        frames,
+    })
+}
+
+pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
+    output::write_atomic(
+        &dir.join("manifest.json"),
+        manifest.to_json().to_pretty().as_bytes(),
+    )
+}
+
+fn create_dir(dir: &Path) -> Result<(), CliError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
+}
+
+pub struct CaptureArgs {
+    pub scene: PathBuf,
+    pub include: Vec<PathBuf>,
+    pub path: PathBuf,
+    pub frames: u32,
+    pub range: Option<FrameRange>,
+    pub output: PathBuf,
+    pub settings: RenderSettings,
+    pub threads: usize,
+    pub accel: AccelKind,
+    pub quiet: bool,
+}
+
+/// `strahl capture SCENE --path P ...`. Everything a user can get wrong (frame count, range,
+/// path file, scene) is checked before the output folder is created or a frame is written.
+pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
+    if args.frames == 0 {
+        return Err(CliError::user("--frames must be at least 1"));
+    }
+    let range = args
+        .range
+        .unwrap_or(FrameRange {
+            start: 0,
+            end: args.frames,
+        })
+        .within(args.frames)?;
+    let path = CameraPath::load(&args.path)?;
+    let (desc, _) = load(&args.scene, &args.include)?;
+    let scene = Scene::build(&desc, desc.camera.location, args.accel);
+    let base = Camera::from_desc(&desc.camera);
+    let job = CaptureJob {
+        scene_name: args.scene.display().to_string(),
+        path_name: args.path.display().to_string(),
+        path: &path,
+        frames: args.frames,
+        range,
+        settings: args.settings,
+        accel: args.accel,
+        quiet: args.quiet,
+    };
+    create_dir(&args.output)?;
+    let manifest = with_threads(args.threads, || capture(&scene, &base, &job, &args.output))??;
+    write_manifest(&args.output, &manifest)?;
+    if !args.quiet {
+        let total: f64 = manifest.frames.iter().map(|f| f.render_ms).sum();
+        println!(
+            "captured frames {range} of {} to {} ({:.1} ms/frame)",
+            args.frames,
+            args.output.display(),
+            total / manifest.frames.len().max(1) as f64
+        );
+        output::flush_stdout();
+    }
+    Ok(())
+}
+
+/// `strahl capture --merge DIR... -o OUT`: checks every shard's PNGs against its manifest,
+/// copies them into OUT (unless already there) and writes the merged manifest.
+pub fn run_merge(dirs: &[PathBuf], out: &Path) -> Result<(), CliError> {
+    let parts = dirs
+        .iter()
+        .map(|d| Manifest::read(d))
+        .collect::<Result<Vec<_>, _>>()?;
+    let merged =
+        Manifest::merge(&parts).map_err(|e| CliError::user(format!("cannot merge: {e}")))?;
+    // Verify before writing anything, so a bad shard leaves OUT untouched.
+    let mut copies = Vec::new();
+    for (dir, part) in dirs.iter().zip(&parts) {
+        for f in &part.frames {
+            let src = dir.join(&f.file);
+            let (_, _, rgb) = output::read_png(&src)?;
+            if sha256_hex(&rgb) != f.sha256 {
+                return Err(CliError::user(format!(
+                    "{}: pixels do not match the manifest's sha256",
+                    src.display()
+                )));
+            }
+            copies.push((src, out.join(&f.file)));
+        }
+    }
+    create_dir(out)?;
+    for (src, dst) in copies {
+        let same = matches!((src.canonicalize(), dst.canonicalize()), (Ok(a), Ok(b)) if a == b);
+        if !same {
+            let bytes = std::fs::read(&src)
+                .map_err(|e| CliError::user(format!("{}: cannot read: {e}", src.display())))?;
+            output::write_atomic(&dst, &bytes)?;
+        }
+    }
+    write_manifest(out, &merged)?;
+    println!(
+        "merged {} shards, {} frames, into {}",
+        dirs.len(),
+        merged.frames.len(),
+        out.display()
+    );
+    output::flush_stdout();
+    Ok(())
+}

@@ -6,6 +6,7 @@
 pub mod aabb;
 pub mod bvh;
 pub mod grid;
+pub mod packet;
 
 use crate::geometry::ray::Ray;
 use crate::scene::build::AccelKind;

@@ -1,0 +1,171 @@
+//! Packet traversal of the BVH: rows of eight rays (`Ray8`) walk the tree together.
+//!
+//! Modelled on the classic interactive-ray-tracing packet walk (Wald et al. 2001; tinybvh's
+//! `Intersect256Rays`): a node is entered by the whole packet if any ray wants it, and the
+//! packet keeps a range `first..=last` of rows still active, shrunk at every node, so rows that
+//! missed stop paying. A frustum interval test culls nodes that no ray of a shared-origin packet
+//! can reach before a single row is tested.
+
+use glam::Vec3;
+
+use super::bvh::{Bvh, BvhNode};
+use crate::geometry::lanes::{slabs, Lane, F8, M8, V3};
+
+/// Eight rays in structure-of-arrays form.
+#[derive(Clone, Copy, Debug)]
+pub struct Ray8 {
+    pub o: V3<F8>,
+    pub d: V3<F8>,
+    pub inv: V3<F8>,
+}
+
+impl Ray8 {
+    pub fn from_fn(f: impl Fn(usize) -> (Vec3, Vec3, Vec3)) -> Ray8 {
+        let mut r = Ray8 { o: V3::splat(Vec3::ZERO), d: V3::splat(Vec3::ZERO), inv: V3::splat(Vec3::ZERO) };
+        for i in 0..8 {
+            let (o, d, inv) = f(i);
+            (r.o.x.0[i], r.o.y.0[i], r.o.z.0[i]) = (o.x, o.y, o.z);
+            (r.d.x.0[i], r.d.y.0[i], r.d.z.0[i]) = (d.x, d.y, d.z);
+            (r.inv.x.0[i], r.inv.y.0[i], r.inv.z.0[i]) = (inv.x, inv.y, inv.z);
+        }
+        r
+    }
+}
+
+/// Bounds on the directions of a packet whose rays share one origin: for each axis the range
+/// of `1/d`, valid when every ray's component has the same sign.
+#[derive(Clone, Copy, Debug)]
+pub struct Frustum {
+    pub origin: Vec3,
+    pub inv_min: Vec3,
+    pub inv_max: Vec3,
+    /// Per axis: all components of one sign, so the interval bounds the slab distances.
+    pub coherent: [bool; 3],
+}
+
+impl Frustum {
+    pub fn new(origin: Vec3, rows: &[Ray8]) -> Frustum {
+        let mut inv_min = Vec3::splat(f32::INFINITY);
+        let mut inv_max = Vec3::splat(f32::NEG_INFINITY);
+        let mut pos = [true; 3];
+        let mut neg = [true; 3];
+        for r in rows {
+            for i in 0..8 {
+                let inv = Vec3::new(r.inv.x.0[i], r.inv.y.0[i], r.inv.z.0[i]);
+                inv_min = inv_min.min(inv);
+                inv_max = inv_max.max(inv);
+                for a in 0..3 {
+                    pos[a] &= inv[a] > 0.0 && inv[a].is_finite();
+                    neg[a] &= inv[a] < 0.0 && inv[a].is_finite();
+                }
+            }
+        }
+        Frustum { origin, inv_min, inv_max, coherent: [pos[0] || neg[0], pos[1] || neg[1], pos[2] || neg[2]] }
+    }
+
+    /// True when no ray of the packet can meet the box within `(0, t_max)`. Conservative: a
+    /// product `x·inv` is monotonic in `inv` under IEEE rounding, so every ray's own slab
+    /// distances lie inside the bounds computed from the interval ends.
+    #[inline(always)]
+    pub fn culls(&self, lo: Vec3, hi: Vec3, t_max: f32) -> bool {
+        let mut entry = f32::NEG_INFINITY;
+        let mut exit = f32::INFINITY;
+        for a in 0..3 {
+            if !self.coherent[a] {
+                continue;
+            }
+            let (near, far) = if self.inv_min[a] > 0.0 { (lo[a], hi[a]) } else { (hi[a], lo[a]) };
+            let n = near - self.origin[a];
+            let f = far - self.origin[a];
+            entry = entry.max((n * self.inv_min[a]).min(n * self.inv_max[a]));
+            exit = exit.min((f * self.inv_min[a]).max(f * self.inv_max[a]));
+        }
+        entry > exit || exit < 0.0 || entry > t_max
+    }
+}
+
+#[inline(always)]
+fn node_box(n: &BvhNode) -> (V3<F8>, V3<F8>) {
+    (V3::splat(Vec3::from_array(n.min)), V3::splat(Vec3::from_array(n.max)))
+}
+
+/// Whether any active ray of the row enters the node before its current `t`.
+#[inline(always)]
+fn row_enters(n: &BvhNode, r: &Ray8, t: F8, active: M8) -> bool {
+    let (lo, hi) = node_box(n);
+    let (near, far) = slabs(lo, hi, r.o, r.inv);
+    let zero = F8::splat(0.0);
+    let hit = F8::and(F8::and(near.le(far), zero.le(far)), near.le(t));
+    F8::and(hit, active).any()
+}
+
+impl Bvh {
+    /// Walks the tree with `rows` (up to 64 rays). `t[r]` holds each ray's current limit;
+    /// `test(prim, row, &mut t[row])` tests one primitive against one row and lowers the lanes
+    /// it hits. `active[r]` masks lanes that take part (e.g. shadow rays already blocked).
+    /// Returns the nodes visited.
+    #[inline(always)]
+    pub fn traverse_packet<F: FnMut(u32, usize, &mut F8)>(
+        &self,
+        rows: &[Ray8],
+        t: &mut [F8],
+        active: &[M8],
+        frustum: Option<&Frustum>,
+        mut test: F,
+    ) -> u32 {
+        if self.nodes.is_empty() || rows.is_empty() {
+            return 0;
+        }
+        let mut stack = [(0u32, 0u8, 0u8); 64];
+        let mut sp = 0usize;
+        let (mut node, mut first, mut last) = (0u32, 0usize, rows.len() - 1);
+        let mut visited = 0;
+        loop {
+            let n = &self.nodes[node as usize];
+            visited += 1;
+            let t_far = t[first..=last].iter().fold(0.0f32, |m, r| r.0.iter().fold(m, |m, &v| m.max(v)));
+            let culled = frustum.is_some_and(|f| f.culls(Vec3::from_array(n.min), Vec3::from_array(n.max), t_far));
+            if !culled {
+                // Early hit: the first row that enters the node; then the last one.
+                while first <= last && !row_enters(n, &rows[first], t[first], active[first]) {
+                    first += 1;
+                }
+                while last > first && !row_enters(n, &rows[last], t[last], active[last]) {
+                    last -= 1;
+                }
+            }
+            if !culled && first <= last {
+                if n.is_leaf() {
+                    for &p in &self.prim_order[n.first as usize..(n.first + n.count) as usize] {
+                        for r in first..=last {
+                            test(p, r, &mut t[r]);
+                        }
+                    }
+                } else {
+                    // Nearer child first, judged by the first active ray along the axis that
+                    // separates the children most.
+                    let a = &self.nodes[n.first as usize];
+                    let b = &self.nodes[n.first as usize + 1];
+                    let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
+                    let cb = Vec3::from_array(b.min) + Vec3::from_array(b.max);
+                    let sep = (cb - ca).abs();
+                    let axis = if sep.x >= sep.y && sep.x >= sep.z { 0 } else if sep.y >= sep.z { 1 } else { 2 };
+                    let d = [rows[first].d.x.0[0], rows[first].d.y.0[0], rows[first].d.z.0[0]][axis];
+                    let a_first = (cb[axis] - ca[axis]) * d >= 0.0;
+                    let (near, far) = if a_first { (n.first, n.first + 1) } else { (n.first + 1, n.first) };
+                    if sp < stack.len() {
+                        stack[sp] = (far, first as u8, last as u8);
+                        sp += 1;
+                    }
+                    node = near;
+                    continue;
+                }
+            }
+            if sp == 0 {
+                return visited;
+            }
+            sp -= 1;
+            (node, first, last) = (stack[sp].0, stack[sp].1 as usize, stack[sp].2 as usize);
+        }
+    }
+}

@@ -1,0 +1,257 @@
+//! Packet tracing: primary rays in 8×8 pixel blocks, and their shadow rays towards each point
+//! light as packets too. Everything after the first hit (shading, reflection, refraction) goes
+//! through the single-ray `Tracer`, so the image is bit-identical to single-ray rendering: the
+//! 8-wide kernels are the single-ray kernels (`geometry::lanes`), and shading is shared.
+//!
+//! AVX2 is used when the CPU has it (`is_x86_feature_detected!`): the same generic code is
+//! compiled twice, once inside a `#[target_feature(enable = "avx2")]` function. Without FMA
+//! contraction both compute identical bits, so the choice never shows in the image.
+
+use glam::Vec3;
+
+use crate::accel::packet::{Frustum, Ray8};
+use crate::accel::Accel;
+use crate::geometry::lanes::{self, Lane, F8, M8, V3};
+use crate::geometry::ray::Ray;
+use crate::render::intersect::{Hit, HitShape};
+use crate::render::stats::RenderStats;
+use crate::render::trace::{shadow_ray_towards, Shadows, Surface, Tracer};
+use crate::scene::build::{Scene, ShapeKind};
+
+/// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
+pub const BLOCK: u32 = 8;
+/// Lights whose shadows are traced as packets; scenes with more shade their primaries one by
+/// one with single-ray shadows.
+const MAX_PACKET_LIGHTS: usize = 8;
+
+/// `no hit` in a lane's id.
+const NO_HIT: u32 = u32::MAX;
+/// Ids at or above this are planes.
+const PLANE_ID: u32 = 1 << 31;
+
+/// Whether this scene and these settings can use packets.
+pub fn supported(scene: &Scene) -> bool {
+    matches!(scene.accel, Accel::Bvh(_))
+}
+
+/// Traces one block of primary rays (`rays[row][lane]`, `rows` rows valid, `lanes` lanes valid
+/// per row) and returns their colours, exactly as `Tracer::trace` would for each ray.
+pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+    let scene = tracer.scene;
+    let rows8: [Ray8; 8] = std::array::from_fn(|r| Ray8::from_fn(|i| (rays[r][i].origin, rays[r][i].dir, rays[r][i].inv_dir)));
+    let mut t = [F8::splat(lanes::MISS); 8];
+    let mut ids = [[NO_HIT; 8]; 8];
+    let frustum = Frustum::new(rays[0][0].origin, &rows8[..rows]);
+    intersect_rows(scene, &rows8[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
+    let n = (rows * lanes) as u64;
+    tracer.stats.primary_rays += n;
+    tracer.stats.max_depth = tracer.stats.max_depth.max(1);
+
+    // Surfaces first, so all shadow rays of the block can be traced together.
+    let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
+    for r in 0..rows {
+        for i in 0..lanes {
+            let hit = match ids[r][i] {
+                NO_HIT => continue,
+                id if id >= PLANE_ID => HitShape::Plane(id - PLANE_ID),
+                id => HitShape::Prim(id),
+            };
+            surfaces[r][i] = Some(tracer.surface(&rays[r][i], &Hit { t: t[r].0[i], shape: hit }));
+        }
+    }
+    let packet_shadows =
+        tracer.quality.shadows && !scene.features.transparency && scene.lights.len() <= MAX_PACKET_LIGHTS;
+    let mut pass = [[[1.0f32; MAX_PACKET_LIGHTS]; 8]; 8];
+    if packet_shadows {
+        for (l, light) in scene.lights.iter().enumerate() {
+            let mut shadow_rays = [[Ray::new(Vec3::ZERO, Vec3::Z); 8]; 8];
+            let mut t_max = [F8::splat(f32::NEG_INFINITY); 8];
+            let mut active = [M8::default(); 8];
+            for r in 0..rows {
+                for i in 0..lanes {
+                    let Some(s) = surfaces[r][i].as_ref().and_then(|s| shadow_ray_towards(s, light.position)) else { continue };
+                    shadow_rays[r][i] = s.ray;
+                    t_max[r].0[i] = s.t_max;
+                    active[r].0[i] = -1;
+                    tracer.stats.shadow_rays += 1;
+                }
+            }
+            let rows8: [Ray8; 8] = std::array::from_fn(|r| {
+                Ray8::from_fn(|i| (shadow_rays[r][i].origin, shadow_rays[r][i].dir, shadow_rays[r][i].inv_dir))
+            });
+            let blocked = occluded_rows(scene, &rows8[..rows], &mut t_max[..rows], &active[..rows], &mut tracer.stats);
+            for r in 0..rows {
+                for i in 0..lanes {
+                    if blocked[r].lane(i) {
+                        pass[r][i][l] = 0.0;
+                    }
+                }
+            }
+        }
+    }
+    let mut colors = [[Vec3::ZERO; 8]; 8];
+    for r in 0..rows {
+        for i in 0..lanes {
+            colors[r][i] = match &surfaces[r][i] {
+                None => scene.background.rgb,
+                Some(s) => {
+                    let shadows = if packet_shadows { Shadows::Given(&pass[r][i][..scene.lights.len()]) } else { Shadows::Trace };
+                    tracer.shade_surface(&rays[r][i], s, 1, 1.0, shadows)
+                }
+            };
+        }
+    }
+    colors
+}
+
+#[cfg(target_arch = "x86_64")]
+fn has_avx2() -> bool {
+    std::arch::is_x86_feature_detected!("avx2")
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+fn has_avx2() -> bool {
+    false
+}
+
+/// Nearest hits of up to eight rows of rays: planes, then the BVH.
+fn intersect_rows(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx2() {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { intersect_rows_avx2(scene, rows, t, ids, frustum, stats) };
+    }
+    intersect_rows_generic(scene, rows, t, ids, frustum, stats)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn intersect_rows_avx2(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+    intersect_rows_generic(scene, rows, t, ids, frustum, stats)
+}
+
+/// Records the lanes where `t_new` beats `t` as hits on `id`.
+#[inline(always)]
+fn take_nearer(t: &mut F8, ids: &mut [u32; 8], t_new: F8, id: u32) -> u32 {
+    let nearer = t_new.lt(*t);
+    *t = F8::select(nearer, t_new, *t);
+    let mut count = 0;
+    for i in 0..8 {
+        if nearer.lane(i) {
+            ids[i] = id;
+            count += 1;
+        }
+    }
+    count
+}
+
+#[inline(always)]
+fn intersect_rows_generic(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+    for (p, plane) in scene.planes.iter().enumerate() {
+        for (r, ray) in rows.iter().enumerate() {
+            let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t[r]);
+            let hits = take_nearer(&mut t[r], &mut ids[r], tp, PLANE_ID + p as u32);
+            stats.tests[ShapeKind::Plane as usize] += 8;
+            stats.hits[ShapeKind::Plane as usize] += hits as u64;
+        }
+    }
+    let Accel::Bvh(bvh) = &scene.accel else { return };
+    let all = [M8([-1; 8]); 8];
+    stats.nodes_visited += bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, |prim, r, t_row| {
+        let t_new = prim_row(scene, prim, &rows[r], *t_row);
+        let kind = scene.prims[prim as usize].kind;
+        let hits = take_nearer(t_row, &mut ids[r], t_new, prim);
+        stats.tests[kind as usize] += 8;
+        stats.hits[kind as usize] += hits as u64;
+    }) as u64;
+}
+
+/// One primitive against a row of rays: hit distances below `t_max`, else `MISS`.
+#[inline(always)]
+fn prim_row(scene: &Scene, prim: u32, ray: &Ray8, t_max: F8) -> F8 {
+    let p = &scene.prims[prim as usize];
+    let k = p.index as usize;
+    let zero = F8::splat(0.0);
+    match p.kind {
+        ShapeKind::Sphere => {
+            let s = &scene.spheres[k];
+            lanes::sphere(V3::splat(s.center), F8::splat(s.radius), ray.o, ray.d, zero, t_max)
+        }
+        ShapeKind::Box => {
+            let b = &scene.boxes[k];
+            let (lo, hi) = (V3::splat(b.min), V3::splat(b.max));
+            match &b.frame {
+                None => lanes::aabb(lo, hi, ray.o, ray.inv, zero, t_max),
+                Some(f) => {
+                    let o = ray.o.transform_point(&f.object_from_render);
+                    let d = ray.d.transform_vector(&f.object_from_render);
+                    lanes::aabb(lo, hi, o, d.recip(), zero, t_max)
+                }
+            }
+        }
+        ShapeKind::Triangle => {
+            let tri = &scene.triangles[k];
+            lanes::triangle(V3::splat(tri.v0), V3::splat(tri.e1), V3::splat(tri.e2), ray.o, ray.d, zero, t_max)
+        }
+        // Shapes without a packet kernel run the single-ray routine lane by lane.
+        ShapeKind::Ellipsoid | ShapeKind::Polygon | ShapeKind::Plane => F8(std::array::from_fn(|i| {
+            let single = Ray {
+                origin: Vec3::new(ray.o.x.0[i], ray.o.y.0[i], ray.o.z.0[i]),
+                dir: Vec3::new(ray.d.x.0[i], ray.d.y.0[i], ray.d.z.0[i]),
+                inv_dir: Vec3::new(ray.inv.x.0[i], ray.inv.y.0[i], ray.inv.z.0[i]),
+            };
+            let t = match p.kind {
+                ShapeKind::Ellipsoid => scene.ellipsoids[k].intersect(&single, 0.0, t_max.0[i]),
+                ShapeKind::Polygon => scene.polygons[k].intersect(&single, 0.0, t_max.0[i]),
+                _ => None,
+            };
+            t.unwrap_or(lanes::MISS)
+        })),
+    }
+}
+
+/// Which lanes of each row are blocked before their `t_max` (`IntersectP` for packets).
+fn occluded_rows(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx2() {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { occluded_rows_avx2(scene, rows, t_max, active, stats) };
+    }
+    occluded_rows_generic(scene, rows, t_max, active, stats)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn occluded_rows_avx2(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
+    occluded_rows_generic(scene, rows, t_max, active, stats)
+}
+
+#[inline(always)]
+fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
+    let mut blocked = [M8::default(); 8];
+    // A blocked lane's limit drops to -inf, which every node and primitive test rejects.
+    let block = |t: &mut F8, b: &mut M8, hit: M8| {
+        *b = F8::or(*b, hit);
+        *t = F8::select(hit, F8::splat(f32::NEG_INFINITY), *t);
+    };
+    for plane in &scene.planes {
+        for (r, ray) in rows.iter().enumerate() {
+            let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t_max[r]);
+            let hit = F8::and(tp.lt(F8::splat(lanes::MISS)), active[r]);
+            stats.tests[ShapeKind::Plane as usize] += 8;
+            stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+            block(&mut t_max[r], &mut blocked[r], hit);
+        }
+    }
+    if let Accel::Bvh(bvh) = &scene.accel {
+        stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, |prim, r, t_row| {
+            let t_new = prim_row(scene, prim, &rows[r], *t_row);
+            let hit = F8::and(t_new.lt(F8::splat(lanes::MISS)), active[r]);
+            let kind = scene.prims[prim as usize].kind;
+            stats.tests[kind as usize] += 8;
+            stats.hits[kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+            block(t_row, &mut blocked[r], hit);
+        }) as u64;
+    }
+    blocked
+}

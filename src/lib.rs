@@ -5,10 +5,12 @@
 //! `app` drive `render`.
 
 pub mod accel;
+pub mod app;
 pub mod camera;
 pub mod error;
-pub mod headless;
+pub mod fly;
 pub mod geometry;
+pub mod headless;
 pub mod pov;
 pub mod render;
 pub mod scene;

@@ -12,14 +12,18 @@ use strahl::scene::build::AccelKind;
 #[derive(Parser)]
 #[command(name = "strahl", version, about = "A real-time CPU ray tracer for POV-Ray scenes", long_about = None)]
 struct Cli {
+    /// Without a subcommand, opens the window on scenes/seed.pov (`strahl view`).
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Subcommand)]
 enum Command {
     /// Render one still image of a scene to PNG and print POV-Ray-style statistics.
     Render(RenderCmd),
+    /// Fly through a scene in a window: adaptive resolution while moving, progressive
+    /// antialiasing when still (converging to `strahl render` of the same camera).
+    View(ViewCmd),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -77,7 +81,11 @@ impl Common {
             width: self.width,
             height: self.height,
             aa: self.aa,
-            quality: Quality { max_trace_level: self.max_depth, shadows: !self.no_shadows, max_octaves: self.max_octaves },
+            quality: Quality {
+                max_trace_level: self.max_depth,
+                shadows: !self.no_shadows,
+                max_octaves: self.max_octaves,
+            },
             ..RenderSettings::default()
         }
     }
@@ -97,8 +105,60 @@ struct RenderCmd {
     common: Common,
 }
 
+#[derive(Args)]
+struct ViewCmd {
+    /// The POV-Ray scene file.
+    #[arg(default_value = "scenes/seed.pov")]
+    scene: PathBuf,
+    /// Frame rate the adaptive resolution aims at while the camera moves.
+    #[arg(long, value_name = "FPS", default_value_t = 60.0)]
+    target_fps: f64,
+    /// Present at least N frames, wait until the view has converged, save --screenshot, exit.
+    #[arg(long, value_name = "N")]
+    frames: Option<u64>,
+    /// PNG written by --frames and by F12 (default for F12: strahl-<time>.png).
+    #[arg(long, value_name = "PNG")]
+    screenshot: Option<PathBuf>,
+    #[command(flatten)]
+    common: Common,
+}
+
+fn view(v: ViewCmd) -> Result<(), CliError> {
+    if !(v.target_fps.is_finite() && v.target_fps > 0.0) {
+        return Err(CliError::user(format!(
+            "--target-fps must be a positive number, not {}",
+            v.target_fps
+        )));
+    }
+    let title = format!("strahl - {}", v.scene.display());
+    strahl::app::view_file(
+        &v.scene,
+        &v.common.include,
+        strahl::app::ViewOptions {
+            width: v.common.width,
+            height: v.common.height,
+            aa: v.common.aa,
+            quality: v.common.settings().quality,
+            threads: v.common.threads,
+            accel: v.common.accel.into(),
+            target_fps: v.target_fps,
+            frames: v.frames,
+            screenshot: v.screenshot,
+            title,
+        },
+    )
+}
+
 fn run(cli: Cli) -> Result<(), CliError> {
-    match cli.command {
+    let command = match cli.command {
+        Some(c) => c,
+        None => match Cli::parse_from(["strahl", "view"]).command {
+            Some(c) => c,
+            None => unreachable!("`strahl view` parses to the view command"),
+        },
+    };
+    match command {
+        Command::View(v) => view(v),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
             scene: r.scene,
             include: r.common.include.clone(),

@@ -4,8 +4,10 @@
 //! is a pure function of (scene, camera, settings): each pixel is computed independently and
 //! statistics are integer sums, so the result never depends on the thread count or tile order.
 
+pub mod adaptive;
 pub mod image;
 pub mod intersect;
+pub mod progressive;
 pub mod stats;
 pub mod trace;
 
@@ -31,7 +33,11 @@ pub struct Quality {
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality { max_trace_level: None, shadows: true, max_octaves: None }
+        Quality {
+            max_trace_level: None,
+            shadows: true,
+            max_octaves: None,
+        }
     }
 }
 
@@ -44,11 +50,23 @@ pub struct RenderSettings {
     pub quality: Quality,
     /// Tile edge in pixels.
     pub tile: u32,
+    /// `Some((sx, sy))`: trace only sub-sample (sx, sy) of the aa×aa grid and write it unaveraged
+    /// (clipped, or black where non-finite). Summing all aa² such images in row-major (sy, then sx)
+    /// order and dividing by aa² gives bit for bit the full `aa` render; `progressive` does that,
+    /// so a window can show a picture after one pass and converge to `strahl render --aa N`.
+    pub subsample: Option<(u32, u32)>,
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16 }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            aa: 1,
+            quality: Quality::default(),
+            tile: 16,
+            subsample: None,
+        }
     }
 }
 
@@ -80,7 +98,12 @@ impl RayGen {
 }
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
-pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    image: &mut Image,
+) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGen::new(camera, scene.origin);
@@ -88,6 +111,10 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     let tiles_x = w.div_ceil(tile);
     let tiles_y = h.div_ceil(tile);
     let aa = settings.aa.max(1);
+    let samples = match settings.subsample {
+        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
+        None => Samples::All,
+    };
     let out = SharedPixels(image.pixels.as_mut_ptr());
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
@@ -96,7 +123,7 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
             let mut tracer = Tracer::new(scene, &settings.quality);
             for y in ty * tile..((ty + 1) * tile).min(h) {
                 for x in tx * tile..((tx + 1) * tile).min(w) {
-                    let c = render_pixel(&mut tracer, &gen, x, y, w, h, aa);
+                    let c = render_pixel(&mut tracer, &gen, x, y, w, h, aa, samples);
                     // SAFETY: tiles partition the image, so each pixel is written by one task.
                     unsafe { out.write((y * w + x) as usize, c) };
                 }
@@ -108,26 +135,57 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
             a
         });
     stats.pixels = w as u64 * h as u64;
-    stats.samples = stats.pixels * (aa * aa) as u64;
+    stats.samples = match samples {
+        Samples::All => stats.pixels * (aa * aa) as u64,
+        Samples::One(..) => stats.pixels,
+    };
     stats
 }
 
-fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32) -> Vec3 {
-    let mut sum = Vec3::ZERO;
-    for sy in 0..aa {
-        for sx in 0..aa {
-            let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
-            let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-            let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
-            if c.is_finite() {
-                // POV-Ray clips each sample before averaging.
-                sum += c.clamp(Vec3::ZERO, Vec3::ONE);
-            } else {
-                tracer.stats.bad_samples += 1;
+/// Which of a pixel's aa×aa sub-samples to trace.
+#[derive(Clone, Copy, Debug)]
+enum Samples {
+    All,
+    One(u32, u32),
+}
+
+#[allow(clippy::too_many_arguments)]
+fn render_pixel(
+    tracer: &mut Tracer,
+    gen: &RayGen,
+    x: u32,
+    y: u32,
+    w: u32,
+    h: u32,
+    aa: u32,
+    samples: Samples,
+) -> Vec3 {
+    let mut sample = |sx: u32, sy: u32| {
+        let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
+        let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+        let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
+        if c.is_finite() {
+            // POV-Ray clips each sample before averaging.
+            c.clamp(Vec3::ZERO, Vec3::ONE)
+        } else {
+            tracer.stats.bad_samples += 1;
+            Vec3::ZERO
+        }
+    };
+    match samples {
+        Samples::One(sx, sy) => sample(sx, sy),
+        Samples::All => {
+            // Adding ZERO for a bad sample leaves the sum bit-identical to skipping it, and keeps
+            // the order of additions the one `progressive::Accumulator` reproduces.
+            let mut sum = Vec3::ZERO;
+            for sy in 0..aa {
+                for sx in 0..aa {
+                    sum += sample(sx, sy);
+                }
             }
+            sum / (aa * aa) as f32
         }
     }
-    sum / (aa * aa) as f32
 }
 
 /// A raw pointer to the image's pixels that tiles may write through concurrently.

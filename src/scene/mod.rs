@@ -3,3 +3,5 @@
 pub mod build;
 pub mod desc;
 pub mod material;
+#[doc(hidden)]
+pub mod testing;

@@ -19,23 +19,13 @@ pub struct Camera {
 
 impl Camera {
     pub fn from_desc(desc: &CameraDesc) -> Camera {
-        Camera {
-            location: desc.location,
-            direction: desc.direction,
-            right: desc.right,
-            up: desc.up,
-        }
+        Camera { location: desc.location, direction: desc.direction, right: desc.right, up: desc.up }
     }
 
     /// A camera at `location` looking at `look_at`, with POV-Ray's `look_at` rules: the vector
     /// lengths of `like` (which set the field of view and aspect) are kept, the sky is +y.
     /// `angle`, when given, is the horizontal field of view in degrees.
-    pub fn looking_at(
-        location: DVec3,
-        look_at: DVec3,
-        angle: Option<f64>,
-        like: &Camera,
-    ) -> Camera {
+    pub fn looking_at(location: DVec3, look_at: DVec3, angle: Option<f64>, like: &Camera) -> Camera {
         let right_len = like.right.length();
         let up_len = like.up.length();
         let mut dir_len = like.direction.length();
@@ -54,9 +44,7 @@ impl Camera {
 
     /// Horizontal field of view in degrees.
     pub fn angle_deg(&self) -> f64 {
-        2.0 * (0.5 * self.right.length() / self.direction.length())
-            .atan()
-            .to_degrees()
+        2.0 * (0.5 * self.right.length() / self.direction.length()).atan().to_degrees()
     }
 
     /// The point the camera looks at, one direction length ahead.
@@ -90,11 +78,7 @@ impl Basis {
         let mut right = sky.cross(forward);
         if right.length_squared() < 1e-24 {
             // Looking straight along the sky: any perpendicular will do, keep it stable.
-            right = DVec3::X
-                .cross(forward)
-                .cross(forward)
-                .normalize()
-                .cross(forward);
+            right = DVec3::X.cross(forward).cross(forward).normalize().cross(forward);
             if right.length_squared() < 1e-24 {
                 right = DVec3::X;
             }

@@ -26,17 +26,13 @@ impl LocatedError {
         let line_start = before.rfind('\n').map_or(0, |i| i + 1);
         let line = before.matches('\n').count() as u32 + 1;
         let col = before[line_start..].chars().count() as u32 + 1;
-        let line_end = text[line_start..]
-            .find('\n')
-            .map_or(text.len(), |i| line_start + i);
+        let line_end = text[line_start..].find('\n').map_or(text.len(), |i| line_start + i);
         LocatedError {
             file: file.to_string(),
             line,
             col,
             message: message.into(),
-            source_line: text[line_start..line_end]
-                .trim_end_matches('\r')
-                .to_string(),
+            source_line: text[line_start..line_end].trim_end_matches('\r').to_string(),
         }
     }
 
@@ -61,11 +57,7 @@ fn floor_char_boundary(text: &str, mut i: usize) -> usize {
 
 impl fmt::Display for LocatedError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{}:{}:{}: {}",
-            self.file, self.line, self.col, self.message
-        )?;
+        write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.message)?;
         if !self.source_line.is_empty() {
             // Tabs keep their width so the caret lines up under the column.
             let pad: String = self
@@ -91,10 +83,7 @@ mod tests {
         let text = "camera {\n  locaton <0,0,0>\n}";
         let e = LocatedError::at_offset("s.pov", text, 11, "unknown keyword `locaton`");
         assert_eq!((e.line, e.col), (2, 3));
-        assert_eq!(
-            e.to_string(),
-            "s.pov:2:3: unknown keyword `locaton`\n    locaton <0,0,0>\n    ^"
-        );
+        assert_eq!(e.to_string(), "s.pov:2:3: unknown keyword `locaton`\n    locaton <0,0,0>\n    ^");
     }
 
     #[test]

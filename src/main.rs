@@ -81,11 +81,7 @@ impl Common {
             width: self.width,
             height: self.height,
             aa: self.aa,
-            quality: Quality {
-                max_trace_level: self.max_depth,
-                shadows: !self.no_shadows,
-                max_octaves: self.max_octaves,
-            },
+            quality: Quality { max_trace_level: self.max_depth, shadows: !self.no_shadows, max_octaves: self.max_octaves },
             ..RenderSettings::default()
         }
     }
@@ -125,31 +121,25 @@ struct ViewCmd {
 
 fn view(v: ViewCmd) -> Result<(), CliError> {
     if !(v.target_fps.is_finite() && v.target_fps > 0.0) {
-        return Err(CliError::user(format!(
-            "--target-fps must be a positive number, not {}",
-            v.target_fps
-        )));
+        return Err(CliError::user(format!("--target-fps must be a positive number, not {}", v.target_fps)));
     }
-    let title = format!("strahl - {}", v.scene.display());
-    strahl::app::view_file(
-        &v.scene,
-        &v.common.include,
-        strahl::app::ViewOptions {
-            width: v.common.width,
-            height: v.common.height,
-            aa: v.common.aa,
-            quality: v.common.settings().quality,
-            threads: v.common.threads,
-            accel: v.common.accel.into(),
-            target_fps: v.target_fps,
-            frames: v.frames,
-            screenshot: v.screenshot,
-            title,
-        },
-    )
+    let options = strahl::app::ViewOptions {
+        width: v.common.width,
+        height: v.common.height,
+        aa: v.common.aa,
+        quality: v.common.settings().quality,
+        threads: v.common.threads,
+        accel: v.common.accel.into(),
+        target_fps: v.target_fps,
+        frames: v.frames,
+        screenshot: v.screenshot,
+        title: format!("strahl - {}", v.scene.display()),
+    };
+    strahl::app::view_file(&v.scene, &v.common.include, options)
 }
 
 fn run(cli: Cli) -> Result<(), CliError> {
+    // No subcommand means `strahl view` with its defaults, so `cargo run` opens the window.
     let command = match cli.command {
         Some(c) => c,
         None => match Cli::parse_from(["strahl", "view"]).command {

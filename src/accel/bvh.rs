@@ -59,33 +59,17 @@ struct BuildPrim {
 impl Bvh {
     /// Builds over primitives with the given bounds; index `i` of `bounds` is primitive `i`.
     pub fn build(bounds: &[Aabb]) -> Bvh {
-        let prims: Vec<BuildPrim> = bounds
-            .iter()
-            .map(|b| BuildPrim {
-                bounds: *b,
-                center: b.center(),
-            })
-            .collect();
-        let mut bvh = Bvh {
-            nodes: Vec::with_capacity(2 * prims.len().max(1)),
-            prim_order: (0..prims.len() as u32).collect(),
-        };
+        let prims: Vec<BuildPrim> =
+            bounds.iter().map(|b| BuildPrim { bounds: *b, center: b.center() }).collect();
+        let mut bvh = Bvh { nodes: Vec::with_capacity(2 * prims.len().max(1)), prim_order: (0..prims.len() as u32).collect() };
         if prims.is_empty() {
             return bvh;
         }
-        bvh.nodes.push(BvhNode {
-            min: [0.0; 3],
-            first: 0,
-            max: [0.0; 3],
-            count: prims.len() as u32,
-        });
+        bvh.nodes.push(BvhNode { min: [0.0; 3], first: 0, max: [0.0; 3], count: prims.len() as u32 });
         // Explicit stack: a million-primitive scene must not recurse a million deep on bad splits.
         let mut stack = vec![0usize];
         while let Some(node_index) = stack.pop() {
-            let (first, count) = (
-                bvh.nodes[node_index].first as usize,
-                bvh.nodes[node_index].count as usize,
-            );
+            let (first, count) = (bvh.nodes[node_index].first as usize, bvh.nodes[node_index].count as usize);
             let mut node_bounds = Aabb::EMPTY;
             let mut center_bounds = Aabb::EMPTY;
             for &p in &bvh.prim_order[first..first + count] {
@@ -98,15 +82,8 @@ impl Bvh {
                 continue;
             }
             let leaf_cost = count as f32;
-            let split = best_split(
-                &prims,
-                &bvh.prim_order[first..first + count],
-                &center_bounds,
-                node_bounds.half_area(),
-            );
-            let Some((axis, position, cost)) = split else {
-                continue;
-            };
+            let split = best_split(&prims, &bvh.prim_order[first..first + count], &center_bounds, node_bounds.half_area());
+            let Some((axis, position, cost)) = split else { continue };
             if cost >= leaf_cost && count <= MAX_LEAF {
                 continue;
             }
@@ -124,18 +101,8 @@ impl Bvh {
                 left = count / 2;
             }
             let child = bvh.nodes.len();
-            bvh.nodes.push(BvhNode {
-                min: [0.0; 3],
-                first: first as u32,
-                max: [0.0; 3],
-                count: left as u32,
-            });
-            bvh.nodes.push(BvhNode {
-                min: [0.0; 3],
-                first: (first + left) as u32,
-                max: [0.0; 3],
-                count: (count - left) as u32,
-            });
+            bvh.nodes.push(BvhNode { min: [0.0; 3], first: first as u32, max: [0.0; 3], count: left as u32 });
+            bvh.nodes.push(BvhNode { min: [0.0; 3], first: (first + left) as u32, max: [0.0; 3], count: (count - left) as u32 });
             bvh.nodes[node_index].first = child as u32;
             bvh.nodes[node_index].count = 0;
             stack.push(child);
@@ -164,12 +131,7 @@ impl Bvh {
     /// distance if it is nearer than `t_max`; traversal shrinks `t_max` as hits are found.
     /// Returns the number of nodes visited, for statistics.
     #[inline]
-    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(
-        &self,
-        ray: &Ray,
-        mut t_max: f32,
-        mut test: F,
-    ) -> u32 {
+    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(&self, ray: &Ray, mut t_max: f32, mut test: F) -> u32 {
         if self.nodes.is_empty() {
             return 0;
         }
@@ -177,19 +139,13 @@ impl Bvh {
         let mut sp = 0usize;
         let mut node = &self.nodes[0];
         let mut visited = 1;
-        let (root_near, root_far) = slabs(
-            Vec3::from_array(node.min),
-            Vec3::from_array(node.max),
-            ray.origin,
-            ray.inv_dir,
-        );
+        let (root_near, root_far) = slabs(Vec3::from_array(node.min), Vec3::from_array(node.max), ray.origin, ray.inv_dir);
         if root_near > root_far || root_far < 0.0 || root_near > t_max {
             return visited;
         }
         loop {
             if node.is_leaf() {
-                for &p in &self.prim_order[node.first as usize..(node.first + node.count) as usize]
-                {
+                for &p in &self.prim_order[node.first as usize..(node.first + node.count) as usize] {
                     if let Some(t) = test(p, t_max) {
                         t_max = t_max.min(t);
                     }
@@ -199,27 +155,13 @@ impl Bvh {
                 let a = &self.nodes[node.first as usize];
                 let b = &self.nodes[node.first as usize + 1];
                 visited += 2;
-                let (an, af) = slabs(
-                    Vec3::from_array(a.min),
-                    Vec3::from_array(a.max),
-                    ray.origin,
-                    ray.inv_dir,
-                );
-                let (bn, bf) = slabs(
-                    Vec3::from_array(b.min),
-                    Vec3::from_array(b.max),
-                    ray.origin,
-                    ray.inv_dir,
-                );
+                let (an, af) = slabs(Vec3::from_array(a.min), Vec3::from_array(a.max), ray.origin, ray.inv_dir);
+                let (bn, bf) = slabs(Vec3::from_array(b.min), Vec3::from_array(b.max), ray.origin, ray.inv_dir);
                 let hit_a = an <= af && af >= 0.0 && an <= t_max;
                 let hit_b = bn <= bf && bf >= 0.0 && bn <= t_max;
                 match (hit_a, hit_b) {
                     (true, true) => {
-                        let (near, far) = if an <= bn {
-                            (a, node.first + 1)
-                        } else {
-                            (b, node.first)
-                        };
+                        let (near, far) = if an <= bn { (a, node.first + 1) } else { (b, node.first) };
                         if sp < stack.len() {
                             stack[sp] = far;
                             sp += 1;
@@ -249,12 +191,7 @@ impl Bvh {
 }
 
 /// Best binned-SAH split: (axis, plane position, cost in primitive-test units).
-fn best_split(
-    prims: &[BuildPrim],
-    order: &[u32],
-    centers: &Aabb,
-    parent_area: f32,
-) -> Option<(usize, f32, f32)> {
+fn best_split(prims: &[BuildPrim], order: &[u32], centers: &Aabb, parent_area: f32) -> Option<(usize, f32, f32)> {
     let mut best: Option<(usize, f32, f32)> = None;
     for axis in 0..3 {
         let (lo, hi) = (centers.min[axis], centers.max[axis]);
@@ -287,8 +224,7 @@ fn best_split(
             acc.grow(&bin_bounds[i]);
             n += bin_count[i];
             let cost = TRAVERSAL_COST
-                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32)
-                    / parent_area.max(f32::MIN_POSITIVE);
+                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32) / parent_area.max(f32::MIN_POSITIVE);
             if left_count[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
                 best = Some((axis, lo + i as f32 / scale, cost));
             }
@@ -304,11 +240,7 @@ mod tests {
     fn boxes(n: usize) -> Vec<Aabb> {
         (0..n)
             .map(|i| {
-                let c = Vec3::new(
-                    (i % 10) as f32 * 3.0,
-                    ((i / 10) % 10) as f32 * 3.0,
-                    (i / 100) as f32 * 3.0,
-                );
+                let c = Vec3::new((i % 10) as f32 * 3.0, ((i / 10) % 10) as f32 * 3.0, (i / 100) as f32 * 3.0);
                 Aabb::new(c - 0.5, c + 0.5)
             })
             .collect()
@@ -317,12 +249,7 @@ mod tests {
     #[test]
     fn empty_and_single() {
         let empty = Bvh::build(&[]);
-        assert_eq!(
-            empty.traverse(&Ray::new(Vec3::ZERO, Vec3::Z), f32::INFINITY, |_, _| Some(
-                1.0
-            )),
-            0
-        );
+        assert_eq!(empty.traverse(&Ray::new(Vec3::ZERO, Vec3::Z), f32::INFINITY, |_, _| Some(1.0)), 0);
         let one = Bvh::build(&[Aabb::new(Vec3::splat(-1.0), Vec3::ONE)]);
         assert_eq!(one.nodes.len(), 1);
         assert!(one.nodes[0].is_leaf());
@@ -351,14 +278,7 @@ mod tests {
     #[test]
     fn degenerate_flat_bounds() {
         // Zero-thickness boxes (e.g. axis-aligned triangles) must still be found.
-        let b: Vec<Aabb> = (0..50)
-            .map(|i| {
-                Aabb::new(
-                    Vec3::new(i as f32, 0.0, 0.0),
-                    Vec3::new(i as f32 + 0.5, 1.0, 0.0),
-                )
-            })
-            .collect();
+        let b: Vec<Aabb> = (0..50).map(|i| Aabb::new(Vec3::new(i as f32, 0.0, 0.0), Vec3::new(i as f32 + 0.5, 1.0, 0.0))).collect();
         let bvh = Bvh::build(&b);
         let ray = Ray::new(Vec3::new(10.25, 0.5, -1.0), Vec3::Z);
         let mut found = vec![];

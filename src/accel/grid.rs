@@ -28,30 +28,17 @@ impl Grid {
             bounds.grow(b);
         }
         if prims.is_empty() {
-            return Grid {
-                bounds,
-                res: IVec3::ZERO,
-                cell_size: Vec3::ONE,
-                cell_start: vec![0],
-                items: vec![],
-            };
+            return Grid { bounds, res: IVec3::ZERO, cell_size: Vec3::ONE, cell_start: vec![0], items: vec![] };
         }
         // Pad degenerate (flat) extents so every axis has a positive size.
-        let extent = (bounds.max - bounds.min).max(Vec3::splat(
-            1e-6 * (bounds.max - bounds.min).max_element().max(1e-6),
-        ));
+        let extent = (bounds.max - bounds.min).max(Vec3::splat(1e-6 * (bounds.max - bounds.min).max_element().max(1e-6)));
         bounds.max = bounds.min + extent;
         let cells = CELLS_PER_PRIM * prims.len() as f32;
         let k = (cells / (extent.x * extent.y * extent.z)).cbrt();
-        let res = (extent * k)
-            .ceil()
-            .as_ivec3()
-            .clamp(IVec3::ONE, IVec3::splat(MAX_RES));
+        let res = (extent * k).ceil().as_ivec3().clamp(IVec3::ONE, IVec3::splat(MAX_RES));
         let cell_size = extent / res.as_vec3();
         let n_cells = (res.x * res.y * res.z) as usize;
-        let cell_of = |p: Vec3| {
-            (((p - bounds.min) / cell_size).floor().as_ivec3()).clamp(IVec3::ZERO, res - 1)
-        };
+        let cell_of = |p: Vec3| (((p - bounds.min) / cell_size).floor().as_ivec3()).clamp(IVec3::ZERO, res - 1);
         // Two passes (count, then fill) keep the cell lists in one flat array.
         let mut counts = vec![0u32; n_cells + 1];
         for b in prims {
@@ -82,22 +69,11 @@ impl Grid {
                 }
             }
         }
-        Grid {
-            bounds,
-            res,
-            cell_size,
-            cell_start: start,
-            items,
-        }
+        Grid { bounds, res, cell_size, cell_start: start, items }
     }
 
     /// Walks the cells the ray passes through, nearest first. Returns cells visited.
-    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(
-        &self,
-        ray: &Ray,
-        mut t_max: f32,
-        mut test: F,
-    ) -> u32 {
+    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(&self, ray: &Ray, mut t_max: f32, mut test: F) -> u32 {
         if self.items.is_empty() {
             return 0;
         }
@@ -107,26 +83,12 @@ impl Grid {
         }
         let t_enter = near.max(0.0);
         let p = ray.at(t_enter);
-        let mut cell = (((p - self.bounds.min) / self.cell_size).floor().as_ivec3())
-            .clamp(IVec3::ZERO, self.res - 1);
-        let step = IVec3::new(
-            dir_step(ray.dir.x),
-            dir_step(ray.dir.y),
-            dir_step(ray.dir.z),
-        );
+        let mut cell = (((p - self.bounds.min) / self.cell_size).floor().as_ivec3()).clamp(IVec3::ZERO, self.res - 1);
+        let step = IVec3::new(dir_step(ray.dir.x), dir_step(ray.dir.y), dir_step(ray.dir.z));
         // Distance along the ray to the next cell boundary on each axis, and between boundaries.
-        let next_boundary =
-            self.bounds.min + (cell + step.max(IVec3::ZERO)).as_vec3() * self.cell_size;
-        let mut t_next = Vec3::select(
-            step.cmpeq(IVec3::ZERO),
-            Vec3::INFINITY,
-            (next_boundary - ray.origin) * ray.inv_dir,
-        );
-        let t_delta = Vec3::select(
-            step.cmpeq(IVec3::ZERO),
-            Vec3::INFINITY,
-            (self.cell_size * ray.inv_dir).abs(),
-        );
+        let next_boundary = self.bounds.min + (cell + step.max(IVec3::ZERO)).as_vec3() * self.cell_size;
+        let mut t_next = Vec3::select(step.cmpeq(IVec3::ZERO), Vec3::INFINITY, (next_boundary - ray.origin) * ray.inv_dir);
+        let t_delta = Vec3::select(step.cmpeq(IVec3::ZERO), Vec3::INFINITY, (self.cell_size * ray.inv_dir).abs());
         let mut visited = 0;
         loop {
             visited += 1;
@@ -173,14 +135,8 @@ mod tests {
 
     #[test]
     fn finds_a_box_along_an_axis_parallel_ray() {
-        let prims: Vec<Aabb> = (0..10)
-            .map(|i| {
-                Aabb::new(
-                    Vec3::new(i as f32 * 2.0, 0.0, 0.0),
-                    Vec3::new(i as f32 * 2.0 + 1.0, 1.0, 1.0),
-                )
-            })
-            .collect();
+        let prims: Vec<Aabb> =
+            (0..10).map(|i| Aabb::new(Vec3::new(i as f32 * 2.0, 0.0, 0.0), Vec3::new(i as f32 * 2.0 + 1.0, 1.0, 1.0))).collect();
         let g = Grid::build(&prims);
         let ray = Ray::new(Vec3::new(-5.0, 0.5, 0.5), Vec3::X);
         let mut order = vec![];
@@ -196,11 +152,6 @@ mod tests {
     #[test]
     fn empty_grid_visits_nothing() {
         let g = Grid::build(&[]);
-        assert_eq!(
-            g.traverse(&Ray::new(Vec3::ZERO, Vec3::Z), f32::INFINITY, |_, _| Some(
-                0.0
-            )),
-            0
-        );
+        assert_eq!(g.traverse(&Ray::new(Vec3::ZERO, Vec3::Z), f32::INFINITY, |_, _| Some(0.0)), 0);
     }
 }

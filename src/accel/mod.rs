@@ -17,9 +17,7 @@ pub enum Accel {
     Bvh(Bvh),
     Grid(Grid),
     /// Brute force over `count` primitives: the chapter's first algorithm.
-    None {
-        count: u32,
-    },
+    None { count: u32 },
 }
 
 impl Accel {
@@ -27,9 +25,7 @@ impl Accel {
         match kind {
             AccelKind::Bvh => Accel::Bvh(Bvh::build(bounds)),
             AccelKind::Grid => Accel::Grid(Grid::build(bounds)),
-            AccelKind::None => Accel::None {
-                count: bounds.len() as u32,
-            },
+            AccelKind::None => Accel::None { count: bounds.len() as u32 },
         }
     }
 
@@ -45,12 +41,7 @@ impl Accel {
     /// them; `test` returns a hit nearer than `t_max`, which then shrinks the search.
     /// Returns the number of nodes or cells visited.
     #[inline]
-    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(
-        &self,
-        ray: &Ray,
-        t_max: f32,
-        mut test: F,
-    ) -> u32 {
+    pub fn traverse<F: FnMut(u32, f32) -> Option<f32>>(&self, ray: &Ray, t_max: f32, mut test: F) -> u32 {
         match self {
             Accel::Bvh(b) => b.traverse(ray, t_max, test),
             Accel::Grid(g) => g.traverse(ray, t_max, test),

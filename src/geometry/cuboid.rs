@@ -130,11 +130,7 @@ mod tests {
     use super::*;
 
     fn unit_box() -> Cuboid {
-        Cuboid {
-            min: Vec3::splat(-1.0),
-            max: Vec3::splat(1.0),
-            frame: None,
-        }
+        Cuboid { min: Vec3::splat(-1.0), max: Vec3::splat(1.0), frame: None }
     }
 
     #[test]
@@ -164,13 +160,8 @@ mod tests {
 
     #[test]
     fn rotated_box_matches_its_corners() {
-        let xf =
-            Affine3A::from_rotation_y(0.3) * Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0));
-        let b = Cuboid {
-            min: Vec3::splat(-1.0),
-            max: Vec3::splat(1.0),
-            frame: Some(frame_for(xf)),
-        };
+        let xf = Affine3A::from_rotation_y(0.3) * Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0));
+        let b = Cuboid { min: Vec3::splat(-1.0), max: Vec3::splat(1.0), frame: Some(frame_for(xf)) };
         let center = xf.transform_point3(Vec3::ZERO);
         let r = Ray::new(Vec3::ZERO, center.normalize());
         let t = b.intersect(&r, 0.0, f32::INFINITY).expect("hit");

@@ -28,10 +28,7 @@ impl Plane {
 mod tests {
     use super::*;
 
-    const FLOOR: Plane = Plane {
-        normal: Vec3::Y,
-        distance: 0.0,
-    };
+    const FLOOR: Plane = Plane { normal: Vec3::Y, distance: 0.0 };
 
     #[test]
     fn hit_from_above() {
@@ -61,13 +58,8 @@ mod tests {
 
     #[test]
     fn tangent_grazing_ray_hits_far_away() {
-        let r = Ray::new(
-            Vec3::new(0.0, 1.0, 0.0),
-            Vec3::new(1.0, -1e-6, 0.0).normalize(),
-        );
-        let t = FLOOR
-            .intersect(&r, 0.0, f32::INFINITY)
-            .expect("grazing hit");
+        let r = Ray::new(Vec3::new(0.0, 1.0, 0.0), Vec3::new(1.0, -1e-6, 0.0).normalize());
+        let t = FLOOR.intersect(&r, 0.0, f32::INFINITY).expect("grazing hit");
         assert!((t - 1e6).abs() / 1e6 < 1e-3);
     }
 }

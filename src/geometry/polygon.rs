@@ -24,11 +24,7 @@ impl Polygon {
         let mut n = Vec3::ZERO;
         for (i, a) in points.iter().enumerate() {
             let b = points[(i + 1) % points.len()];
-            n += Vec3::new(
-                (a.y - b.y) * (a.z + b.z),
-                (a.z - b.z) * (a.x + b.x),
-                (a.x - b.x) * (a.y + b.y),
-            );
+            n += Vec3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
         }
         let normal = n.normalize_or(Vec3::Y);
         let centroid = points.iter().copied().sum::<Vec3>() / points.len().max(1) as f32;
@@ -68,8 +64,7 @@ impl Polygon {
             return None;
         }
         let p = ray.at(t);
-        self.contains(Vec2::new(p[self.axes[0]], p[self.axes[1]]))
-            .then_some(t)
+        self.contains(Vec2::new(p[self.axes[0]], p[self.axes[1]])).then_some(t)
     }
 
     /// Even-odd rule: count crossings of a ray towards +u.
@@ -94,14 +89,7 @@ mod tests {
 
     /// An L-shaped (concave) outline in the plane z = 3.
     fn ell() -> Polygon {
-        let pts = [
-            (0.0, 0.0),
-            (2.0, 0.0),
-            (2.0, 1.0),
-            (1.0, 1.0),
-            (1.0, 2.0),
-            (0.0, 2.0),
-        ];
+        let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)];
         Polygon::new(&pts.map(|(x, y)| Vec3::new(x, y, 3.0)))
     }
 
@@ -110,11 +98,7 @@ mod tests {
         let p = ell();
         let at = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 0.0), Vec3::Z);
         assert_eq!(p.intersect(&at(0.5, 0.5), 0.0, f32::INFINITY), Some(3.0));
-        assert_eq!(
-            p.intersect(&at(1.5, 1.5), 0.0, f32::INFINITY),
-            None,
-            "notch"
-        );
+        assert_eq!(p.intersect(&at(1.5, 1.5), 0.0, f32::INFINITY), None, "notch");
         assert_eq!(p.intersect(&at(3.0, 0.5), 0.0, f32::INFINITY), None);
         let behind = Ray::new(Vec3::new(0.5, 0.5, 4.0), Vec3::Z);
         assert_eq!(p.intersect(&behind, 0.0, f32::INFINITY), None);

@@ -14,11 +14,7 @@ pub struct Ray {
 impl Ray {
     #[inline]
     pub fn new(origin: Vec3, dir: Vec3) -> Ray {
-        Ray {
-            origin,
-            dir,
-            inv_dir: dir.recip(),
-        }
+        Ray { origin, dir, inv_dir: dir.recip() }
     }
 
     #[inline]

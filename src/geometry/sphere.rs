@@ -46,10 +46,7 @@ impl Sphere {
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
-        (
-            self.center - Vec3::splat(self.radius),
-            self.center + Vec3::splat(self.radius),
-        )
+        (self.center - Vec3::splat(self.radius), self.center + Vec3::splat(self.radius))
     }
 }
 
@@ -58,10 +55,7 @@ mod tests {
     use super::*;
 
     fn unit() -> Sphere {
-        Sphere {
-            center: Vec3::new(0.0, 0.0, 5.0),
-            radius: 1.0,
-        }
+        Sphere { center: Vec3::new(0.0, 0.0, 5.0), radius: 1.0 }
     }
 
     #[test]
@@ -79,9 +73,7 @@ mod tests {
     #[test]
     fn tangent_ray_touches() {
         let r = Ray::new(Vec3::new(1.0, 0.0, 0.0), Vec3::Z);
-        let t = unit()
-            .intersect(&r, 0.0, f32::INFINITY)
-            .expect("tangent hit");
+        let t = unit().intersect(&r, 0.0, f32::INFINITY).expect("tangent hit");
         assert!((t - 5.0).abs() < 1e-3);
     }
 
@@ -99,13 +91,8 @@ mod tests {
 
     #[test]
     fn tiny_far_sphere_is_hit_precisely() {
-        let s = Sphere {
-            center: Vec3::new(0.0, 0.0, 1e5),
-            radius: 1e-2,
-        };
-        let t = s
-            .intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY)
-            .expect("hit");
+        let s = Sphere { center: Vec3::new(0.0, 0.0, 1e5), radius: 1e-2 };
+        let t = s.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY).expect("hit");
         assert!((t - (1e5 - 1e-2)).abs() < 0.02);
     }
 }
@@ -128,11 +115,7 @@ impl Ellipsoid {
             Vec3::new(m.x_axis.z, m.y_axis.z, m.z_axis.z).length(),
         );
         let c: Vec3 = render_from_object.translation.into();
-        Ellipsoid {
-            frame: super::cuboid::frame_for(render_from_object),
-            min: c - rows,
-            max: c + rows,
-        }
+        Ellipsoid { frame: super::cuboid::frame_for(render_from_object), min: c - rows, max: c + rows }
     }
 
     /// The unit sphere hit in object space; `t` stays a render-space distance because the
@@ -174,24 +157,13 @@ mod ellipsoid_tests {
 
     #[test]
     fn stretched_sphere_hits_at_its_semi_axes() {
-        let e = Ellipsoid::new(
-            Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0))
-                * Affine3A::from_scale(Vec3::new(1.0, 1.0, 3.0)),
-        );
-        let t = e
-            .intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY)
-            .expect("hit");
+        let e = Ellipsoid::new(Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)) * Affine3A::from_scale(Vec3::new(1.0, 1.0, 3.0)));
+        let t = e.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY).expect("hit");
         assert!((t - 7.0).abs() < 1e-4);
         let side = Ray::new(Vec3::new(-5.0, 0.0, 10.0), Vec3::X);
         let t = e.intersect(&side, 0.0, f32::INFINITY).expect("hit");
         assert!((t - 4.0).abs() < 1e-4);
         assert!((e.normal_at(side.at(t)) + Vec3::X).length() < 1e-4);
-        assert!(e
-            .intersect(
-                &Ray::new(Vec3::new(2.0, 0.0, 0.0), Vec3::Z),
-                0.0,
-                f32::INFINITY
-            )
-            .is_none());
+        assert!(e.intersect(&Ray::new(Vec3::new(2.0, 0.0, 0.0), Vec3::Z), 0.0, f32::INFINITY).is_none());
     }
 }

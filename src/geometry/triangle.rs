@@ -17,12 +17,7 @@ impl Triangle {
     pub fn new(a: Vec3, b: Vec3, c: Vec3) -> Triangle {
         let e1 = b - a;
         let e2 = c - a;
-        Triangle {
-            v0: a,
-            e1,
-            e2,
-            normal: e1.cross(e2).normalize_or(Vec3::Y),
-        }
+        Triangle { v0: a, e1, e2, normal: e1.cross(e2).normalize_or(Vec3::Y) }
     }
 
     #[inline]
@@ -59,20 +54,13 @@ mod tests {
     use super::*;
 
     fn tri() -> Triangle {
-        Triangle::new(
-            Vec3::new(-1.0, -1.0, 2.0),
-            Vec3::new(1.0, -1.0, 2.0),
-            Vec3::new(0.0, 1.0, 2.0),
-        )
+        Triangle::new(Vec3::new(-1.0, -1.0, 2.0), Vec3::new(1.0, -1.0, 2.0), Vec3::new(0.0, 1.0, 2.0))
     }
 
     #[test]
     fn hit_miss_behind_and_parallel() {
         let t = tri();
-        assert_eq!(
-            t.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY),
-            Some(2.0)
-        );
+        assert_eq!(t.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY), Some(2.0));
         let miss = Ray::new(Vec3::new(2.0, 0.0, 0.0), Vec3::Z);
         assert_eq!(t.intersect(&miss, 0.0, f32::INFINITY), None);
         let behind = Ray::new(Vec3::new(0.0, 0.0, 3.0), Vec3::Z);

@@ -23,10 +23,7 @@ pub struct CliError {
 
 impl CliError {
     pub fn user(message: impl Into<String>) -> CliError {
-        CliError {
-            message: message.into(),
-            code: 2,
-        }
+        CliError { message: message.into(), code: 2 }
     }
 }
 
@@ -45,9 +42,7 @@ impl From<LocatedError> for CliError {
 /// The project's own include folder (`scenes/include`), found next to the executable's source
 /// tree at build time, so a fresh clone needs no POV-Ray installation.
 pub fn project_include_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join("include")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("include")
 }
 
 /// The include path in POV-Ray's order: `-L` dirs, then the project's library. (The including

@@ -8,10 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::headless::CliError;
 
 fn temp_sibling(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
 }
 
@@ -21,10 +18,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let result = fs::write(&tmp, bytes).and_then(|_| fs::rename(&tmp, path));
     if let Err(e) = result {
         let _ = fs::remove_file(&tmp);
-        return Err(CliError::user(format!(
-            "{}: cannot write: {e}",
-            path.display()
-        )));
+        return Err(CliError::user(format!("{}: cannot write: {e}", path.display())));
     }
     Ok(())
 }
@@ -51,17 +45,12 @@ pub fn write_png(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(),
 
 /// Reads an 8-bit RGB or RGBA PNG as (width, height, RGB bytes).
 pub fn read_png(path: &Path) -> Result<(u32, u32, Vec<u8>), CliError> {
-    let file = fs::File::open(path)
-        .map_err(|e| CliError::user(format!("{}: cannot open: {e}", path.display())))?;
+    let file = fs::File::open(path).map_err(|e| CliError::user(format!("{}: cannot open: {e}", path.display())))?;
     let mut dec = png::Decoder::new(std::io::BufReader::new(file));
     dec.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
-    let mut reader = dec
-        .read_info()
-        .map_err(|e| CliError::user(format!("{}: not a PNG: {e}", path.display())))?;
+    let mut reader = dec.read_info().map_err(|e| CliError::user(format!("{}: not a PNG: {e}", path.display())))?;
     let mut buf = vec![0; reader.output_buffer_size()];
-    let info = reader
-        .next_frame(&mut buf)
-        .map_err(|e| CliError::user(format!("{}: bad PNG: {e}", path.display())))?;
+    let info = reader.next_frame(&mut buf).map_err(|e| CliError::user(format!("{}: bad PNG: {e}", path.display())))?;
     let channels = info.color_type.samples();
     let px = (info.width * info.height) as usize;
     let mut rgb = Vec::with_capacity(px * 3);

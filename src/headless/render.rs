@@ -28,42 +28,15 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let camera = Camera::from_desc(&desc.camera);
     let mut image = Image::default();
     let trace_start = Instant::now();
-    let stats = with_threads(args.threads, || {
-        render(&scene, &camera, &args.settings, &mut image)
-    })?;
+    let stats = with_threads(args.threads, || render(&scene, &camera, &args.settings, &mut image))?;
     let trace = trace_start.elapsed();
-    output::write_png(
-        &args.output,
-        image.width,
-        image.height,
-        &image.to_rgb8(scene.srgb),
-    )?;
+    output::write_png(&args.output, image.width, image.height, &image.to_rgb8(scene.srgb))?;
     if !args.quiet {
-        let name = args
-            .scene
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let max_level = args
-            .settings
-            .quality
-            .max_trace_level
-            .unwrap_or(scene.max_trace_level);
+        let name = args.scene.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let max_level = args.settings.quality.max_trace_level.unwrap_or(scene.max_trace_level);
         print!(
             "{}",
-            statistics(
-                &name,
-                image.width,
-                image.height,
-                &stats,
-                max_level,
-                &Timings {
-                    parse,
-                    build,
-                    trace
-                },
-                peak_memory_bytes()
-            )
+            statistics(&name, image.width, image.height, &stats, max_level, &Timings { parse, build, trace }, peak_memory_bytes())
         );
         output::flush_stdout();
     }

@@ -12,45 +12,21 @@ pub struct Timings {
     pub trace: Duration,
 }
 
-pub fn statistics(
-    name: &str,
-    w: u32,
-    h: u32,
-    s: &RenderStats,
-    max_level: u32,
-    t: &Timings,
-    peak: Option<u64>,
-) -> String {
+pub fn statistics(name: &str, w: u32, h: u32, s: &RenderStats, max_level: u32, t: &Timings, peak: Option<u64>) -> String {
     let mut o = String::new();
     let line = "-".repeat(78);
     let _ = writeln!(o, "{name} Statistics, Resolution {w} x {h}");
     let _ = writeln!(o, "{line}");
-    let spp = if s.pixels > 0 {
-        s.samples as f64 / s.pixels as f64
-    } else {
-        0.0
-    };
-    let _ = writeln!(
-        o,
-        "Pixels:     {:>12}   Samples:   {:>12}   Smpls/Pxl: {spp:.2}",
-        s.pixels, s.samples
-    );
-    let _ = writeln!(
-        o,
-        "Rays:       {:>12}   Max Level: {:>9}/{max_level}",
-        s.total_rays(),
-        s.max_depth
-    );
+    let spp = if s.pixels > 0 { s.samples as f64 / s.pixels as f64 } else { 0.0 };
+    let _ = writeln!(o, "Pixels:     {:>12}   Samples:   {:>12}   Smpls/Pxl: {spp:.2}", s.pixels, s.samples);
+    let _ = writeln!(o, "Rays:       {:>12}   Max Level: {:>9}/{max_level}", s.total_rays(), s.max_depth);
     let _ = writeln!(
         o,
         "  Primary:  {:>12}   Shadow:    {:>12}   Reflected: {:>10}   Refracted: {:>10}",
         s.primary_rays, s.shadow_rays, s.reflected_rays, s.refracted_rays
     );
     let _ = writeln!(o, "{line}");
-    let _ = writeln!(
-        o,
-        "Ray->Shape Intersection          Tests       Succeeded  Percentage"
-    );
+    let _ = writeln!(o, "Ray->Shape Intersection          Tests       Succeeded  Percentage");
     let _ = writeln!(o, "{line}");
     for kind in ShapeKind::ALL {
         let (tests, hits) = s.by_kind(kind);
@@ -58,14 +34,7 @@ pub fn statistics(
             continue;
         }
         let pct = 100.0 * hits as f64 / tests as f64;
-        let _ = writeln!(
-            o,
-            "{:<24} {:>14} {:>15} {:>11.2}",
-            kind.name(),
-            tests,
-            hits,
-            pct
-        );
+        let _ = writeln!(o, "{:<24} {:>14} {:>15} {:>11.2}", kind.name(), tests, hits, pct);
     }
     let _ = writeln!(o, "{:<24} {:>14}", "Bounding nodes/cells", s.nodes_visited);
     let _ = writeln!(o, "{line}");

@@ -17,8 +17,5 @@ pub struct IncludePath {
 /// Loads and lowers a scene file.
 pub fn load_scene(path: &Path, include: &IncludePath) -> Result<SceneDesc, LocatedError> {
     let _ = include;
-    Err(LocatedError::whole_file(
-        &path.display().to_string(),
-        "the parser is not written yet",
-    ))
+    Err(LocatedError::whole_file(&path.display().to_string(), "the parser is not written yet"))
 }

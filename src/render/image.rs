@@ -33,29 +33,20 @@ pub fn srgb_to_linear(v: f32) -> f32 {
 /// One channel to 8 bits, rounding to nearest as POV-Ray does.
 #[inline]
 pub fn encode8(v: f32, srgb: bool) -> u8 {
-    let e = if srgb {
-        linear_to_srgb(v)
-    } else {
-        v.clamp(0.0, 1.0)
-    };
+    let e = if srgb { linear_to_srgb(v) } else { v.clamp(0.0, 1.0) };
     (e * 255.0 + 0.5) as u8
 }
 
 impl Image {
     pub fn new(width: u32, height: u32) -> Image {
-        Image {
-            width,
-            height,
-            pixels: vec![Vec3::ZERO; width as usize * height as usize],
-        }
+        Image { width, height, pixels: vec![Vec3::ZERO; width as usize * height as usize] }
     }
 
     /// Resizes in place, reusing the allocation when it is large enough.
     pub fn resize(&mut self, width: u32, height: u32) {
         self.width = width;
         self.height = height;
-        self.pixels
-            .resize(width as usize * height as usize, Vec3::ZERO);
+        self.pixels.resize(width as usize * height as usize, Vec3::ZERO);
     }
 
     /// Interleaved 8-bit RGB, as written to PNG and hashed by `capture`.
@@ -70,9 +61,7 @@ impl Image {
     /// Writes `0RGB` words (softbuffer's format) into `out`, which must hold width × height.
     pub fn write_xrgb(&self, srgb: bool, out: &mut [u32]) {
         for (o, p) in out.iter_mut().zip(&self.pixels) {
-            *o = (encode8(p.x, srgb) as u32) << 16
-                | (encode8(p.y, srgb) as u32) << 8
-                | encode8(p.z, srgb) as u32;
+            *o = (encode8(p.x, srgb) as u32) << 16 | (encode8(p.y, srgb) as u32) << 8 | encode8(p.z, srgb) as u32;
         }
     }
 }

@@ -23,13 +23,7 @@ pub struct Hit {
 impl Scene {
     /// One primitive test, counted for the statistics.
     #[inline]
-    pub fn test_prim(
-        &self,
-        p: &PrimRef,
-        ray: &Ray,
-        t_max: f32,
-        stats: &mut RenderStats,
-    ) -> Option<f32> {
+    pub fn test_prim(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<f32> {
         let i = p.index as usize;
         let t = match p.kind {
             ShapeKind::Sphere => self.spheres[i].intersect(ray, 0.0, t_max),
@@ -52,20 +46,14 @@ impl Scene {
             stats.count_test(ShapeKind::Plane, t.is_some());
             if let Some(t) = t {
                 t_best = t;
-                best = Some(Hit {
-                    t,
-                    shape: HitShape::Plane(i as u32),
-                });
+                best = Some(Hit { t, shape: HitShape::Plane(i as u32) });
             }
         }
         stats.nodes_visited += self.accel.traverse(ray, t_best, |prim, t_max| {
             let t = self.test_prim(&self.prims[prim as usize], ray, t_max, stats)?;
             // Ties go to the lower index so every accelerator picks the same primitive.
             if best.is_none_or(|b| t < b.t || (t == b.t && b.shape > HitShape::Prim(prim))) {
-                best = Some(Hit {
-                    t,
-                    shape: HitShape::Prim(prim),
-                });
+                best = Some(Hit { t, shape: HitShape::Prim(prim) });
             }
             Some(t)
         }) as u64;

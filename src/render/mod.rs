@@ -33,11 +33,7 @@ pub struct Quality {
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality {
-            max_trace_level: None,
-            shadows: true,
-            max_octaves: None,
-        }
+        Quality { max_trace_level: None, shadows: true, max_octaves: None }
     }
 }
 
@@ -59,14 +55,7 @@ pub struct RenderSettings {
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings {
-            width: 640,
-            height: 480,
-            aa: 1,
-            quality: Quality::default(),
-            tile: 16,
-            subsample: None,
-        }
+        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, subsample: None }
     }
 }
 
@@ -98,12 +87,7 @@ impl RayGen {
 }
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
-pub fn render(
-    scene: &Scene,
-    camera: &Camera,
-    settings: &RenderSettings,
-    image: &mut Image,
-) -> RenderStats {
+pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGen::new(camera, scene.origin);
@@ -150,16 +134,7 @@ enum Samples {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn render_pixel(
-    tracer: &mut Tracer,
-    gen: &RayGen,
-    x: u32,
-    y: u32,
-    w: u32,
-    h: u32,
-    aa: u32,
-    samples: Samples,
-) -> Vec3 {
+fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32, samples: Samples) -> Vec3 {
     let mut sample = |sx: u32, sy: u32| {
         let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
         let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
@@ -175,8 +150,8 @@ fn render_pixel(
     match samples {
         Samples::One(sx, sy) => sample(sx, sy),
         Samples::All => {
-            // Adding ZERO for a bad sample leaves the sum bit-identical to skipping it, and keeps
-            // the order of additions the one `progressive::Accumulator` reproduces.
+            // Adding ZERO for a bad sample leaves the sum as skipping it would, and keeps the
+            // order of additions the one `progressive::Accumulator` reproduces.
             let mut sum = Vec3::ZERO;
             for sy in 0..aa {
                 for sx in 0..aa {

@@ -36,18 +36,11 @@ pub enum RayKind {
 
 impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
-        Tracer {
-            scene,
-            quality,
-            stats: RenderStats::default(),
-        }
+        Tracer { scene, quality, stats: RenderStats::default() }
     }
 
     fn max_level(&self) -> u32 {
-        self.quality
-            .max_trace_level
-            .unwrap_or(self.scene.max_trace_level)
-            .max(1)
+        self.quality.max_trace_level.unwrap_or(self.scene.max_trace_level).max(1)
     }
 
     /// Colour seen along `ray`. `level` is 1 for primary rays; `weight` is how much this ray can
@@ -107,11 +100,7 @@ impl<'a> Tracer<'a> {
             }
             let light_color = light.color * passed;
             if finish.diffuse > 0.0 {
-                let d = if finish.brilliance == 1.0 {
-                    n_dot_l
-                } else {
-                    n_dot_l.powf(finish.brilliance)
-                };
+                let d = if finish.brilliance == 1.0 { n_dot_l } else { n_dot_l.powf(finish.brilliance) };
                 color += light_color * c * (finish.diffuse * d * opacity);
             }
             if finish.phong > 0.0 {
@@ -124,8 +113,7 @@ impl<'a> Tracer<'a> {
                 let h = (l - ray.dir).normalize_or_zero();
                 let n_dot_h = normal.dot(h);
                 if n_dot_h > 0.0 {
-                    color +=
-                        light_color * (finish.specular * n_dot_h.powf(finish.specular_exponent));
+                    color += light_color * (finish.specular * n_dot_h.powf(finish.specular_exponent));
                 }
             }
         }
@@ -134,18 +122,14 @@ impl<'a> Tracer<'a> {
             if finish.reflects() {
                 let w = weight * finish.reflection.max_element();
                 if w >= ADC_BAILOUT {
-                    let r = Ray::new(
-                        offset_origin(p, facing, reflected_dir),
-                        reflected_dir.normalize(),
-                    );
+                    let r = Ray::new(offset_origin(p, facing, reflected_dir), reflected_dir.normalize());
                     color += finish.reflection * self.trace(&r, level + 1, w, RayKind::Reflected);
                 }
             }
             let transmit = c * pigment.filter + Vec3::splat(pigment.transmit);
             let w = weight * transmit.max_element();
             if w >= ADC_BAILOUT {
-                color += transmit
-                    * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
+                color += transmit * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
             }
         }
         color
@@ -154,17 +138,7 @@ impl<'a> Tracer<'a> {
     /// The colour arriving through a transparent surface: Snell's law with the chapter's
     /// formula; under total internal reflection the ray reflects instead, as in POV-Ray.
     #[allow(clippy::too_many_arguments)]
-    fn refract(
-        &mut self,
-        ray: &Ray,
-        p: Vec3,
-        facing: Vec3,
-        normal: Vec3,
-        entering: bool,
-        ior: f32,
-        level: u32,
-        weight: f32,
-    ) -> Vec3 {
+    fn refract(&mut self, ray: &Ray, p: Vec3, facing: Vec3, normal: Vec3, entering: bool, ior: f32, level: u32, weight: f32) -> Vec3 {
         // n = n1/n2 across the surface; rays leave an object into air (ior 1).
         let eta = if entering { 1.0 / ior } else { ior };
         let cos_i = -ray.dir.dot(normal);

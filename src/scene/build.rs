@@ -31,13 +31,8 @@ pub enum ShapeKind {
 }
 
 impl ShapeKind {
-    pub const ALL: [ShapeKind; 5] = [
-        ShapeKind::Box,
-        ShapeKind::Plane,
-        ShapeKind::Polygon,
-        ShapeKind::Sphere,
-        ShapeKind::Triangle,
-    ];
+    pub const ALL: [ShapeKind; 5] =
+        [ShapeKind::Box, ShapeKind::Plane, ShapeKind::Polygon, ShapeKind::Sphere, ShapeKind::Triangle];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -125,11 +120,7 @@ fn render_from_object(t: &Transform, origin: DVec3) -> Affine3A {
 
 /// Whether `m`'s linear part is a rotation times a uniform scale (a sphere stays a sphere).
 fn uniform_scale(m: &DMat4) -> Option<f64> {
-    let c = [
-        m.x_axis.truncate(),
-        m.y_axis.truncate(),
-        m.z_axis.truncate(),
-    ];
+    let c = [m.x_axis.truncate(), m.y_axis.truncate(), m.z_axis.truncate()];
     let s = c[0].length();
     let ok = c.iter().all(|v| (v.length() - s).abs() <= 1e-9 * s)
         && c[0].dot(c[1]).abs() <= 1e-9 * s * s
@@ -140,12 +131,7 @@ fn uniform_scale(m: &DMat4) -> Option<f64> {
 
 /// Whether `m`'s linear part is diagonal (an axis-aligned box stays axis-aligned).
 fn is_axis_aligned(m: &DMat4) -> bool {
-    m.x_axis.y == 0.0
-        && m.x_axis.z == 0.0
-        && m.y_axis.x == 0.0
-        && m.y_axis.z == 0.0
-        && m.z_axis.x == 0.0
-        && m.z_axis.y == 0.0
+    m.x_axis.y == 0.0 && m.x_axis.z == 0.0 && m.y_axis.x == 0.0 && m.y_axis.z == 0.0 && m.z_axis.x == 0.0 && m.z_axis.y == 0.0
 }
 
 impl Scene {
@@ -165,10 +151,7 @@ impl Scene {
             lights: desc
                 .lights
                 .iter()
-                .map(|l| Light {
-                    position: (l.position - origin).as_vec3(),
-                    color: l.color.as_vec3(),
-                })
+                .map(|l| Light { position: (l.position - origin).as_vec3(), color: l.color.as_vec3() })
                 .collect(),
             background: Rgbft::from_desc(&desc.background),
             ambient_light: desc.global.ambient_light.as_vec3(),
@@ -193,30 +176,19 @@ impl Scene {
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32) {
         let world = |p: DVec3| t.matrix.transform_point3(p) - self.origin;
         let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
-            prims.push(PrimRef {
-                kind,
-                index: index as u32,
-                material,
-            })
+            prims.push(PrimRef { kind, index: index as u32, material })
         };
         match shape {
             ShapeDesc::Sphere { center, radius } => {
                 if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres.push(Sphere {
-                        center: world(*center).as_vec3(),
-                        radius: (radius * s) as f32,
-                    });
+                    self.spheres.push(Sphere { center: world(*center).as_vec3(), radius: (radius * s) as f32 });
                     push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
                 } else {
                     let xf = render_from_object(t, self.origin)
                         * Affine3A::from_translation(center.as_vec3())
                         * Affine3A::from_scale(Vec3::splat(*radius as f32));
                     self.ellipsoids.push(Ellipsoid::new(xf));
-                    push(
-                        ShapeKind::Ellipsoid,
-                        self.ellipsoids.len() - 1,
-                        &mut self.prims,
-                    );
+                    push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
                 }
             }
             ShapeDesc::Box { corner1, corner2 } => {
@@ -224,32 +196,16 @@ impl Scene {
                 let cuboid = if is_axis_aligned(&t.matrix) {
                     let a = world(lo);
                     let b = world(hi);
-                    Cuboid {
-                        min: a.min(b).as_vec3(),
-                        max: a.max(b).as_vec3(),
-                        frame: None,
-                    }
+                    Cuboid { min: a.min(b).as_vec3(), max: a.max(b).as_vec3(), frame: None }
                 } else {
-                    Cuboid {
-                        min: lo.as_vec3(),
-                        max: hi.as_vec3(),
-                        frame: Some(frame_for(render_from_object(t, self.origin))),
-                    }
+                    Cuboid { min: lo.as_vec3(), max: hi.as_vec3(), frame: Some(frame_for(render_from_object(t, self.origin))) }
                 };
                 self.boxes.push(cuboid);
                 push(ShapeKind::Box, self.boxes.len() - 1, &mut self.prims);
             }
             ShapeDesc::Triangle { a, b, c } => {
-                self.triangles.push(Triangle::new(
-                    world(*a).as_vec3(),
-                    world(*b).as_vec3(),
-                    world(*c).as_vec3(),
-                ));
-                push(
-                    ShapeKind::Triangle,
-                    self.triangles.len() - 1,
-                    &mut self.prims,
-                );
+                self.triangles.push(Triangle::new(world(*a).as_vec3(), world(*b).as_vec3(), world(*c).as_vec3()));
+                push(ShapeKind::Triangle, self.triangles.len() - 1, &mut self.prims);
             }
             ShapeDesc::Polygon { points } => {
                 let pts: Vec<Vec3> = points.iter().map(|p| world(*p).as_vec3()).collect();
@@ -263,10 +219,7 @@ impl Scene {
                 let d_obj = distance / normal.length();
                 let p_world = t.matrix.transform_point3(n_obj * d_obj) - self.origin;
                 let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
-                self.planes.push(Plane {
-                    normal: n_world.as_vec3(),
-                    distance: n_world.dot(p_world) as f32,
-                });
+                self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_world) as f32 });
                 self.plane_materials.push(material);
             }
         }

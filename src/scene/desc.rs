@@ -17,23 +17,11 @@ pub struct Color {
 }
 
 impl Color {
-    pub const BLACK: Color = Color {
-        rgb: DVec3::ZERO,
-        filter: 0.0,
-        transmit: 0.0,
-    };
-    pub const WHITE: Color = Color {
-        rgb: DVec3::ONE,
-        filter: 0.0,
-        transmit: 0.0,
-    };
+    pub const BLACK: Color = Color { rgb: DVec3::ZERO, filter: 0.0, transmit: 0.0 };
+    pub const WHITE: Color = Color { rgb: DVec3::ONE, filter: 0.0, transmit: 0.0 };
 
     pub fn rgb(r: f64, g: f64, b: f64) -> Color {
-        Color {
-            rgb: DVec3::new(r, g, b),
-            filter: 0.0,
-            transmit: 0.0,
-        }
+        Color { rgb: DVec3::new(r, g, b), filter: 0.0, transmit: 0.0 }
     }
 }
 
@@ -48,20 +36,14 @@ pub struct Transform {
 
 impl Default for Transform {
     fn default() -> Self {
-        Transform {
-            matrix: DMat4::IDENTITY,
-            inverse: DMat4::IDENTITY,
-        }
+        Transform { matrix: DMat4::IDENTITY, inverse: DMat4::IDENTITY }
     }
 }
 
 impl Transform {
     /// `then` is applied after `self` (POV-Ray's order: modifiers compose left to right).
     pub fn then(&self, then: &Transform) -> Transform {
-        Transform {
-            matrix: then.matrix * self.matrix,
-            inverse: self.inverse * then.inverse,
-        }
+        Transform { matrix: then.matrix * self.matrix, inverse: self.inverse * then.inverse }
     }
 
     pub fn is_identity(&self) -> bool {
@@ -114,11 +96,7 @@ pub struct GlobalSettings {
 
 impl Default for GlobalSettings {
     fn default() -> Self {
-        GlobalSettings {
-            assumed_gamma: None,
-            max_trace_level: 5,
-            ambient_light: DVec3::ONE,
-        }
+        GlobalSettings { assumed_gamma: None, max_trace_level: 5, ambient_light: DVec3::ONE }
     }
 }
 
@@ -134,12 +112,7 @@ pub struct Turbulence {
 impl Default for Turbulence {
     /// POV-Ray's defaults once `turbulence` is given: octaves 6, omega 0.5, lambda 2.
     fn default() -> Self {
-        Turbulence {
-            amount: DVec3::ZERO,
-            octaves: 6,
-            omega: 0.5,
-            lambda: 2.0,
-        }
+        Turbulence { amount: DVec3::ZERO, octaves: 6, omega: 0.5, lambda: 2.0 }
     }
 }
 
@@ -241,28 +214,13 @@ impl Default for InteriorDesc {
 /// A shape in its own object space, as written.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShapeDesc {
-    Sphere {
-        center: DVec3,
-        radius: f64,
-    },
+    Sphere { center: DVec3, radius: f64 },
     /// Points `p` with `normal · p = distance` (normal as written, not normalised).
-    Plane {
-        normal: DVec3,
-        distance: f64,
-    },
-    Box {
-        corner1: DVec3,
-        corner2: DVec3,
-    },
-    Triangle {
-        a: DVec3,
-        b: DVec3,
-        c: DVec3,
-    },
+    Plane { normal: DVec3, distance: f64 },
+    Box { corner1: DVec3, corner2: DVec3 },
+    Triangle { a: DVec3, b: DVec3, c: DVec3 },
     /// A closed, planar outline (first point repeated at the end is allowed and removed).
-    Polygon {
-        points: Vec<DVec3>,
-    },
+    Polygon { points: Vec<DVec3> },
 }
 
 impl ShapeDesc {

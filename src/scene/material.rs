@@ -50,10 +50,7 @@ impl Material {
     pub fn from_desc(texture: &TextureDesc, interior: &InteriorDesc, origin: DVec3) -> Material {
         Material {
             pigment: Pigment::from_desc(&texture.pigment, origin),
-            normal: texture
-                .normal
-                .as_ref()
-                .map(|n| Normal::from_desc(n, origin)),
+            normal: texture.normal.as_ref().map(|n| Normal::from_desc(n, origin)),
             finish: Finish::from_desc(&texture.finish),
             ior: interior.ior as f32,
         }

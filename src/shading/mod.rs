@@ -15,11 +15,7 @@ pub struct Rgbft {
 
 impl Rgbft {
     pub fn from_desc(c: &crate::scene::desc::Color) -> Rgbft {
-        Rgbft {
-            rgb: c.rgb.as_vec3(),
-            filter: c.filter as f32,
-            transmit: c.transmit as f32,
-        }
+        Rgbft { rgb: c.rgb.as_vec3(), filter: c.filter as f32, transmit: c.transmit as f32 }
     }
 }
 
@@ -47,19 +43,10 @@ impl Pigment {
     pub fn from_desc(d: &PigmentDesc, origin: DVec3) -> Pigment {
         let pattern = match &d.pattern {
             PigmentPattern::Solid(c) => Pattern::Solid(Rgbft::from_desc(c)),
-            PigmentPattern::Checker(a, b) => {
-                Pattern::Checker(Rgbft::from_desc(a), Rgbft::from_desc(b))
-            }
-            PigmentPattern::Wood(map) => Pattern::Wood(
-                map.first()
-                    .map(|e| Rgbft::from_desc(&e.color))
-                    .unwrap_or_default(),
-            ),
+            PigmentPattern::Checker(a, b) => Pattern::Checker(Rgbft::from_desc(a), Rgbft::from_desc(b)),
+            PigmentPattern::Wood(map) => Pattern::Wood(map.first().map(|e| Rgbft::from_desc(&e.color)).unwrap_or_default()),
         };
-        Pigment {
-            pattern,
-            pattern_from_render: pattern_from_render(&d.transform, origin),
-        }
+        Pigment { pattern, pattern_from_render: pattern_from_render(&d.transform, origin) }
     }
 
     pub fn may_be_transparent(&self) -> bool {

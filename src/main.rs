@@ -109,7 +109,7 @@ struct ViewCmd {
     /// Frame rate the adaptive resolution aims at while the camera moves.
     #[arg(long, value_name = "FPS", default_value_t = 60.0)]
     target_fps: f64,
-    /// Present at least N frames, wait until the view has converged, save --screenshot, exit.
+    /// Present frames until the view has converged (or N were shown), save --screenshot, exit.
     #[arg(long, value_name = "N")]
     frames: Option<u64>,
     /// PNG written by --frames and by F12 (default for F12: strahl-<time>.png).

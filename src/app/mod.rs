@@ -33,8 +33,9 @@ pub struct ViewOptions {
     pub threads: usize,
     pub accel: AccelKind,
     pub target_fps: f64,
-    /// Present at least this many frames, wait for the view to converge, save `screenshot` if
-    /// given, and exit: the scripted mode CI uses.
+    /// Present frames until the view has converged or this many have been shown, whichever is
+    /// first, then save `screenshot` (if given) from the presented pixels and exit: the scripted
+    /// mode CI uses.
     pub frames: Option<u64>,
     /// Where `--frames` saves, and where F12 saves (else a timestamped name).
     pub screenshot: Option<PathBuf>,

@@ -281,10 +281,12 @@ impl App {
             draw_hud(&mut canvas, &info);
             draw_help(&mut canvas);
         }
+        // A still view stops producing frames once converged, so that ends the run as well.
+        let converged = frame.progress.is_converged();
         let done = self
             .options
             .frames
-            .is_some_and(|n| self.presented >= n && frame.progress.is_converged());
+            .is_some_and(|n| fresh && (self.presented >= n || converged));
         if done && self.screenshot.is_none() {
             self.screenshot = self.options.screenshot.clone();
         }

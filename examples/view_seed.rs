@@ -1,5 +1,5 @@
 //! Opens the window on a hand-built copy of `scenes/seed.pov`, without the parser:
-//! `cargo run --example view_seed [-- --frames N --screenshot shot.png --reference ref.png]`.
+//! `cargo run --example view_seed [-- --frames N --screenshot shot.png --reference ref.png --hud on]`.
 //! `--reference` also writes the headless render of the same camera, for comparison.
 
 use std::path::PathBuf;
@@ -24,6 +24,7 @@ fn main() {
         frames: None,
         screenshot: None,
         title: "strahl - seed (built in)".into(),
+        hud: false,
     };
     let mut reference: Option<PathBuf> = None;
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -33,6 +34,7 @@ fn main() {
             "--frames" => options.frames = value.parse().ok(),
             "--screenshot" => options.screenshot = Some(value.into()),
             "--reference" => reference = Some(value.into()),
+            "--hud" => options.hud = value == "on",
             "--aa" => options.aa = value.parse().unwrap_or(1),
             other => eprintln!("ignoring {other}"),
         }

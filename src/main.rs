@@ -115,6 +115,9 @@ struct ViewCmd {
     /// PNG written by --frames and by F12 (default for F12: strahl-<time>.png).
     #[arg(long, value_name = "PNG")]
     screenshot: Option<PathBuf>,
+    /// Start with the HUD and key help shown (F1 toggles them).
+    #[arg(long)]
+    hud: bool,
     #[command(flatten)]
     common: Common,
 }
@@ -134,6 +137,7 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
         frames: v.frames,
         screenshot: v.screenshot,
         title: format!("strahl - {}", v.scene.display()),
+        hud: v.hud,
     };
     strahl::app::view_file(&v.scene, &v.common.include, options)
 }

@@ -40,6 +40,8 @@ pub struct ViewOptions {
     /// Where `--frames` saves, and where F12 saves (else a timestamped name).
     pub screenshot: Option<PathBuf>,
     pub title: String,
+    /// Start with the HUD and help shown (F1 toggles).
+    pub hud: bool,
 }
 
 /// The message for a machine without a display, pointing at the headless commands.

@@ -56,7 +56,7 @@ pub fn run(scene: Scene, camera: Camera, speed: f64, options: ViewOptions) -> Re
         size: (options.width, options.height),
         surface_size: (0, 0),
         grabbed: false,
-        hud: false,
+        hud: options.hud,
         preset: 0,
         times: FrameTimes::new(120),
         last_present: None,

@@ -24,7 +24,8 @@ pub struct Gamepads {
 }
 
 impl Gamepads {
-    pub fn new() -> Gamepads {
+    /// Starts gilrs; `None` inside means no gamepad support here.
+    pub fn open() -> Gamepads {
         // No gamepad support is not an error worth showing: the keyboard works regardless.
         Gamepads {
             gilrs: Gilrs::new().ok(),

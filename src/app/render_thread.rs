@@ -342,3 +342,77 @@ impl Worker {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::sync::mpsc;
+
+    use super::*;
+    use crate::scene::build::AccelKind;
+    use crate::scene::testing::seed_like;
+
+    fn next_frame(rt: &RenderThread, woke: &mpsc::Receiver<()>) -> Frame {
+        loop {
+            woke.recv_timeout(Duration::from_secs(60))
+                .expect("a frame within a minute");
+            if let Some(f) = rt.latest() {
+                return f;
+            }
+        }
+    }
+
+    /// A moving view renders reduced, a still one refines to exactly the headless `--aa` render.
+    #[test]
+    fn moving_then_still_converges_to_the_headless_render() {
+        let desc = seed_like();
+        let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        let srgb = scene.srgb;
+        let (tx, woke) = mpsc::channel();
+        let rt = RenderThread::spawn(scene, 2, 60.0, move || {
+            let _ = tx.send(());
+        })
+        .unwrap();
+        let camera = Camera::from_desc(&desc.camera);
+        let view = View {
+            camera,
+            width: 64,
+            height: 48,
+            aa: 2,
+            quality: Quality::default(),
+        };
+        rt.submit(View {
+            camera: Camera {
+                location: camera.location + glam::DVec3::X,
+                ..camera
+            },
+            ..view
+        });
+        let first = next_frame(&rt, &woke);
+        assert_eq!(first.progress, Progress::Moving);
+        assert!(first.scale <= 1.0 && first.width == (64.0 * first.scale).round() as u32);
+        rt.give_back(first);
+
+        rt.submit(view);
+        let last = loop {
+            let f = next_frame(&rt, &woke);
+            if f.view == Some(view) && f.progress.is_converged() {
+                break f;
+            }
+            rt.give_back(f);
+        };
+        assert_eq!(last.progress, Progress::Refining { pass: 4, total: 4 });
+
+        let desc_scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        let mut image = Image::default();
+        let settings = RenderSettings {
+            width: 64,
+            height: 48,
+            aa: 2,
+            ..RenderSettings::default()
+        };
+        render(&desc_scene, &camera, &settings, &mut image);
+        let mut expect = vec![0; 64 * 48];
+        image.write_xrgb(srgb, &mut expect);
+        assert_eq!(last.pixels, expect);
+    }
+}

@@ -47,7 +47,7 @@ pub fn run(scene: Scene, camera: Camera, speed: f64, options: ViewOptions) -> Re
         speed,
         scene_camera: camera,
         render,
-        gamepads: Gamepads::new(),
+        gamepads: Gamepads::open(),
         shown: None,
         blitter: Blitter::default(),
         input: InputState::default(),
@@ -372,13 +372,9 @@ impl ApplicationHandler<FrameReady> for App {
             }
             WindowEvent::MouseInput {
                 state: ElementState::Pressed,
-                button,
+                button: MouseButton::Right | MouseButton::Left,
                 ..
-            } => {
-                if matches!(button, MouseButton::Right | MouseButton::Left) && !self.grabbed {
-                    self.set_grab(true);
-                }
-            }
+            } if !self.grabbed => self.set_grab(true),
             WindowEvent::MouseWheel { delta, .. } => {
                 let y = match delta {
                     MouseScrollDelta::LineDelta(_, y) => y as f64,

@@ -5,8 +5,10 @@
 //! `app` drive `render`.
 
 pub mod accel;
+pub mod app;
 pub mod camera;
 pub mod error;
+pub mod fly;
 pub mod headless;
 pub mod geometry;
 pub mod pov;

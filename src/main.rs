@@ -13,8 +13,9 @@ use strahl::scene::build::AccelKind;
 #[derive(Parser)]
 #[command(name = "strahl", version, about = "A real-time CPU ray tracer for POV-Ray scenes", long_about = None)]
 struct Cli {
+    /// Without a subcommand, opens the window on scenes/seed.pov (`strahl view`).
     #[command(subcommand)]
-    command: Command,
+    command: Option<Command>,
 }
 
 #[derive(Subcommand)]
@@ -25,6 +26,9 @@ enum Command {
     Capture(CaptureCmd),
     /// Time render() over frames and report frame-time percentiles and rays per second.
     Bench(BenchCmd),
+    /// Fly through a scene in a window: adaptive resolution while moving, progressive
+    /// antialiasing when still (converging to `strahl render` of the same camera).
+    View(ViewCmd),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -71,6 +75,9 @@ struct Common {
     /// Trace no shadow rays (every light reaches every point).
     #[arg(long)]
     no_shadows: bool,
+    /// Trace every ray singly instead of primary and shadow rays in 8×8 packets (same image).
+    #[arg(long)]
+    no_packets: bool,
     /// Cap on turbulence/noise octaves (texture detail).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=32))]
     max_octaves: Option<u32>,
@@ -83,6 +90,7 @@ impl Common {
             height: self.height,
             aa: self.aa,
             quality: Quality { max_trace_level: self.max_depth, shadows: !self.no_shadows, max_octaves: self.max_octaves },
+            packets: !self.no_packets,
             ..RenderSettings::default()
         }
     }
@@ -158,8 +166,58 @@ struct BenchCmd {
     common: Common,
 }
 
+#[derive(Args)]
+struct ViewCmd {
+    /// The POV-Ray scene file.
+    #[arg(default_value = "scenes/seed.pov")]
+    scene: PathBuf,
+    /// Frame rate the adaptive resolution aims at while the camera moves.
+    #[arg(long, value_name = "FPS", default_value_t = 60.0)]
+    target_fps: f64,
+    /// Present frames until the view has converged (or N were shown), save --screenshot, exit.
+    #[arg(long, value_name = "N")]
+    frames: Option<u64>,
+    /// PNG written by --frames and by F12 (default for F12: strahl-<time>.png).
+    #[arg(long, value_name = "PNG")]
+    screenshot: Option<PathBuf>,
+    /// Start with the HUD and key help shown (F1 toggles them).
+    #[arg(long)]
+    hud: bool,
+    #[command(flatten)]
+    common: Common,
+}
+
+fn view(v: ViewCmd) -> Result<(), CliError> {
+    if !(v.target_fps.is_finite() && v.target_fps > 0.0) {
+        return Err(CliError::user(format!("--target-fps must be a positive number, not {}", v.target_fps)));
+    }
+    let options = strahl::app::ViewOptions {
+        width: v.common.width,
+        height: v.common.height,
+        aa: v.common.aa,
+        quality: v.common.settings().quality,
+        threads: v.common.threads,
+        accel: v.common.accel.into(),
+        target_fps: v.target_fps,
+        frames: v.frames,
+        screenshot: v.screenshot,
+        title: format!("strahl - {}", v.scene.display()),
+        hud: v.hud,
+    };
+    strahl::app::view_file(&v.scene, &v.common.include, options)
+}
+
 fn run(cli: Cli) -> Result<(), CliError> {
-    match cli.command {
+    // No subcommand means `strahl view` with its defaults, so `cargo run` opens the window.
+    let command = match cli.command {
+        Some(c) => c,
+        None => match Cli::parse_from(["strahl", "view"]).command {
+            Some(c) => c,
+            None => unreachable!("`strahl view` parses to the view command"),
+        },
+    };
+    match command {
+        Command::View(v) => view(v),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
             scene: r.scene,
             include: r.common.include.clone(),

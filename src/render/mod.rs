@@ -4,8 +4,11 @@
 //! is a pure function of (scene, camera, settings): each pixel is computed independently and
 //! statistics are integer sums, so the result never depends on the thread count or tile order.
 
+pub mod adaptive;
 pub mod image;
 pub mod intersect;
+pub mod packet;
+pub mod progressive;
 pub mod stats;
 pub mod trace;
 
@@ -44,14 +47,19 @@ pub struct RenderSettings {
     pub quality: Quality,
     /// Tile edge in pixels.
     pub tile: u32,
-    /// Trace coherent primary rays in packets. Reported by `bench`; the packet tracer lands
-    /// later, until then every ray is traced singly whatever this says.
+    /// Trace coherent primary rays and their shadow rays in 8×8 packets (`render::packet`)
+    /// when the accelerator is a BVH. The image is the same either way.
     pub packets: bool,
+    /// `Some((sx, sy))`: trace only sub-sample (sx, sy) of the aa×aa grid and write it unaveraged
+    /// (clipped, or black where non-finite). Summing all aa² such images in row-major (sy, then sx)
+    /// order and dividing by aa² gives bit for bit the full `aa` render; `progressive` does that,
+    /// so a window can show a picture after one pass and converge to `strahl render --aa N`.
+    pub subsample: Option<(u32, u32)>,
 }
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, packets: true }
+        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, packets: true, subsample: None }
     }
 }
 
@@ -98,17 +106,33 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     let tiles_x = w.div_ceil(tile);
     let tiles_y = h.div_ceil(tile);
     let aa = settings.aa.max(1);
+    let samples = match settings.subsample {
+        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
+        None => Samples::All,
+    };
     let out = SharedPixels(image.pixels.as_mut_ptr());
+    let use_packets = settings.packets && packet::supported(scene);
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
         .map(|t| {
             let (tx, ty) = (t % tiles_x, t / tiles_x);
             let mut tracer = Tracer::new(scene, &settings.quality);
-            for y in ty * tile..((ty + 1) * tile).min(h) {
-                for x in tx * tile..((tx + 1) * tile).min(w) {
-                    let c = render_pixel(&mut tracer, &gen, x, y, w, h, aa);
-                    // SAFETY: tiles partition the image, so each pixel is written by one task.
-                    unsafe { out.write((y * w + x) as usize, c) };
+            let (x0, y0) = (tx * tile, ty * tile);
+            let (x1, y1) = ((x0 + tile).min(w), (y0 + tile).min(h));
+            if use_packets {
+                for by in (y0..y1).step_by(packet::BLOCK as usize) {
+                    for bx in (x0..x1).step_by(packet::BLOCK as usize) {
+                        let block = Block { x: bx, y: by, w: (x1 - bx).min(packet::BLOCK), h: (y1 - by).min(packet::BLOCK) };
+                        render_block(&mut tracer, &gen, &block, w, h, aa, samples, out);
+                    }
+                }
+            } else {
+                for y in y0..y1 {
+                    for x in x0..x1 {
+                        let c = render_pixel(&mut tracer, &gen, x, y, w, h, aa, samples);
+                        // SAFETY: tiles partition the image, so each pixel is written by one task.
+                        unsafe { out.write((y * w + x) as usize, c) };
+                    }
                 }
             }
             tracer.stats
@@ -118,26 +142,112 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
             a
         });
     stats.pixels = w as u64 * h as u64;
-    stats.samples = stats.pixels * (aa * aa) as u64;
+    stats.samples = match samples {
+        Samples::All => stats.pixels * (aa * aa) as u64,
+        Samples::One(..) => stats.pixels,
+    };
     stats
 }
 
-fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32) -> Vec3 {
-    let mut sum = Vec3::ZERO;
-    for sy in 0..aa {
-        for sx in 0..aa {
-            let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
-            let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-            let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
-            if c.is_finite() {
-                // POV-Ray clips each sample before averaging.
-                sum += c.clamp(Vec3::ZERO, Vec3::ONE);
-            } else {
-                tracer.stats.bad_samples += 1;
+/// A rectangle of at most 8×8 pixels traced as one packet.
+struct Block {
+    x: u32,
+    y: u32,
+    w: u32,
+    h: u32,
+}
+
+impl Samples {
+    fn each(self, aa: u32, mut f: impl FnMut(u32, u32)) {
+        match self {
+            Samples::One(sx, sy) => f(sx, sy),
+            Samples::All => {
+                for sy in 0..aa {
+                    for sx in 0..aa {
+                        f(sx, sy)
+                    }
+                }
             }
         }
     }
-    sum / (aa * aa) as f32
+}
+
+/// The packet twin of `render_pixel` for a block: the same rays, the same per-sample clipping
+/// and the same order of additions, so both give the same bits.
+#[allow(clippy::too_many_arguments)]
+fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, w: u32, h: u32, aa: u32, samples: Samples, out: SharedPixels) {
+    let mut sums = [[Vec3::ZERO; 8]; 8];
+    samples.each(aa, |sx, sy| {
+        let rays: [[Ray; 8]; 8] = std::array::from_fn(|r| {
+            std::array::from_fn(|i| {
+                // Lanes past the block's edge repeat its last pixel; their results are dropped.
+                let x = b.x + (i as u32).min(b.w - 1);
+                let y = b.y + (r as u32).min(b.h - 1);
+                let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
+                let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+                gen.ray(u, v)
+            })
+        });
+        let colors = packet::trace_block(tracer, &rays, b.h as usize, b.w as usize);
+        for r in 0..b.h as usize {
+            for i in 0..b.w as usize {
+                let c = colors[r][i];
+                if c.is_finite() {
+                    sums[r][i] += c.clamp(Vec3::ZERO, Vec3::ONE);
+                } else {
+                    tracer.stats.bad_samples += 1;
+                }
+            }
+        }
+    });
+    for r in 0..b.h {
+        for i in 0..b.w {
+            let s = sums[r as usize][i as usize];
+            let c = match samples {
+                Samples::One(..) => s,
+                Samples::All => s / (aa * aa) as f32,
+            };
+            // SAFETY: tiles partition the image and blocks partition tiles.
+            unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
+        }
+    }
+}
+
+/// Which of a pixel's aa×aa sub-samples to trace.
+#[derive(Clone, Copy, Debug)]
+enum Samples {
+    All,
+    One(u32, u32),
+}
+
+#[allow(clippy::too_many_arguments)]
+fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32, samples: Samples) -> Vec3 {
+    let mut sample = |sx: u32, sy: u32| {
+        let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
+        let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+        let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
+        if c.is_finite() {
+            // POV-Ray clips each sample before averaging.
+            c.clamp(Vec3::ZERO, Vec3::ONE)
+        } else {
+            tracer.stats.bad_samples += 1;
+            Vec3::ZERO
+        }
+    };
+    match samples {
+        Samples::One(sx, sy) => sample(sx, sy),
+        Samples::All => {
+            // Adding ZERO for a bad sample leaves the sum as skipping it would, and keeps the
+            // order of additions the one `progressive::Accumulator` reproduces.
+            let mut sum = Vec3::ZERO;
+            for sy in 0..aa {
+                for sx in 0..aa {
+                    sum += sample(sx, sy);
+                }
+            }
+            sum / (aa * aa) as f32
+        }
+    }
 }
 
 /// A raw pointer to the image's pixels that tiles may write through concurrently.

@@ -4,3 +4,5 @@ pub mod build;
 pub mod desc;
 pub mod fixtures;
 pub mod material;
+#[doc(hidden)]
+pub mod testing;

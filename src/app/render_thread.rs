@@ -1,0 +1,418 @@
+//! The window's renderer: a background thread that owns the scene and a rayon pool, takes the
+//! latest requested view, and sends back finished 0RGB frames. Tracing overlaps presenting.
+//!
+//! Policy, per frame: a view that differs from the last one rendered is "moving" and renders at
+//! the adaptive scale with one sample per pixel; a view that has held still for `SETTLE` renders
+//! full-resolution sub-sample passes into a `progressive::Accumulator` until it has all aa² of
+//! them, when it equals `strahl render --aa N`. Then the thread sleeps until the view changes.
+//!
+//! Frames circulate between the two threads (at most `FRAMES` exist), so the steady state
+//! allocates nothing. This module knows no window type: the caller passes a `wake` callback.
+
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
+use std::sync::{Arc, Condvar, Mutex, PoisonError};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+use crate::camera::Camera;
+use crate::headless::CliError;
+use crate::render::adaptive::ScaleController;
+use crate::render::image::Image;
+use crate::render::progressive::Accumulator;
+use crate::render::stats::RenderStats;
+use crate::render::{render, Quality, RenderSettings};
+use crate::scene::build::Scene;
+
+/// How long a view must stay unchanged before refinement starts, so that a camera moving in
+/// small steps (key repeat, a slow stick) is not interrupted by a full-resolution pass.
+const SETTLE: Duration = Duration::from_millis(60);
+/// One frame shown, one in the channel, one being rendered.
+const FRAMES: usize = 3;
+
+/// What to render: the camera and the full (window) resolution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct View {
+    pub camera: Camera,
+    pub width: u32,
+    pub height: u32,
+    pub aa: u32,
+    pub quality: Quality,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Progress {
+    /// Reduced resolution while the camera moves.
+    #[default]
+    Moving,
+    /// Full resolution, `pass` of `total` sub-sample passes done.
+    Refining { pass: u32, total: u32 },
+}
+
+impl Progress {
+    pub fn is_converged(self) -> bool {
+        matches!(self, Progress::Refining { pass, total } if pass >= total)
+    }
+}
+
+/// A finished frame at the internal resolution.
+#[derive(Clone, Debug, Default)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    /// 0RGB, row-major, top row first (softbuffer's format).
+    pub pixels: Vec<u32>,
+    pub scale: f64,
+    pub progress: Progress,
+    pub stats: RenderStats,
+    pub render_time: Duration,
+    /// The view this frame shows.
+    pub view: Option<View>,
+}
+
+struct Slot {
+    view: Option<View>,
+    quit: bool,
+}
+
+type Shared = Arc<(Mutex<Slot>, Condvar)>;
+
+pub struct RenderThread {
+    shared: Shared,
+    frames: Receiver<Frame>,
+    recycle: Sender<Frame>,
+    handle: Option<JoinHandle<()>>,
+}
+
+impl RenderThread {
+    /// Starts the thread with a pool of `threads` workers (0 = one per core). `wake` is called
+    /// after each frame is sent.
+    pub fn spawn(
+        scene: Scene,
+        threads: usize,
+        target_fps: f64,
+        wake: impl Fn() + Send + 'static,
+    ) -> Result<RenderThread, CliError> {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .thread_name(|i| format!("strahl-render-{i}"))
+            .build()
+            .map_err(|e| CliError::user(format!("cannot start {threads} render threads: {e}")))?;
+        let shared: Shared = Arc::new((
+            Mutex::new(Slot {
+                view: None,
+                quit: false,
+            }),
+            Condvar::new(),
+        ));
+        let (frame_tx, frame_rx) = mpsc::channel();
+        let (recycle_tx, recycle_rx) = mpsc::channel();
+        let worker = Worker {
+            scene,
+            pool,
+            shared: shared.clone(),
+            frames: frame_tx,
+            recycle: recycle_rx,
+            allocated: 0,
+            controller: ScaleController::new(target_fps),
+            wake: Box::new(wake),
+        };
+        let handle = std::thread::Builder::new()
+            .name("strahl-view".into())
+            .spawn(move || worker.run())
+            .map_err(|e| CliError::user(format!("cannot start the render thread: {e}")))?;
+        Ok(RenderThread {
+            shared,
+            frames: frame_rx,
+            recycle: recycle_tx,
+            handle: Some(handle),
+        })
+    }
+
+    /// Asks for `view`; the thread renders the latest view it has been given.
+    pub fn submit(&self, view: View) {
+        let (lock, cvar) = &*self.shared;
+        let mut slot = lock.lock().unwrap_or_else(PoisonError::into_inner);
+        if slot.view != Some(view) {
+            slot.view = Some(view);
+            cvar.notify_one();
+        }
+    }
+
+    /// The newest finished frame, if any arrived; older ones go straight back to the pool.
+    pub fn latest(&self) -> Option<Frame> {
+        let mut newest = None;
+        while let Ok(f) = self.frames.try_recv() {
+            if let Some(old) = newest.replace(f) {
+                self.give_back(old);
+            }
+        }
+        newest
+    }
+
+    /// Returns a frame's buffer for reuse.
+    pub fn give_back(&self, frame: Frame) {
+        let _ = self.recycle.send(frame);
+    }
+
+    /// Whether the thread is still running (it stops only on quit, or if a render panicked).
+    pub fn is_alive(&self) -> bool {
+        self.handle.as_ref().is_some_and(|h| !h.is_finished())
+    }
+}
+
+impl Drop for RenderThread {
+    fn drop(&mut self) {
+        {
+            let (lock, cvar) = &*self.shared;
+            lock.lock().unwrap_or_else(PoisonError::into_inner).quit = true;
+            cvar.notify_one();
+        }
+        if let Some(h) = self.handle.take() {
+            let _ = h.join();
+        }
+    }
+}
+
+struct Worker {
+    scene: Scene,
+    pool: rayon::ThreadPool,
+    shared: Shared,
+    frames: Sender<Frame>,
+    recycle: Receiver<Frame>,
+    allocated: usize,
+    controller: ScaleController,
+    wake: Box<dyn Fn() + Send>,
+}
+
+/// What the next frame is.
+enum Job {
+    Preview(View),
+    Refine(View),
+}
+
+impl Worker {
+    fn run(mut self) {
+        let mut last: Option<View> = None;
+        let mut changed_at = Instant::now();
+        let mut acc = Accumulator::default();
+        let mut acc_view: Option<View> = None;
+        let mut pass = Image::default();
+        let mut resolved = Image::default();
+        loop {
+            let Some(job) = self.next_job(&mut last, &mut changed_at, &acc, acc_view) else {
+                return;
+            };
+            let Some(mut frame) = self.take_frame() else {
+                return;
+            };
+            let start = Instant::now();
+            match job {
+                Job::Preview(view) => {
+                    let scale = self.controller.scale();
+                    let w = ((view.width as f64 * scale).round() as u32).max(1);
+                    let h = ((view.height as f64 * scale).round() as u32).max(1);
+                    let settings = self.settings(&view, w, h, None);
+                    frame.stats = self
+                        .pool
+                        .install(|| render(&self.scene, &view.camera, &settings, &mut pass));
+                    self.encode(&pass, &mut frame);
+                    frame.progress = Progress::Moving;
+                    frame.scale = w as f64 / view.width as f64;
+                    frame.view = Some(view);
+                    self.controller
+                        .update(frame.scale, start.elapsed().as_secs_f64());
+                }
+                Job::Refine(view) => {
+                    if acc_view != Some(view) {
+                        acc.reset(view.width, view.height, view.aa);
+                        acc_view = Some(view);
+                    }
+                    let sub = acc.next_subsample();
+                    let settings = self.settings(&view, view.width, view.height, sub);
+                    frame.stats = self
+                        .pool
+                        .install(|| render(&self.scene, &view.camera, &settings, &mut pass));
+                    acc.add(&pass);
+                    acc.resolve(&mut resolved);
+                    self.encode(&resolved, &mut frame);
+                    frame.progress = Progress::Refining {
+                        pass: acc.passes(),
+                        total: acc.total(),
+                    };
+                    frame.scale = 1.0;
+                    frame.view = Some(view);
+                }
+            }
+            frame.render_time = start.elapsed();
+            if self.frames.send(frame).is_err() {
+                return;
+            }
+            (self.wake)();
+        }
+    }
+
+    fn settings(
+        &self,
+        view: &View,
+        width: u32,
+        height: u32,
+        subsample: Option<(u32, u32)>,
+    ) -> RenderSettings {
+        let aa = if subsample.is_some() { view.aa } else { 1 };
+        RenderSettings {
+            width,
+            height,
+            aa,
+            quality: view.quality,
+            subsample,
+            ..RenderSettings::default()
+        }
+    }
+
+    fn encode(&self, image: &Image, frame: &mut Frame) {
+        frame.width = image.width;
+        frame.height = image.height;
+        frame.pixels.resize(image.pixels.len(), 0);
+        image.write_xrgb(self.scene.srgb, &mut frame.pixels);
+    }
+
+    /// Blocks until there is something to render (or quit: `None`).
+    fn next_job(
+        &self,
+        last: &mut Option<View>,
+        changed_at: &mut Instant,
+        acc: &Accumulator,
+        acc_view: Option<View>,
+    ) -> Option<Job> {
+        let (lock, cvar) = &*self.shared;
+        let mut slot = lock.lock().unwrap_or_else(PoisonError::into_inner);
+        loop {
+            if slot.quit {
+                return None;
+            }
+            if let Some(view) = slot.view {
+                if *last != Some(view) {
+                    *last = Some(view);
+                    *changed_at = Instant::now();
+                    return Some(Job::Preview(view));
+                }
+                let done = acc_view == Some(view) && acc.is_converged();
+                if !done {
+                    let still = changed_at.elapsed();
+                    if still >= SETTLE {
+                        return Some(Job::Refine(view));
+                    }
+                    slot = cvar
+                        .wait_timeout(slot, SETTLE - still)
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .0;
+                    continue;
+                }
+            }
+            slot = cvar.wait(slot).unwrap_or_else(PoisonError::into_inner);
+        }
+    }
+
+    /// A frame buffer to render into: a returned one, a new one while fewer than `FRAMES`
+    /// exist, or else the next one the window gives back. `None` when the window is gone.
+    fn take_frame(&mut self) -> Option<Frame> {
+        if let Ok(f) = self.recycle.try_recv() {
+            return Some(f);
+        }
+        if self.allocated < FRAMES {
+            self.allocated += 1;
+            return Some(Frame::default());
+        }
+        loop {
+            match self.recycle.recv_timeout(Duration::from_millis(50)) {
+                Ok(f) => return Some(f),
+                Err(RecvTimeoutError::Disconnected) => return None,
+                Err(RecvTimeoutError::Timeout) => {
+                    if self
+                        .shared
+                        .0
+                        .lock()
+                        .unwrap_or_else(PoisonError::into_inner)
+                        .quit
+                    {
+                        return None;
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::mpsc;
+
+    use super::*;
+    use crate::scene::build::AccelKind;
+    use crate::scene::testing::seed_like;
+
+    fn next_frame(rt: &RenderThread, woke: &mpsc::Receiver<()>) -> Frame {
+        loop {
+            woke.recv_timeout(Duration::from_secs(60))
+                .expect("a frame within a minute");
+            if let Some(f) = rt.latest() {
+                return f;
+            }
+        }
+    }
+
+    /// A moving view renders reduced, a still one refines to exactly the headless `--aa` render.
+    #[test]
+    fn moving_then_still_converges_to_the_headless_render() {
+        let desc = seed_like();
+        let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        let srgb = scene.srgb;
+        let (tx, woke) = mpsc::channel();
+        let rt = RenderThread::spawn(scene, 2, 60.0, move || {
+            let _ = tx.send(());
+        })
+        .unwrap();
+        let camera = Camera::from_desc(&desc.camera);
+        let view = View {
+            camera,
+            width: 64,
+            height: 48,
+            aa: 2,
+            quality: Quality::default(),
+        };
+        rt.submit(View {
+            camera: Camera {
+                location: camera.location + glam::DVec3::X,
+                ..camera
+            },
+            ..view
+        });
+        let first = next_frame(&rt, &woke);
+        assert_eq!(first.progress, Progress::Moving);
+        assert!(first.scale <= 1.0 && first.width == (64.0 * first.scale).round() as u32);
+        rt.give_back(first);
+
+        rt.submit(view);
+        let last = loop {
+            let f = next_frame(&rt, &woke);
+            if f.view == Some(view) && f.progress.is_converged() {
+                break f;
+            }
+            rt.give_back(f);
+        };
+        assert_eq!(last.progress, Progress::Refining { pass: 4, total: 4 });
+
+        let desc_scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        let mut image = Image::default();
+        let settings = RenderSettings {
+            width: 64,
+            height: 48,
+            aa: 2,
+            ..RenderSettings::default()
+        };
+        render(&desc_scene, &camera, &settings, &mut image);
+        let mut expect = vec![0; 64 * 48];
+        image.write_xrgb(srgb, &mut expect);
+        assert_eq!(last.pixels, expect);
+    }
+}

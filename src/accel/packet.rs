@@ -45,22 +45,21 @@ pub struct Frustum {
 
 impl Frustum {
     pub fn new(origin: Vec3, rows: &[Ray8]) -> Frustum {
-        let mut inv_min = Vec3::splat(f32::INFINITY);
-        let mut inv_max = Vec3::splat(f32::NEG_INFINITY);
-        let mut pos = [true; 3];
-        let mut neg = [true; 3];
-        for r in rows {
-            for i in 0..8 {
-                let inv = Vec3::new(r.inv.x.0[i], r.inv.y.0[i], r.inv.z.0[i]);
-                inv_min = inv_min.min(inv);
-                inv_max = inv_max.max(inv);
-                for a in 0..3 {
-                    pos[a] &= inv[a] > 0.0 && inv[a].is_finite();
-                    neg[a] &= inv[a] < 0.0 && inv[a].is_finite();
-                }
-            }
+        // Lane-wise extremes first (vector min/max), then across the eight lanes.
+        let (mut lo, mut hi) = (rows[0].inv, rows[0].inv);
+        for r in &rows[1..] {
+            lo = lo.min(r.inv);
+            hi = hi.max(r.inv);
         }
-        Frustum { origin, inv_min, inv_max, coherent: [pos[0] || neg[0], pos[1] || neg[1], pos[2] || neg[2]] }
+        let across = |v: F8, f: fn(f32, f32) -> f32| v.0[1..].iter().fold(v.0[0], |a, &b| f(a, b));
+        let inv_min = Vec3::new(across(lo.x, f32::min), across(lo.y, f32::min), across(lo.z, f32::min));
+        let inv_max = Vec3::new(across(hi.x, f32::max), across(hi.y, f32::max), across(hi.z, f32::max));
+        // One sign per axis (and finite), or the interval says nothing on that axis.
+        let coherent = std::array::from_fn(|a| {
+            let (l, h) = (inv_min[a], inv_max[a]);
+            l.is_finite() && h.is_finite() && ((l > 0.0 && h > 0.0) || (l < 0.0 && h < 0.0))
+        });
+        Frustum { origin, inv_min, inv_max, coherent }
     }
 
     /// True when no ray of the packet can meet the box within `(0, t_max)`. Conservative: a
@@ -123,8 +122,16 @@ impl Bvh {
         loop {
             let n = &self.nodes[node as usize];
             visited += 1;
-            let t_far = t[first..=last].iter().fold(0.0f32, |m, r| r.0.iter().fold(m, |m, &v| m.max(v)));
-            let culled = frustum.is_some_and(|f| f.culls(Vec3::from_array(n.min), Vec3::from_array(n.max), t_far));
+            let culled = match frustum {
+                Some(f) => {
+                    let mut far = t[first];
+                    for row in &t[first + 1..=last] {
+                        far = far.max(*row);
+                    }
+                    f.culls(Vec3::from_array(n.min), Vec3::from_array(n.max), far.0.iter().fold(0.0f32, |m, &v| m.max(v)))
+                }
+                None => false,
+            };
             if !culled {
                 // Early hit: the first row that enters the node; then the last one.
                 while first <= last && !row_enters(n, &rows[first], t[first], active[first]) {

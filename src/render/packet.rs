@@ -15,7 +15,7 @@ use crate::geometry::lanes::{self, Lane, F8, M8, V3};
 use crate::geometry::ray::Ray;
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::stats::RenderStats;
-use crate::render::trace::{shadow_ray_towards, Shadows, Surface, Tracer};
+use crate::render::trace::{light_direction, shadow_ray, Shadows, Surface, Tracer};
 use crate::scene::build::{Scene, ShapeKind};
 
 /// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
@@ -69,7 +69,9 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
             let mut active = [M8::default(); 8];
             for r in 0..rows {
                 for i in 0..lanes {
-                    let Some(s) = surfaces[r][i].as_ref().and_then(|s| shadow_ray_towards(s, light.position)) else { continue };
+                    let Some(surface) = &surfaces[r][i] else { continue };
+                    let Some(l) = light_direction(surface, light.position) else { continue };
+                    let s = shadow_ray(surface.p, surface.facing, l, light.position);
                     shadow_rays[r][i] = s.ray;
                     t_max[r].0[i] = s.t_max;
                     active[r].0[i] = -1;

@@ -103,12 +103,11 @@ impl<'a> Tracer<'a> {
         let mut color = finish.ambient * c * scene.ambient_light * opacity;
         let reflected_dir = ray.dir - 2.0 * ray.dir.dot(normal) * normal;
         for (i, light) in scene.lights.iter().enumerate() {
-            let Some(shadow_ray) = shadow_ray_towards(surface, light.position) else { continue };
-            let l = shadow_ray.ray.dir;
+            let Some(l) = light_direction(surface, light.position) else { continue };
             let n_dot_l = normal.dot(l);
             let passed = match shadows {
                 _ if !self.quality.shadows => Vec3::ONE,
-                Shadows::Trace => self.shadow(&shadow_ray),
+                Shadows::Trace => self.shadow(&shadow_ray(p, facing, l, light.position)),
                 Shadows::Given(pass) => Vec3::splat(pass[i]),
             };
             if passed == Vec3::ZERO {
@@ -116,20 +115,20 @@ impl<'a> Tracer<'a> {
             }
             let light_color = light.color * passed;
             if finish.diffuse > 0.0 {
-                let d = if finish.brilliance == 1.0 { n_dot_l } else { n_dot_l.powf(finish.brilliance) };
+                let d = finish.brilliance.pow(n_dot_l);
                 color += light_color * c * (finish.diffuse * d * opacity);
             }
             if finish.phong > 0.0 {
                 let r_dot_l = reflected_dir.dot(l);
                 if r_dot_l > 0.0 {
-                    color += light_color * (finish.phong * r_dot_l.powf(finish.phong_size));
+                    color += light_color * (finish.phong * finish.phong_size.pow(r_dot_l));
                 }
             }
             if finish.specular > 0.0 {
                 let h = (l - ray.dir).normalize_or_zero();
                 let n_dot_h = normal.dot(h);
                 if n_dot_h > 0.0 {
-                    color += light_color * (finish.specular * n_dot_h.powf(finish.specular_exponent));
+                    color += light_color * (finish.specular * finish.specular_exponent.pow(n_dot_h));
                 }
             }
         }
@@ -238,21 +237,23 @@ pub struct ShadowRay {
 /// Stop shadow rays just short of the light, so a light lying on a surface still shines.
 const SHADOW_T_SHRINK: f32 = 1.0 - 4.0 * f32::EPSILON;
 
-/// The shadow ray a surface point sends towards a light, or `None` when the light is behind the
-/// surface as the viewer sees it (or on the point itself). Packets and single rays both build
-/// their shadow rays here, so they test the same rays bit for bit.
+/// The unit direction from a surface point to a light, or `None` when the light is behind the
+/// surface as the viewer sees it (or on the point itself).
 #[inline]
-pub fn shadow_ray_towards(s: &Surface, light: Vec3) -> Option<ShadowRay> {
+pub fn light_direction(s: &Surface, light: Vec3) -> Option<Vec3> {
     let to_light = light - s.p;
     let dist = to_light.length();
     if dist == 0.0 {
         return None;
     }
     let l = to_light / dist;
-    if s.normal.dot(l) <= 0.0 || s.facing.dot(l) <= 0.0 {
-        return None;
-    }
-    let origin = offset_origin(s.p, s.facing, l);
-    Some(ShadowRay { ray: Ray::new(origin, l), t_max: (light - origin).length() * SHADOW_T_SHRINK, light })
+    (s.normal.dot(l) > 0.0 && s.facing.dot(l) > 0.0).then_some(l)
+}
 
+/// The shadow ray from `p` (geometric normal `facing`) along `l` to a light. Packets and single
+/// rays both build their shadow rays here, so they test the same rays bit for bit.
+#[inline]
+pub fn shadow_ray(p: Vec3, facing: Vec3, l: Vec3, light: Vec3) -> ShadowRay {
+    let origin = offset_origin(p, facing, l);
+    ShadowRay { ray: Ray::new(origin, l), t_max: (light - origin).length() * SHADOW_T_SHRINK, light }
 }

@@ -293,7 +293,7 @@ fn error_unsupported_keywords() {
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon)"
+        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
     );
     let (l, c, m) = err("e_macro", "#declare A = 1;\n#macro F() #end");
     assert_eq!((l, c), (2, 1));

@@ -22,11 +22,11 @@ impl Files for NoFiles {
     }
 }
 
-fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
+pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
     let tokens = lex(0, text).map_err(|d| d.message)?;
     let stmts = parse(&tokens, text).map_err(|d| d.message)?;
     let mut files = NoFiles;
-    Lowerer::new(&mut files)
+    Lowerer::new(&mut files, &crate::pov::ParseOptions::default())
         .finish(&stmts)
         .map_err(|d| d.message)
 }

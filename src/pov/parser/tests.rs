@@ -53,7 +53,7 @@ fn unsupported_shape_is_named() {
     let e = parse_str("torus { 1, 0.5 }").unwrap_err();
     assert_eq!(
         e,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon)"
+        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
     );
 }
 

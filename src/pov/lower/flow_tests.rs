@@ -234,3 +234,14 @@ fn shadowless_lights_and_no_shadow_objects() {
     assert!(s.lights[0].shadowless && !s.lights[1].shadowless);
     assert!(s.objects[0].no_shadow && !s.objects[1].no_shadow);
 }
+
+#[test]
+fn polygon_points_must_be_coplanar() {
+    assert_eq!(
+        lower("polygon { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0.1> }").unwrap_err(),
+        "polygon points must lie in one plane; point 4 does not"
+    );
+    // Rounding in computed points is tolerated (relative to the polygon's size).
+    assert!(lower("polygon { 4, <0,0,0>, <1e3,0,0>, <1e3,1e3,0>, <0,1e3,1e-6> }").is_ok());
+    assert!(lower("polygon { 5, <0,0,0>, <1,0,1>, <1,1,1>, <0,1,0>, <0,0,0> }").is_ok());
+}

@@ -238,8 +238,39 @@ impl Lowerer<'_> {
                 "polygon is degenerate: all its points are collinear",
             ));
         }
+        if let Some(i) = off_plane(&points) {
+            // POV-Ray 3.7 silently accepts this (checked with povray 3.7.0.10); strahl's polygon
+            // needs one plane, so it is an error here rather than a different picture.
+            return Err(Diag::new(
+                args[i + 1].span,
+                format!(
+                    "polygon points must lie in one plane; point {} does not",
+                    i + 1
+                ),
+            ));
+        }
         Ok(ShapeDesc::Polygon { points })
     }
+}
+
+/// The index of the first point farther than a millionth of the polygon's size from the plane
+/// of the first three points that span one (`points` are not all collinear), if any.
+fn off_plane(points: &[DVec3]) -> Option<usize> {
+    let a = points[0];
+    let scale = points.iter().map(|p| (*p - a).length()).fold(0.0, f64::max);
+    let b = points
+        .iter()
+        .copied()
+        .find(|p| (*p - a).length() > 1e-9 * scale)?;
+    let ab = (b - a).normalize();
+    let c = points
+        .iter()
+        .copied()
+        .find(|p| ab.cross(*p - a).length() > 1e-9 * scale)?;
+    let normal = ab.cross(c - a).normalize();
+    points
+        .iter()
+        .position(|p| normal.dot(*p - a).abs() > 1e-6 * scale)
 }
 
 /// True when every point lies on one line (relative tolerance, so tiny and huge shapes agree).

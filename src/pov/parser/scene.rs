@@ -282,6 +282,15 @@ impl Parser<'_> {
                     self.bump();
                     Modifier::NoShadow
                 }
+                Some(w) if matches!(kind, ObjectKind::Csg { .. }) && is_object_keyword(w) => {
+                    return Err(Diag::new(
+                        self.peek().span,
+                        format!(
+                            "`{w}` after the modifiers of `{word}`: its objects must come first \
+                             (as in POV-Ray)"
+                        ),
+                    ));
+                }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {
                         Some(s) if s != ShapeKind::Polygon => {

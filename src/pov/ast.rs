@@ -49,6 +49,12 @@ pub enum Stmt {
         clauses: Vec<SwitchClause>,
         span: Span,
     },
+    /// `#debug`, `#warning` or `#error` with its message.
+    Message {
+        kind: MessageKind,
+        text: StrExpr,
+        span: Span,
+    },
     /// `#break`: leaves the innermost `#switch` or `#while`.
     Break {
         span: Span,
@@ -67,6 +73,25 @@ pub enum Stmt {
         span: Span,
     },
     Object(Object),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MessageKind {
+    /// Printed by POV-Ray to its debug stream; strahl ignores it.
+    Debug,
+    /// Becomes a warning.
+    Warning,
+    /// Stops loading with a located error.
+    Error,
+}
+
+/// A string expression, only as far as messages need: literals, `concat(...)`, `str(f, w, p)`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StrExpr {
+    Lit(String),
+    Concat(Vec<StrExpr>),
+    /// `str(value, width, precision)`.
+    Str(Box<Expr>, Box<Expr>, Box<Expr>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,7 @@ use super::source::{Diag, FileId, PResult, Span};
 /// The directives strahl understands; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
     "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while",
-    "switch", "case", "range", "break", "end",
+    "switch", "case", "range", "break", "end", "debug", "warning", "error",
 ];
 
 #[derive(Clone, Debug, PartialEq)]
@@ -122,7 +122,7 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                     format!(
                         "`#{name}` is not supported (supported directives: #version, #include, \
                          #declare, #local, #ifdef, #ifndef, #if, #elseif, #else, #while, \
-                         #switch, #case, #range, #break, #end)"
+                         #switch, #case, #range, #break, #end, #debug, #warning, #error)"
                     ),
                 ));
             }

@@ -245,3 +245,14 @@ fn polygon_points_must_be_coplanar() {
     assert!(lower("polygon { 4, <0,0,0>, <1e3,0,0>, <1e3,1e3,0>, <0,1e3,1e-6> }").is_ok());
     assert!(lower("polygon { 5, <0,0,0>, <1,0,1>, <1,1,1>, <0,1,0>, <0,0,0> }").is_ok());
 }
+
+#[test]
+fn messages() {
+    let (_, w) = lower("#debug \"ignored\\n\"\n#warning concat(\"w=\", str(1.5, 0, 2))").unwrap();
+    assert_eq!(w.len(), 1);
+    assert_eq!(w[0].message, "w=1.50");
+    assert_eq!(
+        lower("#if (1) #error \"stop\" #end").unwrap_err(),
+        "#error: stop"
+    );
+}

@@ -11,7 +11,7 @@ pub mod value;
 
 use std::collections::HashMap;
 
-use crate::pov::ast::{ClauseTest, DeclValue, GlobalItem, Stmt};
+use crate::pov::ast::{ClauseTest, DeclValue, GlobalItem, MessageKind, Stmt, StrExpr};
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::ParseOptions;
 use crate::scene::desc::{LightDesc, SceneDesc, SourceRef};
@@ -103,6 +103,28 @@ impl<'f> Lowerer<'f> {
             }
         }
         Ok(Flow::Normal)
+    }
+
+    /// The text of a message's string expression.
+    fn string(&self, e: &StrExpr) -> PResult<String> {
+        Ok(match e {
+            StrExpr::Lit(s) => s.clone(),
+            StrExpr::Concat(parts) => {
+                let mut out = String::new();
+                for p in parts {
+                    out.push_str(&self.string(p)?);
+                }
+                out
+            }
+            StrExpr::Str(value, width, precision) => {
+                let v = self.float(value)?;
+                let w = self.float(width)?.clamp(0.0, 64.0) as usize;
+                // POV-Ray: a negative precision means its default of 6 digits.
+                let p = self.float(precision)?;
+                let p = if p < 0.0 { 6 } else { p.min(16.0) as usize };
+                format!("{v:w$.p$}")
+            }
+        })
     }
 
     /// Rejects scene-level statements inside a `union`.
@@ -236,6 +258,17 @@ impl<'f> Lowerer<'f> {
                 }
             }
             Stmt::Break { span } => return Ok(Flow::Break(*span)),
+            Stmt::Message { kind, text, span } => match kind {
+                MessageKind::Debug => {}
+                MessageKind::Warning => {
+                    let text = self.string(text)?;
+                    self.warnings.push(Diag::new(*span, text));
+                }
+                MessageKind::Error => {
+                    let text = self.string(text)?;
+                    return Err(Diag::new(*span, format!("#error: {text}")));
+                }
+            },
             Stmt::Camera { items, span } => {
                 self.not_in_csg("camera", *span)?;
                 self.scene.camera = self.camera(items, *span)?

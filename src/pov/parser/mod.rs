@@ -9,7 +9,7 @@ mod keywords;
 mod scene;
 mod textures;
 
-use super::ast::{ClauseTest, DeclValue, Expr, Stmt, SwitchClause};
+use super::ast::{ClauseTest, DeclValue, Expr, MessageKind, Stmt, StrExpr, SwitchClause};
 use super::lexer::{Token, TokenKind};
 use super::source::{Diag, PResult, Span};
 pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
@@ -336,6 +336,19 @@ impl<'a> Parser<'a> {
             }
             "switch" => self.switch(start),
             "break" => Ok(Stmt::Break { span: start }),
+            "debug" | "warning" | "error" => {
+                let kind = match name {
+                    "debug" => MessageKind::Debug,
+                    "warning" => MessageKind::Warning,
+                    _ => MessageKind::Error,
+                };
+                let text = self.str_expr()?;
+                Ok(Stmt::Message {
+                    kind,
+                    text,
+                    span: start,
+                })
+            }
             // `lex` rejects unknown directives by name; block ends are handled by `stmts`.
             _ => Err(Diag::new(start, format!("`#{name}` is not allowed here"))),
         }
@@ -353,6 +366,46 @@ impl<'a> Parser<'a> {
                 format!(
                     "`#{d}` is not allowed in `#{opener}` opened at {} (expected `#end`)",
                     self.line_col(start)
+                ),
+            )),
+        }
+    }
+
+    /// A string literal, `concat(s, ...)` or `str(value, width, precision)`.
+    fn str_expr(&mut self) -> PResult<StrExpr> {
+        let t = self.bump();
+        match &t.kind {
+            TokenKind::Str(s) => Ok(StrExpr::Lit(s.clone())),
+            TokenKind::Ident(w) if w == "concat" => {
+                self.expect_punct('(', "after `concat`")?;
+                self.enter(t.span)?;
+                let mut parts = vec![self.str_expr()?];
+                while self.eat_punct(',') {
+                    parts.push(self.str_expr()?);
+                }
+                self.expect_punct(')', "to close `concat(`")?;
+                self.leave();
+                Ok(StrExpr::Concat(parts))
+            }
+            TokenKind::Ident(w) if w == "str" => {
+                self.expect_punct('(', "after `str`")?;
+                let value = self.full_expr()?;
+                self.expect_punct(',', "in `str(value, width, precision)`")?;
+                let width = self.full_expr()?;
+                self.expect_punct(',', "in `str(value, width, precision)`")?;
+                let precision = self.full_expr()?;
+                self.expect_punct(')', "to close `str(`")?;
+                Ok(StrExpr::Str(
+                    Box::new(value),
+                    Box::new(width),
+                    Box::new(precision),
+                ))
+            }
+            _ => Err(Diag::new(
+                t.span,
+                format!(
+                    "expected a string (a literal, `concat(...)` or `str(...)`), found {}",
+                    t.describe()
                 ),
             )),
         }

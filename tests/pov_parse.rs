@@ -5,7 +5,9 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 use strahl::error::LocatedError;
-use strahl::pov::{load_scene, load_scene_with_warnings, IncludePath};
+use strahl::pov::{
+    load_scene, load_scene_with_options, load_scene_with_warnings, IncludePath, ParseOptions,
+};
 use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc};
 
 fn repo() -> PathBuf {
@@ -293,7 +295,7 @@ fn error_unsupported_keywords() {
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon)"
+        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
     );
     let (l, c, m) = err("e_macro", "#declare A = 1;\n#macro F() #end");
     assert_eq!((l, c), (2, 1));
@@ -440,9 +442,52 @@ fn arbitrary_bytes_never_panic() {
     // A cheap deterministic fuzz: xorshift bytes and token soup must give Ok or Err, not panic.
     let d = dir("fuzz");
     let words = [
-        "sphere", "{", "}", "<", ">", ",", "1", "-", "*", "(", ")", "pigment", "color", "rgb",
-        "#declare", "A", "=", "#include", "\"x\"", "box", "polygon", "3", "/", "0", "scale",
-        "camera", "look_at",
+        "sphere",
+        "{",
+        "}",
+        "<",
+        ">",
+        ",",
+        "1",
+        "-",
+        "*",
+        "(",
+        ")",
+        "pigment",
+        "color",
+        "rgb",
+        "#declare",
+        "A",
+        "=",
+        "#include",
+        "\"x\"",
+        "box",
+        "polygon",
+        "3",
+        "/",
+        "0",
+        "scale",
+        "camera",
+        "look_at",
+        "#if",
+        "#else",
+        "#end",
+        "#switch",
+        "#case",
+        "#break",
+        "union",
+        "merge",
+        "<=",
+        "!=",
+        "&",
+        "|",
+        "?",
+        ":",
+        ".",
+        "x",
+        "!",
+        "image_width",
+        "no_shadow",
     ];
     let mut state = 0x2545F4914F6CDD1Du64;
     let mut next = || {
@@ -465,4 +510,173 @@ fn arbitrary_bytes_never_panic() {
         let p = write(&d, "f.pov", &text);
         let _ = load_scene(&p, &IncludePath::default());
     }
+}
+
+#[test]
+fn image_size_reaches_the_scene() {
+    let d = dir("image_size");
+    let p = write(
+        &d,
+        "scene.pov",
+        "camera { right x*image_width/image_height look_at z }",
+    );
+    let options = ParseOptions {
+        image_width: 800,
+        image_height: 400,
+    };
+    let s = load_scene_with_options(&p, &std_include(), &options).unwrap();
+    assert!(close(s.camera.right, DVec3::new(2.0, 0.0, 0.0)));
+    // `load_scene` parses for POV-Ray's default 640×480.
+    let s = load_scene(&p, &std_include()).unwrap();
+    assert!(close(s.camera.right, DVec3::new(640.0 / 480.0, 0.0, 0.0)));
+}
+
+#[test]
+fn while_loops_build_a_thousand_spheres() {
+    let s = load_text(
+        "grid",
+        "#include \"colors.inc\"\n\
+         #declare I = 0;\n\
+         #while (I < 10)\n\
+           #declare J = 0;\n\
+           #while (J < 10)\n\
+             #declare K = 0;\n\
+             #while (K < 10)\n\
+               #if (mod(I + J + K, 2) = 0)\n\
+                 sphere { <I, J, K>, 0.4 pigment { Red } }\n\
+               #else\n\
+                 sphere { <I, J, K>, 0.4 pigment { Blue } no_shadow }\n\
+               #end\n\
+               #declare K = K + 1;\n\
+             #end\n\
+             #declare J = J + 1;\n\
+           #end\n\
+           #declare I = I + 1;\n\
+         #end\n",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 1000);
+    assert_eq!(s.objects.iter().filter(|o| o.no_shadow).count(), 500);
+    assert_eq!(
+        (s.objects[0].source.line, s.objects[1].source.line),
+        (9, 11)
+    );
+    assert_eq!(
+        s.objects[999].shape,
+        ShapeDesc::Sphere {
+            center: DVec3::splat(9.0),
+            radius: 0.4
+        }
+    );
+}
+
+#[test]
+fn declared_union_from_an_include() {
+    let d = dir("union_inc");
+    write(
+        &d,
+        "pair.inc",
+        "#declare Pair = union {\n  sphere { -x, 1 }\n  box { 0, 1 pigment { rgb 1 } }\n  \
+         pigment { rgb <1, 0, 0> }\n}\n",
+    );
+    let p = write(
+        &d,
+        "scene.pov",
+        "#include \"pair.inc\"\nobject { Pair translate 5*y }\n\
+         union { object { Pair } sphere { 0, 2 } scale 2 }\n",
+    );
+    let s = load_scene(&p, &std_include()).unwrap();
+    assert_eq!(s.objects.len(), 5);
+    assert_eq!(
+        s.objects[0].source.file,
+        d.join("pair.inc").display().to_string()
+    );
+    assert_eq!(s.objects[0].source.line, 2);
+    assert_eq!(
+        s.objects[0].transform.matrix,
+        DMat4::from_translation(DVec3::new(0.0, 5.0, 0.0))
+    );
+    let red = strahl::scene::desc::Color::rgb(1.0, 0.0, 0.0);
+    assert_eq!(
+        s.objects[2].texture.pigment.pattern,
+        PigmentPattern::Solid(red)
+    );
+    assert_eq!(
+        s.objects[3].texture.pigment.pattern,
+        PigmentPattern::Solid(strahl::scene::desc::Color::WHITE)
+    );
+    // The bare sphere in the outer union has no texture anywhere: POV-Ray's default (black).
+    assert_eq!(
+        s.objects[4].texture.pigment.pattern,
+        PigmentPattern::Solid(strahl::scene::desc::Color::BLACK)
+    );
+    assert_eq!(
+        s.objects[4].transform.matrix,
+        DMat4::from_scale(DVec3::splat(2.0))
+    );
+}
+
+#[test]
+fn shadowless_light_and_default_wood() {
+    let s = load_text(
+        "shadowless",
+        "light_source { <0, 5, 0> color rgb 1 shadowless }\n\
+         plane { y, 0 pigment { wood } no_shadow }",
+    )
+    .unwrap();
+    assert!(s.lights[0].shadowless);
+    assert!(s.objects[0].no_shadow);
+    assert!(
+        matches!(&s.objects[0].texture.pigment.pattern, PigmentPattern::Wood(m) if m.len() == 4)
+    );
+}
+
+#[test]
+fn error_control_flow() {
+    let (l, c, m) = err("e_loop", "#declare I = 0;\n  #while (I < 1)\n#end");
+    assert_eq!((l, c), (2, 3));
+    assert!(m.contains("more than 10000000 iterations"), "{m}");
+    let (l, c, m) = err("e_else", "sphere { 0, 1 }\n#else\n");
+    assert_eq!(
+        (l, c, m.as_str()),
+        (2, 1, "`#else` without a matching `#if`")
+    );
+    let (l, c, m) = err("e_unclosed", "#if (1)\nsphere { 0, 1 }\n");
+    assert_eq!(
+        (l, c, m.as_str()),
+        (3, 1, "expected `#end`, found end of file")
+    );
+    let (l, c, m) = err("e_cmp", "#declare A = 1;\n#if (A < <1, 2, 3>) #end");
+    assert_eq!(
+        (l, c, m.as_str()),
+        (2, 10, "expected a float, found a vector")
+    );
+    let (l, c, m) = err("e_break", "#declare A = 1;\n  #break");
+    assert_eq!((l, c), (2, 3));
+    assert_eq!(m, "`#break` outside `#switch` or `#while`");
+}
+
+#[test]
+fn error_csg() {
+    let (l, c, m) = err("e_diff", "union {\n  difference { sphere { 0, 1 } }\n}");
+    assert_eq!((l, c), (2, 3));
+    assert!(
+        m.starts_with("`difference` is not supported (supported: "),
+        "{m}"
+    );
+    let (l, c, m) = err("e_cam", "union {\n  sphere { 0, 1 }\n  camera { }\n}");
+    assert_eq!((l, c), (3, 3));
+    assert_eq!(m, "`camera` is not supported inside `union` or `merge`");
+    let (l, c, m) = err(
+        "e_poly",
+        "polygon { 4,\n <0,0,0>, <1,0,0>, <1,1,0>, <0,1,1> }",
+    );
+    assert_eq!((l, c), (2, 29));
+    assert_eq!(m, "polygon points must lie in one plane; point 4 does not");
+    let (l, c, m) = err("e_vec4", "sphere {\n <1, 2, 3, 4>, 1 }");
+    assert_eq!((l, c), (2, 2));
+    assert!(
+        m.starts_with("expected a 3-component vector, found 4"),
+        "{m}"
+    );
 }

@@ -22,11 +22,41 @@ pub enum Stmt {
         value: DeclValue,
         span: Span,
     },
-    /// `#ifdef (Name) ... #end` (`negate` for `#ifndef`).
+    /// `#ifdef (Name) ... [#else ...] #end` (`negate` for `#ifndef`).
     IfDef {
         name: String,
         negate: bool,
         body: Vec<Stmt>,
+        otherwise: Vec<Stmt>,
+        span: Span,
+    },
+    /// `#if (c) ... #elseif (c) ... #else ... #end`: the first branch whose condition holds.
+    If {
+        branches: Vec<(Expr, Vec<Stmt>)>,
+        otherwise: Option<Vec<Stmt>>,
+        span: Span,
+    },
+    /// `#while (c) ... #end`.
+    While {
+        cond: Expr,
+        body: Vec<Stmt>,
+        span: Span,
+    },
+    /// `#switch (v) #case (a) ... #range (lo, hi) ... #else ... #end`: runs from the first
+    /// matching clause onward until a `#break`, as POV-Ray does (clauses fall through).
+    Switch {
+        value: Expr,
+        clauses: Vec<SwitchClause>,
+        span: Span,
+    },
+    /// `#debug`, `#warning` or `#error` with its message.
+    Message {
+        kind: MessageKind,
+        text: StrExpr,
+        span: Span,
+    },
+    /// `#break`: leaves the innermost `#switch` or `#while`.
+    Break {
         span: Span,
     },
     Camera {
@@ -43,6 +73,42 @@ pub enum Stmt {
         span: Span,
     },
     Object(Object),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MessageKind {
+    /// Printed by POV-Ray to its debug stream; strahl ignores it.
+    Debug,
+    /// Becomes a warning.
+    Warning,
+    /// Stops loading with a located error.
+    Error,
+}
+
+/// A string expression, only as far as messages need: literals, `concat(...)`, `str(f, w, p)`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StrExpr {
+    Lit(String),
+    Concat(Vec<StrExpr>),
+    /// `str(value, width, precision)`.
+    Str(Box<Expr>, Box<Expr>, Box<Expr>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ClauseTest {
+    /// `#case (v)`: equal within POV-Ray's epsilon.
+    Case(Expr),
+    /// `#range (lo, hi)`: inclusive.
+    Range(Expr, Expr),
+    /// `#else`: always matches.
+    Else,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct SwitchClause {
+    pub test: ClauseTest,
+    pub body: Vec<Stmt>,
+    pub span: Span,
 }
 
 /// The right-hand side of `#declare Name = ...`.
@@ -63,6 +129,29 @@ pub enum BinOp {
     Sub,
     Mul,
     Div,
+    /// Comparisons and logic give 1 or 0; POV-Ray only parses them inside parentheses.
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    And,
+    Or,
+}
+
+/// A value POV-Ray's renderer provides: image size and animation state.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Builtin {
+    ImageWidth,
+    ImageHeight,
+    Clock,
+    ClockDelta,
+    FrameNumber,
+    InitialClock,
+    FinalClock,
+    InitialFrame,
+    FinalFrame,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -80,7 +169,14 @@ pub enum ExprKind {
     /// `<a, b, ...>` with 2 to 5 components.
     Vector(Vec<Expr>),
     Neg(Box<Expr>),
+    /// `!a`: 1 when `a` is (within epsilon) zero, else 0.
+    Not(Box<Expr>),
     Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `c ? a : b` (only inside parentheses).
+    Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// `v.x`, `c.red`, ...: one component, by index into (x, y, z, filter, transmit).
+    Member(Box<Expr>, usize),
+    Builtin(Builtin),
     /// A built-in function such as `sqrt(x)`.
     Call(String, Vec<Expr>),
     /// The `version` keyword: the language version in effect.
@@ -142,6 +238,7 @@ pub enum CameraItem {
 pub struct Light {
     pub position: Expr,
     pub color: Option<Expr>,
+    pub shadowless: bool,
     pub transforms: Vec<TransformItem>,
     pub span: Span,
 }
@@ -276,6 +373,8 @@ pub enum ObjectKind {
     Shape(ShapeKind, Vec<Expr>),
     /// `object { Name ... }`.
     Ref(Expr),
+    /// `union { ... }` or `merge { ... }`: child objects and the directives that make them.
+    Csg { merge: bool, children: Vec<Stmt> },
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -286,6 +385,7 @@ pub enum Modifier {
     Texture(Texture),
     Interior(Interior),
     Transform(TransformItem),
+    NoShadow,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -5,7 +5,8 @@ use super::source::{Diag, FileId, PResult, Span};
 
 /// The directives strahl understands; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
-    "version", "include", "declare", "local", "ifdef", "ifndef", "end",
+    "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while",
+    "switch", "case", "range", "break", "end", "debug", "warning", "error",
 ];
 
 #[derive(Clone, Debug, PartialEq)]
@@ -16,8 +17,10 @@ pub enum TokenKind {
     Str(String),
     /// `#name`, without the `#`.
     Directive(String),
-    /// One of `{ } < > ( ) [ ] , ; + - * / =`.
+    /// One of `{ } < > ( ) [ ] , ; + - * / = ! & | ? : .`.
     Punct(char),
+    /// A two-character operator: `<=`, `>=` or `!=`.
+    Op2(&'static str),
     Eof,
 }
 
@@ -36,12 +39,16 @@ impl Token {
             TokenKind::Str(s) => format!("string \"{s}\""),
             TokenKind::Directive(d) => format!("`#{d}`"),
             TokenKind::Punct(c) => format!("`{c}`"),
+            TokenKind::Op2(op) => format!("`{op}`"),
             TokenKind::Eof => "end of file".to_string(),
         }
     }
 }
 
-const PUNCT: &str = "{}<>()[],;+-*/=";
+const PUNCT: &str = "{}<>()[],;+-*/=!&|?:.";
+
+/// Two-character operators, matched before single punctuation.
+const OPS2: &[&str] = &["<=", ">=", "!="];
 
 /// Splits `text` into tokens, ending with one `Eof` token.
 pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
@@ -114,12 +121,19 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                     span(start, i),
                     format!(
                         "`#{name}` is not supported (supported directives: #version, #include, \
-                         #declare, #local, #ifdef, #ifndef, #end)"
+                         #declare, #local, #ifdef, #ifndef, #if, #elseif, #else, #while, \
+                         #switch, #case, #range, #break, #end, #debug, #warning, #error)"
                     ),
                 ));
             }
             tokens.push(Token {
                 kind: TokenKind::Directive(name.to_string()),
+                span: span(start, i),
+            });
+        } else if let Some(op) = OPS2.iter().find(|op| bytes[i..].starts_with(op.as_bytes())) {
+            i += 2;
+            tokens.push(Token {
+                kind: TokenKind::Op2(op),
                 span: span(start, i),
             });
         } else if c.is_ascii() && PUNCT.contains(c as char) {
@@ -270,6 +284,29 @@ mod tests {
             vec![
                 TokenKind::Directive("include".into()),
                 TokenKind::Str("a b.inc".into()),
+                TokenKind::Eof
+            ]
+        );
+    }
+
+    #[test]
+    fn comparison_operators() {
+        assert_eq!(
+            kinds("a<=b >= != ! & | ? : . < ="),
+            vec![
+                TokenKind::Ident("a".into()),
+                TokenKind::Op2("<="),
+                TokenKind::Ident("b".into()),
+                TokenKind::Op2(">="),
+                TokenKind::Op2("!="),
+                TokenKind::Punct('!'),
+                TokenKind::Punct('&'),
+                TokenKind::Punct('|'),
+                TokenKind::Punct('?'),
+                TokenKind::Punct(':'),
+                TokenKind::Punct('.'),
+                TokenKind::Punct('<'),
+                TokenKind::Punct('='),
                 TokenKind::Eof
             ]
         );

@@ -26,9 +26,36 @@ pub struct IncludePath {
     pub dirs: Vec<PathBuf>,
 }
 
-/// Loads and lowers a scene file.
+/// What the scene can read about the render it is parsed for (`image_width`, `clock`, ...).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ParseOptions {
+    pub image_width: u32,
+    pub image_height: u32,
+}
+
+impl Default for ParseOptions {
+    /// POV-Ray's default image size, 640×480.
+    fn default() -> Self {
+        ParseOptions {
+            image_width: 640,
+            image_height: 480,
+        }
+    }
+}
+
+/// Loads and lowers a scene file for the default image size (640×480).
 pub fn load_scene(path: &Path, include: &IncludePath) -> Result<SceneDesc, LocatedError> {
     load_scene_with_warnings(path, include).map(|(scene, _)| scene)
+}
+
+/// Loads and lowers a scene file for the render `options` describe; scenes often write
+/// `right x*image_width/image_height`.
+pub fn load_scene_with_options(
+    path: &Path,
+    include: &IncludePath,
+    options: &ParseOptions,
+) -> Result<SceneDesc, LocatedError> {
+    load_scene_with_options_and_warnings(path, include, options).map(|(scene, _)| scene)
 }
 
 /// Like `load_scene`, also returning warnings (POV-Ray's "Scale by 0.0" and the like) for the
@@ -37,10 +64,20 @@ pub fn load_scene_with_warnings(
     path: &Path,
     include: &IncludePath,
 ) -> Result<(SceneDesc, Vec<LocatedError>), LocatedError> {
+    load_scene_with_options_and_warnings(path, include, &ParseOptions::default())
+}
+
+/// `load_scene_with_options`, also returning warnings.
+pub fn load_scene_with_options_and_warnings(
+    path: &Path,
+    include: &IncludePath,
+    options: &ParseOptions,
+) -> Result<(SceneDesc, Vec<LocatedError>), LocatedError> {
     let mut loader = Loader {
         map: SourceMap::default(),
         include,
         stack: Vec::new(),
+        options: options.clone(),
     };
     let result = loader.load_main(path);
     result.map_err(|d| loader.map.locate(&d))
@@ -51,13 +88,15 @@ struct Loader<'a> {
     include: &'a IncludePath,
     /// Files being lowered, outermost first, for cycle detection and depth.
     stack: Vec<(PathBuf, FileId)>,
+    options: ParseOptions,
 }
 
 impl Loader<'_> {
     fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<LocatedError>)> {
         let (file, stmts) = self.read_and_parse(path, path.display().to_string())?;
         self.stack.push((canonical(path), file));
-        let (scene, warnings) = lower::Lowerer::new(self).finish(&stmts)?;
+        let options = self.options.clone();
+        let (scene, warnings) = lower::Lowerer::new(self, &options).finish(&stmts)?;
         let warnings = warnings.iter().map(|d| self.map.locate(d)).collect();
         Ok((scene, warnings))
     }

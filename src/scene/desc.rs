@@ -84,6 +84,8 @@ impl Default for CameraDesc {
 pub struct LightDesc {
     pub position: DVec3,
     pub color: DVec3,
+    /// `shadowless`: the light illuminates but casts no shadows (no shadow rays are traced).
+    pub shadowless: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -251,6 +253,8 @@ pub struct ObjectDesc {
     pub transform: Transform,
     pub texture: TextureDesc,
     pub interior: InteriorDesc,
+    /// `no_shadow`: the object is visible but casts no shadow (shadow rays ignore it).
+    pub no_shadow: bool,
     pub source: SourceRef,
 }
 

@@ -62,12 +62,29 @@ impl Lowerer<'_> {
                 ));
             }
             let direction = to.normalize() * cam.direction.length();
-            let right = cam.sky.cross(direction);
-            if right.length() <= 1e-12 * direction.length() * cam.sky.length().max(1e-300) {
-                return Err(Diag::new(
+            let mut right = cam.sky.cross(direction);
+            let parallel = |r: glam::DVec3, other: glam::DVec3| {
+                r.length() <= 1e-12 * direction.length() * other.length().max(1e-300)
+            };
+            if parallel(right, cam.sky) {
+                // POV-Ray 3.7 warns and keeps the given `right` (checked by rendering: looking
+                // straight down with the default sky, +x is right and +z is up).
+                self.warnings.push(Diag::new(
                     target_span,
-                    "camera look_at direction is parallel to sky (give a different `sky` vector)",
+                    "Camera location to look_at direction and sky direction should be \
+                     different. Using default/supplied right vector instead.",
                 ));
+                right = cam.right;
+                if parallel(right.cross(direction), right) {
+                    return Err(Diag::new(
+                        target_span,
+                        "camera look_at direction is parallel to sky and to right (give a \
+                         different `sky` vector)",
+                    ));
+                }
+                // Keep only the part of `right` across the view direction.
+                let d = direction.normalize();
+                right -= d * right.dot(d);
             }
             // POV-Ray's left-handed frame: cross(sky, direction) points to the image's right.
             let right = right.normalize() * cam.right.length();

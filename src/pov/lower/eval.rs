@@ -2,9 +2,9 @@
 
 use glam::{DMat4, DVec3};
 
-use super::value::{binary, color_from, negate, Value};
+use super::value::{binary, color_from, negate, truthy, Value};
 use super::Lowerer;
-use crate::pov::ast::{ColorKey, Expr, ExprKind, TransformItem, TransformKind};
+use crate::pov::ast::{Builtin, ColorKey, Expr, ExprKind, TransformItem, TransformKind};
 use crate::pov::source::{Diag, PResult};
 use crate::scene::desc::{Color, Transform};
 
@@ -23,6 +23,19 @@ impl Lowerer<'_> {
                 Ok(Value::Vector(out))
             }
             ExprKind::Neg(inner) => negate(&self.eval(inner)?, e.span),
+            ExprKind::Not(inner) => {
+                let v = self.float(inner)?;
+                Ok(Value::Float(if truthy(v) { 0.0 } else { 1.0 }))
+            }
+            ExprKind::Ternary(cond, a, b) => {
+                if truthy(self.float(cond)?) {
+                    self.eval(a)
+                } else {
+                    self.eval(b)
+                }
+            }
+            ExprKind::Member(inner, index) => self.member(inner, *index),
+            ExprKind::Builtin(b) => Ok(Value::Float(self.builtin(*b))),
             ExprKind::Binary(op, a, b) => {
                 binary(*op, &self.eval(a)?, &self.eval(b)?, a.span, b.span)
             }
@@ -75,6 +88,51 @@ impl Lowerer<'_> {
                 }
                 Ok(Value::Color(c))
             }
+        }
+    }
+
+    /// `v.x` and friends; `index` counts (x, y, z, filter, transmit).
+    fn member(&self, inner: &Expr, index: usize) -> PResult<Value> {
+        let names = ["x", "y", "z", "t", "transmit"];
+        let comps = match self.eval(inner)? {
+            Value::Vector(c) => c,
+            Value::Color(c) => vec![c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit],
+            other => {
+                return Err(Diag::new(
+                    inner.span,
+                    format!(
+                        "`.{}` needs a vector or color, found {}",
+                        names[index.min(4)],
+                        other.kind_name()
+                    ),
+                ))
+            }
+        };
+        comps.get(index).map(|v| Value::Float(*v)).ok_or_else(|| {
+            Diag::new(
+                inner.span,
+                format!(
+                    "`.{}` needs a vector of at least {} components, found {}",
+                    names[index.min(4)],
+                    index + 1,
+                    comps.len()
+                ),
+            )
+        })
+    }
+
+    /// Values POV-Ray's renderer provides; a still image is frame 0 at clock 0.
+    fn builtin(&self, b: Builtin) -> f64 {
+        match b {
+            Builtin::ImageWidth => f64::from(self.options.image_width),
+            Builtin::ImageHeight => f64::from(self.options.image_height),
+            Builtin::Clock
+            | Builtin::ClockDelta
+            | Builtin::FrameNumber
+            | Builtin::InitialClock
+            | Builtin::FinalClock
+            | Builtin::InitialFrame
+            | Builtin::FinalFrame => 0.0,
         }
     }
 

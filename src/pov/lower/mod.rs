@@ -11,10 +11,27 @@ pub mod value;
 
 use std::collections::HashMap;
 
-use crate::pov::ast::{DeclValue, GlobalItem, Stmt};
+use crate::pov::ast::{ClauseTest, DeclValue, GlobalItem, MessageKind, Stmt, StrExpr};
 use crate::pov::source::{Diag, FileId, PResult, Span};
+use crate::pov::ParseOptions;
 use crate::scene::desc::{LightDesc, SceneDesc, SourceRef};
-use value::Value;
+use value::{truthy, Part, Value, EPSILON};
+
+/// Total `#while` iterations allowed in one scene: far beyond real scenes (a 100³ grid of
+/// spheres is a million), small enough that a loop that never ends fails in seconds.
+pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
+
+/// Objects allowed in the scene, and children in one union: an `ObjectDesc` is about 1 KiB, so
+/// this bounds memory near 2 GiB even for a union that doubles itself in a loop.
+pub const MAX_OBJECTS: usize = 2_000_000;
+
+/// How a statement list ended: normally, or at a `#break` that the enclosing `#switch` or
+/// `#while` must honour.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Flow {
+    Normal,
+    Break(Span),
+}
 
 /// What lowering needs from the loader: included files' syntax trees, and positions for
 /// `ObjectDesc::source`.
@@ -40,22 +57,32 @@ pub struct Lowerer<'f> {
     /// `#declare`d names (index 0) and one map of `#local` names per open file.
     scopes: Vec<HashMap<String, Value>>,
     pub warnings: Vec<Diag>,
+    options: ParseOptions,
+    /// The children gathered so far by each open `union`/`merge`, innermost last.
+    csg_stack: Vec<Vec<Part>>,
+    /// `#while` iterations so far, against `MAX_LOOP_ITERATIONS`.
+    loop_iterations: u64,
 }
 
 impl<'f> Lowerer<'f> {
-    pub fn new(files: &'f mut dyn Files) -> Self {
+    pub fn new(files: &'f mut dyn Files, options: &ParseOptions) -> Self {
         Lowerer {
             files,
             scene: SceneDesc::default(),
             version: 3.7,
             scopes: vec![HashMap::new(), HashMap::new()],
             warnings: Vec::new(),
+            options: options.clone(),
+            csg_stack: Vec::new(),
+            loop_iterations: 0,
         }
     }
 
     /// Lowers the main file's statements and returns the finished scene.
     pub fn finish(mut self, stmts: &[Stmt]) -> PResult<(SceneDesc, Vec<Diag>)> {
-        self.stmts(stmts)?;
+        if let Flow::Break(span) = self.stmts(stmts)? {
+            return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
+        }
         self.scene.version = self.version;
         Ok((self.scene, self.warnings))
     }
@@ -69,14 +96,50 @@ impl<'f> Lowerer<'f> {
             .ok_or_else(|| Diag::new(span, format!("undefined identifier `{name}`")))
     }
 
-    fn stmts(&mut self, stmts: &[Stmt]) -> PResult<()> {
+    fn stmts(&mut self, stmts: &[Stmt]) -> PResult<Flow> {
         for s in stmts {
-            self.stmt(s)?;
+            if let Flow::Break(span) = self.stmt(s)? {
+                return Ok(Flow::Break(span));
+            }
         }
-        Ok(())
+        Ok(Flow::Normal)
     }
 
-    fn stmt(&mut self, stmt: &Stmt) -> PResult<()> {
+    /// The text of a message's string expression.
+    fn string(&self, e: &StrExpr) -> PResult<String> {
+        Ok(match e {
+            StrExpr::Lit(s) => s.clone(),
+            StrExpr::Concat(parts) => {
+                let mut out = String::new();
+                for p in parts {
+                    out.push_str(&self.string(p)?);
+                }
+                out
+            }
+            StrExpr::Str(value, width, precision) => {
+                let v = self.float(value)?;
+                let w = self.float(width)?.clamp(0.0, 64.0) as usize;
+                // POV-Ray: a negative precision means its default of 6 digits.
+                let p = self.float(precision)?;
+                let p = if p < 0.0 { 6 } else { p.min(16.0) as usize };
+                format!("{v:w$.p$}")
+            }
+        })
+    }
+
+    /// Rejects scene-level statements inside a `union`.
+    fn not_in_csg(&self, what: &str, span: Span) -> PResult<()> {
+        if self.csg_stack.is_empty() {
+            Ok(())
+        } else {
+            Err(Diag::new(
+                span,
+                format!("`{what}` is not supported inside `union` or `merge`"),
+            ))
+        }
+    }
+
+    fn stmt(&mut self, stmt: &Stmt) -> PResult<Flow> {
         match stmt {
             Stmt::Version { value, .. } => {
                 let v = self.eval(value)?.as_float(value.span)?;
@@ -98,7 +161,10 @@ impl<'f> Lowerer<'f> {
                 let result = self.stmts(&stmts);
                 self.scopes.pop();
                 self.files.leave_include();
-                result?;
+                if let Flow::Break(span) = result? {
+                    // POV-Ray does not let `#break` leave the file it is written in.
+                    return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
+                }
             }
             Stmt::Declare {
                 name, local, value, ..
@@ -122,14 +188,93 @@ impl<'f> Lowerer<'f> {
                 self.scopes[scope].insert(name.clone(), v);
             }
             Stmt::IfDef {
-                name, negate, body, ..
+                name,
+                negate,
+                body,
+                otherwise,
+                ..
             } => {
-                if self.lookup(name).is_some() != *negate {
-                    self.stmts(body)?;
+                let taken = if self.lookup(name).is_some() != *negate {
+                    body
+                } else {
+                    otherwise
+                };
+                return self.stmts(taken);
+            }
+            Stmt::If {
+                branches,
+                otherwise,
+                ..
+            } => {
+                for (cond, body) in branches {
+                    if truthy(self.float(cond)?) {
+                        return self.stmts(body);
+                    }
+                }
+                if let Some(body) = otherwise {
+                    return self.stmts(body);
                 }
             }
-            Stmt::Camera { items, span } => self.scene.camera = self.camera(items, *span)?,
+            Stmt::While { cond, body, span } => {
+                while truthy(self.float(cond)?) {
+                    self.loop_iterations += 1;
+                    if self.loop_iterations > MAX_LOOP_ITERATIONS {
+                        return Err(Diag::new(
+                            *span,
+                            format!(
+                                "`#while` loops ran more than {MAX_LOOP_ITERATIONS} iterations in \
+                                 total; is the condition ever false?"
+                            ),
+                        ));
+                    }
+                    if let Flow::Break(_) = self.stmts(body)? {
+                        break;
+                    }
+                }
+            }
+            Stmt::Switch { value, clauses, .. } => {
+                let v = self.float(value)?;
+                let mut matched = None;
+                for (i, clause) in clauses.iter().enumerate() {
+                    let hit = match &clause.test {
+                        ClauseTest::Case(e) => (self.float(e)? - v).abs() < EPSILON,
+                        ClauseTest::Range(lo, hi) => {
+                            (self.float(lo)?..=self.float(hi)?).contains(&v)
+                        }
+                        ClauseTest::Else => true,
+                    };
+                    if hit {
+                        matched = Some(i);
+                        break;
+                    }
+                }
+                // Clauses fall through into the next one until a `#break` (POV-Ray 3.7).
+                if let Some(first) = matched {
+                    for clause in &clauses[first..] {
+                        if let Flow::Break(_) = self.stmts(&clause.body)? {
+                            break;
+                        }
+                    }
+                }
+            }
+            Stmt::Break { span } => return Ok(Flow::Break(*span)),
+            Stmt::Message { kind, text, span } => match kind {
+                MessageKind::Debug => {}
+                MessageKind::Warning => {
+                    let text = self.string(text)?;
+                    self.warnings.push(Diag::new(*span, text));
+                }
+                MessageKind::Error => {
+                    let text = self.string(text)?;
+                    return Err(Diag::new(*span, format!("#error: {text}")));
+                }
+            },
+            Stmt::Camera { items, span } => {
+                self.not_in_csg("camera", *span)?;
+                self.scene.camera = self.camera(items, *span)?
+            }
             Stmt::Light(l) => {
+                self.not_in_csg("light_source", l.span)?;
                 let mut position = self.vec3(&l.position)?;
                 let color = match &l.color {
                     Some(c) => self.color(c)?.rgb,
@@ -138,10 +283,18 @@ impl<'f> Lowerer<'f> {
                 for t in &l.transforms {
                     position = self.transform(t)?.matrix.transform_point3(position);
                 }
-                self.scene.lights.push(LightDesc { position, color });
+                self.scene.lights.push(LightDesc {
+                    position,
+                    color,
+                    shadowless: l.shadowless,
+                });
             }
-            Stmt::Background { color, .. } => self.scene.background = self.color(color)?,
-            Stmt::GlobalSettings { items, .. } => {
+            Stmt::Background { color, span } => {
+                self.not_in_csg("background", *span)?;
+                self.scene.background = self.color(color)?
+            }
+            Stmt::GlobalSettings { items, span } => {
+                self.not_in_csg("global_settings", *span)?;
                 for item in items {
                     match item {
                         GlobalItem::AssumedGamma(e) => {
@@ -168,13 +321,36 @@ impl<'f> Lowerer<'f> {
                 }
             }
             Stmt::Object(o) => {
-                let obj = self.object(o)?;
-                self.scene.objects.push(obj);
+                let group = self.object(o)?;
+                let before = match self.csg_stack.last() {
+                    Some(children) => children.len(),
+                    None => self.scene.objects.len(),
+                };
+                if before + group.parts.len() > MAX_OBJECTS {
+                    let place = if self.csg_stack.is_empty() {
+                        "the scene"
+                    } else {
+                        "a union"
+                    };
+                    return Err(Diag::new(
+                        o.span,
+                        format!("{place} would have more than {MAX_OBJECTS} objects"),
+                    ));
+                }
+                match self.csg_stack.last_mut() {
+                    Some(children) => children.extend(group.parts),
+                    None => self
+                        .scene
+                        .objects
+                        .extend(group.parts.into_iter().map(|p| p.desc)),
+                }
             }
         }
-        Ok(())
+        Ok(Flow::Normal)
     }
 }
 
+#[cfg(test)]
+mod flow_tests;
 #[cfg(test)]
 mod tests;

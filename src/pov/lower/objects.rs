@@ -1,28 +1,37 @@
 //! Objects: shape arguments → `ShapeDesc` (with the zero-size checks), then modifiers in written
 //! order. A transform moves the object and the patterns already attached to it; a pigment given
-//! after the transform is not moved, exactly as in POV-Ray.
+//! after the transform is not moved, exactly as in POV-Ray. `union` and `merge` are flattened
+//! into their children, each carrying the union's transforms.
 
 use glam::DVec3;
 
 use super::textures::transform_texture;
-use super::value::Value;
-use super::Lowerer;
-use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind};
+use super::value::{Group, Part, Value};
+use super::{Flow, Lowerer};
+use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{InteriorDesc, ObjectDesc, ShapeDesc, TextureDesc, Transform};
 
 impl Lowerer<'_> {
-    pub(super) fn object(&mut self, o: &Object) -> PResult<ObjectDesc> {
-        let mut obj = match &o.kind {
-            ObjectKind::Shape(kind, args) => ObjectDesc {
-                shape: self.shape(*kind, args, o.span)?,
-                transform: Transform::default(),
-                texture: TextureDesc::default(),
-                interior: InteriorDesc::default(),
-                source: self.files.source_ref(o.span),
+    pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
+        let mut group = match &o.kind {
+            ObjectKind::Shape(kind, args) => Group {
+                parts: vec![Part {
+                    desc: ObjectDesc {
+                        shape: self.shape(*kind, args, o.span)?,
+                        transform: Transform::default(),
+                        texture: TextureDesc::default(),
+                        interior: InteriorDesc::default(),
+                        no_shadow: false,
+                        source: self.files.source_ref(o.span),
+                    },
+                    textured: false,
+                    has_interior: false,
+                }],
+                csg: false,
             },
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
-                (ExprKind::Ident(_), Value::Object(obj)) => *obj,
+                (ExprKind::Ident(_), Value::Object(group)) => *group,
                 (_, other) => {
                     return Err(Diag::new(
                         e.span,
@@ -30,22 +39,116 @@ impl Lowerer<'_> {
                     ))
                 }
             },
+            ObjectKind::Csg { children, merge } => self.csg(children, *merge, o.span)?,
         };
-        for m in &o.modifiers {
+        if group.csg {
+            self.csg_modifiers(&mut group, &o.modifiers)?;
+        } else {
+            for part in &mut group.parts {
+                self.modifiers(part, &o.modifiers)?;
+            }
+        }
+        Ok(group)
+    }
+
+    /// A single shape's modifiers, in written order. A transform moves the object and the
+    /// patterns already attached to it.
+    fn modifiers(&mut self, part: &mut Part, modifiers: &[Modifier]) -> PResult<()> {
+        let obj = &mut part.desc;
+        for m in modifiers {
             match m {
                 Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
                 Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
                 Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
                 Modifier::Texture(t) => obj.texture = self.texture(t)?,
-                Modifier::Interior(i) => obj.interior = self.interior(i)?,
+                Modifier::Interior(i) => {
+                    obj.interior = self.interior(i)?;
+                    part.has_interior = true;
+                }
                 Modifier::Transform(t) => {
                     let t = self.transform(t)?;
                     obj.transform = obj.transform.then(&t);
                     transform_texture(&mut obj.texture, &t);
                 }
+                Modifier::NoShadow => obj.no_shadow = true,
+            }
+            if matches!(
+                m,
+                Modifier::Pigment(_)
+                    | Modifier::Normal(_)
+                    | Modifier::Finish(_)
+                    | Modifier::Texture(_)
+            ) {
+                part.textured = true;
             }
         }
-        Ok(obj)
+        Ok(())
+    }
+
+    /// `union { ... }` / `merge { ... }`: the children, flattened. strahl's objects are opaque
+    /// or refract as separate surfaces, so `merge` (which removes the inner surfaces of
+    /// overlapping children, visible only through transparent ones) lowers like `union`.
+    fn csg(&mut self, children: &[Stmt], merge: bool, span: Span) -> PResult<Group> {
+        self.csg_stack.push(Vec::new());
+        let flow = self.stmts(children);
+        let parts = self.csg_stack.pop().unwrap_or_default();
+        if let Flow::Break(span) = flow? {
+            return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
+        }
+        if parts.is_empty() {
+            let word = if merge { "merge" } else { "union" };
+            self.warnings
+                .push(Diag::new(span, format!("`{word}` has no objects")));
+        }
+        Ok(Group { parts, csg: true })
+    }
+
+    /// A union's modifiers: transforms and `no_shadow` apply to every child; the union's own
+    /// texture and interior go, at the end, to the children that have none, as in POV-Ray.
+    fn csg_modifiers(&mut self, group: &mut Group, modifiers: &[Modifier]) -> PResult<()> {
+        let mut texture: Option<TextureDesc> = None;
+        let mut interior = None;
+        for m in modifiers {
+            match m {
+                Modifier::Pigment(p) => {
+                    texture.get_or_insert_with(Default::default).pigment = self.pigment(p)?
+                }
+                Modifier::Normal(n) => {
+                    texture.get_or_insert_with(Default::default).normal = Some(self.normal(n)?)
+                }
+                Modifier::Finish(f) => {
+                    texture.get_or_insert_with(Default::default).finish = self.finish_block(f)?
+                }
+                Modifier::Texture(t) => texture = Some(self.texture(t)?),
+                Modifier::Interior(i) => interior = Some(self.interior(i)?),
+                Modifier::Transform(t) => {
+                    let t = self.transform(t)?;
+                    for part in &mut group.parts {
+                        part.desc.transform = part.desc.transform.then(&t);
+                        transform_texture(&mut part.desc.texture, &t);
+                    }
+                    if let Some(tex) = &mut texture {
+                        transform_texture(tex, &t);
+                    }
+                }
+                Modifier::NoShadow => {
+                    for part in &mut group.parts {
+                        part.desc.no_shadow = true;
+                    }
+                }
+            }
+        }
+        for part in &mut group.parts {
+            if let (false, Some(tex)) = (part.textured, &texture) {
+                part.desc.texture = tex.clone();
+                part.textured = true;
+            }
+            if let (false, Some(int)) = (part.has_interior, &interior) {
+                part.desc.interior = *int;
+                part.has_interior = true;
+            }
+        }
+        Ok(())
     }
 
     fn shape(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
@@ -135,8 +238,39 @@ impl Lowerer<'_> {
                 "polygon is degenerate: all its points are collinear",
             ));
         }
+        if let Some(i) = off_plane(&points) {
+            // POV-Ray 3.7 silently accepts this (checked with povray 3.7.0.10); strahl's polygon
+            // needs one plane, so it is an error here rather than a different picture.
+            return Err(Diag::new(
+                args[i + 1].span,
+                format!(
+                    "polygon points must lie in one plane; point {} does not",
+                    i + 1
+                ),
+            ));
+        }
         Ok(ShapeDesc::Polygon { points })
     }
+}
+
+/// The index of the first point farther than a millionth of the polygon's size from the plane
+/// of the first three points that span one (`points` are not all collinear), if any.
+fn off_plane(points: &[DVec3]) -> Option<usize> {
+    let a = points[0];
+    let scale = points.iter().map(|p| (*p - a).length()).fold(0.0, f64::max);
+    let b = points
+        .iter()
+        .copied()
+        .find(|p| (*p - a).length() > 1e-9 * scale)?;
+    let ab = (b - a).normalize();
+    let c = points
+        .iter()
+        .copied()
+        .find(|p| ab.cross(*p - a).length() > 1e-9 * scale)?;
+    let normal = ab.cross(c - a).normalize();
+    points
+        .iter()
+        .position(|p| normal.dot(*p - a).abs() > 1e-6 * scale)
 }
 
 /// True when every point lies on one line (relative tolerance, so tiny and huge shapes agree).

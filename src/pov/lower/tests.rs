@@ -22,11 +22,11 @@ impl Files for NoFiles {
     }
 }
 
-fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
+pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
     let tokens = lex(0, text).map_err(|d| d.message)?;
     let stmts = parse(&tokens, text).map_err(|d| d.message)?;
     let mut files = NoFiles;
-    Lowerer::new(&mut files)
+    Lowerer::new(&mut files, &crate::pov::ParseOptions::default())
         .finish(&stmts)
         .map_err(|d| d.message)
 }
@@ -161,8 +161,20 @@ fn type_errors_name_both_sides() {
 }
 
 #[test]
+fn look_at_along_sky_keeps_the_given_right_vector() {
+    // POV-Ray 3.7 warns and renders with +x right and +z up here (checked by rendering).
+    let (s, w) = lower("camera { location <0, 5, 0> look_at 0 }").unwrap();
+    assert_eq!(w.len(), 1);
+    assert!(w[0].message.contains("sky direction should be different"));
+    let c = s.camera;
+    assert!(c.direction.abs_diff_eq(-DVec3::Y, 1e-12));
+    assert!(c.right.abs_diff_eq(DVec3::new(1.33, 0.0, 0.0), 1e-12));
+    assert!(c.up.abs_diff_eq(DVec3::Z, 1e-12));
+}
+
+#[test]
 fn camera_errors() {
-    assert!(lower("camera { location <0, 5, 0> look_at 0 }")
+    assert!(lower("camera { location <0, 5, 0> right y look_at 0 }")
         .unwrap_err()
         .contains("parallel to sky"));
     assert!(lower("camera { location 1 look_at 1 }")
@@ -193,7 +205,15 @@ fn pigment_copies_then_modifies() {
         p.transform.matrix,
         DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0))
     );
-    assert!(lower("sphere { 0, 1 pigment { wood } }")
-        .unwrap_err()
-        .contains("needs a color_map"));
+    // Without a map, wood uses POV-Ray's tan/brown default (measured by rendering).
+    let (s, _) = lower("sphere { 0, 1 pigment { wood } }").unwrap();
+    match &s.objects[0].texture.pigment.pattern {
+        crate::scene::desc::PigmentPattern::Wood(m) => {
+            assert_eq!(m.len(), 4);
+            assert_eq!((m[1].value, m[2].value), (0.6, 0.6));
+            assert_eq!(m[0].color, Color::rgb(0.666, 0.312, 0.2));
+            assert_eq!(m[3].color, Color::rgb(0.4, 0.133, 0.066));
+        }
+        other => panic!("{other:?}"),
+    }
 }

@@ -20,7 +20,7 @@ const DEFAULT_BUMPS: f64 = 0.5;
 enum Pattern {
     Solid(Color),
     Checker(Color, Color),
-    Wood(Span),
+    Wood,
 }
 
 /// Turbulence being built: `octaves` etc. may come before `turbulence`.
@@ -85,7 +85,7 @@ impl Lowerer<'_> {
                             PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
                             PigmentPattern::Wood(m) => {
                                 map = Some((m, e.span));
-                                Pattern::Wood(e.span)
+                                Pattern::Wood
                             }
                         };
                         turb = TurbState::from(base.turbulence);
@@ -112,7 +112,7 @@ impl Lowerer<'_> {
                     };
                     pattern = Pattern::Checker(a, b);
                 }
-                PigmentItem::Wood(span) => pattern = Pattern::Wood(*span),
+                PigmentItem::Wood(_) => pattern = Pattern::Wood,
                 PigmentItem::ColorMap(entries, span) => {
                     let mut out = Vec::with_capacity(entries.len());
                     for entry in entries {
@@ -137,13 +137,8 @@ impl Lowerer<'_> {
             }
         }
         let pattern = match (pattern, map) {
-            (Pattern::Wood(_), Some((m, _))) => PigmentPattern::Wood(m),
-            (Pattern::Wood(span), None) => {
-                return Err(Diag::new(
-                    span,
-                    "`wood` needs a color_map (strahl has no default color map)",
-                ))
-            }
+            (Pattern::Wood, Some((m, _))) => PigmentPattern::Wood(m),
+            (Pattern::Wood, None) => PigmentPattern::Wood(default_wood_map()),
             (_, Some((_, span))) => {
                 return Err(Diag::new(
                     span,
@@ -292,6 +287,19 @@ impl Lowerer<'_> {
         }
         Ok(out)
     }
+}
+
+/// POV-Ray 3.7's map for `wood` without a `color_map`: light tan up to 0.6, then dark brown,
+/// with a hard edge. Measured by rendering `plane { z, 0 pigment { wood } }` with `ambient 1
+/// diffuse 0` and `File_Gamma=1.0`: rings switch colour at radius 0.3 and 0.7, i.e. at 0.6 of
+/// the triangle wave, and the colours read back as (170, 80, 51) and (102, 34, 17) / 255.
+fn default_wood_map() -> Vec<ColorMapEntry> {
+    let tan = Color::rgb(0.666, 0.312, 0.2);
+    let brown = Color::rgb(0.4, 0.133, 0.066);
+    [(0.0, tan), (0.6, tan), (0.6, brown), (1.0, brown)]
+        .into_iter()
+        .map(|(value, color)| ColorMapEntry { value, color })
+        .collect()
 }
 
 /// Carries a texture's patterns along with a transform applied after them.

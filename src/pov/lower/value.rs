@@ -21,7 +21,29 @@ pub enum Value {
     Finish(FinishDesc),
     Texture(Box<TextureDesc>),
     Interior(InteriorDesc),
-    Object(Box<ObjectDesc>),
+    Object(Box<Group>),
+}
+
+/// POV-Ray's epsilon for `=`, `!=` and truth (`#if (1e-11)` is false in POV-Ray 3.7).
+pub const EPSILON: f64 = 1e-10;
+
+/// One lowered object with what a surrounding `union` needs to know about it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Part {
+    pub desc: ObjectDesc,
+    /// A pigment, normal, finish or texture was given: a union's texture does not replace it
+    /// (POV-Ray: a child with only a `finish` keeps the default pigment, checked by rendering).
+    pub textured: bool,
+    /// An `interior` was given.
+    pub has_interior: bool,
+}
+
+/// What an object statement lowers to: one shape, or the flattened children of a union.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Group {
+    pub parts: Vec<Part>,
+    /// A `union`/`merge` (modifiers apply to each child) rather than a single shape.
+    pub csg: bool,
 }
 
 impl Value {
@@ -50,7 +72,9 @@ impl Value {
         }
     }
 
-    /// A 3D vector: floats promote to all three components, 2D vectors get z = 0.
+    /// A 3D vector: floats promote to all three components, 2D vectors get z = 0. Four and
+    /// five components are an error, as in POV-Ray 3.7 ("Vector expected but color expression
+    /// found" for `sphere { <1,2,3,4>, 1 }`, checked with povray 3.7.0.10).
     pub fn as_vec3(&self, span: Span) -> PResult<DVec3> {
         match self {
             Value::Float(v) => Ok(DVec3::splat(*v)),
@@ -62,7 +86,8 @@ impl Value {
             Value::Vector(c) => Err(Diag::new(
                 span,
                 format!(
-                    "expected a 3-component vector, found {} components",
+                    "expected a 3-component vector, found {} components (POV-Ray 3.7 rejects \
+                     this too; use `<V.x, V.y, V.z>`)",
                     c.len()
                 ),
             )),
@@ -122,8 +147,33 @@ fn finite(v: f64, span: Span) -> PResult<f64> {
     }
 }
 
+/// `a op b` for the comparison and logic operators: floats only, giving 1 or 0.
+fn compare(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PResult<Value> {
+    let x = a.as_float(a_span)?;
+    let y = b.as_float(b_span)?;
+    let truth = match op {
+        BinOp::Lt => x < y,
+        BinOp::Le => x <= y,
+        BinOp::Gt => x > y,
+        BinOp::Ge => x >= y,
+        BinOp::Eq => (x - y).abs() < EPSILON,
+        BinOp::Ne => (x - y).abs() >= EPSILON,
+        BinOp::And => truthy(x) && truthy(y),
+        _ => truthy(x) || truthy(y),
+    };
+    Ok(Value::Float(if truth { 1.0 } else { 0.0 }))
+}
+
+/// POV-Ray's truth: anything farther than epsilon from zero.
+pub fn truthy(v: f64) -> bool {
+    v.abs() > EPSILON
+}
+
 /// `a op b` with promotion; `span` covers the whole operation.
 pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PResult<Value> {
+    if !matches!(op, BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Div) {
+        return compare(op, a, b, a_span, b_span);
+    }
     let span = a_span.to(b_span);
     let (wa, wb) = match (a.width(), b.width()) {
         (Some(wa), Some(wb)) => (wa, wb),
@@ -145,7 +195,6 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PR
     let mut out = Vec::with_capacity(n);
     for (x, y) in ca.iter().zip(&cb) {
         let v = match op {
-            BinOp::Add => x + y,
             BinOp::Sub => x - y,
             BinOp::Mul => x * y,
             BinOp::Div => {
@@ -154,6 +203,8 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PR
                 }
                 x / y
             }
+            // `Add`; comparisons and logic returned through `compare` above.
+            _ => x + y,
         };
         out.push(finite(v, span)?);
     }

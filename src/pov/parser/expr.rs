@@ -2,7 +2,7 @@
 //! written with keywords (`color rgb <..> filter F`).
 
 use super::Parser;
-use crate::pov::ast::{BinOp, ColorItem, ColorKey, Expr, ExprKind};
+use crate::pov::ast::{BinOp, Builtin, ColorItem, ColorKey, Expr, ExprKind};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
 
@@ -32,6 +32,34 @@ pub const FUNCTIONS: &[(&str, usize)] = &[
     ("vcross", 2),
     ("vdot", 2),
 ];
+
+/// Values the renderer provides (`image_width`, `clock`, ...).
+pub fn builtin(word: &str) -> Option<Builtin> {
+    Some(match word {
+        "image_width" => Builtin::ImageWidth,
+        "image_height" => Builtin::ImageHeight,
+        "clock" => Builtin::Clock,
+        "clock_delta" => Builtin::ClockDelta,
+        "frame_number" => Builtin::FrameNumber,
+        "initial_clock" => Builtin::InitialClock,
+        "final_clock" => Builtin::FinalClock,
+        "initial_frame" => Builtin::InitialFrame,
+        "final_frame" => Builtin::FinalFrame,
+        _ => return None,
+    })
+}
+
+/// Component names after `.`, as indices into (x, y, z, filter, transmit).
+fn member_index(word: &str) -> Option<usize> {
+    Some(match word {
+        "x" | "u" | "red" => 0,
+        "y" | "v" | "green" => 1,
+        "z" | "blue" => 2,
+        "t" | "filter" => 3,
+        "transmit" => 4,
+        _ => return None,
+    })
+}
 
 pub fn color_key(word: &str) -> Option<ColorKey> {
     Some(match word {
@@ -89,10 +117,78 @@ impl Parser<'_> {
     pub(super) fn starts_expr(&self, stop: &[&str]) -> bool {
         match &self.peek().kind {
             TokenKind::Number(_) => true,
-            TokenKind::Punct(c) => matches!(c, '<' | '(' | '-' | '+'),
+            TokenKind::Punct(c) => matches!(c, '<' | '(' | '-' | '+' | '!'),
             TokenKind::Ident(w) => !stop.contains(&w.as_str()),
             _ => false,
         }
+    }
+
+    /// An expression where comparisons, `&`, `|` and `? :` are allowed: inside parentheses and
+    /// in directive conditions. POV-Ray reads `<` and `>` anywhere else as vector brackets
+    /// (`#declare A = 1 < 2;` is an error there too), so `expr` does not parse them.
+    pub(super) fn full_expr(&mut self) -> PResult<Expr> {
+        let cond = self.logical()?;
+        if !self.is_punct('?') {
+            return Ok(cond);
+        }
+        let q = self.bump().span;
+        self.enter(q)?;
+        let a = self.full_expr()?;
+        self.expect_punct(':', "in `? :`")?;
+        let b = self.full_expr()?;
+        self.leave();
+        Ok(Expr {
+            span: cond.span.to(b.span),
+            kind: ExprKind::Ternary(Box::new(cond), Box::new(a), Box::new(b)),
+        })
+    }
+
+    /// `&` and `|`: one precedence level, left to right (POV-Ray 3.7 gives `(1 | 0 & 0)` = 0).
+    fn logical(&mut self) -> PResult<Expr> {
+        self.chain(Self::relational, |k| match k {
+            TokenKind::Punct('&') => Some(BinOp::And),
+            TokenKind::Punct('|') => Some(BinOp::Or),
+            _ => None,
+        })
+    }
+
+    /// Comparisons, left to right (`(3 < 2 < 1)` is `(0 < 1)` = 1 in POV-Ray).
+    fn relational(&mut self) -> PResult<Expr> {
+        self.chain(Self::expr, |k| match k {
+            TokenKind::Punct('<') => Some(BinOp::Lt),
+            TokenKind::Punct('>') => Some(BinOp::Gt),
+            TokenKind::Punct('=') => Some(BinOp::Eq),
+            TokenKind::Op2("<=") => Some(BinOp::Le),
+            TokenKind::Op2(">=") => Some(BinOp::Ge),
+            TokenKind::Op2("!=") => Some(BinOp::Ne),
+            _ => None,
+        })
+    }
+
+    /// A left-leaning chain `operand (op operand)*`; each operator counts as a nesting level,
+    /// because `lower` walks the tree recursively.
+    fn chain(
+        &mut self,
+        operand: fn(&mut Self) -> PResult<Expr>,
+        op_of: fn(&TokenKind) -> Option<BinOp>,
+    ) -> PResult<Expr> {
+        let mut lhs = operand(self)?;
+        let mut chained = 0;
+        while let Some(op) = op_of(&self.peek().kind) {
+            let op_span = self.bump().span;
+            if let Err(e) = self.enter(op_span) {
+                self.depth -= chained;
+                return Err(e);
+            }
+            chained += 1;
+            let rhs = operand(self)?;
+            lhs = Expr {
+                span: lhs.span.to(rhs.span),
+                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+            };
+        }
+        self.depth -= chained;
+        Ok(lhs)
     }
 
     pub(super) fn expr(&mut self) -> PResult<Expr> {
@@ -161,7 +257,51 @@ impl Parser<'_> {
                     inner
                 })
             }
-            _ => self.primary(),
+            TokenKind::Punct('!') => {
+                self.bump();
+                self.enter(t.span)?;
+                let inner = self.unary()?;
+                self.leave();
+                Ok(Expr {
+                    span: t.span.to(inner.span),
+                    kind: ExprKind::Not(Box::new(inner)),
+                })
+            }
+            _ => {
+                let mut e = self.primary()?;
+                // `V.x`: component access binds tighter than any operator.
+                let mut chained = 0;
+                while self.is_punct('.') {
+                    let dot = self.bump().span;
+                    if let Err(err) = self.enter(dot) {
+                        self.depth -= chained;
+                        return Err(err);
+                    }
+                    chained += 1;
+                    let t = self.bump();
+                    let index = match &t.kind {
+                        crate::pov::lexer::TokenKind::Ident(w) => member_index(w),
+                        _ => None,
+                    };
+                    let Some(index) = index else {
+                        self.depth -= chained;
+                        return Err(Diag::new(
+                            t.span,
+                            format!(
+                                "expected a component (x, y, z, t, red, green, blue, filter, \
+                                 transmit) after `.`, found {}",
+                                t.describe()
+                            ),
+                        ));
+                    };
+                    e = Expr {
+                        span: e.span.to(t.span),
+                        kind: ExprKind::Member(Box::new(e), index),
+                    };
+                }
+                self.depth -= chained;
+                Ok(e)
+            }
         }
     }
 
@@ -178,7 +318,7 @@ impl Parser<'_> {
             TokenKind::Punct('(') => {
                 self.bump();
                 self.enter(t.span)?;
-                let inner = self.expr()?;
+                let inner = self.full_expr()?;
                 let close = self.expect_punct(')', "to close `(`")?;
                 self.leave();
                 Ok(Expr {
@@ -226,6 +366,7 @@ impl Parser<'_> {
             "version" => Some(ExprKind::Version),
             _ => None,
         };
+        let constant = constant.or_else(|| builtin(word).map(ExprKind::Builtin));
         if let Some(kind) = constant {
             self.bump();
             return Ok(Expr { kind, span });

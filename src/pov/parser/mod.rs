@@ -9,7 +9,7 @@ mod keywords;
 mod scene;
 mod textures;
 
-use super::ast::{DeclValue, Stmt};
+use super::ast::{ClauseTest, DeclValue, Expr, MessageKind, Stmt, StrExpr, SwitchClause};
 use super::lexer::{Token, TokenKind};
 use super::source::{Diag, PResult, Span};
 pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
@@ -18,6 +18,9 @@ pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
 /// files cannot overflow the stack of this recursive-descent parser.
 pub const MAX_DEPTH: usize = 128;
 
+/// Directives that end a nested statement list.
+const BLOCK_ENDS: &[&str] = &["end", "else", "elseif", "case", "range"];
+
 /// Parses one file's tokens (`text` is only used to quote positions in messages).
 pub fn parse(tokens: &[Token], text: &str) -> PResult<Vec<Stmt>> {
     let mut p = Parser {
@@ -25,6 +28,7 @@ pub fn parse(tokens: &[Token], text: &str) -> PResult<Vec<Stmt>> {
         pos: 0,
         depth: 0,
         text,
+        in_csg: false,
     };
     let stmts = p.stmts(false)?;
     Ok(stmts)
@@ -35,6 +39,8 @@ pub(crate) struct Parser<'a> {
     pos: usize,
     depth: usize,
     text: &'a str,
+    /// True while reading the children of a `union`/`merge` (modifiers end the list).
+    in_csg: bool,
 }
 
 impl<'a> Parser<'a> {
@@ -160,25 +166,32 @@ impl<'a> Parser<'a> {
 
     // ---- statements ----------------------------------------------------------------------
 
-    /// Statements until end of file, or until `#end` when `in_conditional`.
-    fn stmts(&mut self, in_conditional: bool) -> PResult<Vec<Stmt>> {
+    /// Statements until end of file, or (when `nested`) until a directive that ends a block
+    /// (`#end`, `#else`, `#elseif`, `#case`, `#range`), which is left for the caller. Inside a
+    /// `union` (`self.in_csg`), a modifier keyword or `}` also ends the list.
+    fn stmts(&mut self, nested: bool) -> PResult<Vec<Stmt>> {
         let mut out = Vec::new();
         loop {
             let t = self.peek();
             match &t.kind {
                 TokenKind::Eof => {
-                    if in_conditional {
+                    if nested {
                         return Err(Diag::new(t.span, "expected `#end`, found end of file"));
                     }
                     return Ok(out);
                 }
-                TokenKind::Directive(d) if d == "end" => {
-                    if in_conditional {
+                TokenKind::Directive(d) if BLOCK_ENDS.contains(&d.as_str()) => {
+                    if nested {
                         return Ok(out);
                     }
+                    let opener = match d.as_str() {
+                        "case" | "range" => "`#switch`",
+                        "end" => "`#if`, `#ifdef`, `#ifndef`, `#while` or `#switch`",
+                        _ => "`#if`",
+                    };
                     return Err(Diag::new(
                         t.span,
-                        "`#end` without a matching `#ifdef` or `#ifndef`",
+                        format!("`#{d}` without a matching {opener}"),
                     ));
                 }
                 TokenKind::Directive(d) => {
@@ -189,8 +202,36 @@ impl<'a> Parser<'a> {
                     // A stray `;` after an object or declaration, as POV-Ray tolerates.
                     self.bump();
                 }
+                TokenKind::Punct('}') if self.in_csg => return Ok(out),
+                TokenKind::Ident(w) if self.in_csg && scene::MODIFIERS.contains(&w.as_str()) => {
+                    return Ok(out)
+                }
                 _ => out.push(self.item()?),
             }
+        }
+    }
+
+    /// `( expression )` after a directive: comparisons and logic are allowed inside.
+    fn condition(&mut self, directive: &str) -> PResult<Expr> {
+        self.expect_punct('(', &format!("after `#{directive}`"))?;
+        let e = self.full_expr()?;
+        self.expect_punct(')', &format!("to close the condition of `#{directive}`"))?;
+        Ok(e)
+    }
+
+    /// The directive that ended a nested statement list, or an error naming what was open.
+    fn block_end(&self, opener: &str, start: Span) -> PResult<(&'a str, Span)> {
+        let t = self.peek();
+        match &t.kind {
+            TokenKind::Directive(d) => Ok((d.as_str(), t.span)),
+            _ => Err(Diag::new(
+                t.span,
+                format!(
+                    "expected `#end` to close `#{opener}` opened at {}, found {}",
+                    self.line_col(start),
+                    t.describe()
+                ),
+            )),
         }
     }
 
@@ -241,18 +282,181 @@ impl<'a> Parser<'a> {
                 };
                 self.expect_punct(')', &format!("to close `#{name}`"))?;
                 let body = self.stmts(true)?;
-                self.bump(); // the `#end`
+                let mut otherwise = Vec::new();
+                if self.block_end(name, start)?.0 == "else" {
+                    self.bump();
+                    otherwise = self.stmts(true)?;
+                }
+                self.expect_end(name, start)?;
                 self.leave();
                 Ok(Stmt::IfDef {
                     name: ident,
                     negate: name == "ifndef",
                     body,
+                    otherwise,
                     span: start,
                 })
             }
-            // `lex` rejects every other directive by name; `#end` is handled by `stmts`.
+            "if" => {
+                self.enter(start)?;
+                let mut branches = vec![(self.condition("if")?, self.stmts(true)?)];
+                let mut otherwise = None;
+                loop {
+                    match self.block_end("if", start)? {
+                        ("elseif", _) if otherwise.is_none() => {
+                            self.bump();
+                            branches.push((self.condition("elseif")?, self.stmts(true)?));
+                        }
+                        ("else", _) if otherwise.is_none() => {
+                            self.bump();
+                            otherwise = Some(self.stmts(true)?);
+                        }
+                        _ => break,
+                    }
+                }
+                self.expect_end("if", start)?;
+                self.leave();
+                Ok(Stmt::If {
+                    branches,
+                    otherwise,
+                    span: start,
+                })
+            }
+            "while" => {
+                self.enter(start)?;
+                let cond = self.condition("while")?;
+                let body = self.stmts(true)?;
+                self.expect_end("while", start)?;
+                self.leave();
+                Ok(Stmt::While {
+                    cond,
+                    body,
+                    span: start,
+                })
+            }
+            "switch" => self.switch(start),
+            "break" => Ok(Stmt::Break { span: start }),
+            "debug" | "warning" | "error" => {
+                let kind = match name {
+                    "debug" => MessageKind::Debug,
+                    "warning" => MessageKind::Warning,
+                    _ => MessageKind::Error,
+                };
+                let text = self.str_expr()?;
+                Ok(Stmt::Message {
+                    kind,
+                    text,
+                    span: start,
+                })
+            }
+            // `lex` rejects unknown directives by name; block ends are handled by `stmts`.
             _ => Err(Diag::new(start, format!("`#{name}` is not allowed here"))),
         }
+    }
+
+    /// Consumes the `#end` of a block opened by `#opener`, or says what was found instead.
+    fn expect_end(&mut self, opener: &str, start: Span) -> PResult<()> {
+        match self.block_end(opener, start)? {
+            ("end", _) => {
+                self.bump();
+                Ok(())
+            }
+            (d, span) => Err(Diag::new(
+                span,
+                format!(
+                    "`#{d}` is not allowed in `#{opener}` opened at {} (expected `#end`)",
+                    self.line_col(start)
+                ),
+            )),
+        }
+    }
+
+    /// A string literal, `concat(s, ...)` or `str(value, width, precision)`.
+    fn str_expr(&mut self) -> PResult<StrExpr> {
+        let t = self.bump();
+        match &t.kind {
+            TokenKind::Str(s) => Ok(StrExpr::Lit(s.clone())),
+            TokenKind::Ident(w) if w == "concat" => {
+                self.expect_punct('(', "after `concat`")?;
+                self.enter(t.span)?;
+                let mut parts = vec![self.str_expr()?];
+                while self.eat_punct(',') {
+                    parts.push(self.str_expr()?);
+                }
+                self.expect_punct(')', "to close `concat(`")?;
+                self.leave();
+                Ok(StrExpr::Concat(parts))
+            }
+            TokenKind::Ident(w) if w == "str" => {
+                self.expect_punct('(', "after `str`")?;
+                let value = self.full_expr()?;
+                self.expect_punct(',', "in `str(value, width, precision)`")?;
+                let width = self.full_expr()?;
+                self.expect_punct(',', "in `str(value, width, precision)`")?;
+                let precision = self.full_expr()?;
+                self.expect_punct(')', "to close `str(`")?;
+                Ok(StrExpr::Str(
+                    Box::new(value),
+                    Box::new(width),
+                    Box::new(precision),
+                ))
+            }
+            _ => Err(Diag::new(
+                t.span,
+                format!(
+                    "expected a string (a literal, `concat(...)` or `str(...)`), found {}",
+                    t.describe()
+                ),
+            )),
+        }
+    }
+
+    fn switch(&mut self, start: Span) -> PResult<Stmt> {
+        self.enter(start)?;
+        let value = self.condition("switch")?;
+        let mut clauses = Vec::new();
+        loop {
+            let (d, span) = self.block_end("switch", start)?;
+            let test = match d {
+                "case" => {
+                    self.bump();
+                    ClauseTest::Case(self.condition("case")?)
+                }
+                "range" => {
+                    self.bump();
+                    self.expect_punct('(', "after `#range`")?;
+                    let lo = self.full_expr()?;
+                    self.expect_punct(',', "between the bounds of `#range`")?;
+                    let hi = self.full_expr()?;
+                    self.expect_punct(')', "to close `#range`")?;
+                    ClauseTest::Range(lo, hi)
+                }
+                "else" => {
+                    self.bump();
+                    ClauseTest::Else
+                }
+                "end" => {
+                    self.bump();
+                    break;
+                }
+                _ => {
+                    return Err(Diag::new(
+                        span,
+                        format!(
+                        "expected `#case`, `#range`, `#else` or `#end` in `#switch`, found `#{d}`"
+                    ),
+                    ))
+                }
+            };
+            let body = self.stmts(true)?;
+            clauses.push(SwitchClause { test, body, span });
+        }
+        self.leave();
+        Ok(Stmt::Switch {
+            value,
+            clauses,
+            span: start,
+        })
     }
 
     fn declare(&mut self, local: bool, start: Span) -> PResult<Stmt> {

@@ -14,13 +14,15 @@ const TOP_LEVEL: &[&str] = &[
     "background",
     "global_settings",
     "object",
+    "union",
+    "merge",
     "sphere",
     "plane",
     "box",
     "triangle",
     "polygon",
 ];
-const SHAPES: &str = "sphere, plane, box, triangle, polygon";
+const SHAPES: &str = "sphere, plane, box, triangle, polygon, union, merge, object";
 const CAMERA: &[&str] = &[
     "location",
     "look_at",
@@ -43,6 +45,7 @@ const LIGHT: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "shadowless",
 ];
 const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
 /// What may follow an object's arguments.
@@ -55,10 +58,11 @@ pub const MODIFIERS: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "no_shadow",
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || word == "object"
+    shape_kind(word).is_some() || matches!(word, "object" | "union" | "merge")
 }
 
 fn shape_kind(word: &str) -> Option<ShapeKind> {
@@ -155,9 +159,14 @@ impl Parser<'_> {
         self.eat_punct(',');
         let mut color = None;
         let mut transforms = Vec::new();
+        let mut shadowless = false;
         while !self.at_block_end() {
             match self.peek_ident() {
                 Some("rotate" | "scale" | "translate") => transforms.push(self.transform_item()?),
+                Some("shadowless") => {
+                    self.bump();
+                    shadowless = true;
+                }
                 Some(w) if LIGHT.contains(&w) => color = Some(self.color()?),
                 // A bare colour (`light_source { <0,4,-3>, White }`), as POV-Ray accepts.
                 _ if color.is_none()
@@ -173,6 +182,7 @@ impl Parser<'_> {
         Ok(Light {
             position,
             color,
+            shadowless,
             transforms,
             span: kw,
         })
@@ -235,6 +245,15 @@ impl Parser<'_> {
         self.open_block(&word, kw)?;
         let kind = match shape_kind(&word) {
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
+            None if word == "union" || word == "merge" => {
+                let outer = std::mem::replace(&mut self.in_csg, true);
+                let children = self.stmts(false);
+                self.in_csg = outer;
+                ObjectKind::Csg {
+                    merge: word == "merge",
+                    children: children?,
+                }
+            }
             None => {
                 if !self.starts_expr(MODIFIERS) {
                     return Err(Diag::new(
@@ -258,6 +277,19 @@ impl Parser<'_> {
                 Some("interior") => Modifier::Interior(self.interior()?),
                 Some("rotate" | "scale" | "translate") => {
                     Modifier::Transform(self.transform_item()?)
+                }
+                Some("no_shadow") => {
+                    self.bump();
+                    Modifier::NoShadow
+                }
+                Some(w) if matches!(kind, ObjectKind::Csg { .. }) && is_object_keyword(w) => {
+                    return Err(Diag::new(
+                        self.peek().span,
+                        format!(
+                            "`{w}` after the modifiers of `{word}`: its objects must come first \
+                             (as in POV-Ray)"
+                        ),
+                    ));
                 }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {

@@ -53,7 +53,7 @@ fn unsupported_shape_is_named() {
     let e = parse_str("torus { 1, 0.5 }").unwrap_err();
     assert_eq!(
         e,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon)"
+        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
     );
 }
 
@@ -78,4 +78,44 @@ fn keywords_cannot_be_declared() {
         parse_str("#declare x = 1;").unwrap_err(),
         "cannot declare `x`: it is a keyword"
     );
+}
+
+#[test]
+fn union_objects_come_before_modifiers() {
+    let e = parse_str("union { sphere { 0, 1 } pigment { rgb 1 } sphere { x, 1 } }").unwrap_err();
+    assert_eq!(
+        e,
+        "`sphere` after the modifiers of `union`: its objects must come first (as in POV-Ray)"
+    );
+}
+
+#[test]
+fn conditions_need_parentheses_and_allow_comparisons() {
+    let s = parse_str("#if (A <= 2 & !B) #elseif (1) #else #end").unwrap();
+    match &s[0] {
+        Stmt::If {
+            branches,
+            otherwise,
+            ..
+        } => {
+            assert_eq!(branches.len(), 2);
+            assert!(matches!(
+                branches[0].0.kind,
+                ExprKind::Binary(crate::pov::ast::BinOp::And, _, _)
+            ));
+            assert_eq!(otherwise.as_deref(), Some(&[][..]));
+        }
+        other => panic!("{other:?}"),
+    }
+    // Outside parentheses `<` opens a vector, as in POV-Ray.
+    assert!(parse_str("#declare A = 1 < 2;").is_err());
+    assert!(parse_str("#declare V = <1, (2 > 1), 3>;").is_ok());
+}
+
+#[test]
+fn deep_directive_nesting_is_capped() {
+    let text = "#if (1) ".repeat(200);
+    assert!(parse_str(&text).unwrap_err().contains("nesting deeper"));
+    let text = format!("#declare A = (1{});", " < 1".repeat(500));
+    assert!(parse_str(&text).unwrap_err().contains("nesting deeper"));
 }

@@ -349,7 +349,7 @@ mod tests {
 
     use super::*;
     use crate::scene::build::AccelKind;
-    use crate::scene::testing::seed_like;
+    use crate::scene::fixtures::seed_scene as seed_like;
 
     fn next_frame(rt: &RenderThread, woke: &mpsc::Receiver<()>) -> Frame {
         loop {

@@ -13,7 +13,7 @@ use crate::camera::path::CameraPath;
 use crate::camera::Camera;
 use crate::headless::capture::frame_t;
 use crate::headless::json::Json;
-use crate::headless::{load, output, with_threads, CliError};
+use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
 use crate::render::stats::RenderStats;
 use crate::render::{render, RenderSettings};
@@ -279,7 +279,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         return Err(CliError::user("--frames must be at least 1"));
     }
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
-    let (desc, _) = load(&args.scene, &args.include)?;
+    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     let base = Camera::from_desc(&desc.camera);
     let cameras: Vec<Camera> = (0..args.frames)

@@ -17,7 +17,7 @@ use crate::camera::Camera;
 use crate::headless::json::Json;
 use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Manifest};
 use crate::headless::progress::Progress;
-use crate::headless::{load, output, with_threads, CliError};
+use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
 use crate::render::{render, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
@@ -203,7 +203,7 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
         })
         .within(args.frames)?;
     let path = CameraPath::load(&args.path)?;
-    let (desc, _) = load(&args.scene, &args.include)?;
+    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     let base = Camera::from_desc(&desc.camera);
     let job = CaptureJob {

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::error::LocatedError;
-use crate::pov::{load_scene, IncludePath};
+use crate::pov::{load_scene_with_options_and_warnings, IncludePath, ParseOptions};
 use crate::scene::desc::SceneDesc;
 
 /// An error for the user, with the process exit code it maps to.
@@ -61,10 +61,20 @@ pub fn include_path(user_dirs: &[PathBuf]) -> IncludePath {
     IncludePath { dirs }
 }
 
-/// Parses a scene, timing it.
+/// Parses a scene, timing it, with POV-Ray's default `image_width`/`image_height` (640×480).
 pub fn load(path: &Path, user_dirs: &[PathBuf]) -> Result<(SceneDesc, Duration), CliError> {
+    load_sized(path, user_dirs, 640, 480)
+}
+
+/// Parses a scene for an image of `width`×`height`, which `image_width`/`image_height` report,
+/// printing the parser's warnings (POV-Ray's "Scale by 0.0 changed to 1.0") to stderr.
+pub fn load_sized(path: &Path, user_dirs: &[PathBuf], width: u32, height: u32) -> Result<(SceneDesc, Duration), CliError> {
     let start = Instant::now();
-    let desc = load_scene(path, &include_path(user_dirs))?;
+    let options = ParseOptions { image_width: width, image_height: height };
+    let (desc, warnings) = load_scene_with_options_and_warnings(path, &include_path(user_dirs), &options)?;
+    for w in warnings {
+        eprintln!("warning: {w}");
+    }
     Ok((desc, start.elapsed()))
 }
 

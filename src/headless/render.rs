@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use crate::camera::Camera;
 use crate::headless::report::{statistics, Timings};
-use crate::headless::{load, output, peak_memory_bytes, with_threads, CliError};
+use crate::headless::{load_sized, output, peak_memory_bytes, with_threads, CliError};
 use crate::render::image::Image;
 use crate::render::{render, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
@@ -21,7 +21,7 @@ pub struct RenderArgs {
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), CliError> {
-    let (desc, parse) = load(&args.scene, &args.include)?;
+    let (desc, parse) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let build_start = Instant::now();
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     let build = build_start.elapsed();

@@ -63,7 +63,10 @@ impl Scene {
     /// Whether anything lies on `ray` with `0 < t < t_max` (pbrt's `IntersectP`): stops at the
     /// first hit found, in any order.
     pub fn occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
-        for plane in &self.planes {
+        for (plane, &casts) in self.planes.iter().zip(&self.plane_casts_shadow) {
+            if !casts {
+                continue;
+            }
             let hit = plane.intersect(ray, 0.0, t_max).is_some();
             stats.count_test(ShapeKind::Plane, hit);
             if hit {
@@ -72,10 +75,11 @@ impl Scene {
         }
         let mut blocked = false;
         stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
-            if blocked {
+            let p = &self.prims[prim as usize];
+            if blocked || !p.casts_shadow {
                 return None;
             }
-            let t = self.test_prim(&self.prims[prim as usize], ray, t_max, stats)?;
+            let t = self.test_prim(p, ray, t_max, stats)?;
             blocked = true;
             // A zero limit culls every remaining node and cell.
             Some(t.min(0.0))
@@ -99,6 +103,14 @@ impl Scene {
                     ShapeKind::Plane => Vec3::Y,
                 }
             }
+        }
+    }
+
+    /// Whether shadow rays see this shape (false for `no_shadow` objects).
+    pub fn casts_shadow(&self, shape: HitShape) -> bool {
+        match shape {
+            HitShape::Plane(i) => self.plane_casts_shadow[i as usize],
+            HitShape::Prim(i) => self.prims[i as usize].casts_shadow,
         }
     }
 

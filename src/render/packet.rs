@@ -63,7 +63,7 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
         tracer.quality.shadows && !scene.features.transparency && scene.lights.len() <= MAX_PACKET_LIGHTS;
     let mut pass = [[[1.0f32; MAX_PACKET_LIGHTS]; 8]; 8];
     if packet_shadows {
-        for (l, light) in scene.lights.iter().enumerate() {
+        for (l, light) in scene.lights.iter().enumerate().filter(|(_, light)| !light.shadowless) {
             let mut shadow_rays = [[Ray::new(Vec3::ZERO, Vec3::Z); 8]; 8];
             let mut t_max = [F8::splat(f32::NEG_INFINITY); 8];
             let mut active = [M8::default(); 8];
@@ -236,7 +236,7 @@ fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active:
         *b = F8::or(*b, hit);
         *t = F8::select(hit, F8::splat(f32::NEG_INFINITY), *t);
     };
-    for plane in &scene.planes {
+    for (plane, _) in scene.planes.iter().zip(&scene.plane_casts_shadow).filter(|(_, &casts)| casts) {
         for (r, ray) in rows.iter().enumerate() {
             let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t_max[r]);
             let hit = F8::and(tp.lt(F8::splat(lanes::MISS)), active[r]);
@@ -247,6 +247,9 @@ fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active:
     }
     if let Accel::Bvh(bvh) = &scene.accel {
         stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, |prim, r, t_row| {
+            if !scene.prims[prim as usize].casts_shadow {
+                return;
+            }
             let t_new = prim_row(scene, prim, &rows[r], *t_row);
             let hit = F8::and(t_new.lt(F8::splat(lanes::MISS)), active[r]);
             let kind = scene.prims[prim as usize].kind;

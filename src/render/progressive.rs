@@ -76,7 +76,7 @@ mod tests {
     use crate::camera::Camera;
     use crate::render::{render, RenderSettings};
     use crate::scene::build::{AccelKind, Scene};
-    use crate::scene::testing::seed_like;
+    use crate::scene::fixtures::seed_scene as seed_like;
 
     /// The converged progressive image is the `--aa N` render, bit for bit (so within 1 LSB).
     #[test]

@@ -106,7 +106,7 @@ impl<'a> Tracer<'a> {
             let Some(l) = light_direction(surface, light.position) else { continue };
             let n_dot_l = normal.dot(l);
             let passed = match shadows {
-                _ if !self.quality.shadows => Vec3::ONE,
+                _ if !self.quality.shadows || light.shadowless => Vec3::ONE,
                 Shadows::Trace => self.shadow(&shadow_ray(p, facing, l, light.position)),
                 Shadows::Given(pass) => Vec3::splat(pass[i]),
             };
@@ -188,11 +188,13 @@ impl<'a> Tracer<'a> {
                 return pass;
             };
             let p = ray.at(hit.t);
-            let material = &scene.materials[scene.material_of(hit.shape) as usize];
-            let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
-            pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
-            if pass.max_element() < ADC_BAILOUT {
-                return Vec3::ZERO;
+            if scene.casts_shadow(hit.shape) {
+                let material = &scene.materials[scene.material_of(hit.shape) as usize];
+                let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
+                pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
+                if pass.max_element() < ADC_BAILOUT {
+                    return Vec3::ZERO;
+                }
             }
             let n = scene.normal_at(hit.shape, p);
             let next = offset_origin(p, n, ray.dir);

@@ -49,6 +49,8 @@ impl ShapeKind {
 #[derive(Clone, Copy, Debug)]
 pub struct PrimRef {
     pub kind: ShapeKind,
+    /// False for `no_shadow` objects: shadow rays pass through them.
+    pub casts_shadow: bool,
     pub index: u32,
     pub material: u32,
 }
@@ -58,6 +60,8 @@ pub struct Light {
     /// Render space.
     pub position: Vec3,
     pub color: Vec3,
+    /// `shadowless`: lights every point that faces it, no shadow rays.
+    pub shadowless: bool,
 }
 
 /// What the scene uses, so shading pays only for that.
@@ -66,6 +70,8 @@ pub struct Features {
     pub transparency: bool,
     pub reflection: bool,
     pub normals: bool,
+    /// Some object is `no_shadow`.
+    pub no_shadow: bool,
 }
 
 pub struct Scene {
@@ -79,6 +85,8 @@ pub struct Scene {
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
+    /// False for `no_shadow` planes.
+    pub plane_casts_shadow: Vec<bool>,
     /// Bounded primitives; the accelerator's primitive indices refer to this.
     pub prims: Vec<PrimRef>,
     pub materials: Vec<Material>,
@@ -146,12 +154,13 @@ impl Scene {
             polygons: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
+            plane_casts_shadow: Vec::new(),
             prims: Vec::new(),
             materials: Vec::with_capacity(desc.objects.len()),
             lights: desc
                 .lights
                 .iter()
-                .map(|l| Light { position: (l.position - origin).as_vec3(), color: l.color.as_vec3() })
+                .map(|l| Light { position: (l.position - origin).as_vec3(), color: l.color.as_vec3(), shadowless: l.shadowless })
                 .collect(),
             background: Rgbft::from_desc(&desc.background),
             ambient_light: desc.global.ambient_light.as_vec3(),
@@ -167,16 +176,17 @@ impl Scene {
             scene.features.reflection |= m.finish.reflects();
             scene.features.normals |= m.normal.is_some();
             scene.materials.push(m);
-            scene.add_shape(&object.shape, &object.transform, material);
+            scene.features.no_shadow |= object.no_shadow;
+            scene.add_shape(&object.shape, &object.transform, material, !object.no_shadow);
         }
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
 
-    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32) {
+    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {
         let world = |p: DVec3| t.matrix.transform_point3(p) - self.origin;
         let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
-            prims.push(PrimRef { kind, index: index as u32, material })
+            prims.push(PrimRef { kind, casts_shadow, index: index as u32, material })
         };
         match shape {
             ShapeDesc::Sphere { center, radius } => {
@@ -221,6 +231,7 @@ impl Scene {
                 let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
                 self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_world) as f32 });
                 self.plane_materials.push(material);
+                self.plane_casts_shadow.push(casts_shadow);
             }
         }
     }

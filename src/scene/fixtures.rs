@@ -41,6 +41,7 @@ fn object(
             finish,
         },
         interior: Default::default(),
+        no_shadow: false,
         source: SourceRef {
             file: "fixtures::seed_scene".into(),
             line: 0,
@@ -76,6 +77,7 @@ pub fn seed_scene() -> SceneDesc {
         .map(|position| LightDesc {
             position,
             color: DVec3::ONE,
+            shadowless: false,
         })
         .collect(),
         objects: vec![

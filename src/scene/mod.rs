@@ -4,5 +4,3 @@ pub mod build;
 pub mod desc;
 pub mod fixtures;
 pub mod material;
-#[doc(hidden)]
-pub mod testing;

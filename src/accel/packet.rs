@@ -98,19 +98,27 @@ fn row_enters(n: &BvhNode, r: &Ray8, t: F8, active: M8) -> bool {
     F8::and(hit, active).any()
 }
 
+/// Tests one primitive against one row of rays, lowering `t` for the lanes it hits.
+///
+/// A trait rather than a closure: its `#[inline(always)]` method is inlined into the walk and
+/// from there into the caller's `#[target_feature(enable = "avx2")]` function, where the 8-wide
+/// kernels compile to 256-bit instructions. (A closure was compiled out of line, without AVX2.)
+pub trait RowTest {
+    fn test(&mut self, prim: u32, row: usize, t: &mut F8);
+}
+
 impl Bvh {
     /// Walks the tree with `rows` (up to 64 rays). `t[r]` holds each ray's current limit;
-    /// `test(prim, row, &mut t[row])` tests one primitive against one row and lowers the lanes
-    /// it hits. `active[r]` masks lanes that take part (e.g. shadow rays already blocked).
+    /// `test` tests one primitive against one row and lowers the lanes it hits. `active[r]` masks lanes that take part (e.g. shadow rays already blocked).
     /// Returns the nodes visited.
     #[inline(always)]
-    pub fn traverse_packet<F: FnMut(u32, usize, &mut F8)>(
+    pub fn traverse_packet<T: RowTest>(
         &self,
         rows: &[Ray8],
         t: &mut [F8],
         active: &[M8],
         frustum: Option<&Frustum>,
-        mut test: F,
+        test: &mut T,
     ) -> u32 {
         if self.nodes.is_empty() || rows.is_empty() {
             return 0;
@@ -145,7 +153,7 @@ impl Bvh {
                 if n.is_leaf() {
                     for &p in &self.prim_order[n.first as usize..(n.first + n.count) as usize] {
                         for r in first..=last {
-                            test(p, r, &mut t[r]);
+                            test.test(p, r, &mut t[r]);
                         }
                     }
                 } else {

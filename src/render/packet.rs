@@ -9,7 +9,7 @@
 
 use glam::Vec3;
 
-use crate::accel::packet::{Frustum, Ray8};
+use crate::accel::packet::{Frustum, Ray8, RowTest};
 use crate::accel::Accel;
 use crate::geometry::lanes::{self, Lane, F8, M8, V3};
 use crate::geometry::ray::Ray;
@@ -159,13 +159,62 @@ fn intersect_rows_generic(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut 
     }
     let Accel::Bvh(bvh) = &scene.accel else { return };
     let all = [M8([-1; 8]); 8];
-    stats.nodes_visited += bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, |prim, r, t_row| {
-        let t_new = prim_row(scene, prim, &rows[r], *t_row);
-        let kind = scene.prims[prim as usize].kind;
-        let hits = take_nearer(t_row, &mut ids[r], t_new, prim);
-        stats.tests[kind as usize] += 8;
-        stats.hits[kind as usize] += hits as u64;
-    }) as u64;
+    let mut test = NearestRows { scene, rows, ids, stats: RenderStats::default() };
+    let visited = bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, &mut test);
+    *stats += test.stats;
+    stats.nodes_visited += visited as u64;
+}
+
+/// The nearest-hit primitive test for packets: records which primitive each lane hit.
+struct NearestRows<'a, 'r> {
+    scene: &'a Scene,
+    rows: &'r [Ray8],
+    ids: &'r mut [[u32; 8]],
+    stats: RenderStats,
+}
+
+impl RowTest for NearestRows<'_, '_> {
+    #[inline(always)]
+    fn test(&mut self, prim: u32, r: usize, t: &mut F8) {
+        let t_new = prim_row(self.scene, prim, &self.rows[r], *t);
+        let kind = self.scene.prims[prim as usize].kind;
+        let hits = take_nearer(t, &mut self.ids[r], t_new, prim);
+        self.stats.tests[kind as usize] += 8;
+        self.stats.hits[kind as usize] += hits as u64;
+    }
+}
+
+/// The any-hit primitive test for shadow packets: a blocked lane's limit drops to -inf, which
+/// every later node and primitive test rejects.
+struct BlockedRows<'a, 'r> {
+    scene: &'a Scene,
+    rows: &'r [Ray8],
+    active: &'r [M8],
+    blocked: [M8; 8],
+    stats: RenderStats,
+}
+
+impl BlockedRows<'_, '_> {
+    #[inline(always)]
+    fn block(&mut self, r: usize, t: &mut F8, hit: M8) {
+        self.blocked[r] = F8::or(self.blocked[r], hit);
+        *t = F8::select(hit, F8::splat(f32::NEG_INFINITY), *t);
+    }
+}
+
+impl RowTest for BlockedRows<'_, '_> {
+    #[inline(always)]
+    fn test(&mut self, prim: u32, r: usize, t: &mut F8) {
+        let p = &self.scene.prims[prim as usize];
+        if !p.casts_shadow {
+            return;
+        }
+        let t_new = prim_row(self.scene, prim, &self.rows[r], *t);
+        let hit = F8::and(t_new.lt(F8::splat(lanes::MISS)), self.active[r]);
+        self.stats.tests[p.kind as usize] += 8;
+        self.stats.hits[p.kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+        self.block(r, t, hit);
+    }
 }
 
 /// One primitive against a row of rays: hit distances below `t_max`, else `MISS`.
@@ -230,33 +279,19 @@ unsafe fn occluded_rows_avx2(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], act
 
 #[inline(always)]
 fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
-    let mut blocked = [M8::default(); 8];
-    // A blocked lane's limit drops to -inf, which every node and primitive test rejects.
-    let block = |t: &mut F8, b: &mut M8, hit: M8| {
-        *b = F8::or(*b, hit);
-        *t = F8::select(hit, F8::splat(f32::NEG_INFINITY), *t);
-    };
+    let mut test = BlockedRows { scene, rows, active, blocked: [M8::default(); 8], stats: RenderStats::default() };
     for (plane, _) in scene.planes.iter().zip(&scene.plane_casts_shadow).filter(|(_, &casts)| casts) {
         for (r, ray) in rows.iter().enumerate() {
             let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t_max[r]);
             let hit = F8::and(tp.lt(F8::splat(lanes::MISS)), active[r]);
-            stats.tests[ShapeKind::Plane as usize] += 8;
-            stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
-            block(&mut t_max[r], &mut blocked[r], hit);
+            test.stats.tests[ShapeKind::Plane as usize] += 8;
+            test.stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+            test.block(r, &mut t_max[r], hit);
         }
     }
     if let Accel::Bvh(bvh) = &scene.accel {
-        stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, |prim, r, t_row| {
-            if !scene.prims[prim as usize].casts_shadow {
-                return;
-            }
-            let t_new = prim_row(scene, prim, &rows[r], *t_row);
-            let hit = F8::and(t_new.lt(F8::splat(lanes::MISS)), active[r]);
-            let kind = scene.prims[prim as usize].kind;
-            stats.tests[kind as usize] += 8;
-            stats.hits[kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
-            block(t_row, &mut blocked[r], hit);
-        }) as u64;
+        stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, &mut test) as u64;
     }
-    blocked
+    *stats += test.stats;
+    test.blocked
 }

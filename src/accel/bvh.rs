@@ -48,6 +48,9 @@ pub struct Bvh {
 const BINS: usize = 16;
 /// Leaves stop splitting at this size; larger leaves only when no split is cheaper.
 const MAX_LEAF: usize = 4;
+/// Deepest tree built. Traversal stacks hold 64 entries, one per level at most, so no subtree
+/// is ever dropped; SAH trees over a million primitives are about 30 deep.
+pub const MAX_DEPTH: usize = 60;
 /// Relative cost of one node visit against one primitive test.
 const TRAVERSAL_COST: f32 = 1.0;
 
@@ -67,8 +70,8 @@ impl Bvh {
         }
         bvh.nodes.push(BvhNode { min: [0.0; 3], first: 0, max: [0.0; 3], count: prims.len() as u32 });
         // Explicit stack: a million-primitive scene must not recurse a million deep on bad splits.
-        let mut stack = vec![0usize];
-        while let Some(node_index) = stack.pop() {
+        let mut stack = vec![(0usize, 1usize)];
+        while let Some((node_index, depth)) = stack.pop() {
             let (first, count) = (bvh.nodes[node_index].first as usize, bvh.nodes[node_index].count as usize);
             let mut node_bounds = Aabb::EMPTY;
             let mut center_bounds = Aabb::EMPTY;
@@ -78,7 +81,7 @@ impl Bvh {
             }
             bvh.nodes[node_index].min = node_bounds.min.to_array();
             bvh.nodes[node_index].max = node_bounds.max.to_array();
-            if count <= 1 {
+            if count <= 1 || depth >= MAX_DEPTH {
                 continue;
             }
             let leaf_cost = count as f32;
@@ -105,8 +108,8 @@ impl Bvh {
             bvh.nodes.push(BvhNode { min: [0.0; 3], first: (first + left) as u32, max: [0.0; 3], count: (count - left) as u32 });
             bvh.nodes[node_index].first = child as u32;
             bvh.nodes[node_index].count = 0;
-            stack.push(child);
-            stack.push(child + 1);
+            stack.push((child, depth + 1));
+            stack.push((child + 1, depth + 1));
         }
         bvh
     }
@@ -266,6 +269,24 @@ mod tests {
         }
         assert!(seen.iter().all(|&c| c == 1));
         assert!(bvh.depth() < 40);
+    }
+
+    #[test]
+    fn depth_is_capped_on_degenerate_input() {
+        // Exponentially spaced centres make every SAH split peel off one primitive.
+        let b: Vec<Aabb> = (0..200).map(|i| {
+            let c = Vec3::splat(1.5f32.powi(i));
+            Aabb::new(c, c + Vec3::splat(1e-3))
+        }).collect();
+        let bvh = Bvh::build(&b);
+        assert!(bvh.depth() <= MAX_DEPTH);
+        let mut seen = vec![false; b.len()];
+        for n in bvh.nodes.iter().filter(|n| n.is_leaf()) {
+            for &p in &bvh.prim_order[n.first as usize..(n.first + n.count) as usize] {
+                seen[p as usize] = true;
+            }
+        }
+        assert!(seen.iter().all(|s| *s));
     }
 
     #[test]

@@ -2,8 +2,9 @@
 //! preset once per camera, then times every knob setting (one at a time, from `full`) and every
 //! preset, and scores its frames against the reference (PSNR, SSIM, largest 8-bit error).
 //!
-//! Timing is bench-style: per camera one warm-up frame, then `repeats` timed frames into
-//! pre-allocated images, median; nothing is encoded or allocated inside the timed part. The
+//! Timing is bench-style: per setting and camera one untimed frame (the one scored, and the
+//! warm-up), then `repeats` timed frames into pre-allocated images, median; nothing is encoded or
+//! allocated inside the timed part, and the settings take turns so machine noise spreads evenly. The
 //! reports (table, CSV, Markdown, SVG plot with the Pareto front) live in `tradeoff::report` and
 //! `tradeoff::svg`; everything is computed before the output folder is touched, so a bad
 //! argument or scene leaves nothing behind.
@@ -97,41 +98,71 @@ pub struct Measure {
     pub max_abs: u8,
 }
 
-/// Renders `setting` for every camera and compares with `refs` (8-bit RGB, one per camera).
-/// Returns the measure and camera 0's frame. Call inside the thread pool.
-pub fn measure(
+/// Renders `setting` once per camera, untimed, and scores it against `refs` (8-bit RGB, one
+/// per camera). Returns the measure without `ms`, and camera 0's frame. Call inside the pool.
+pub fn score(
     scene: &Scene,
     cameras: &[Camera],
     refs: &[Vec<u8>],
     setting: &Setting,
-    (width, height): (u32, u32),
-    repeats: u32,
+    frame: &mut Frame,
 ) -> (Measure, Vec<u8>) {
-    let settings = setting.render_settings(width, height);
-    let (mut image, mut low) = (Image::new(width, height), Image::new(width, height));
-    let (mut ms, mut mse, mut ssim, mut max_abs) = (0.0, 0.0, 0.0, 0u8);
+    let settings = setting.render_settings(frame.image.width, frame.image.height);
+    let (mut mse, mut ssim, mut max_abs) = (0.0, 0.0, 0u8);
     let mut first = Vec::new();
     for (i, (camera, reference)) in cameras.iter().zip(refs).enumerate() {
-        // Warm-up: caches, page faults, rayon's workers. Not timed.
-        render_scaled(scene, camera, &settings, setting.res_scale, &mut low, &mut image);
-        let mut times = Vec::with_capacity(repeats as usize);
-        for _ in 0..repeats {
-            let start = Instant::now();
-            render_scaled(scene, camera, &settings, setting.res_scale, &mut low, &mut image);
-            times.push(start.elapsed().as_secs_f64() * 1e3);
-        }
-        ms += frame_times(&times).median_ms;
-        let rgb = image.to_rgb8(scene.srgb);
+        render_scaled(scene, camera, &settings, setting.res_scale, &mut frame.low, &mut frame.image);
+        let rgb = frame.image.to_rgb8(scene.srgb);
         mse += metrics::mse(&rgb, reference);
-        ssim += metrics::ssim(width, height, &rgb, reference);
+        ssim += metrics::ssim(settings.width, settings.height, &rgb, reference);
         max_abs = max_abs.max(metrics::max_abs_diff(&rgb, reference));
         if i == 0 {
             first = rgb;
         }
     }
     let n = cameras.len().max(1) as f64;
-    let m = Measure { ms: ms / n, psnr_db: metrics::psnr_from_mse(mse / n), ssim: ssim / n, max_abs };
-    (m, first)
+    (Measure { ms: f64::NAN, psnr_db: metrics::psnr_from_mse(mse / n), ssim: ssim / n, max_abs }, first)
+}
+
+/// The images a render writes: the output and the reduced-size one, allocated once at full size
+/// so nothing is allocated while timing.
+pub struct Frame {
+    pub image: Image,
+    pub low: Image,
+}
+
+impl Frame {
+    pub fn new(width: u32, height: u32) -> Frame {
+        Frame { image: Image::new(width, height), low: Image::new(width, height) }
+    }
+}
+
+/// Each setting's median frame time over `repeats` frames per camera, averaged over cameras.
+/// The settings take turns frame by frame, so load that comes and goes on a shared machine
+/// falls on all of them alike rather than on whichever ran at the time. The caller renders
+/// every setting once before (`score`), which is the warm-up.
+pub fn time_settings(
+    scene: &Scene,
+    cameras: &[Camera],
+    settings: &[Setting],
+    repeats: u32,
+    frame: &mut Frame,
+) -> Vec<f64> {
+    let (w, h) = (frame.image.width, frame.image.height);
+    let render_settings: Vec<RenderSettings> = settings.iter().map(|s| s.render_settings(w, h)).collect();
+    // times[setting][camera][repeat], allocated before the first timed frame.
+    let mut times = vec![vec![Vec::with_capacity(repeats as usize); cameras.len()]; settings.len()];
+    for _ in 0..repeats {
+        for (i, (s, rs)) in settings.iter().zip(&render_settings).enumerate() {
+            for (c, camera) in cameras.iter().enumerate() {
+                let start = Instant::now();
+                render_scaled(scene, camera, rs, s.res_scale, &mut frame.low, &mut frame.image);
+                times[i][c].push(start.elapsed().as_secs_f64() * 1e3);
+            }
+        }
+    }
+    let n = cameras.len().max(1) as f64;
+    times.iter().map(|per_camera| per_camera.iter().map(|t| frame_times(t).median_ms).sum::<f64>() / n).collect()
 }
 
 /// |a − b| per channel times `ERROR_GAIN`, clipped: black where a frame matches the reference.
@@ -161,32 +192,33 @@ struct Results {
 }
 
 fn run_sweep(scene: &Scene, cameras: &[Camera], args: &TradeoffArgs) -> Results {
-    let size = (args.width, args.height);
     let reference = Setting::preset(Preset::Reference);
     let ref_settings = reference.render_settings(args.width, args.height);
-    let mut image = Image::new(args.width, args.height);
-    let mut low = Image::default();
+    let mut frame = Frame::new(args.width, args.height);
     let mut refs: Vec<Vec<u8>> = cameras
         .iter()
         .map(|c| {
-            render_scaled(scene, c, &ref_settings, reference.res_scale, &mut low, &mut image);
-            image.to_rgb8(scene.srgb)
+            render_scaled(scene, c, &ref_settings, reference.res_scale, &mut frame.low, &mut frame.image);
+            frame.image.to_rgb8(scene.srgb)
         })
         .collect();
     let settings = sweep();
-    let (mut rows, mut error_maps) = (Vec::new(), Vec::new());
     // Progress on a terminal only, so logs and pipes get just the table.
     let progress = std::io::stderr().is_terminal();
-    for (i, s) in settings.iter().enumerate() {
-        if progress {
-            eprint!("\r[{}/{}] {:<24}", i + 1, settings.len(), s.name);
-        }
-        let (m, frame) = measure(scene, cameras, &refs, s, size, args.repeats);
-        error_maps.push((s.slug(), error_map(&frame, &refs[0])));
+    if progress {
+        eprint!("scoring {} settings, then timing them {} times each ...", settings.len(), args.repeats);
+    }
+    let (mut rows, mut error_maps) = (Vec::new(), Vec::new());
+    for s in &settings {
+        let (m, first) = score(scene, cameras, &refs, s, &mut frame);
+        error_maps.push((s.slug(), error_map(&first, &refs[0])));
         rows.push(Row::new(s, scene.max_trace_level, m));
     }
+    for (row, ms) in rows.iter_mut().zip(time_settings(scene, cameras, &settings, args.repeats, &mut frame)) {
+        row.ms = ms;
+    }
     if progress {
-        eprint!("\r{:<40}\r", "");
+        eprint!("\r{:<72}\r", "");
     }
     mark_front(&mut rows);
     Results { rows, reference: refs.swap_remove(0), error_maps }

@@ -23,7 +23,7 @@ struct LogAxis {
 }
 
 impl LogAxis {
-    /// Whole decades around the positive values (1..10 if there are none).
+    /// The span of the positive values plus a margin (1..10 if there are none).
     fn around(values: impl Iterator<Item = f64>, a: f64, b: f64) -> LogAxis {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for v in values.filter(|v| v.is_finite() && *v > 0.0) {
@@ -33,10 +33,8 @@ impl LogAxis {
         if lo > hi {
             (lo, hi) = (1.0, 10.0);
         }
-        // A little margin so no point sits on a frame edge.
-        let lo = 10f64.powf((lo / 1.2).log10().floor());
-        let hi = 10f64.powf((hi * 1.2).log10().ceil());
-        LogAxis { lo, hi, a, b }
+        // A margin of ×1.4 each way, so no point sits on a frame edge and the leftmost label fits.
+        LogAxis { lo: lo / 1.4, hi: hi * 1.4, a, b }
     }
 
     /// Pixel of `v`; values at or below `lo` (an exact match's error of 0) sit on the edge.
@@ -45,15 +43,16 @@ impl LogAxis {
         self.a + (v / self.lo).log10() / (self.hi / self.lo).log10() * (self.b - self.a)
     }
 
-    /// Ticks at 1, 2 and 5 per decade over up to two decades, else at whole decades.
+    /// Ticks inside the axis at 1, 2 and 5 per decade over up to three decades, else at whole
+    /// decades.
     fn ticks(&self) -> Vec<(f64, String)> {
-        let (k0, k1) = (self.lo.log10().round() as i32, self.hi.log10().round() as i32);
-        let steps: &[f64] = if k1 - k0 <= 2 { &[1.0, 2.0, 5.0] } else { &[1.0] };
+        let (k0, k1) = (self.lo.log10().floor() as i32, self.hi.log10().ceil() as i32);
+        let steps: &[f64] = if (self.hi / self.lo).log10() <= 3.0 { &[1.0, 2.0, 5.0] } else { &[1.0] };
         let mut out = Vec::new();
         for k in k0..=k1 {
             for &m in steps {
                 let v = m * 10f64.powi(k);
-                if v <= self.hi * (1.0 + 1e-9) {
+                if (self.lo..=self.hi).contains(&v) {
                     let label = if (-3..=4).contains(&k) {
                         format!("{:.*}", (-k).max(0) as usize, v)
                     } else {
@@ -64,6 +63,48 @@ impl LogAxis {
             }
         }
         out
+    }
+}
+
+/// Average width of a character at font size 12, and how far text reaches above and below its
+/// baseline, in pixels.
+const CHAR: f64 = 6.6;
+const ASCENT: f64 = 10.0;
+const DESCENT: f64 = 3.0;
+
+/// A box labels must not overlap: (left, right, top, bottom).
+type Box = (f64, f64, f64, f64);
+
+/// Writes one label per point, left to right. Settings that cost the same often land on one
+/// spot (knobs the scene does not use change nothing), so a label that would overlap a point or
+/// a label already placed moves down below it, with a leader line back to its point.
+fn labels(o: &mut String, rows: &[Row], x: &LogAxis, y: &LogAxis) {
+    let mut order: Vec<(f64, f64, &str)> =
+        rows.iter().map(|r| (x.map(r.ms), y.map(r.error()), r.name.as_str())).collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut taken: Vec<Box> = order.iter().map(|&(px, py, _)| (px - 5.0, px + 5.0, py - 5.0, py + 5.0)).collect();
+    for (px, py, name) in order {
+        let width = CHAR * name.chars().count() as f64;
+        // Labels go left of points in the right quarter so they stay inside the picture.
+        let right_side = px <= RIGHT - (RIGHT - LEFT) / 4.0;
+        let left = if right_side { px + 8.0 } else { px - 8.0 - width };
+        let mut base = py - 6.0;
+        // Each step moves the baseline below one box it hit, so the loop ends.
+        while let Some(&(_, _, _, bottom)) =
+            taken.iter().find(|&&(l, r, t, b)| l < left + width && left < r && t < base + DESCENT && base - ASCENT < b)
+        {
+            base = bottom + ASCENT + 0.5;
+        }
+        taken.push((left, left + width, base - ASCENT, base + DESCENT));
+        let (tx, anchor) = if right_side { (left, "start") } else { (left + width, "end") };
+        if base > py + 1.0 {
+            let _ = writeln!(
+                o,
+                r##"<line x1="{px:.1}" y1="{py:.1}" x2="{tx:.1}" y2="{:.1}" stroke="#9a9a9a"/>"##,
+                base - 4.0
+            );
+        }
+        let _ = writeln!(o, r#"<text x="{tx:.1}" y="{base:.1}" text-anchor="{anchor}">{}</text>"#, escape(name));
     }
 }
 
@@ -132,16 +173,8 @@ pub fn plot(rows: &[Row], ctx: &Context) -> String {
             r.ms,
             r.ssim
         );
-        // Labels go left of points in the right quarter so they stay inside the picture.
-        let (dx, anchor) = if px > RIGHT - (RIGHT - LEFT) / 4.0 { (-8.0, "end") } else { (8.0, "start") };
-        let _ = writeln!(
-            o,
-            r#"<text x="{:.1}" y="{:.1}" text-anchor="{anchor}">{}</text>"#,
-            px + dx,
-            py - 6.0,
-            escape(&r.name)
-        );
     }
+    labels(&mut o, rows, &x, &y);
     let _ = writeln!(
         o,
         r##"<text x="{}" y="{}" text-anchor="end" fill="#d62728">● Pareto front (no setting is both faster and closer)</text>"##,
@@ -231,13 +264,15 @@ mod tests {
     #[test]
     fn log_ticks() {
         let a = LogAxis::around([3.0, 40.0].into_iter(), 0.0, 100.0);
-        assert_eq!((a.lo, a.hi), (1.0, 100.0));
         let labels: Vec<String> = a.ticks().into_iter().map(|(_, l)| l).collect();
-        assert_eq!(labels, ["1", "2", "5", "10", "20", "50", "100"]);
-        assert!((a.map(10.0) - 50.0).abs() < 1e-9);
-        assert_eq!(a.map(0.0), 0.0);
+        assert_eq!(labels, ["5", "10", "20", "50"]);
+        assert!((a.map(3.0 / 1.4) - 0.0).abs() < 1e-9 && (a.map(40.0 * 1.4) - 100.0).abs() < 1e-9);
+        assert_eq!(a.map(0.0), 0.0, "0 sits on the low edge");
         let e = LogAxis::around([0.002, 0.3].into_iter(), 0.0, 1.0);
         let labels: Vec<String> = e.ticks().into_iter().map(|(_, l)| l).collect();
-        assert_eq!(labels, ["0.001", "0.01", "0.1", "1"]);
+        assert_eq!(labels, ["0.002", "0.005", "0.01", "0.02", "0.05", "0.1", "0.2"]);
+        let wide = LogAxis::around([1e-5, 0.5].into_iter(), 0.0, 1.0);
+        let labels: Vec<String> = wide.ticks().into_iter().map(|(_, l)| l).collect();
+        assert_eq!(labels, ["1e-5", "1e-4", "0.001", "0.01", "0.1"]);
     }
 }

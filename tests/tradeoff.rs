@@ -8,10 +8,11 @@ fn seed() -> &'static str {
     concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/seed.pov")
 }
 
-/// A fresh, empty scratch path for one test (not created).
+/// A fresh scratch path for one test: nothing there, neither folder nor file.
 fn scratch(test: &str) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("tradeoff").join(test);
     let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_file(&dir);
     std::fs::create_dir_all(dir.parent().unwrap_or(Path::new("."))).unwrap_or_else(|e| panic!("{e}"));
     dir
 }

@@ -6,7 +6,9 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use strahl::headless::capture::{self, FrameRange};
-use strahl::headless::{self, bench, CliError};
+use strahl::headless::{self, bench, tradeoff, CliError};
+use strahl::render::preset::Preset;
+use strahl::render::resample::MIN_RES_SCALE;
 use strahl::render::{Quality, RenderSettings};
 use strahl::scene::build::AccelKind;
 
@@ -26,6 +28,9 @@ enum Command {
     Capture(CaptureCmd),
     /// Time render() over frames and report frame-time percentiles and rays per second.
     Bench(BenchCmd),
+    /// Measure every speed/accuracy knob and preset against the reference render: frame time,
+    /// PSNR, SSIM and largest error, to DIR/tradeoff.{csv,md,svg} and DIR/errors/*.png.
+    Tradeoff(TradeoffCmd),
     /// Fly through a scene in a window: adaptive resolution while moving, progressive
     /// antialiasing when still (converging to `strahl render` of the same camera).
     View(ViewCmd),
@@ -63,9 +68,17 @@ struct Common {
     /// Worker threads (0 = one per core).
     #[arg(long, default_value_t = 0)]
     threads: usize,
+    /// Speed/accuracy preset: fast, balanced, full (the scene as written; the default) or
+    /// reference (4×4 aa). Flags given explicitly override the preset's fields.
+    #[arg(long, value_name = "NAME")]
+    preset: Option<Preset>,
+    /// Trace F×W by F×H pixels (0.1 to 1) and upscale back to W×H, bilinearly. Default 1.
+    #[arg(long, value_name = "F", value_parser = parse_res_scale)]
+    res_scale: Option<f32>,
     /// Antialiasing: N×N samples per pixel (1 = one ray through each pixel centre, as POV-Ray -A).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
-    aa: u32,
+    /// Default 1.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16))]
+    aa: Option<u32>,
     /// Acceleration structure for bounded objects.
     #[arg(long, value_enum, default_value_t = AccelArg::Bvh)]
     accel: AccelArg,
@@ -83,16 +96,35 @@ struct Common {
     max_octaves: Option<u32>,
 }
 
+/// `--res-scale`: a number in MIN_RES_SCALE..=1.
+fn parse_res_scale(s: &str) -> Result<f32, String> {
+    match s.trim().parse::<f32>() {
+        Ok(f) if (MIN_RES_SCALE..=1.0).contains(&f) => Ok(f),
+        _ => Err(format!("`{s}` is not a resolution scale: give a number from {MIN_RES_SCALE} to 1")),
+    }
+}
+
 impl Common {
+    /// The render settings: the preset (default `full`), with every flag given overriding it.
     fn settings(&self) -> RenderSettings {
+        let preset = self.preset.unwrap_or(Preset::Full).settings();
         RenderSettings {
             width: self.width,
             height: self.height,
-            aa: self.aa,
-            quality: Quality { max_trace_level: self.max_depth, shadows: !self.no_shadows, max_octaves: self.max_octaves },
+            aa: self.aa.unwrap_or(preset.aa),
+            quality: Quality {
+                max_trace_level: self.max_depth.or(preset.quality.max_trace_level),
+                shadows: preset.quality.shadows && !self.no_shadows,
+                max_octaves: self.max_octaves.or(preset.quality.max_octaves),
+            },
             packets: !self.no_packets,
             ..RenderSettings::default()
         }
+    }
+
+    /// The fraction of the size to trace: `--res-scale`, else the preset's.
+    fn res_scale(&self) -> f32 {
+        self.res_scale.unwrap_or(self.preset.unwrap_or(Preset::Full).settings().res_scale)
     }
 }
 
@@ -167,6 +199,39 @@ struct BenchCmd {
 }
 
 #[derive(Args)]
+struct TradeoffCmd {
+    /// The POV-Ray scene file.
+    scene: PathBuf,
+    /// Camera path: measure at --frames cameras along it instead of the scene camera.
+    #[arg(long)]
+    path: Option<PathBuf>,
+    /// Cameras along --path (default 3); frame i is at t = i/(N-1).
+    #[arg(long, value_name = "N", requires = "path", value_parser = clap::value_parser!(u32).range(1..=10_000))]
+    frames: Option<u32>,
+    /// Timed renders per setting and camera, after one warm-up; the median is reported.
+    #[arg(long, value_name = "R", default_value_t = 3, value_parser = clap::value_parser!(u32).range(3..=1000))]
+    repeats: u32,
+    /// Image width in pixels.
+    #[arg(short = 'W', long, default_value_t = 640, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    width: u32,
+    /// Image height in pixels.
+    #[arg(short = 'H', long, default_value_t = 480, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    height: u32,
+    /// Output folder (created; files in it are replaced).
+    #[arg(short = 'o', long, value_name = "DIR")]
+    output: PathBuf,
+    /// Extra include folder, searched after the scene's own folder (repeatable).
+    #[arg(short = 'L', long = "include-path", value_name = "DIR")]
+    include: Vec<PathBuf>,
+    /// Worker threads (0 = one per core).
+    #[arg(long, default_value_t = 0)]
+    threads: usize,
+    /// Acceleration structure for bounded objects.
+    #[arg(long, value_enum, default_value_t = AccelArg::Bvh)]
+    accel: AccelArg,
+}
+
+#[derive(Args)]
 struct ViewCmd {
     /// The POV-Ray scene file.
     #[arg(default_value = "scenes/seed.pov")]
@@ -191,11 +256,15 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
     if !(v.target_fps.is_finite() && v.target_fps > 0.0) {
         return Err(CliError::user(format!("--target-fps must be a positive number, not {}", v.target_fps)));
     }
+    if v.common.res_scale.is_some() {
+        return Err(CliError::user("--res-scale is for render, capture and bench: the window picks its own resolution while the camera moves"));
+    }
+    let settings = v.common.settings();
     let options = strahl::app::ViewOptions {
         width: v.common.width,
         height: v.common.height,
-        aa: v.common.aa,
-        quality: v.common.settings().quality,
+        aa: settings.aa,
+        quality: settings.quality,
         threads: v.common.threads,
         accel: v.common.accel.into(),
         target_fps: v.target_fps,
@@ -223,6 +292,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             include: r.common.include.clone(),
             output: r.output,
             settings: r.common.settings(),
+            res_scale: r.common.res_scale(),
             threads: r.common.threads,
             accel: r.common.accel.into(),
             quiet: r.quiet,
@@ -240,9 +310,22 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 tile: c.tile,
                 ..c.common.settings()
             },
+            res_scale: c.common.res_scale(),
             threads: c.common.threads,
             accel: c.common.accel.into(),
             quiet: c.quiet,
+        }),
+        Command::Tradeoff(t) => tradeoff::run(&tradeoff::TradeoffArgs {
+            scene: t.scene,
+            include: t.include,
+            path: t.path,
+            frames: t.frames.unwrap_or(3),
+            width: t.width,
+            height: t.height,
+            output: t.output,
+            threads: t.threads,
+            repeats: t.repeats,
+            accel: t.accel.into(),
         }),
         Command::Bench(b) => bench::run(&bench::BenchArgs {
             scene: b.scene,
@@ -255,6 +338,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
                 tile: b.tile,
                 ..b.common.settings()
             },
+            res_scale: b.common.res_scale(),
             threads: b.common.threads,
             accel: b.common.accel.into(),
             threads_sweep: b.threads_sweep,

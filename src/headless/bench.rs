@@ -15,8 +15,9 @@ use crate::headless::capture::frame_t;
 use crate::headless::json::Json;
 use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
+use crate::render::resample::render_scaled;
 use crate::render::stats::RenderStats;
-use crate::render::{render, RenderSettings};
+use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
 
 /// Frame-time summary in milliseconds; percentiles by nearest rank.
@@ -79,16 +80,29 @@ impl Run {
 
 /// Renders `warmup` untimed frames, then times each camera once. Call inside the thread pool.
 pub fn timed_run(scene: &Scene, cameras: &[Camera], warmup: u32, settings: &RenderSettings) -> Run {
+    timed_run_scaled(scene, cameras, warmup, settings, 1.0)
+}
+
+/// `timed_run` tracing `res_scale` of the size and upscaling back; the upscale is timed too,
+/// since a frame is not done without it.
+pub fn timed_run_scaled(
+    scene: &Scene,
+    cameras: &[Camera],
+    warmup: u32,
+    settings: &RenderSettings,
+    res_scale: f32,
+) -> Run {
     // Allocated once at full size: `render` resizes in place and never reallocates after this.
     let mut image = Image::new(settings.width, settings.height);
+    let mut low = Image::new(settings.width, settings.height);
     for i in 0..warmup as usize {
-        render(scene, &cameras[i % cameras.len()], settings, &mut image);
+        render_scaled(scene, &cameras[i % cameras.len()], settings, res_scale, &mut low, &mut image);
     }
     let mut times_ms = Vec::with_capacity(cameras.len());
     let mut stats = RenderStats::default();
     for camera in cameras {
         let start = Instant::now();
-        let s = render(scene, camera, settings, &mut image);
+        let s = render_scaled(scene, camera, settings, res_scale, &mut low, &mut image);
         times_ms.push(start.elapsed().as_secs_f64() * 1e3);
         stats += s;
     }
@@ -109,13 +123,16 @@ pub struct BenchArgs {
     pub warmup: u32,
     pub json: Option<PathBuf>,
     pub settings: RenderSettings,
+    /// Fraction of the output size to trace, upscaled back (1 = every pixel).
+    pub res_scale: f32,
     pub threads: usize,
     pub accel: AccelKind,
     pub threads_sweep: bool,
 }
 
-fn quality_json(s: &RenderSettings) -> Json {
+fn quality_json(s: &RenderSettings, res_scale: f32) -> Json {
     Json::object(vec![
+        ("res_scale", Json::Number(res_scale as f64)),
         ("aa", Json::Number(s.aa as f64)),
         ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
         ("shadows", Json::Bool(s.quality.shadows)),
@@ -123,13 +140,13 @@ fn quality_json(s: &RenderSettings) -> Json {
     ])
 }
 
-fn quality_text(s: &RenderSettings, scene_level: u32) -> String {
+fn quality_text(s: &RenderSettings, res_scale: f32, scene_level: u32) -> String {
     let octaves = s
         .quality
         .max_octaves
         .map_or("scene".to_string(), |o| o.to_string());
     format!(
-        "aa {}x{}, max_trace_level {}, shadows {}, max_octaves {octaves}",
+        "res_scale {res_scale}, aa {}x{}, max_trace_level {}, shadows {}, max_octaves {octaves}",
         s.aa,
         s.aa,
         s.quality.max_trace_level.unwrap_or(scene_level),
@@ -169,7 +186,7 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
     let _ = writeln!(
         o,
         "quality:    {}",
-        quality_text(&args.settings, scene_level)
+        quality_text(&args.settings, args.res_scale, scene_level)
     );
     let _ = writeln!(
         o,
@@ -231,7 +248,7 @@ pub fn report_json(args: &BenchArgs, run: &Run, cpu: &str, sweep: &[Run]) -> Jso
         ("threads", Json::Number(run.threads as f64)),
         ("accel", Json::str(args.accel.name())),
         ("packets", Json::Bool(args.settings.packets)),
-        ("quality", quality_json(&args.settings)),
+        ("quality", quality_json(&args.settings, args.res_scale)),
         ("cpu", Json::str(cpu)),
         (
             "frame_ms",
@@ -289,7 +306,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         })
         .collect();
     let main_run = with_threads(args.threads, || {
-        timed_run(&scene, &cameras, args.warmup, &args.settings)
+        timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale)
     })?;
     let cpu = cpu_model();
     print!("{}", report(args, &main_run, scene.max_trace_level, &cpu));
@@ -298,7 +315,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
         for n in 1..=cores {
             sweep.push(with_threads(n, || {
-                timed_run(&scene, &cameras, args.warmup, &args.settings)
+                timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale)
             })?);
         }
         print!("\n{}", sweep_table(&sweep));

@@ -19,6 +19,7 @@ use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Mani
 use crate::headless::progress::Progress;
 use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
+use crate::render::resample::render_scaled;
 use crate::render::{render, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
 
@@ -91,14 +92,17 @@ pub struct CaptureJob<'a> {
     pub frames: u32,
     pub range: FrameRange,
     pub settings: RenderSettings,
+    /// Fraction of the output size to trace, upscaled back (1 = every pixel).
+    pub res_scale: f32,
     pub accel: AccelKind,
     pub quiet: bool,
 }
 
 /// What, besides the camera, decides the pixels: recorded so shards of different settings never
 /// merge. (Tile size and thread count are left out on purpose: they do not change pixels.)
-pub fn settings_json(s: &RenderSettings, accel: AccelKind) -> Json {
+pub fn settings_json(s: &RenderSettings, res_scale: f32, accel: AccelKind) -> Json {
     Json::object(vec![
+        ("res_scale", Json::Number(res_scale as f64)),
         ("aa", Json::Number(s.aa as f64)),
         ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
         ("shadows", Json::Bool(s.quality.shadows)),
@@ -129,6 +133,7 @@ pub fn capture(
     out_dir: &Path,
 ) -> Result<Manifest, CliError> {
     let mut image = Image::new(job.settings.width, job.settings.height);
+    let mut low = Image::default();
     let progress = Progress::new(
         (job.range.end - job.range.start) as u64,
         "frames",
@@ -139,7 +144,10 @@ pub fn capture(
         let t = frame_t(index, job.frames);
         let (location, look_at, angle) = job.path.sample(t);
         let camera = Camera::looking_at(location, look_at, angle, base);
-        let (rgb, render_ms) = render_rgb8(scene, &camera, &job.settings, &mut image);
+        let start = Instant::now();
+        render_scaled(scene, &camera, &job.settings, job.res_scale, &mut low, &mut image);
+        let render_ms = start.elapsed().as_secs_f64() * 1e3;
+        let rgb = image.to_rgb8(scene.srgb);
         let file = frame_file_name(index);
         output::write_png(&out_dir.join(&file), image.width, image.height, &rgb)?;
         frames.push(FrameRecord {
@@ -159,7 +167,7 @@ pub fn capture(
         width: job.settings.width,
         height: job.settings.height,
         frame_count: job.frames,
-        settings: settings_json(&job.settings, job.accel),
+        settings: settings_json(&job.settings, job.res_scale, job.accel),
         frames,
     })
 }
@@ -184,6 +192,7 @@ pub struct CaptureArgs {
     pub range: Option<FrameRange>,
     pub output: PathBuf,
     pub settings: RenderSettings,
+    pub res_scale: f32,
     pub threads: usize,
     pub accel: AccelKind,
     pub quiet: bool,
@@ -213,6 +222,7 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
         frames: args.frames,
         range,
         settings: args.settings,
+        res_scale: args.res_scale,
         accel: args.accel,
         quiet: args.quiet,
     };

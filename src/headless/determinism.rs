@@ -142,6 +142,7 @@ fn shards_merge_into_the_whole_capture() {
             height: 18,
             ..RenderSettings::default()
         },
+        res_scale: 1.0,
         accel: AccelKind::Bvh,
         quiet: true,
     };

@@ -4,20 +4,36 @@
 /// Peak signal-to-noise ratio in dB over all channels; `f64::INFINITY` for identical images.
 /// Panics if the buffers differ in length (comparing different sizes is a caller bug).
 pub fn psnr(a: &[u8], b: &[u8]) -> f64 {
+    psnr_from_mse(mse(a, b))
+}
+
+/// Mean squared error over all channels, in 8-bit steps squared; 0 for empty buffers. Averaging
+/// this over several frames and then taking `psnr_from_mse` gives the PSNR of all of them.
+/// Panics if the buffers differ in length.
+pub fn mse(a: &[u8], b: &[u8]) -> f64 {
     assert_eq!(a.len(), b.len(), "psnr: images differ in size");
     if a.is_empty() {
-        return f64::INFINITY;
+        return 0.0;
     }
     let sse: u64 = a
         .iter()
         .zip(b)
         .map(|(&x, &y)| (x as i64 - y as i64).pow(2) as u64)
         .sum();
-    if sse == 0 {
+    sse as f64 / a.len() as f64
+}
+
+/// PSNR in dB of an 8-bit mean squared error; `f64::INFINITY` for 0.
+pub fn psnr_from_mse(mse: f64) -> f64 {
+    if mse <= 0.0 {
         return f64::INFINITY;
     }
-    let mse = sse as f64 / a.len() as f64;
     10.0 * (255.0 * 255.0 / mse).log10()
+}
+
+/// The largest difference of any channel of any pixel, in 8-bit steps.
+pub fn max_abs_diff(a: &[u8], b: &[u8]) -> u8 {
+    a.iter().zip(b).map(|(&x, &y)| x.abs_diff(y)).max().unwrap_or(0)
 }
 
 /// Block size of `ssim`: 8×8 non-overlapping windows, the cheap variant of Wang et al. (2004).

@@ -1,4 +1,4 @@
-//! Headless front ends: `render`, `capture`, `bench`, and the shared plumbing (loading,
+//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, and the shared plumbing (loading,
 //! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 
 pub mod bench;
@@ -12,6 +12,7 @@ pub mod output;
 pub mod progress;
 pub mod render;
 pub mod report;
+pub mod tradeoff;
 
 use std::fmt;
 use std::path::{Path, PathBuf};

@@ -7,7 +7,8 @@ use crate::camera::Camera;
 use crate::headless::report::{statistics, Timings};
 use crate::headless::{load_sized, output, peak_memory_bytes, with_threads, CliError};
 use crate::render::image::Image;
-use crate::render::{render, RenderSettings};
+use crate::render::resample::render_scaled;
+use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
 
 pub struct RenderArgs {
@@ -15,6 +16,8 @@ pub struct RenderArgs {
     pub include: Vec<PathBuf>,
     pub output: PathBuf,
     pub settings: RenderSettings,
+    /// Fraction of the output size to trace, upscaled back (1 = every pixel).
+    pub res_scale: f32,
     pub threads: usize,
     pub accel: AccelKind,
     pub quiet: bool,
@@ -26,9 +29,9 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     let build = build_start.elapsed();
     let camera = Camera::from_desc(&desc.camera);
-    let mut image = Image::default();
+    let (mut low, mut image) = (Image::default(), Image::default());
     let trace_start = Instant::now();
-    let stats = with_threads(args.threads, || render(&scene, &camera, &args.settings, &mut image))?;
+    let stats = with_threads(args.threads, || render_scaled(&scene, &camera, &args.settings, args.res_scale, &mut low, &mut image))?;
     let trace = trace_start.elapsed();
     output::write_png(&args.output, image.width, image.height, &image.to_rgb8(scene.srgb))?;
     if !args.quiet {

@@ -8,7 +8,9 @@ pub mod adaptive;
 pub mod image;
 pub mod intersect;
 pub mod packet;
+pub mod preset;
 pub mod progressive;
+pub mod resample;
 pub mod stats;
 pub mod trace;
 

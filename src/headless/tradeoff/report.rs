@@ -1,0 +1,287 @@
+//! The trade-off results as rows, their Pareto front, and the text, CSV and Markdown tables.
+
+use std::fmt::Write as _;
+
+use super::{Measure, Setting};
+
+/// One measured setting, with its effective knob values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The flags that select it, without the leading `--`: `res-scale 0.25`, `preset fast`.
+    pub name: String,
+    pub res_scale: f32,
+    pub aa: u32,
+    /// The effective `max_trace_level` (the scene's unless overridden).
+    pub max_trace_level: u32,
+    pub shadows: bool,
+    /// `None`: as the scene's textures ask.
+    pub max_octaves: Option<u32>,
+    pub ms: f64,
+    pub psnr_db: f64,
+    pub ssim: f64,
+    pub max_abs: u8,
+    /// On the Pareto front of (ms, 1 − SSIM); set by `mark_front`.
+    pub front: bool,
+}
+
+impl Row {
+    pub fn new(s: &Setting, scene_level: u32, m: Measure) -> Row {
+        Row {
+            name: s.name.clone(),
+            res_scale: s.res_scale,
+            aa: s.aa,
+            max_trace_level: s.quality.max_trace_level.unwrap_or(scene_level),
+            shadows: s.quality.shadows,
+            max_octaves: s.quality.max_octaves,
+            ms: m.ms,
+            psnr_db: m.psnr_db,
+            ssim: m.ssim,
+            max_abs: m.max_abs,
+            front: false,
+        }
+    }
+
+    /// The error the front and the plot use: 1 − SSIM, 0 for a perfect match.
+    pub fn error(&self) -> f64 {
+        (1.0 - self.ssim).max(0.0)
+    }
+}
+
+/// Indices of the points no other point dominates, minimising both coordinates, in order of
+/// increasing x. A point is dominated when another is no worse in both and better in one, so
+/// equal points are all kept. Points with a NaN coordinate are never on the front.
+pub fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
+    let dominates = |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
+    let mut front: Vec<usize> = (0..points.len())
+        .filter(|&i| {
+            let p = points[i];
+            !p.0.is_nan() && !p.1.is_nan() && !points.iter().any(|&q| dominates(q, p))
+        })
+        .collect();
+    front.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0).then(points[a].1.total_cmp(&points[b].1)));
+    front
+}
+
+/// Sets `front` on the rows on the Pareto front of (ms, 1 − SSIM).
+pub fn mark_front(rows: &mut [Row]) {
+    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.ms, r.error())).collect();
+    let front = pareto_front(&points);
+    for (i, r) in rows.iter_mut().enumerate() {
+        r.front = front.contains(&i);
+    }
+}
+
+/// Where and how the figures were taken, for the report headers.
+pub struct Context {
+    pub scene: String,
+    pub width: u32,
+    pub height: u32,
+    /// "the scene camera" or "N cameras along PATH".
+    pub cameras: String,
+    pub repeats: u32,
+    pub threads: usize,
+    pub cpu: String,
+}
+
+impl Context {
+    fn summary(&self) -> String {
+        format!(
+            "{} at {}x{}, {}; median of {} timed frames after one warm-up, {} threads on {}",
+            self.scene, self.width, self.height, self.cameras, self.repeats, self.threads, self.cpu
+        )
+    }
+}
+
+/// Frame time relative to the `preset full` row (NaN without one).
+fn speedup(rows: &[Row], r: &Row) -> f64 {
+    rows.iter().find(|f| f.name == "preset full").map_or(f64::NAN, |f| f.ms / r.ms)
+}
+
+fn psnr_text(db: f64) -> String {
+    if db.is_infinite() {
+        "inf".into()
+    } else {
+        format!("{db:.2}")
+    }
+}
+
+fn octaves_text(o: Option<u32>) -> String {
+    o.map_or("scene".into(), |o| o.to_string())
+}
+
+pub const CSV_HEADER: &str =
+    "setting,res_scale,aa,max_trace_level,shadows,max_octaves,ms,speedup,psnr_db,ssim,one_minus_ssim,max_abs_err,front";
+
+/// One line per row under `CSV_HEADER`. Numbers are plain decimals (`inf` for a PSNR of an
+/// exact match); `max_octaves` is `scene` where the scene's own counts apply.
+pub fn csv(rows: &[Row]) -> String {
+    let mut o = format!("{CSV_HEADER}\n");
+    for r in rows {
+        let _ = writeln!(
+            o,
+            "{},{},{},{},{},{},{:.3},{:.3},{},{:.6},{:.6},{},{}",
+            r.name,
+            r.res_scale,
+            r.aa,
+            r.max_trace_level,
+            r.shadows,
+            octaves_text(r.max_octaves),
+            r.ms,
+            speedup(rows, r),
+            psnr_text(r.psnr_db),
+            r.ssim,
+            r.error(),
+            r.max_abs,
+            r.front
+        );
+    }
+    o
+}
+
+/// The report as Markdown: what was measured, then the table; the plot sits beside it as
+/// `svg_name`.
+pub fn markdown(rows: &[Row], ctx: &Context, svg_name: &str) -> String {
+    let mut o = format!("# Speed/accuracy trade-off: `{}`\n\n", ctx.scene);
+    let _ = writeln!(o, "{}.\n", ctx.summary());
+    o.push_str(
+        "Errors are against `--preset reference` (4×4 aa, everything else as the scene asks): PSNR over \
+         all cameras' pixels, SSIM (8×8 blocks of luma) averaged over cameras, and the largest 8-bit \
+         error of any channel in any frame. Each row moves one knob from `full`, except the presets. \
+         ★ marks the Pareto front of (ms, 1 − SSIM): no other setting is both faster and closer. \
+         Regenerate with `strahl tradeoff`.\n\n",
+    );
+    o.push_str("| setting | ms | speedup | PSNR dB | SSIM | 1 − SSIM | max abs err | front |\n");
+    o.push_str("|---|--:|--:|--:|--:|--:|--:|:-:|\n");
+    for r in rows {
+        let _ = writeln!(
+            o,
+            "| `--{}` | {:.2} | {:.2}× | {} | {:.4} | {:.5} | {} | {} |",
+            r.name,
+            r.ms,
+            speedup(rows, r),
+            psnr_text(r.psnr_db).replace("inf", "∞"),
+            r.ssim,
+            r.error(),
+            r.max_abs,
+            if r.front { "★" } else { "" }
+        );
+    }
+    let _ = writeln!(o, "\n![frame time against 1 − SSIM, Pareto front drawn]({svg_name})");
+    o
+}
+
+/// The table printed to stdout.
+pub fn table(rows: &[Row], ctx: &Context) -> String {
+    let mut o = format!("{}\n", ctx.summary());
+    let width = rows.iter().map(|r| r.name.len()).max().unwrap_or(0).max(7);
+    let _ = writeln!(
+        o,
+        "{:<width$}  {:>9}  {:>7}  {:>7}  {:>7}  {:>8}  {:>7}  front",
+        "setting", "ms", "speedup", "PSNR dB", "SSIM", "1-SSIM", "max err"
+    );
+    for r in rows {
+        let _ = writeln!(
+            o,
+            "{:<width$}  {:>9.2}  {:>6.2}x  {:>7}  {:>7.4}  {:>8.5}  {:>7}  {}",
+            r.name,
+            r.ms,
+            speedup(rows, r),
+            psnr_text(r.psnr_db),
+            r.ssim,
+            r.error(),
+            r.max_abs,
+            if r.front { "*" } else { "" }
+        );
+    }
+    o
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+
+    /// Rows with the given (name, ms, ssim), knobs as in `full`.
+    pub fn rows(points: &[(&str, f64, f64)]) -> Vec<Row> {
+        let mut rows: Vec<Row> = points
+            .iter()
+            .map(|&(name, ms, ssim)| Row {
+                name: name.into(),
+                res_scale: 1.0,
+                aa: 1,
+                max_trace_level: 5,
+                shadows: true,
+                max_octaves: None,
+                ms,
+                psnr_db: if ssim >= 1.0 { f64::INFINITY } else { 20.0 + 20.0 * ssim },
+                ssim,
+                max_abs: ((1.0 - ssim) * 255.0) as u8,
+                front: false,
+            })
+            .collect();
+        mark_front(&mut rows);
+        rows
+    }
+
+    #[test]
+    fn pareto_front_drops_dominated_points() {
+        // (ms, error): c is dominated by b (slower and worse); d by a (same ms, worse error).
+        let p = [(10.0, 0.5), (20.0, 0.1), (30.0, 0.2), (10.0, 0.6), (40.0, 0.0)];
+        assert_eq!(pareto_front(&p), vec![0, 1, 4]);
+    }
+
+    #[test]
+    fn pareto_front_keeps_ties_and_skips_nan() {
+        // Two identical points: neither dominates the other, so both stay.
+        let p = [(5.0, 0.3), (5.0, 0.3), (1.0, f64::NAN), (9.0, 0.1), (9.0, 0.3)];
+        assert_eq!(pareto_front(&p), vec![0, 1, 3]);
+        assert!(pareto_front(&[]).is_empty());
+        assert_eq!(pareto_front(&[(1.0, 1.0)]), vec![0]);
+        // Equal x: only the lower y survives; equal y: only the lower x.
+        assert_eq!(pareto_front(&[(2.0, 1.0), (2.0, 0.5), (3.0, 0.5)]), vec![1]);
+    }
+
+    #[test]
+    fn csv_parses_back() {
+        let rows = rows(&[("res-scale 0.25", 2.5, 0.8), ("preset full", 10.0, 0.95), ("preset reference", 160.0, 1.0)]);
+        let text = csv(&rows);
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines[0], CSV_HEADER);
+        assert_eq!(lines.len(), 1 + rows.len());
+        let header: Vec<&str> = CSV_HEADER.split(',').collect();
+        let col = |name: &str| header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("{name}"));
+        for (line, row) in lines[1..].iter().zip(&rows) {
+            let f: Vec<&str> = line.split(',').collect();
+            assert_eq!(f.len(), header.len(), "{line}");
+            assert_eq!(f[col("setting")], row.name);
+            let num = |name: &str| f[col(name)].parse::<f64>().unwrap_or_else(|e| panic!("{name} in {line}: {e}"));
+            assert!((num("ms") - row.ms).abs() < 1e-3);
+            assert!((num("ssim") - row.ssim).abs() < 1e-6);
+            assert_eq!(num("psnr_db").is_infinite(), row.psnr_db.is_infinite());
+            assert_eq!(f[col("front")].parse::<bool>(), Ok(row.front));
+            assert_eq!(f[col("max_octaves")], "scene");
+        }
+        assert_eq!(lines[1].split(',').nth(col("speedup")), Some("4.000"));
+    }
+
+    #[test]
+    fn markdown_and_table_list_every_row() {
+        let rows = rows(&[("aa 2", 40.0, 0.99), ("max-depth 1", 9.0, 0.9), ("preset full", 10.0, 0.95)]);
+        let ctx = Context {
+            scene: "s.pov".into(),
+            width: 64,
+            height: 48,
+            cameras: "the scene camera".into(),
+            repeats: 3,
+            threads: 2,
+            cpu: "cpu".into(),
+        };
+        let md = markdown(&rows, &ctx, "plot.svg");
+        assert_eq!(md.lines().filter(|l| l.starts_with("| `--")).count(), 3);
+        assert!(md.contains("| `--preset full` | 10.00 | 1.00× |"), "{md}");
+        assert!(md.contains("](plot.svg)"));
+        // max-depth 1 is faster but worse than full; full is dominated by nothing; all on the front.
+        assert!(rows.iter().all(|r| r.front));
+        let t = table(&rows, &ctx);
+        assert_eq!(t.lines().count(), 2 + rows.len());
+    }
+}

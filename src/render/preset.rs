@@ -1,0 +1,117 @@
+//! Named speed/accuracy presets (`--preset fast|balanced|full|reference`): a resolution scale,
+//! an antialiasing level and the `Quality` knobs, chosen from measured trade-offs.
+//!
+//! `full` renders exactly what the scene asks; `reference` is the best strahl renders and the
+//! image `strahl tradeoff` measures every other setting against. `fast` and `balanced` are
+//! points on the Pareto front that `strahl tradeoff` measured on the seed scene
+//! (`docs/tradeoff/seed.md`). Explicit flags override a preset's fields in the CLI.
+
+use std::fmt;
+use std::str::FromStr;
+
+use super::Quality;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Preset {
+    Fast,
+    Balanced,
+    Full,
+    Reference,
+}
+
+/// What a preset sets: the fraction of the output size to trace (upscaled back), N×N
+/// antialiasing, and the quality knobs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PresetSettings {
+    pub res_scale: f32,
+    pub aa: u32,
+    pub quality: Quality,
+}
+
+impl Preset {
+    pub const ALL: [Preset; 4] = [Preset::Fast, Preset::Balanced, Preset::Full, Preset::Reference];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Preset::Fast => "fast",
+            Preset::Balanced => "balanced",
+            Preset::Full => "full",
+            Preset::Reference => "reference",
+        }
+    }
+
+    pub fn settings(self) -> PresetSettings {
+        let full = PresetSettings { res_scale: 1.0, aa: 1, quality: Quality::default() };
+        // `fast` and `balanced` are points of the Pareto front of (ms, 1 − SSIM) that
+        // `strahl tradeoff scenes/seed.pov -W 640 -H 360 --repeats 9` measured (docs/tradeoff/seed.md,
+        // 2 shared cores). The front is res-scale 0.25 (8.5 ms, 1 − SSIM 0.194), 0.5 (18.3 ms, 0.101),
+        // 0.75 (40 ms, 0.064), aa 2 (254 ms, 0.036), aa 3 (581 ms, 0.026), reference (989 ms, 0);
+        // `full` (62.5 ms, 0.0645) is off it, because the bilinear upscale of a 0.75 render smooths
+        // the checker's aliasing about as much as it loses detail. No other knob reaches the front on
+        // this scene: shadows off saves 28% for 1.45× the error, max_octaves 0 saves 17% for 1.12×,
+        // and max_trace_level changes nothing (no reflection or refraction).
+        match self {
+            // 3.4× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
+            // the front before the error doubles with each halving of time (0.25 is 2.2× faster
+            // again for 1.9× the error, and traces 160×90 pixels at 640×360).
+            Preset::Fast => PresetSettings { res_scale: 0.5, ..full },
+            // The knee of the front: 1.5-1.6× faster than `full` at its error (1 − SSIM 0.0644 vs
+            // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 6.4× the time for 0.55× the error.
+            Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
+            Preset::Full => full,
+            // 4×4 samples per pixel: strahl's best, and the reference errors are measured against.
+            Preset::Reference => PresetSettings { aa: 4, ..full },
+        }
+    }
+}
+
+impl fmt::Display for Preset {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Preset {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Preset, String> {
+        Preset::ALL.into_iter().find(|p| p.name() == s).ok_or_else(|| {
+            let names: Vec<&str> = Preset::ALL.iter().map(|p| p.name()).collect();
+            format!("unknown preset `{s}` (presets: {})", names.join(", "))
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for p in Preset::ALL {
+            assert_eq!(p.name().parse::<Preset>(), Ok(p));
+            assert_eq!(p.to_string(), p.name());
+        }
+        let e = "quick".parse::<Preset>().unwrap_err();
+        assert!(e.contains("`quick`") && e.contains("fast, balanced, full, reference"), "{e}");
+    }
+
+    #[test]
+    fn full_is_the_scene_and_reference_is_4x4_aa() {
+        let full = Preset::Full.settings();
+        assert_eq!(full, PresetSettings { res_scale: 1.0, aa: 1, quality: Quality::default() });
+        assert_eq!(Preset::Reference.settings(), PresetSettings { aa: 4, ..full });
+    }
+
+    #[test]
+    fn cheaper_presets_are_cheaper() {
+        // Pixels traced per output pixel: scale² × aa². Fast ≤ balanced ≤ full < reference.
+        let cost = |p: Preset| {
+            let s = p.settings();
+            s.res_scale * s.res_scale * (s.aa * s.aa) as f32
+        };
+        assert!(cost(Preset::Fast) <= cost(Preset::Balanced));
+        assert!(cost(Preset::Balanced) <= cost(Preset::Full));
+        assert!(cost(Preset::Full) < cost(Preset::Reference));
+    }
+}

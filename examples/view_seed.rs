@@ -25,6 +25,8 @@ fn main() {
         screenshot: None,
         title: "strahl - seed (built in)".into(),
         hud: false,
+        path: None,
+        report: None,
     };
     let mut reference: Option<PathBuf> = None;
     let args: Vec<String> = std::env::args().skip(1).collect();

@@ -182,7 +182,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     playback::write_report(report, &json)?;
     let num = |k: &str, f: &str| json.get(k).and_then(|v| v.get(f)).and_then(|v| v.as_f64()).unwrap_or(f64::NAN);
     eprintln!(
-        "{}: {:.1} fps presented, frame {:.1} ms median {:.1} ms p95, scale {:.2} mean, PSNR {:.2} dB mean (min {:.2}), SSIM {:.3} mean",
+        "{}: {:.1} fps presented, frame {:.1} ms median {:.1} ms p95, scale {:.2} mean, PSNR {:.2} dB mean (min {:.2}, pooled {:.2}), SSIM {:.3} mean",
         report.display(),
         json.get("presented_fps").and_then(|v| v.as_f64()).unwrap_or(0.0),
         num("frame_time_ms", "median"),
@@ -190,6 +190,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
         num("render_scale", "mean"),
         num("psnr_db", "mean"),
         num("psnr_db", "min"),
+        json.get("psnr_db_pooled").and_then(|v| v.as_f64()).unwrap_or(f64::NAN),
         num("ssim", "mean"),
     );
     Ok(())

@@ -194,6 +194,25 @@ mod tests {
     }
 
     #[test]
+    fn a_reload_error_is_drawn_in_red_along_the_bottom() {
+        let (w, h) = (640u32, 480u32);
+        let mut px = vec![0x808080; (w * h) as usize];
+        let mut c = Canvas {
+            pixels: &mut px,
+            width: w,
+            height: h,
+        };
+        let long = "x".repeat(500);
+        draw_error(&mut c, &format!("s.pov:2:3: unknown keyword `locaton`\n  locaton {long}\n  ^\nmore\nand more"));
+        let red_rows: Vec<usize> = (0..h as usize)
+            .filter(|y| px[y * w as usize..(y + 1) * w as usize].contains(&ERROR))
+            .collect();
+        assert!(!red_rows.is_empty());
+        assert!(red_rows[0] > h as usize / 2, "the message sits in the lower half");
+        assert!(px[..w as usize * 8].iter().all(|&p| p == 0x808080), "the top (HUD) is untouched");
+    }
+
+    #[test]
     fn hud_and_help_draw_on_tiny_surfaces() {
         let info = HudInfo {
             frame_avg: 0.016,

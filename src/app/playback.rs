@@ -170,11 +170,7 @@ pub struct ReportContext<'a> {
 fn stats(values: &[f64], unit: f64) -> Json {
     let mut sorted: Vec<f64> = values.iter().map(|v| v * unit).collect();
     sorted.sort_by(f64::total_cmp);
-    let mean = if sorted.is_empty() {
-        f64::NAN
-    } else {
-        sorted.iter().sum::<f64>() / sorted.len() as f64
-    };
+    let mean = if sorted.is_empty() { f64::NAN } else { sorted.iter().sum::<f64>() / sorted.len() as f64 };
     Json::object(vec![
         ("mean", Json::Number(mean)),
         ("median", Json::Number(percentile(&sorted, 50.0))),
@@ -226,11 +222,7 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
         ]));
     }
     let wall = playback.wall_seconds();
-    let fps = if wall > 0.0 {
-        playback.frames_presented() as f64 / wall
-    } else {
-        0.0
-    };
+    let fps = if wall > 0.0 { playback.frames_presented() as f64 / wall } else { 0.0 };
     let q = cx.quality;
     Ok(Json::object(vec![
         ("scene", Json::str(cx.scene)),
@@ -264,10 +256,7 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
             "machine",
             Json::object(vec![
                 ("cpu", Json::str(cpu_model())),
-                (
-                    "cores",
-                    Json::Number(std::thread::available_parallelism().map_or(0, |n| n.get()) as f64),
-                ),
+                ("cores", Json::Number(std::thread::available_parallelism().map_or(0, |n| n.get()) as f64)),
             ]),
         ),
     ]))

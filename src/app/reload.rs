@@ -27,8 +27,9 @@ pub fn stamp(path: &Path) -> Stamp {
     Some((meta.modified().ok()?, meta.len()))
 }
 
-/// The scene file and every file it `#include`s, directly or not, that exists on disk; the scene
-/// file first, each file once.
+/// The scene file and every file it `#include`s, directly or not; the scene file first, each file
+/// once. An include that is not found is listed where it would be looked for first (next to the
+/// file including it), so that creating it there counts as a change.
 pub fn scene_files(scene: &Path, include: &IncludePath) -> Vec<PathBuf> {
     let mut files = vec![scene.to_path_buf()];
     let mut next = 0;
@@ -48,7 +49,8 @@ pub fn scene_files(scene: &Path, include: &IncludePath) -> Vec<PathBuf> {
                     .iter()
                     .chain(include.dirs.iter())
                     .map(|d| d.join(name))
-                    .find(|p| p.is_file());
+                    .find(|p| p.is_file())
+                    .or_else(|| here.as_ref().map(|d| d.join(name)));
                 if let Some(p) = found {
                     if !files.contains(&p) {
                         files.push(p);
@@ -223,7 +225,11 @@ mod tests {
         write(&dir.join("a.inc"), "#include \"b.inc\"\n#include \"a.inc\"\n", 1);
         write(&lib.join("b.inc"), "#include \"s.pov\"\n", 1);
         let files = scene_files(&dir.join("s.pov"), &IncludePath { dirs: vec![lib.clone()] });
-        assert_eq!(files, [dir.join("s.pov"), dir.join("a.inc"), lib.join("b.inc")]);
+        // b.inc's "s.pov" is not next to it nor on the include path (the parser would fail too):
+        // it is watched where it would be found first.
+        let expect =
+            [dir.join("s.pov"), dir.join("a.inc"), dir.join("missing.inc"), lib.join("b.inc"), lib.join("s.pov")];
+        assert_eq!(files, expect);
         let _ = fs::remove_dir_all(&dir);
     }
 

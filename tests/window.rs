@@ -322,6 +322,58 @@ fn bad_view_arguments_exit_2_before_a_window() {
     bad_view_args(&[seed, "--path-seconds", "3"], "--path");
     bad_view_args(&[seed, "--path", orbit, "--frames", "3"], "--frames");
     bad_view_args(&[seed, "-W", "0"], "0 is not in 1..=16384");
-    bad_view_args(&[seed, "-H", "-5"], "-H");
+    bad_view_args(&[seed, "-H", "-5"], "unexpected argument '-5'");
+    bad_view_args(&[seed, "--height", "0"], "0 is not in 1..=16384");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Whether process `pid` has a thread named `name` (Linux; elsewhere assume it has).
+fn has_thread(pid: u32, name: &str) -> bool {
+    let Ok(tasks) = std::fs::read_dir(format!("/proc/{pid}/task")) else {
+        return !Path::new("/proc").exists();
+    };
+    tasks.flatten().any(|t| std::fs::read_to_string(t.path().join("comm")).is_ok_and(|c| c.trim() == name))
+}
+
+/// Live reload in the window: a broken save is reported with its location and the window keeps
+/// running; fixing the file reloads it. Timed by a 6 s path, with 2 s between edits against a
+/// 250 ms poll.
+#[test]
+fn view_reloads_a_scene_edited_on_disk() {
+    let Some((_xvfb, display)) = display() else {
+        return;
+    };
+    let dir = tmp_dir("reload");
+    let scene = dir.join("seed.pov");
+    let good = std::fs::read_to_string(seed()).unwrap();
+    std::fs::write(&scene, &good).unwrap();
+    let child = Command::new(BIN)
+        .args(["view", scene.to_str().unwrap(), "-W", "160", "-H", "120", "--path-seconds", "6"])
+        .arg("--path")
+        .arg(scenes("seed.orbit.path"))
+        .env("DISPLAY", &display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The render thread starts after the scene has loaded: only then is the file watched.
+    let start = Instant::now();
+    while !has_thread(child.id(), "strahl-view") {
+        assert!(start.elapsed() < Duration::from_secs(60), "the window never started");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(500));
+    std::fs::write(&scene, good.replace("sphere {", "sphere { <0, 2, 4> <0, 1, 0>,")).unwrap();
+    std::thread::sleep(Duration::from_secs(2));
+    std::fs::write(&scene, &good).unwrap();
+    let out = finish(child, Duration::from_secs(120));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "strahl view failed: {err}");
+    let failed = err.find("reload failed").unwrap_or_else(|| panic!("no reload error reported: {err}"));
+    let located = format!("{}:", scene.display());
+    assert!(err[failed..].contains(&located), "the error names file:line:col: {err}");
+    let fixed = err.find("reloaded: the scene loads again").unwrap_or_else(|| panic!("no recovery: {err}"));
+    assert!(fixed > failed, "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }

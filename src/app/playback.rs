@@ -106,7 +106,7 @@ impl Playback {
 
     /// Whether the next fresh present will be sampled (so the window copies its pixels only then).
     pub fn wants_sample(&self) -> bool {
-        !self.finished() && self.presented % self.stride == 0
+        !self.finished() && self.presented.is_multiple_of(self.stride)
     }
 
     /// Records a fresh present at `now` of a frame at `scale` rendered for `camera`; `shown` is
@@ -132,7 +132,7 @@ impl Playback {
         if self.samples.len() > MAX_SAMPLES {
             self.stride *= 2;
             let stride = self.stride;
-            self.samples.retain(|s| (s.index - 1) % stride == 0);
+            self.samples.retain(|s| (s.index - 1).is_multiple_of(stride));
         }
     }
 
@@ -326,7 +326,7 @@ mod tests {
         let base = Camera::from_desc(&Default::default());
         let t0 = Instant::now();
         p.camera(t0, &base);
-        let px = vec![0x102030u32; 4];
+        let px = [0x102030u32; 4];
         for i in 1..=1000u64 {
             let now = t0 + Duration::from_millis(i * 16);
             let shown = p.wants_sample().then_some((&px[..], 2, 2));

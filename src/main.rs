@@ -248,6 +248,16 @@ struct ViewCmd {
     /// Start with the HUD and key help shown (F1 toggles them).
     #[arg(long)]
     hud: bool,
+    /// Play this camera path in real time (adaptive resolution as when flying), then exit.
+    #[arg(long, value_name = "FILE", conflicts_with = "frames")]
+    path: Option<PathBuf>,
+    /// Seconds the path takes (default: its key times if they span 2 or more, else 10).
+    #[arg(long, value_name = "S", requires = "path")]
+    path_seconds: Option<f64>,
+    /// After the path, write presented fps, frame times, render scale and PSNR/SSIM against
+    /// full-quality renders to this JSON file.
+    #[arg(long, value_name = "FILE", requires = "path")]
+    report: Option<PathBuf>,
     #[command(flatten)]
     common: Common,
 }
@@ -272,6 +282,8 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
         screenshot: v.screenshot,
         title: format!("strahl - {}", v.scene.display()),
         hud: v.hud,
+        path: v.path.as_deref().map(|p| strahl::app::PathPlay::load(p, v.path_seconds)).transpose()?,
+        report: v.report,
     };
     strahl::app::view_file(&v.scene, &v.common.include, options)
 }

@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
+use strahl::headless::json::Json;
 use strahl::headless::output::read_png;
 
 const BIN: &str = env!("CARGO_BIN_EXE_strahl");
@@ -102,29 +103,52 @@ fn psnr_helper() {
     assert!((psnr(&[0; 4], &[255; 4])).abs() < 1e-12);
 }
 
-#[test]
-fn view_screenshot_matches_render() {
-    let _xvfb;
-    let display = if on_path("Xvfb") {
+fn scenes(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(name)
+}
+
+/// A display to open windows on: a fresh Xvfb where installed (its guard first), else `$DISPLAY`,
+/// else `None` after printing why the test is skipped.
+fn display() -> Option<(Option<Xvfb>, String)> {
+    if on_path("Xvfb") {
         match Xvfb::start() {
             Some(x) => {
                 let d = x.display.clone();
-                _xvfb = x;
-                d
+                Some((Some(x), d))
             }
             None => panic!("Xvfb is installed but would not start"),
         }
     } else if let Some(d) = std::env::var_os("DISPLAY") {
-        d.to_string_lossy().into_owned()
+        Some((None, d.to_string_lossy().into_owned()))
     } else {
         println!("skipping: no X server (install xvfb)");
+        None
+    }
+}
+
+/// Waits for `child` up to `limit`, killing it after that; returns its output.
+fn finish(mut child: Child, limit: Duration) -> std::process::Output {
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            panic!("strahl view did not finish within {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn view_screenshot_matches_render() {
+    let Some((_xvfb, display)) = display() else {
         return;
     };
     let dir = tmp_dir("shot");
     let shot = dir.join("shot.png");
     let reference = dir.join("render.png");
 
-    let mut child = Command::new(BIN)
+    let child = Command::new(BIN)
         .args([
             "view",
             seed().to_str().unwrap(),
@@ -145,20 +169,9 @@ fn view_screenshot_matches_render() {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    let start = Instant::now();
-    let status = loop {
-        if let Some(s) = child.try_wait().unwrap() {
-            break s;
-        }
-        if start.elapsed() > Duration::from_secs(240) {
-            let _ = child.kill();
-            panic!("strahl view did not finish within 240 s");
-        }
-        std::thread::sleep(Duration::from_millis(100));
-    };
-    let out = child.wait_with_output().unwrap();
+    let out = finish(child, Duration::from_secs(240));
     assert!(
-        status.success(),
+        out.status.success(),
         "strahl view failed: {}",
         String::from_utf8_lossy(&out.stderr)
     );
@@ -214,4 +227,153 @@ fn view_without_display_points_to_headless_commands() {
         err.contains("strahl render") && err.contains("strahl capture"),
         "{err}"
     );
+}
+
+/// `--path --report`: plays the orbit for two seconds and writes sane measurements.
+#[test]
+fn view_path_writes_a_report() {
+    let Some((_xvfb, display)) = display() else {
+        return;
+    };
+    let dir = tmp_dir("report");
+    let report = dir.join("r.json");
+    let child = Command::new(BIN)
+        .args(["view", seed().to_str().unwrap(), "-W", "320", "-H", "240", "--path-seconds", "2"])
+        .arg("--path")
+        .arg(scenes("seed.orbit.path"))
+        .arg("--report")
+        .arg(&report)
+        .env("DISPLAY", &display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let out = finish(child, Duration::from_secs(240));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "strahl view --path failed: {stderr}");
+    let text = std::fs::read_to_string(&report).unwrap();
+    let json = Json::parse(&text).unwrap();
+    let num = |path: &[&str]| {
+        let mut v = &json;
+        for k in path {
+            v = v.get(k).unwrap_or_else(|| panic!("report has no {path:?}:\n{text}"));
+        }
+        v.as_f64().unwrap_or_else(|| panic!("{path:?} is not a number:\n{text}"))
+    };
+    assert!(num(&["presented_fps"]) > 0.0);
+    assert!(num(&["frames_presented"]) >= 1.0);
+    let wall = num(&["wall_seconds"]);
+    assert!((1.9..30.0).contains(&wall), "the path plays for ~2 s, not {wall}");
+    assert_eq!(num(&["path_seconds"]), 2.0);
+    assert!(num(&["frame_time_ms", "median"]) > 0.0);
+    assert!(num(&["frame_time_ms", "p95"]) >= num(&["frame_time_ms", "median"]));
+    let (lo, hi) = (num(&["render_scale", "min"]), num(&["render_scale", "max"]));
+    assert!(0.0 < lo && lo <= hi && hi <= 1.0, "scale {lo}..{hi}");
+    let psnr = num(&["psnr_db", "mean"]);
+    assert!(psnr.is_finite() && psnr > 10.0, "PSNR {psnr}");
+    let ssim = num(&["ssim", "mean"]);
+    assert!(ssim > 0.0 && ssim <= 1.0, "SSIM {ssim}");
+    let samples = json.get("samples").and_then(Json::as_array).unwrap();
+    assert!(!samples.is_empty() && samples.len() <= 20);
+    for s in samples {
+        assert!(s.get("psnr_db").and_then(Json::as_f64).is_some_and(f64::is_finite), "{text}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Runs `strahl view ARGS` without any display: an argument error must come first, exit 2, and
+/// mention `expect`; the display error would mean the arguments were accepted.
+fn bad_view_args(args: &[&str], expect: &str) {
+    let out = Command::new(BIN)
+        .arg("view")
+        .args(args)
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(!err.contains("cannot open a window"), "{args:?} was accepted: {err}");
+    assert!(err.contains(expect), "{args:?}: expected `{expect}` in: {err}");
+}
+
+#[test]
+fn bad_view_arguments_exit_2_before_a_window() {
+    let dir = tmp_dir("badargs");
+    let seed = seed();
+    let seed = seed.to_str().unwrap();
+    let orbit = scenes("seed.orbit.path");
+    let orbit = orbit.to_str().unwrap();
+    let missing = dir.join("missing.path");
+    bad_view_args(&[seed, "--path", missing.to_str().unwrap()], "missing.path:1:1: cannot read");
+
+    let malformed = dir.join("bad.path");
+    std::fs::write(&malformed, "key 0 location <0, 1, 0> look_at <0, 0, 1>\nkey 1 locaton <1, 1, 0>\n").unwrap();
+    bad_view_args(&[seed, "--path", malformed.to_str().unwrap()], "bad.path:2:");
+
+    let nowhere = dir.join("no-such-dir").join("r.json");
+    bad_view_args(&[seed, "--path", orbit, "--report", nowhere.to_str().unwrap()], "cannot write there");
+    bad_view_args(&[seed, "--path", orbit, "--report", dir.to_str().unwrap()], "is a folder");
+    bad_view_args(&[seed, "--report", "r.json"], "--path");
+    bad_view_args(&[seed, "--path", orbit, "--path-seconds", "0"], "--path-seconds");
+    bad_view_args(&[seed, "--path", orbit, "--path-seconds", "nan"], "--path-seconds");
+    bad_view_args(&[seed, "--path-seconds", "3"], "--path");
+    bad_view_args(&[seed, "--path", orbit, "--frames", "3"], "--frames");
+    bad_view_args(&[seed, "-W", "0"], "0 is not in 1..=16384");
+    bad_view_args(&[seed, "-H", "-5"], "unexpected argument '-5'");
+    bad_view_args(&[seed, "--height", "0"], "0 is not in 1..=16384");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Whether process `pid` has a thread named `name` (Linux; elsewhere assume it has).
+fn has_thread(pid: u32, name: &str) -> bool {
+    let Ok(tasks) = std::fs::read_dir(format!("/proc/{pid}/task")) else {
+        return !Path::new("/proc").exists();
+    };
+    tasks.flatten().any(|t| std::fs::read_to_string(t.path().join("comm")).is_ok_and(|c| c.trim() == name))
+}
+
+/// Live reload in the window: a broken save is reported with its location and the window keeps
+/// running; fixing the file reloads it. Timed by a 6 s path, with 2 s between edits against a
+/// 250 ms poll.
+#[test]
+fn view_reloads_a_scene_edited_on_disk() {
+    let Some((_xvfb, display)) = display() else {
+        return;
+    };
+    let dir = tmp_dir("reload");
+    let scene = dir.join("seed.pov");
+    let good = std::fs::read_to_string(seed()).unwrap();
+    std::fs::write(&scene, &good).unwrap();
+    let child = Command::new(BIN)
+        .args(["view", scene.to_str().unwrap(), "-W", "160", "-H", "120", "--path-seconds", "6"])
+        .arg("--path")
+        .arg(scenes("seed.orbit.path"))
+        .env("DISPLAY", &display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The render thread starts after the scene has loaded: only then is the file watched.
+    let start = Instant::now();
+    while !has_thread(child.id(), "strahl-view") {
+        assert!(start.elapsed() < Duration::from_secs(60), "the window never started");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(500));
+    std::fs::write(&scene, good.replace("sphere {", "sphere { <0, 2, 4> <0, 1, 0>,")).unwrap();
+    std::thread::sleep(Duration::from_secs(2));
+    std::fs::write(&scene, &good).unwrap();
+    let out = finish(child, Duration::from_secs(120));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "strahl view failed: {err}");
+    let failed = err.find("reload failed").unwrap_or_else(|| panic!("no reload error reported: {err}"));
+    let located = format!("{}:", scene.display());
+    assert!(err[failed..].contains(&located), "the error names file:line:col: {err}");
+    let fixed = err.find("reloaded: the scene loads again").unwrap_or_else(|| panic!("no recovery: {err}"));
+    assert!(fixed > failed, "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

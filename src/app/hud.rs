@@ -139,6 +139,7 @@ pub const HELP: &[&str] = &[
     "Esc             release mouse, quit",
     "R               reset camera",
     "F2              quality preset",
+    "F5              reload scene (also on save)",
     "F12             screenshot PNG",
     "P               print camera {}",
     "F1 / Start      this help + HUD",
@@ -152,6 +153,28 @@ pub fn draw_help(canvas: &mut Canvas) {
     let w = (HELP.iter().map(|l| l.len()).max().unwrap_or(0) as u32 * GLYPH + 8) * scale;
     let x = canvas.width as i32 - w as i32 - 8;
     panel(canvas, x.max(8), 8, &lines, scale);
+}
+
+/// Red-ish, readable on both the dark panel and a bright scene.
+const ERROR: u32 = 0xff6060;
+/// Lines of a scene error shown: `file:line:col: message`, the source line and the caret.
+const ERROR_LINES: usize = 4;
+
+/// A failed reload's located error, along the bottom edge. Drawn whether or not the HUD is on:
+/// the scene on screen is the last good one, and the user must see why their edit is not.
+pub fn draw_error(canvas: &mut Canvas, message: &str) {
+    let scale = text_scale(canvas.width);
+    let cols = ((canvas.width.saturating_sub(32) / (GLYPH * scale)) as usize).max(8);
+    let mut lines: Vec<(String, u32)> = vec![("reload failed, showing the last good scene:".into(), TEXT)];
+    for line in message.lines().take(ERROR_LINES) {
+        // Tabs would draw as one glyph and break the caret's column: widen them to one space.
+        let line: String = line.replace('\t', " ").chars().take(cols).collect();
+        lines.push((line, ERROR));
+    }
+    let line_h = (GLYPH + 3) * scale;
+    let height = lines.len() as u32 * line_h + 8 * scale;
+    let y = canvas.height as i32 - height as i32 - 8;
+    panel(canvas, 8, y.max(0), &lines, scale);
 }
 
 #[cfg(test)]
@@ -168,6 +191,25 @@ mod tests {
         let (avg, p95) = t.summary();
         assert!((avg - 0.0145).abs() < 1e-9, "{avg}");
         assert!((p95 - 0.100).abs() < 1e-9 || (p95 - 0.010).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_reload_error_is_drawn_in_red_along_the_bottom() {
+        let (w, h) = (640u32, 480u32);
+        let mut px = vec![0x808080; (w * h) as usize];
+        let mut c = Canvas {
+            pixels: &mut px,
+            width: w,
+            height: h,
+        };
+        let long = "x".repeat(500);
+        draw_error(&mut c, &format!("s.pov:2:3: unknown keyword `locaton`\n  locaton {long}\n  ^\nmore\nand more"));
+        let red_rows: Vec<usize> = (0..h as usize)
+            .filter(|y| px[y * w as usize..(y + 1) * w as usize].contains(&ERROR))
+            .collect();
+        assert!(!red_rows.is_empty());
+        assert!(red_rows[0] > h as usize / 2, "the message sits in the lower half");
+        assert!(px[..w as usize * 8].iter().all(|&p| p == 0x808080), "the top (HUD) is untouched");
     }
 
     #[test]
@@ -192,6 +234,7 @@ mod tests {
             };
             draw_hud(&mut c, &info);
             draw_help(&mut c);
+            draw_error(&mut c, "s.pov:2:3: unknown keyword `locaton`\n    locaton <0,0,0>\n    ^");
         }
     }
 }

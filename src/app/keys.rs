@@ -14,6 +14,8 @@ pub enum Command {
     CycleQuality,
     PrintCamera,
     ToggleHud,
+    /// F5: reload the scene from disk.
+    Reload,
 }
 
 /// Applies a key to the held-key state; returns the command a fresh press asks for.
@@ -48,6 +50,7 @@ pub fn apply_key(
         KeyCode::F2 => Some(Command::CycleQuality),
         KeyCode::KeyP => Some(Command::PrintCamera),
         KeyCode::F1 => Some(Command::ToggleHud),
+        KeyCode::F5 => Some(Command::Reload),
         _ => None,
     }
 }

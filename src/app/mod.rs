@@ -9,13 +9,19 @@ pub mod font;
 pub mod gamepad;
 pub mod hud;
 pub mod keys;
+pub mod playback;
+pub mod reload;
 pub mod render_thread;
 mod window;
 
 use std::path::{Path, PathBuf};
 
+use crate::app::playback::{check_writable, default_seconds, Playback, ReportContext};
+use crate::app::reload::Reloader;
+use crate::app::render_thread::Watch;
+use crate::camera::path::CameraPath;
 use crate::camera::Camera;
-use crate::headless::{load, CliError};
+use crate::headless::CliError;
 use crate::render::Quality;
 use crate::scene::build::{AccelKind, Scene};
 use crate::scene::desc::SceneDesc;
@@ -42,6 +48,31 @@ pub struct ViewOptions {
     pub title: String,
     /// Start with the HUD and help shown (F1 toggles).
     pub hud: bool,
+    /// `--path`: play this camera path in real time instead of flying, then exit.
+    pub path: Option<PathPlay>,
+    /// `--report`: after the path, write frame rate and image quality here (JSON).
+    pub report: Option<PathBuf>,
+}
+
+/// A camera path to play, and over how many seconds its t runs from 0 to 1.
+#[derive(Clone, Debug)]
+pub struct PathPlay {
+    pub file: PathBuf,
+    pub path: CameraPath,
+    pub seconds: f64,
+}
+
+impl PathPlay {
+    /// Loads `file`; `seconds` defaults to [`playback::default_seconds`].
+    pub fn load(file: &Path, seconds: Option<f64>) -> Result<PathPlay, CliError> {
+        let path = CameraPath::load(file)?;
+        let seconds = match seconds {
+            Some(s) if s.is_finite() && s > 0.0 && s <= 1e6 => s,
+            Some(s) => return Err(CliError::user(format!("--path-seconds must be a positive number of seconds, not {s}"))),
+            None => default_seconds(&path),
+        };
+        Ok(PathPlay { file: file.to_path_buf(), path, seconds })
+    }
 }
 
 /// The message for a machine without a display, pointing at the headless commands.
@@ -113,25 +144,86 @@ fn initial_speed(scene: &Scene, camera: &Camera) -> f64 {
     }
 }
 
-/// Opens the window on `desc` and runs until it is closed (or `--frames` is done).
+/// Opens the window on `desc` and runs until it is closed (or `--frames` or the path is done).
 pub fn run(desc: &SceneDesc, options: ViewOptions) -> Result<(), CliError> {
+    run_watched(desc, None, options)
+}
+
+/// [`run`], reloading the scene from disk when `reloader`'s files change (or on F5).
+fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOptions) -> Result<(), CliError> {
     check_display()?;
-    let scene = Scene::build(desc, desc.camera.location, options.accel);
+    if let Some(report) = &options.report {
+        check_writable(report)?;
+    }
+    let origin = desc.camera.location;
+    let scene = Scene::build(desc, origin, options.accel);
     let camera = Camera::from_desc(&desc.camera);
     let speed = initial_speed(&scene, &camera);
-    window::run(scene, camera, speed, options)
+    let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
+    let playback = options.path.as_ref().map(|p| Playback::new(p.path.clone(), p.seconds));
+    let (Some(playback), Some(report), Some(play)) = (window::run(scene, camera, speed, watch, playback, options.clone())?, &options.report, &options.path) else {
+        return Ok(());
+    };
+    // The window is closed: now the references can take all the cores. They use the scene as
+    // the path started with it (a reload during playback is not reflected).
+    eprintln!("comparing {} sampled frames with full-quality renders ...", playback.samples().len());
+    let scene = Scene::build(desc, origin, options.accel);
+    let cx = ReportContext {
+        scene: &options.title,
+        path: &play.file,
+        width: options.width,
+        height: options.height,
+        target_fps: options.target_fps,
+        aa: options.aa,
+        quality: options.quality,
+        threads: options.threads,
+    };
+    let json = playback::report(&playback, &scene, &cx)?;
+    playback::write_report(report, &json)?;
+    let num = |k: &str, f: &str| json.get(k).and_then(|v| v.get(f)).and_then(|v| v.as_f64()).unwrap_or(f64::NAN);
+    eprintln!(
+        "{}: {:.1} fps presented, frame {:.1} ms median {:.1} ms p95, scale {:.2} mean, PSNR {:.2} dB mean (min {:.2}, pooled {:.2}), SSIM {:.3} mean",
+        report.display(),
+        json.get("presented_fps").and_then(|v| v.as_f64()).unwrap_or(0.0),
+        num("frame_time_ms", "median"),
+        num("frame_time_ms", "p95"),
+        num("render_scale", "mean"),
+        num("psnr_db", "mean"),
+        num("psnr_db", "min"),
+        json.get("psnr_db_pooled").and_then(|v| v.as_f64()).unwrap_or(f64::NAN),
+        num("ssim", "mean"),
+    );
+    Ok(())
+}
+
+/// Checks what `strahl view` was given that does not need a display or the scene: the path file
+/// parses, `--path-seconds` is sane, the report can be written. Bad arguments exit 2 before any
+/// window opens, with or without a display.
+pub fn check_options(options: &ViewOptions) -> Result<(), CliError> {
+    if options.width == 0 || options.height == 0 {
+        return Err(CliError::user(format!("window size must be at least 1x1, not {}x{}", options.width, options.height)));
+    }
+    if options.report.is_some() && options.path.is_none() {
+        return Err(CliError::user("--report needs --path: it measures a camera path played back"));
+    }
+    if let Some(report) = &options.report {
+        check_writable(report)?;
+    }
+    Ok(())
 }
 
 /// `strahl view SCENE`: checks for a display first (so a headless machine hears about `render`
 /// and `capture`, not about the scene), then parses the scene and opens the window. The default
 /// `scenes/seed.pov` is also looked for in the source tree, so `cargo run` works from anywhere.
 pub fn view_file(path: &Path, include: &[PathBuf], options: ViewOptions) -> Result<(), CliError> {
+    check_options(&options)?;
     check_display()?;
     let mut path = path.to_path_buf();
     let bundled = Path::new(env!("CARGO_MANIFEST_DIR")).join(&path);
     if !path.exists() && path.is_relative() && bundled.exists() {
         path = bundled;
     }
-    let (desc, _) = load(&path, include)?;
-    run(&desc, options)
+    let reloader = Reloader::open(&path, include)?;
+    let desc = reloader.last_good().clone();
+    run_watched(&desc, Some(reloader), options)
 }

@@ -8,12 +8,19 @@
 //!
 //! Frames circulate between the two threads (at most `FRAMES` exist), so the steady state
 //! allocates nothing. This module knows no window type: the caller passes a `wake` callback.
+//!
+//! Live reload happens here too: given a [`Watch`], the thread polls the scene's files between
+//! frames (and every `reload::POLL` while idle), rebuilds its `Scene` when they change or F5 asks,
+//! and publishes the outcome in a [`ReloadStatus`]; a broken file leaves the old scene in place.
 
 use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Condvar, Mutex, PoisonError};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use glam::DVec3;
+
+use crate::app::reload::{Reloader, POLL};
 use crate::camera::Camera;
 use crate::headless::CliError;
 use crate::render::adaptive::ScaleController;
@@ -21,7 +28,7 @@ use crate::render::image::Image;
 use crate::render::progressive::Accumulator;
 use crate::render::stats::RenderStats;
 use crate::render::{render, Quality, RenderSettings};
-use crate::scene::build::Scene;
+use crate::scene::build::{AccelKind, Scene};
 
 /// How long a view must stay unchanged before refinement starts, so that a camera moving in
 /// small steps (key repeat, a slow stick) is not interrupted by a full-resolution pass.
@@ -69,9 +76,32 @@ pub struct Frame {
     pub view: Option<View>,
 }
 
+/// What the render thread needs to rebuild its scene from disk.
+pub struct Watch {
+    pub reloader: Reloader,
+    /// The render origin the first scene was built around; kept, so that a reload changes only
+    /// what the file changed.
+    pub origin: DVec3,
+    pub accel: AccelKind,
+}
+
+/// The outcome of the latest reload, for the window to show.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ReloadStatus {
+    /// Counts reloads, failed ones included, so the window can tell that something happened.
+    pub generation: u64,
+    /// The located error of the last reload; `None` once a reload succeeds.
+    pub error: Option<String>,
+    /// The camera the reloaded scene declares (for R, reset camera).
+    pub camera: Option<Camera>,
+}
+
 struct Slot {
     view: Option<View>,
     quit: bool,
+    /// F5: reload even if no file changed.
+    reload: bool,
+    status: ReloadStatus,
 }
 
 type Shared = Arc<(Mutex<Slot>, Condvar)>;
@@ -88,6 +118,7 @@ impl RenderThread {
     /// after each frame is sent.
     pub fn spawn(
         scene: Scene,
+        watch: Option<Watch>,
         threads: usize,
         target_fps: f64,
         wake: impl Fn() + Send + 'static,
@@ -101,6 +132,8 @@ impl RenderThread {
             Mutex::new(Slot {
                 view: None,
                 quit: false,
+                reload: false,
+                status: ReloadStatus::default(),
             }),
             Condvar::new(),
         ));
@@ -108,6 +141,7 @@ impl RenderThread {
         let (recycle_tx, recycle_rx) = mpsc::channel();
         let worker = Worker {
             scene,
+            watch,
             pool,
             shared: shared.clone(),
             frames: frame_tx,
@@ -136,6 +170,19 @@ impl RenderThread {
             slot.view = Some(view);
             cvar.notify_one();
         }
+    }
+
+    /// Asks for the scene to be reloaded from disk (F5); a no-op without a [`Watch`].
+    pub fn request_reload(&self) {
+        let (lock, cvar) = &*self.shared;
+        lock.lock().unwrap_or_else(PoisonError::into_inner).reload = true;
+        cvar.notify_one();
+    }
+
+    /// The outcome of the latest reload.
+    pub fn reload_status(&self) -> ReloadStatus {
+        let slot = self.shared.0.lock().unwrap_or_else(PoisonError::into_inner);
+        slot.status.clone()
     }
 
     /// The newest finished frame, if any arrived; older ones go straight back to the pool.
@@ -175,6 +222,7 @@ impl Drop for RenderThread {
 
 struct Worker {
     scene: Scene,
+    watch: Option<Watch>,
     pool: rayon::ThreadPool,
     shared: Shared,
     frames: Sender<Frame>,
@@ -188,6 +236,8 @@ struct Worker {
 enum Job {
     Preview(View),
     Refine(View),
+    /// Reload the scene: a watched file changed, or F5.
+    Reload,
 }
 
 impl Worker {
@@ -202,6 +252,15 @@ impl Worker {
             let Some(job) = self.next_job(&mut last, &mut changed_at, &acc, acc_view) else {
                 return;
             };
+            if let Job::Reload = job {
+                if self.reload() {
+                    // Render the same view again, from a fresh preview, with the new scene.
+                    last = None;
+                    acc_view = None;
+                }
+                (self.wake)();
+                continue;
+            }
             let Some(mut frame) = self.take_frame() else {
                 return;
             };
@@ -242,6 +301,7 @@ impl Worker {
                     frame.scale = 1.0;
                     frame.view = Some(view);
                 }
+                Job::Reload => unreachable!("handled above"),
             }
             frame.render_time = start.elapsed();
             if self.frames.send(frame).is_err() {
@@ -269,6 +329,31 @@ impl Worker {
         }
     }
 
+    /// Reloads the scene and publishes the outcome; whether the scene changed.
+    fn reload(&mut self) -> bool {
+        let Some(watch) = &mut self.watch else {
+            return false;
+        };
+        let (result, camera) = match watch.reloader.reload() {
+            Ok(desc) => {
+                self.scene = Scene::build(desc, watch.origin, watch.accel);
+                (None, Some(Camera::from_desc(&desc.camera)))
+            }
+            Err(message) => (Some(message.to_string()), None),
+        };
+        let ok = result.is_none();
+        let mut slot = self.shared.0.lock().unwrap_or_else(PoisonError::into_inner);
+        slot.status.generation += 1;
+        slot.status.error = result;
+        slot.status.camera = camera.or(slot.status.camera);
+        ok
+    }
+
+    /// Whether a watched file changed (checked at most every `POLL`).
+    fn files_changed(&mut self) -> bool {
+        self.watch.as_mut().is_some_and(|w| w.reloader.poll())
+    }
+
     fn encode(&self, image: &Image, frame: &mut Frame) {
         frame.width = image.width;
         frame.height = image.height;
@@ -278,17 +363,21 @@ impl Worker {
 
     /// Blocks until there is something to render (or quit: `None`).
     fn next_job(
-        &self,
+        &mut self,
         last: &mut Option<View>,
         changed_at: &mut Instant,
         acc: &Accumulator,
         acc_view: Option<View>,
     ) -> Option<Job> {
-        let (lock, cvar) = &*self.shared;
+        let shared = self.shared.clone();
+        let (lock, cvar) = &*shared;
         let mut slot = lock.lock().unwrap_or_else(PoisonError::into_inner);
         loop {
             if slot.quit {
                 return None;
+            }
+            if std::mem::take(&mut slot.reload) || self.files_changed() {
+                return Some(Job::Reload);
             }
             if let Some(view) = slot.view {
                 if *last != Some(view) {
@@ -309,7 +398,14 @@ impl Worker {
                     continue;
                 }
             }
-            slot = cvar.wait(slot).unwrap_or_else(PoisonError::into_inner);
+            slot = if self.watch.is_some() {
+                // Idle, but the files still need looking at.
+                cvar.wait_timeout(slot, POLL)
+                    .unwrap_or_else(PoisonError::into_inner)
+                    .0
+            } else {
+                cvar.wait(slot).unwrap_or_else(PoisonError::into_inner)
+            };
         }
     }
 
@@ -368,7 +464,7 @@ mod tests {
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
         let srgb = scene.srgb;
         let (tx, woke) = mpsc::channel();
-        let rt = RenderThread::spawn(scene, 2, 60.0, move || {
+        let rt = RenderThread::spawn(scene, None, 2, 60.0, move || {
             let _ = tx.send(());
         })
         .unwrap();
@@ -414,5 +510,104 @@ mod tests {
         let mut expect = vec![0; 64 * 48];
         image.write_xrgb(srgb, &mut expect);
         assert_eq!(last.pixels, expect);
+    }
+
+    fn converged(rt: &RenderThread, woke: &mpsc::Receiver<()>, view: View) -> Frame {
+        loop {
+            let f = next_frame(rt, woke);
+            if f.view == Some(view) && f.progress.is_converged() {
+                return f;
+            }
+            rt.give_back(f);
+        }
+    }
+
+    /// Waits (up to a minute) for the thread to publish reload number `generation`.
+    fn reload_number(rt: &RenderThread, generation: u64) -> ReloadStatus {
+        let start = Instant::now();
+        loop {
+            let s = rt.reload_status();
+            if s.generation >= generation {
+                return s;
+            }
+            assert!(start.elapsed() < Duration::from_secs(60), "no reload within a minute");
+            std::thread::sleep(Duration::from_millis(10));
+        }
+    }
+
+    /// Saving a broken scene reports its located error and keeps the old picture; fixing it
+    /// renders the new scene with the camera where it was; F5 reloads an unchanged file.
+    #[test]
+    fn edits_on_disk_reload_the_scene_and_errors_keep_the_old_one() {
+        use std::fs;
+        use std::time::UNIX_EPOCH;
+
+        let dir = std::env::temp_dir().join(format!("strahl-rt-reload-{}", std::process::id()));
+        fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("s.pov");
+        let write = |text: &str, secs: u64| {
+            fs::write(&file, text).unwrap();
+            let f = fs::File::options().write(true).open(&file).unwrap();
+            f.set_modified(UNIX_EPOCH + Duration::from_secs(secs)).unwrap();
+        };
+        let scene_with = |color: &str| {
+            format!(
+                "camera {{ location <0, 1, -4> look_at <0, 1, 0> }}\n\
+                 light_source {{ <2, 4, -4> color rgb 1 }}\n\
+                 sphere {{ <0, 1, 0>, 1 pigment {{ color rgb {color} }} }}\n"
+            )
+        };
+        write(&scene_with("<1, 0, 0>"), 100);
+        let reloader = Reloader::open(&file, &[]).unwrap();
+        let desc = reloader.last_good().clone();
+        let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        let watch = Watch {
+            reloader,
+            origin: desc.camera.location,
+            accel: AccelKind::Bvh,
+        };
+        let (tx, woke) = mpsc::channel();
+        let rt = RenderThread::spawn(scene, Some(watch), 2, 60.0, move || {
+            let _ = tx.send(());
+        })
+        .unwrap();
+        // A camera the user has flown somewhere else than the scene's.
+        let camera = Camera::from_desc(&desc.camera);
+        let camera = Camera {
+            location: camera.location + glam::DVec3::new(0.1, 0.0, 0.5),
+            ..camera
+        };
+        let view = View {
+            camera,
+            width: 32,
+            height: 24,
+            aa: 1,
+            quality: Quality::default(),
+        };
+        rt.submit(view);
+        let red = converged(&rt, &woke, view);
+        rt.give_back(red.clone());
+
+        write("camera { location <0, 1, -4> look_at <0, 1, 0> }\nsphere { <0, 1, 0>, 1 pigment { color rgb } }\n", 200);
+        let broken = reload_number(&rt, 1);
+        let message = broken.error.expect("a broken file reports an error");
+        assert!(message.starts_with(&format!("{}:2:", file.display())), "{message}");
+        // Nothing new is rendered: the last good frame stays on screen.
+        std::thread::sleep(Duration::from_millis(100));
+        assert!(rt.latest().is_none());
+
+        write(&scene_with("<0, 0, 1>"), 300);
+        let fixed = reload_number(&rt, 2);
+        assert_eq!(fixed.error, None, "fixing the file clears the error");
+        let blue = converged(&rt, &woke, view);
+        assert_eq!(blue.view.unwrap().camera, camera, "the camera stays where it was flown");
+        let centre = |f: &Frame| f.pixels[(12 * 32 + 16) as usize];
+        assert!(centre(&red) >> 16 & 0xff > centre(&red) & 0xff, "{:06x}", centre(&red));
+        assert!(centre(&blue) & 0xff > centre(&blue) >> 16 & 0xff, "{:06x}", centre(&blue));
+        rt.give_back(blue);
+
+        rt.request_reload();
+        assert_eq!(reload_number(&rt, 3).error, None);
+        let _ = fs::remove_dir_all(&dir);
     }
 }

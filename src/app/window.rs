@@ -19,9 +19,10 @@ use winit::window::{CursorGrabMode, Window, WindowId};
 use crate::app::blit::Blitter;
 use crate::app::font::Canvas;
 use crate::app::gamepad::Gamepads;
-use crate::app::hud::{draw_help, draw_hud, FrameTimes, HudInfo};
+use crate::app::hud::{draw_error, draw_help, draw_hud, FrameTimes, HudInfo};
 use crate::app::keys::{apply_key, Command};
-use crate::app::render_thread::{Frame, Progress, RenderThread, View};
+use crate::app::playback::Playback;
+use crate::app::render_thread::{Frame, Progress, ReloadStatus, RenderThread, View, Watch};
 use crate::app::{no_display, quality_preset, ViewOptions};
 use crate::camera::Camera;
 use crate::fly::{step, FlyState, InputState};
@@ -34,12 +35,21 @@ struct FrameReady;
 /// While input is held the camera is stepped this often, even without new events.
 const TICK: Duration = Duration::from_millis(5);
 
-pub fn run(scene: Scene, camera: Camera, speed: f64, options: ViewOptions) -> Result<(), CliError> {
+/// Runs the window until it is closed, `--frames` is done or the path has played; returns the
+/// playback's record, if a path was played.
+pub fn run(
+    scene: Scene,
+    camera: Camera,
+    speed: f64,
+    watch: Option<Watch>,
+    playback: Option<Playback>,
+    options: ViewOptions,
+) -> Result<Option<Playback>, CliError> {
     let event_loop = EventLoop::<FrameReady>::with_user_event()
         .build()
         .map_err(|e| no_display(&e.to_string()))?;
     let proxy = event_loop.create_proxy();
-    let render = RenderThread::spawn(scene, options.threads, options.target_fps, move || {
+    let render = RenderThread::spawn(scene, watch, options.threads, options.target_fps, move || {
         let _ = proxy.send_event(FrameReady);
     })?;
     let mut app = App {
@@ -63,6 +73,8 @@ pub fn run(scene: Scene, camera: Camera, speed: f64, options: ViewOptions) -> Re
         presented: 0,
         screenshot: None,
         error: None,
+        playback,
+        reload: ReloadStatus::default(),
         options,
         win: None,
     };
@@ -71,7 +83,7 @@ pub fn run(scene: Scene, camera: Camera, speed: f64, options: ViewOptions) -> Re
         .map_err(|e| CliError::user(format!("window: {e}")))?;
     match app.error.take() {
         Some(e) => Err(e),
-        None => Ok(()),
+        None => Ok(app.playback.take()),
     }
 }
 
@@ -105,6 +117,10 @@ struct App {
     /// A screenshot to save with the next presented buffer.
     screenshot: Option<PathBuf>,
     error: Option<CliError>,
+    /// `--path`: the camera follows the path instead of the input.
+    playback: Option<Playback>,
+    /// The latest reload outcome seen; its error is drawn over the picture.
+    reload: ReloadStatus,
     win: Option<Win>,
 }
 
@@ -159,6 +175,7 @@ impl App {
                 self.hud = !self.hud;
                 self.redraw();
             }
+            Command::Reload => self.render.request_reload(),
         }
     }
 
@@ -181,8 +198,17 @@ impl App {
             self.hud = !self.hud;
             self.redraw();
         }
-        let active = self.input.is_active();
+        let mut active = self.input.is_active();
         self.fly = step(&self.fly, &self.input, dt);
+        if let Some(playback) = &mut self.playback {
+            let (camera, ended) = playback.camera(now, &self.scene_camera);
+            self.fly = FlyState::new(camera, self.fly.speed);
+            // Keep ticking along the path; once it ends, one more present saves and exits.
+            active = !ended;
+            if ended {
+                self.redraw();
+            }
+        }
         self.input.mouse = DVec2::ZERO;
         self.input.speed_steps = 0;
         self.was_active = active;
@@ -249,6 +275,10 @@ impl App {
                 self.times.push(now - prev);
             }
             self.presented += 1;
+            if let (Some(playback), Some(view)) = (&mut self.playback, frame.view) {
+                let shown = playback.wants_sample().then_some((&buffer[..], w, h));
+                playback.presented(now, frame.scale, view.camera, shown);
+            }
         }
         if self.hud {
             let (avg, p95) = self.times.summary();
@@ -281,12 +311,35 @@ impl App {
             draw_hud(&mut canvas, &info);
             draw_help(&mut canvas);
         }
+        let status = self.render.reload_status();
+        if status.generation != self.reload.generation {
+            if let Some(camera) = status.camera {
+                // R now resets to the edited scene's camera; the view stays where it was flown.
+                self.scene_camera = camera;
+            }
+            if status.error.is_none() && self.reload.error.is_some() {
+                eprintln!("reloaded: the scene loads again");
+            }
+            if let Some(e) = &status.error {
+                eprintln!("reload failed (showing the last good scene):\n{e}");
+            }
+            self.reload = status;
+        }
+        if let Some(message) = &self.reload.error {
+            let mut canvas = Canvas {
+                pixels: &mut buffer,
+                width: w,
+                height: h,
+            };
+            draw_error(&mut canvas, message);
+        }
         // A still view stops producing frames once converged, so that ends the run as well.
         let converged = frame.progress.is_converged();
         let done = self
             .options
             .frames
-            .is_some_and(|n| fresh && (self.presented >= n || converged));
+            .is_some_and(|n| fresh && (self.presented >= n || converged))
+            || self.playback.as_ref().is_some_and(Playback::finished);
         if done && self.screenshot.is_none() {
             self.screenshot = self.options.screenshot.clone();
         }

@@ -4,5 +4,6 @@ pub mod build;
 pub mod desc;
 pub mod fixtures;
 pub mod material;
+pub mod print;
 #[doc(hidden)]
 pub mod testing;

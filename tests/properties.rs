@@ -180,8 +180,7 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
         look_at: None,
         angle: None,
     };
-    let lights =
-        (0..1 + r.pick(3)).map(|_| LightDesc { position: r.v(-10.0, 10.0), color: r.v(0.2, 1.0) }).collect();
+    let lights = (0..1 + r.pick(3)).map(|_| LightDesc { position: r.v(-10.0, 10.0), color: r.v(0.2, 1.0) }).collect();
     let objects = (0..objects)
         .map(|i| {
             let shape = random_shape(r);
@@ -203,13 +202,84 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
 /// Words and punctuation of the language, glued at random: reaches deeper than raw bytes.
 fn token_soup() -> impl Strategy<Value = String> {
     let words = prop::sample::select(vec![
-        "sphere", "box", "plane", "triangle", "polygon", "camera", "light_source", "pigment", "finish", "normal",
-        "texture", "interior", "ior", "checker", "wood", "color_map", "color", "rgb", "rgbft", "bumps", "turbulence",
-        "octaves", "rotate", "scale", "translate", "location", "look_at", "angle", "direction", "right", "up", "sky",
-        "global_settings", "assumed_gamma", "max_trace_level", "background", "#declare", "#local", "#version",
-        "#ifdef", "#ifndef", "#end", "#include \"colors.inc\"", "Foo", "x", "y", "z", "{", "}", "<", ">", "[", "]",
-        "(", ")", ",", ";", "=", "+", "-", "*", "/", "0", "1", "-1", "0.5", "1e300", "1e-300", "3", "\"", ".",
-        "sin(", "vlength(", "pi", "White", "//", "/*", "*/",
+        "sphere",
+        "box",
+        "plane",
+        "triangle",
+        "polygon",
+        "camera",
+        "light_source",
+        "pigment",
+        "finish",
+        "normal",
+        "texture",
+        "interior",
+        "ior",
+        "checker",
+        "wood",
+        "color_map",
+        "color",
+        "rgb",
+        "rgbft",
+        "bumps",
+        "turbulence",
+        "octaves",
+        "rotate",
+        "scale",
+        "translate",
+        "location",
+        "look_at",
+        "angle",
+        "direction",
+        "right",
+        "up",
+        "sky",
+        "global_settings",
+        "assumed_gamma",
+        "max_trace_level",
+        "background",
+        "#declare",
+        "#local",
+        "#version",
+        "#ifdef",
+        "#ifndef",
+        "#end",
+        "#include \"colors.inc\"",
+        "Foo",
+        "x",
+        "y",
+        "z",
+        "{",
+        "}",
+        "<",
+        ">",
+        "[",
+        "]",
+        "(",
+        ")",
+        ",",
+        ";",
+        "=",
+        "+",
+        "-",
+        "*",
+        "/",
+        "0",
+        "1",
+        "-1",
+        "0.5",
+        "1e300",
+        "1e-300",
+        "3",
+        "\"",
+        ".",
+        "sin(",
+        "vlength(",
+        "pi",
+        "White",
+        "//",
+        "/*",
+        "*/",
     ]);
     prop::collection::vec(words, 0..60).prop_map(|w| w.join(" "))
 }
@@ -289,7 +359,10 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
         let turb_ok = |x: &Option<Turbulence>, y: &Option<Turbulence>| match (x, y) {
             (None, None) => true,
             (Some(p), Some(q)) => {
-                close3(p.amount, q.amount) && p.octaves == q.octaves && close(p.omega, q.omega) && close(p.lambda, q.lambda)
+                close3(p.amount, q.amount)
+                    && p.octaves == q.octaves
+                    && close(p.omega, q.omega)
+                    && close(p.lambda, q.lambda)
             }
             _ => false,
         };

@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use crate::geometry::ray::{offset_origin, Ray};
+use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::render::intersect::Hit;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
@@ -197,7 +197,7 @@ impl<'a> Tracer<'a> {
             }
             let n = scene.normal_at(hit.shape, p);
             let next = offset_origin(p, n, ray.dir);
-            t_max = (shadow.light - next).length() * SHADOW_T_SHRINK;
+            t_max = shadow_t_max(next, shadow.light);
             ray = Ray::new(next, ray.dir);
         }
         Vec3::ZERO
@@ -235,9 +235,6 @@ pub struct ShadowRay {
     pub light: Vec3,
 }
 
-/// Stop shadow rays just short of the light, so a light lying on a surface still shines.
-const SHADOW_T_SHRINK: f32 = 1.0 - 4.0 * f32::EPSILON;
-
 /// The shadow ray a surface point sends towards a light, or `None` when the light is behind the
 /// surface as the viewer sees it (or on the point itself). Packets and single rays both build
 /// their shadow rays here, so they test the same rays bit for bit.
@@ -253,6 +250,6 @@ pub fn shadow_ray_towards(s: &Surface, light: Vec3) -> Option<ShadowRay> {
         return None;
     }
     let origin = offset_origin(s.p, s.facing, l);
-    Some(ShadowRay { ray: Ray::new(origin, l), t_max: (light - origin).length() * SHADOW_T_SHRINK, light })
+    Some(ShadowRay { ray: Ray::new(origin, l), t_max: shadow_t_max(origin, light), light })
 
 }

@@ -43,6 +43,18 @@ pub fn offset_origin(p: Vec3, n: Vec3, dir: Vec3) -> Vec3 {
     p + offset
 }
 
+/// How far a shadow ray from `origin` may look for blockers before `light`: short of the light by
+/// the error bound of a hit point at these magnitudes, so a surface the light lies on (whose
+/// computed hit lands a few ulps of the coordinates either side of the light) never blocks it.
+/// A relative shrink of the distance alone is not enough: for a shallow ray the plane's `t`
+/// carries the rounding of coordinates much larger than the distance to the light.
+#[inline]
+pub fn shadow_t_max(origin: Vec3, light: Vec3) -> f32 {
+    let magnitude = origin.abs().max(light.abs()).max_element();
+    let dist = (light - origin).length();
+    (dist * (1.0 - 4.0 * f32::EPSILON) - magnitude * HIT_ERROR_ULPS).max(0.0)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use crate::geometry::ray::{offset_origin, Ray};
+use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::render::intersect::Hit;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
@@ -198,7 +198,7 @@ impl<'a> Tracer<'a> {
             }
             let n = scene.normal_at(hit.shape, p);
             let next = offset_origin(p, n, ray.dir);
-            t_max = (shadow.light - next).length() * SHADOW_T_SHRINK;
+            t_max = shadow_t_max(next, shadow.light);
             ray = Ray::new(next, ray.dir);
         }
         Vec3::ZERO
@@ -236,9 +236,6 @@ pub struct ShadowRay {
     pub light: Vec3,
 }
 
-/// Stop shadow rays just short of the light, so a light lying on a surface still shines.
-const SHADOW_T_SHRINK: f32 = 1.0 - 4.0 * f32::EPSILON;
-
 /// The unit direction from a surface point to a light, or `None` when the light is behind the
 /// surface as the viewer sees it (or on the point itself).
 #[inline]
@@ -257,5 +254,5 @@ pub fn light_direction(s: &Surface, light: Vec3) -> Option<Vec3> {
 #[inline]
 pub fn shadow_ray(p: Vec3, facing: Vec3, l: Vec3, light: Vec3) -> ShadowRay {
     let origin = offset_origin(p, facing, l);
-    ShadowRay { ray: Ray::new(origin, l), t_max: (light - origin).length() * SHADOW_T_SHRINK, light }
+    ShadowRay { ray: Ray::new(origin, l), t_max: shadow_t_max(origin, light), light }
 }

@@ -4,3 +4,4 @@ pub mod build;
 pub mod desc;
 pub mod fixtures;
 pub mod material;
+pub mod print;

@@ -1,0 +1,297 @@
+//! SceneDesc → POV-Ray source that `pov::load_scene` reads back as the same scene (up to float
+//! rounding of the transforms). For round-trip tests and for saving generated scenes.
+//!
+//! Everything is written explicitly: the camera as location/direction/right/up/sky (no
+//! `look_at`), colours with filter and transmit, every finish value. Our parser has no `matrix`
+//! keyword, so a transform is written as `rotate`, `scale`, `rotate`, `translate`: any affine
+//! map's linear part is U·Σ·Vᵀ (singular value decomposition) with U and V rotations and Σ a
+//! diagonal scale (negative for a mirror), which covers shear too. Shapes stay in object space
+//! and each pattern's transform is written relative to its object (O⁻¹·P), inside the pattern
+//! block, so the loader composes it back to P.
+
+use std::fmt::Write;
+
+use glam::{DMat3, DMat4, DVec3};
+
+use crate::scene::desc::{
+    Color, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc,
+    Transform, Turbulence,
+};
+
+/// The scene as POV-Ray source (no `#include`s needed).
+pub fn to_pov(desc: &SceneDesc) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "#version {};", num(desc.version));
+    let g = &desc.global;
+    let _ = write!(s, "global_settings {{");
+    if let Some(gamma) = g.assumed_gamma {
+        let _ = write!(s, " assumed_gamma {}", num(gamma));
+    }
+    let _ = writeln!(s, " max_trace_level {} ambient_light rgb {} }}", g.max_trace_level, vec(g.ambient_light));
+    let _ = writeln!(s, "background {{ {} }}", color(&desc.background));
+    let c = &desc.camera;
+    let _ = writeln!(
+        s,
+        "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n  sky {}\n}}",
+        vec(c.location),
+        vec(c.direction),
+        vec(c.right),
+        vec(c.up),
+        vec(c.sky)
+    );
+    for l in &desc.lights {
+        let _ = writeln!(s, "light_source {{ {} color rgb {} }}", vec(l.position), vec(l.color));
+    }
+    for o in &desc.objects {
+        object(&mut s, o);
+    }
+    s
+}
+
+fn object(s: &mut String, o: &ObjectDesc) {
+    let _ = match &o.shape {
+        ShapeDesc::Sphere { center, radius } => write!(s, "sphere {{ {}, {}", vec(*center), num(*radius)),
+        ShapeDesc::Plane { normal, distance } => write!(s, "plane {{ {}, {}", vec(*normal), num(*distance)),
+        ShapeDesc::Box { corner1, corner2 } => write!(s, "box {{ {}, {}", vec(*corner1), vec(*corner2)),
+        ShapeDesc::Triangle { a, b, c } => write!(s, "triangle {{ {}, {}, {}", vec(*a), vec(*b), vec(*c)),
+        ShapeDesc::Polygon { points } => {
+            let pts: Vec<String> = points.iter().map(|p| vec(*p)).collect();
+            write!(s, "polygon {{ {}, {}", points.len(), pts.join(", "))
+        }
+    };
+    if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
+        let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
+    }
+    let object_inverse = o.transform.inverse;
+    let t = &o.texture;
+    let _ = write!(s, "\n  texture {{\n    ");
+    pigment(s, &t.pigment, &object_inverse);
+    if let Some(n) = &t.normal {
+        let _ = write!(s, "\n    ");
+        normal(s, n, &object_inverse);
+    }
+    let _ = write!(s, "\n    ");
+    finish(s, &t.finish);
+    let _ = write!(s, "\n  }}\n  interior {{ ior {} }}\n", num(o.interior.ior));
+    let _ = writeln!(s, "  {}\n}}", modifiers(&o.transform.matrix).trim_start());
+}
+
+fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
+    let _ = write!(s, "pigment {{ ");
+    let _ = match &p.pattern {
+        PigmentPattern::Solid(c) => write!(s, "{}", color(c)),
+        PigmentPattern::Checker(a, b) => write!(s, "checker {} {}", color(a), color(b)),
+        PigmentPattern::Wood(map) => {
+            let entries: Vec<String> = map.iter().map(|e| format!("[{} {}]", num(e.value), color(&e.color))).collect();
+            write!(s, "wood color_map {{ {} }}", entries.join(" "))
+        }
+    };
+    turbulence(s, p.turbulence.as_ref());
+    let _ = write!(s, "{} }}", modifiers(&(*object_inverse * p.transform.matrix)));
+}
+
+fn normal(s: &mut String, n: &NormalDesc, object_inverse: &DMat4) {
+    let _ = match n.pattern {
+        NormalPattern::Bumps(amount) => write!(s, "normal {{ bumps {}", num(amount)),
+    };
+    turbulence(s, n.turbulence.as_ref());
+    let _ = write!(s, "{} }}", modifiers(&(*object_inverse * n.transform.matrix)));
+}
+
+fn finish(s: &mut String, f: &FinishDesc) {
+    let _ = write!(
+        s,
+        "finish {{ ambient rgb {} diffuse {} brilliance {} phong {} phong_size {} specular {} roughness {} \
+         reflection rgb {} }}",
+        vec(f.ambient),
+        num(f.diffuse),
+        num(f.brilliance),
+        num(f.phong),
+        num(f.phong_size),
+        num(f.specular),
+        num(f.roughness),
+        vec(f.reflection)
+    );
+}
+
+fn turbulence(s: &mut String, t: Option<&Turbulence>) {
+    if let Some(t) = t {
+        let _ = write!(
+            s,
+            " turbulence {} octaves {} omega {} lambda {}",
+            vec(t.amount),
+            t.octaves,
+            num(t.omega),
+            num(t.lambda)
+        );
+    }
+}
+
+/// `m` as ` rotate … scale … rotate … translate …` (empty for the identity).
+fn modifiers(m: &DMat4) -> String {
+    if *m == DMat4::IDENTITY {
+        return String::new();
+    }
+    let d = decompose(m);
+    let mut out = String::new();
+    for (word, v, skip) in [
+        ("rotate", d.rotate_first, DVec3::ZERO),
+        ("scale", d.scale, DVec3::ONE),
+        ("rotate", d.rotate_then, DVec3::ZERO),
+        ("translate", d.translate, DVec3::ZERO),
+    ] {
+        if v != skip {
+            let _ = write!(out, " {word} {}", vec(v));
+        }
+    }
+    out
+}
+
+/// An affine map as POV-Ray modifiers, applied in this order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Decomposed {
+    /// Euler angles in degrees (about x, then y, then z), POV-Ray's `rotate`.
+    pub rotate_first: DVec3,
+    pub scale: DVec3,
+    pub rotate_then: DVec3,
+    pub translate: DVec3,
+}
+
+impl Decomposed {
+    /// The matrix the loader builds from these modifiers.
+    pub fn matrix(&self) -> DMat4 {
+        DMat4::from_translation(self.translate)
+            * euler_matrix(self.rotate_then)
+            * DMat4::from_scale(self.scale)
+            * euler_matrix(self.rotate_first)
+    }
+}
+
+/// `rotate <a, b, c>` (degrees) as the loader builds it.
+fn euler_matrix(deg: DVec3) -> DMat4 {
+    let r = deg * (std::f64::consts::PI / 180.0);
+    DMat4::from_rotation_z(r.z) * DMat4::from_rotation_y(r.y) * DMat4::from_rotation_x(r.x)
+}
+
+/// Splits the linear part of `m` as U·Σ·Vᵀ (one-sided Jacobi SVD, f64), U and V proper rotations.
+pub fn decompose(m: &DMat4) -> Decomposed {
+    let lin = DMat3::from_mat4(*m);
+    let mut a = [lin.x_axis, lin.y_axis, lin.z_axis];
+    let mut v = [DVec3::X, DVec3::Y, DVec3::Z];
+    // Each sweep rotates column pairs until they are orthogonal; 3×3 converges in a few sweeps.
+    for _ in 0..60 {
+        let mut rotated = false;
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            let alpha = a[p].length_squared();
+            let beta = a[q].length_squared();
+            let gamma = a[p].dot(a[q]);
+            if gamma == 0.0 || gamma.abs() <= 1e-17 * (alpha * beta).sqrt() {
+                continue;
+            }
+            rotated = true;
+            let zeta = (beta - alpha) / (2.0 * gamma);
+            let t = zeta.signum() / (zeta.abs() + (1.0 + zeta * zeta).sqrt());
+            let c = 1.0 / (1.0 + t * t).sqrt();
+            let s = c * t;
+            let (ap, aq) = (a[p], a[q]);
+            a[p] = c * ap - s * aq;
+            a[q] = s * ap + c * aq;
+            let (vp, vq) = (v[p], v[q]);
+            v[p] = c * vp - s * vq;
+            v[q] = s * vp + c * vq;
+        }
+        if !rotated {
+            break;
+        }
+    }
+    let mut sigma = DVec3::new(a[0].length(), a[1].length(), a[2].length());
+    let mut u = [0, 1, 2].map(|i| if sigma[i] > 0.0 { a[i] / sigma[i] } else { DVec3::ZERO });
+    // A zero singular value (never from the loader, which refuses scale 0) gets any completing axis.
+    for i in 0..3 {
+        if sigma[i] == 0.0 {
+            u[i] = u[(i + 1) % 3].cross(u[(i + 2) % 3]).try_normalize().unwrap_or(DVec3::X);
+        }
+    }
+    let mut u_mat = DMat3::from_cols(u[0], u[1], u[2]);
+    let v_mat = DMat3::from_cols(v[0], v[1], v[2]);
+    if u_mat.determinant() < 0.0 {
+        // A mirror: fold the reflection into the scale.
+        sigma.x = -sigma.x;
+        u_mat.x_axis = -u_mat.x_axis;
+    }
+    Decomposed {
+        rotate_first: euler_degrees(&v_mat.transpose()),
+        scale: sigma,
+        rotate_then: euler_degrees(&u_mat),
+        translate: m.w_axis.truncate(),
+    }
+}
+
+/// Angles `<a, b, c>` (degrees) with `R = Rz(c)·Ry(b)·Rx(a)`.
+fn euler_degrees(r: &DMat3) -> DVec3 {
+    let at = |row: usize, col: usize| r.col(col)[row];
+    let cos_b = (at(0, 0) * at(0, 0) + at(1, 0) * at(1, 0)).sqrt();
+    let b = (-at(2, 0)).atan2(cos_b);
+    let (a, c) = if cos_b > 1e-12 {
+        (at(2, 1).atan2(at(2, 2)), at(1, 0).atan2(at(0, 0)))
+    } else {
+        // Gimbal lock: only a ± c is defined; put it all in a.
+        ((-at(1, 2)).atan2(at(1, 1)), 0.0)
+    };
+    DVec3::new(a, b, c) * (180.0 / std::f64::consts::PI)
+}
+
+/// Shortest decimal that reads back as the same f64, never in exponent form (the lexer's
+/// numbers are plain decimals).
+fn num(v: f64) -> String {
+    if v.is_finite() {
+        format!("{v}")
+    } else {
+        // Not expressible in the scene language; 0 keeps the output parseable.
+        "0".to_string()
+    }
+}
+
+fn vec(v: DVec3) -> String {
+    format!("<{}, {}, {}>", num(v.x), num(v.y), num(v.z))
+}
+
+fn color(c: &Color) -> String {
+    format!("color rgb {} filter {} transmit {}", vec(c.rgb), num(c.filter), num(c.transmit))
+}
+
+/// The transform POV-Ray's modifiers from `decompose` rebuild: for checks.
+pub fn recomposed(t: &Transform) -> DMat4 {
+    decompose(&t.matrix).matrix()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decompose_rebuilds_rotation_scale_shear_and_mirror() {
+        let cases = [
+            DMat4::IDENTITY,
+            DMat4::from_rotation_y(0.3) * DMat4::from_scale(DVec3::new(1.0, 2.0, 3.0)),
+            DMat4::from_scale(DVec3::new(1.0, 2.0, 3.0)) * DMat4::from_rotation_x(0.7) * DMat4::from_rotation_z(-1.1),
+            DMat4::from_scale(DVec3::new(-1.0, 1.0, 1.0)) * DMat4::from_rotation_y(0.2),
+            DMat4::from_translation(DVec3::new(1e6, -3.0, 2.5)) * DMat4::from_rotation_x(std::f64::consts::FRAC_PI_2),
+            DMat4::from_rotation_y(std::f64::consts::FRAC_PI_2) * DMat4::from_scale(DVec3::splat(1e-4)),
+            DMat4::from_scale(DVec3::new(2.0, 2.0, 0.5)),
+        ];
+        for m in cases {
+            let back = decompose(&m).matrix();
+            let err = (back - m).to_cols_array().iter().map(|v| v.abs()).fold(0.0, f64::max);
+            let size = m.to_cols_array().iter().map(|v| v.abs()).fold(0.0, f64::max);
+            assert!(err <= 1e-12 * size, "{m:?} → {:?}, error {err}", decompose(&m));
+        }
+    }
+
+    #[test]
+    fn prints_numbers_without_exponents() {
+        assert_eq!(num(1e-7), "0.0000001");
+        assert_eq!(num(-2.5), "-2.5");
+        assert_eq!(num(f64::NAN), "0");
+    }
+}

@@ -388,15 +388,13 @@ plane {{ y, -1 pigment {{ color rgb 0.7 }} }}
         inexact += !exact as u32;
     }
     assert!(wrong.is_empty(), "right-angle rotations do not render like the written box: {wrong:#?}");
-    // PARSER BUG (pov/lower/eval.rs, `TransformKind::Rotate`): cos(90°) comes out 6.1e-17, not 0,
-    // so the matrices are not exact; the renders still match. Made strict once the parser snaps
-    // multiples of 90° (`right_angle_rotation_matrices_are_exact`).
+    // The matrices themselves are checked for exact 0 and ±1 in
+    // `right_angle_rotation_matrices_are_exact`.
     println!("{inexact} of {} right-angle rotation matrices have inexact entries", cases.len());
 }
 
 /// `rotate` by multiples of 90° gives matrices of exact 0 and ±1.
 #[test]
-#[ignore = "parser bug: pov/lower/eval.rs builds rotate from sin/cos of the radian angle, cos(90°) = 6.1e-17"]
 fn right_angle_rotation_matrices_are_exact() {
     for rot in ["y*90", "y*180", "y*270", "y*360", "y*-90", "x*90", "z*90", "<90, 180, 270>"] {
         let d = load_src("rot_exact", &format!("box {{ <-1, 0, -0.5>, <2, 1.5, 1> rotate {rot} }}"));
@@ -531,16 +529,12 @@ sphere { <0, 1, 0>, 1 pigment { color rgbf <1, 1, 1, 0.9> } finish { phong 0.8 }
     assert_eq!(speckles, 0);
 }
 
-/// OPEN: 35.2 dB (32.8 dB before `geometry::ray::shadow_t_max`). Shadow rays from the lower
-/// sides of the spheres reach the light at a shallow angle to the floor, and the floor's `t`
-/// there carries an error ∝ 1/(n·d) larger than any fixed slack, so some are still blocked by the
-/// plane the light lies on. A robust fix tests planes by the side each end of the shadow segment
-/// is on (a plane through the light cannot separate it from the point), in `Scene::occluded` and
-/// the packet shadow path.
+/// Shadow rays test planes by the side each end of the segment lies on
+/// (`Scene::occluded_towards`), so a plane through the light never shadows it; with a `t`
+/// comparison this scene reached only 35.2 dB, the floor's `t` error growing as 1/(n·d).
 /// A light lying exactly on the floor plane (and one on a sphere's surface) still lights the
 /// scene without NaN; the picture is close to the light raised by 1e-4.
 #[test]
-#[ignore = "open: a shallow shadow ray is still blocked by the plane its light lies on (35.2 dB, see above)"]
 fn light_lying_on_a_surface() {
     let scene = |light_y: f64| {
         format!(

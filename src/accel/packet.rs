@@ -9,7 +9,7 @@
 use glam::Vec3;
 
 use super::bvh::{Bvh, BvhNode};
-use crate::geometry::lanes::{slabs, Lane, F8, M8, V3};
+use crate::geometry::lanes::{node_slabs, Lane, F8, M8, V3};
 
 /// Eight rays in structure-of-arrays form.
 #[derive(Clone, Copy, Debug)]
@@ -92,7 +92,7 @@ fn node_box(n: &BvhNode) -> (V3<F8>, V3<F8>) {
 #[inline(always)]
 fn row_enters(n: &BvhNode, r: &Ray8, t: F8, active: M8) -> bool {
     let (lo, hi) = node_box(n);
-    let (near, far) = slabs(lo, hi, r.o, r.inv);
+    let (near, far) = node_slabs(lo, hi, r.o, r.inv);
     let zero = F8::splat(0.0);
     let hit = F8::and(F8::and(near.le(far), zero.le(far)), near.le(t));
     F8::and(hit, active).any()

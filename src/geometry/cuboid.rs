@@ -23,18 +23,11 @@ pub struct BoxFrame {
     pub normal_to_render: Mat3A,
 }
 
-/// Slab test against an axis-aligned box; returns the entry and exit distances.
-///
-/// With IEEE infinities from `inv_dir` this needs no branch for axis-parallel rays. A ray lying
-/// exactly in a face plane gives 0·inf = NaN there; `max`/`min` of glam drop NaN operands
-/// consistently, so such a ray counts as inside that slab.
+/// Conservative slab test for bounding boxes (see `lanes::node_slabs`): entry and exit
+/// distances, with an axis the ray lies exactly in a face plane of counting as unbounded.
 #[inline]
 pub fn slabs(min: Vec3, max: Vec3, origin: Vec3, inv_dir: Vec3) -> (f32, f32) {
-    let t0 = (min - origin) * inv_dir;
-    let t1 = (max - origin) * inv_dir;
-    let near = t0.min(t1);
-    let far = t0.max(t1);
-    (near.max_element(), far.min_element())
+    lanes::node_slabs(V3::from_vec3(min), V3::from_vec3(max), V3::from_vec3(origin), V3::from_vec3(inv_dir))
 }
 
 impl Cuboid {

@@ -317,6 +317,25 @@ pub fn slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
     (near.x.max(near.y).max(near.z), far.x.min(far.y).min(far.z))
 }
 
+/// Slab test for bounding volumes (BVH nodes, the grid): conservative where `slabs` is not.
+///
+/// A ray lying exactly in a face plane gives `0·∞ = NaN` on that axis; here that axis then
+/// bounds nothing (−∞, +∞), so the node is entered whenever anything inside it could be hit.
+/// (Found by the property test comparing the BVH with brute force on axis-aligned rays.)
+#[inline(always)]
+pub fn node_slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
+    let t0 = min.sub(o).mul(inv);
+    let t1 = max.sub(o).mul(inv);
+    let axis = |a: L, b: L| {
+        let nan = L::or(L::not(a.le(a)), L::not(b.le(b)));
+        (L::select(nan, L::splat(f32::NEG_INFINITY), a.min(b)), L::select(nan, L::splat(f32::INFINITY), a.max(b)))
+    };
+    let (nx, fx) = axis(t0.x, t1.x);
+    let (ny, fy) = axis(t0.y, t1.y);
+    let (nz, fz) = axis(t0.z, t1.z);
+    (nx.max(ny).max(nz), fx.min(fy).min(fz))
+}
+
 /// Picks the near root if it lies in `(t_min, t_max)`, else the far one, else `MISS`.
 #[inline(always)]
 pub fn pick_root<L: Lane>(valid: L::Mask, near: L, far: L, t_min: L, t_max: L) -> L {

@@ -13,6 +13,13 @@ pub struct Plane {
 }
 
 impl Plane {
+    /// Whether `a` and `b` lie strictly on opposite sides (a point on the plane is on neither).
+    #[inline]
+    pub fn separates(&self, a: Vec3, b: Vec3) -> bool {
+        let (sa, sb) = (self.normal.dot(a) - self.distance, self.normal.dot(b) - self.distance);
+        (sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0)
+    }
+
     /// A ray parallel to the plane never hits it, even when it lies in it.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
@@ -37,6 +44,14 @@ mod tests {
     fn hit_from_below() {
         let r = Ray::new(Vec3::new(0.0, -2.0, 0.0), Vec3::Y);
         assert_eq!(FLOOR.intersect(&r, 0.0, f32::INFINITY), Some(2.0));
+    }
+
+    #[test]
+    fn separates_only_strictly_opposite_points() {
+        assert!(FLOOR.separates(Vec3::new(0.0, 1.0, 0.0), Vec3::new(5.0, -1.0, 0.0)));
+        assert!(!FLOOR.separates(Vec3::new(0.0, 1.0, 0.0), Vec3::new(5.0, 2.0, 0.0)));
+        // A light lying on the plane is on neither side.
+        assert!(!FLOOR.separates(Vec3::new(0.0, 1.0, 0.0), Vec3::new(5.0, 0.0, 0.0)));
     }
 
     #[test]

@@ -73,6 +73,30 @@ impl Scene {
                 return true;
             }
         }
+        self.bounded_occluded(ray, t_max, stats)
+    }
+
+    /// Whether the shadow ray from `ray.origin` towards the point light at `light` is blocked.
+    ///
+    /// Planes are tested by side, not by intersection: a plane blocks the segment exactly when
+    /// its two ends lie strictly on opposite sides. A plane through the light (a light lying on
+    /// the floor) then never shadows it, however shallow the ray, where an intersection `t`
+    /// near `t_max` carries an error growing as 1/(n·d) that no fixed slack covers.
+    pub fn occluded_towards(&self, ray: &Ray, t_max: f32, light: Vec3, stats: &mut RenderStats) -> bool {
+        for (plane, &casts) in self.planes.iter().zip(&self.plane_casts_shadow) {
+            if !casts {
+                continue;
+            }
+            let hit = plane.separates(ray.origin, light);
+            stats.count_test(ShapeKind::Plane, hit);
+            if hit {
+                return true;
+            }
+        }
+        self.bounded_occluded(ray, t_max, stats)
+    }
+
+    fn bounded_occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
         let mut blocked = false;
         stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
             let p = &self.prims[prim as usize];

@@ -81,7 +81,7 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
             let rows8: [Ray8; 8] = std::array::from_fn(|r| {
                 Ray8::from_fn(|i| (shadow_rays[r][i].origin, shadow_rays[r][i].dir, shadow_rays[r][i].inv_dir))
             });
-            let blocked = occluded_rows(scene, &rows8[..rows], &mut t_max[..rows], &active[..rows], &mut tracer.stats);
+            let blocked = occluded_rows(scene, &rows8[..rows], &mut t_max[..rows], &active[..rows], light.position, &mut tracer.stats);
             for r in 0..rows {
                 for i in 0..lanes {
                     if blocked[r].lane(i) {
@@ -262,28 +262,39 @@ fn prim_row(scene: &Scene, prim: u32, ray: &Ray8, t_max: F8) -> F8 {
 }
 
 /// Which lanes of each row are blocked before their `t_max` (`IntersectP` for packets).
-fn occluded_rows(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
+fn occluded_rows(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
     #[cfg(target_arch = "x86_64")]
     if has_avx2() {
         // SAFETY: the CPU supports AVX2, checked just above.
-        return unsafe { occluded_rows_avx2(scene, rows, t_max, active, stats) };
+        return unsafe { occluded_rows_avx2(scene, rows, t_max, active, light, stats) };
     }
-    occluded_rows_generic(scene, rows, t_max, active, stats)
+    occluded_rows_generic(scene, rows, t_max, active, light, stats)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn occluded_rows_avx2(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
-    occluded_rows_generic(scene, rows, t_max, active, stats)
+unsafe fn occluded_rows_avx2(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
+    occluded_rows_generic(scene, rows, t_max, active, light, stats)
 }
 
 #[inline(always)]
-fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], stats: &mut RenderStats) -> [M8; 8] {
+fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
     let mut test = BlockedRows { scene, rows, active, blocked: [M8::default(); 8], stats: RenderStats::default() };
+    // Planes by side, as `Scene::occluded_towards`: blocked when the ray's origin and the light
+    // lie strictly on opposite sides.
     for (plane, _) in scene.planes.iter().zip(&scene.plane_casts_shadow).filter(|(_, &casts)| casts) {
+        let light_side = plane.normal.dot(light) - plane.distance;
         for (r, ray) in rows.iter().enumerate() {
-            let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t_max[r]);
-            let hit = F8::and(tp.lt(F8::splat(lanes::MISS)), active[r]);
+            let side = V3::splat(plane.normal).dot(ray.o) - F8::splat(plane.distance);
+            let zero = F8::splat(0.0);
+            let opposite = if light_side > 0.0 {
+                side.lt(zero)
+            } else if light_side < 0.0 {
+                zero.lt(side)
+            } else {
+                M8::default()
+            };
+            let hit = F8::and(opposite, active[r]);
             test.stats.tests[ShapeKind::Plane as usize] += 8;
             test.stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
             test.block(r, &mut t_max[r], hit);

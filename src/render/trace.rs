@@ -177,7 +177,7 @@ impl<'a> Tracer<'a> {
         self.stats.shadow_rays += 1;
         let scene = self.scene;
         if !scene.features.transparency {
-            let blocked = scene.occluded(&shadow.ray, shadow.t_max, &mut self.stats);
+            let blocked = scene.occluded_towards(&shadow.ray, shadow.t_max, shadow.light, &mut self.stats);
             return if blocked { Vec3::ZERO } else { Vec3::ONE };
         }
         let mut pass = Vec3::ONE;

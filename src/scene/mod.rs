@@ -3,6 +3,7 @@
 pub mod build;
 pub mod desc;
 pub mod fixtures;
+pub mod generate;
 pub mod material;
 #[doc(hidden)]
 pub mod testing;

@@ -96,6 +96,11 @@ pub struct Mode {
     pub mrays: f64,
     /// Primary rays per second, millions.
     pub primary_mrays: f64,
+    /// Per ray (all kinds) of the timed frames: BVH nodes or grid cells visited, shape tests, and
+    /// nanoseconds; they separate algorithmic growth (visits) from memory effects (ns per visit).
+    pub nodes_per_ray: f64,
+    pub tests_per_ray: f64,
+    pub ns_per_ray: f64,
 }
 
 /// Everything measured at one N.
@@ -121,6 +126,9 @@ fn mode_of(accel: AccelKind, packets: bool, run: &Run) -> Mode {
         median_ms: frame_times(&run.times_ms).median_ms,
         mrays: run.mrays(run.stats.total_rays()),
         primary_mrays: run.mrays(run.stats.primary_rays),
+        nodes_per_ray: run.stats.nodes_visited as f64 / run.stats.total_rays().max(1) as f64,
+        tests_per_ray: run.stats.tests.iter().sum::<u64>() as f64 / run.stats.total_rays().max(1) as f64,
+        ns_per_ray: run.seconds * 1e9 / run.stats.total_rays().max(1) as f64,
     }
 }
 
@@ -179,7 +187,7 @@ pub fn table(rows: &[Row]) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
-        "{:>8} {:>9} {:>8} {:>5} {:>10} {:>10} {:>9} {:>9} {:>9} {:>8} {:>10} {:>9} {:>9}",
+        "{:>8} {:>9} {:>8} {:>5} {:>10} {:>10} {:>9} {:>9} {:>9} {:>8} {:>10} {:>9} {:>9} {:>9} {:>9} {:>7}",
         "N",
         "build ms",
         "nodes",
@@ -192,7 +200,10 @@ pub fn table(rows: &[Row]) -> String {
         "pkt x",
         "ms/log2N",
         "bvh/none",
-        "grid ms"
+        "grid ms",
+        "nodes/ray",
+        "tests/ray",
+        "ns/ray"
     );
     for r in rows {
         let b = r.mode(AccelKind::Bvh, true);
@@ -205,7 +216,7 @@ pub fn table(rows: &[Row]) -> String {
         };
         let _ = writeln!(
             o,
-            "{:>8} {:>9.1} {:>8} {:>5} {:>10} {:>10} {:>9} {:>9} {:>9.2} {:>8} {:>10.2} {:>9} {:>9}",
+            "{:>8} {:>9.1} {:>8} {:>5} {:>10} {:>10} {:>9} {:>9} {:>9.2} {:>8} {:>10.2} {:>9} {:>9} {:>9.1} {:>9.1} {:>7.0}",
             r.n,
             r.bvh_build_ms,
             r.bvh_nodes,
@@ -219,6 +230,9 @@ pub fn table(rows: &[Row]) -> String {
             b.map_or(f64::NAN, |m| m.median_ms / log2),
             speedup(none, b),
             r.grid_build_ms.map_or("-".into(), |g| format!("{g:.1}")),
+            single.map_or(f64::NAN, |m| m.nodes_per_ray),
+            single.map_or(f64::NAN, |m| m.tests_per_ray),
+            single.map_or(f64::NAN, |m| m.ns_per_ray),
         );
     }
     o
@@ -238,6 +252,9 @@ fn rows_json(c: &ScalingCmd, rows: &[Row], cpu: &str) -> Json {
                         ("median_ms", Json::Number(m.median_ms)),
                         ("mrays_per_s", Json::Number(m.mrays)),
                         ("primary_mrays_per_s", Json::Number(m.primary_mrays)),
+                        ("nodes_per_ray", Json::Number(m.nodes_per_ray)),
+                        ("tests_per_ray", Json::Number(m.tests_per_ray)),
+                        ("ns_per_ray", Json::Number(m.ns_per_ray)),
                     ])
                 })
                 .collect();
@@ -279,7 +296,8 @@ pub fn run_scaling(c: &ScalingCmd) -> Result<(), CliError> {
         c.warmup
     );
     println!("columns: bvh+pkt/bvh-pkt = BVH with/without 8x8 packets; grid/none single rays (packets need a BVH);");
-    println!("         Mrays/s and ms/log2N for bvh+pkt; pkt x = bvh-pkt/bvh+pkt; bvh/none = none/bvh+pkt");
+    println!("         Mrays/s and ms/log2N for bvh+pkt; pkt x = bvh-pkt/bvh+pkt; bvh/none = none/bvh+pkt;");
+    println!("         nodes/ray, tests/ray, ns/ray over all rays of bvh-pkt (single rays)");
     let mut rows = Vec::new();
     for &n in &c.counts {
         rows.push(measure(c, n)?);

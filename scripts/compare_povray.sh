@@ -57,7 +57,7 @@ povray_cell() {
         times+=("$secs")
     done
     secs=$(printf '%s\n' "${times[@]}" | median)
-    awk -v s="$secs" -v r="${rays:-0}" -v sh="${shadow:-0}" 'BEGIN { printf "%.1f %.2f", s * 1000, (r + sh) / s / 1e6 }'
+    awk -v s="$secs" -v r="${rays:-0}" -v sh="${shadow:-0}" 'BEGIN { printf "%.1f %.2f\n", s * 1000, (r + sh) / s / 1e6 }'
 }
 
 # Prints "ms mrays" for one strahl configuration (bench's median frame).
@@ -67,7 +67,7 @@ strahl_cell() {
     "$strahl" bench "$scene" -W "$W" -H "$H" --frames "$FRAMES" --warmup 1 --threads "$threads" \
         --accel "$accel" "${extra[@]}" --json "$json" >/dev/null
     awk '/"median_ms"/ { gsub(/[,]/, ""); ms = $2 } /"mrays_per_s"/ && !m { gsub(/[,]/, ""); m = $2 }
-         END { printf "%.1f %.2f", ms, m }' "$json"
+         END { printf "%.1f %.2f\n", ms, m }' "$json"
 }
 
 echo "# strahl vs POV-Ray 3.7 — $(date +%F)"

@@ -34,6 +34,10 @@ enum Command {
     /// Fly through a scene in a window: adaptive resolution while moving, progressive
     /// antialiasing when still (converging to `strahl render` of the same camera).
     View(ViewCmd),
+    /// BVH build and frame time against object count on generated scenes (or --intersection-share).
+    Scaling(headless::scaling::ScalingCmd),
+    /// Write a generated many-object scene (spheres, boxes, triangles, mixed) as a POV-Ray file.
+    Gen(headless::scaling::GenCmd),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -299,6 +303,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
     };
     match command {
         Command::View(v) => view(v),
+        Command::Scaling(s) => headless::scaling::run_scaling(&s),
+        Command::Gen(g) => headless::scaling::run_gen(&g),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
             scene: r.scene,
             include: r.common.include.clone(),

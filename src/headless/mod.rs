@@ -12,6 +12,7 @@ pub mod output;
 pub mod progress;
 pub mod render;
 pub mod report;
+pub mod scaling;
 pub mod tradeoff;
 
 use std::fmt;

@@ -3,5 +3,6 @@
 pub mod build;
 pub mod desc;
 pub mod fixtures;
+pub mod generate;
 pub mod material;
 pub mod print;

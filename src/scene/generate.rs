@@ -1,0 +1,347 @@
+//! Deterministic test scenes of N objects for the scaling benchmarks (issue #4), and a small
+//! POV-Ray writer so that POV-Ray 3.7 can render exactly the same scene (`strahl gen`).
+//!
+//! Positions, sizes and colours come from a hash of (object index, field), never from a random
+//! generator, so `spheres(n)` is the same scene on every machine and every run. The objects fill
+//! a cube whose edge grows with n^(1/3), so the object density (and the depth complexity a ray
+//! sees) stays about the same as n grows and frame time measures the accelerator, not the scene.
+//!
+//! Coordinates are rounded to 1e-4 before they are stored, so the POV file stays short and every
+//! number in it reads back to the same f64 (`write_pov` prints the shortest round-trip form).
+
+use std::fmt::Write as _;
+
+use glam::DVec3;
+
+use crate::camera::Camera;
+use crate::scene::desc::{
+    CameraDesc, Color, FinishDesc, GlobalSettings, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc,
+    ShapeDesc, SourceRef, TextureDesc,
+};
+
+/// Which primitive the generated cloud is made of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Spheres,
+    Boxes,
+    Triangles,
+    /// Spheres, boxes and triangles in turn.
+    Mixed,
+}
+
+impl Kind {
+    pub const ALL: [Kind; 4] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Mixed];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Spheres => "spheres",
+            Kind::Boxes => "boxes",
+            Kind::Triangles => "triangles",
+            Kind::Mixed => "mixed",
+        }
+    }
+
+    pub fn parse(s: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == s)
+    }
+}
+
+/// Mean distance between neighbouring object centres; objects are about 1 unit across.
+const SPACING: f64 = 2.5;
+/// One object in this many gets a mirror-like finish (reflection 0.35, phong 0.8).
+const REFLECTIVE_EVERY: u64 = 16;
+
+/// Plain colours the objects cycle through by hash.
+const PALETTE: [[f64; 3]; 8] = [
+    [0.9, 0.2, 0.15],
+    [0.2, 0.6, 0.9],
+    [0.95, 0.75, 0.2],
+    [0.3, 0.8, 0.35],
+    [0.75, 0.4, 0.85],
+    [0.9, 0.5, 0.1],
+    [0.85, 0.85, 0.85],
+    [0.25, 0.3, 0.45],
+];
+
+/// SplitMix64's finaliser: a well-mixed 64-bit hash of `x`.
+fn mix(mut x: u64) -> u64 {
+    x = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    x ^ (x >> 31)
+}
+
+/// A number in [0, 1) from (object, field): the same pair always gives the same number.
+fn unit(object: u64, field: u64) -> f64 {
+    (mix(object.wrapping_mul(0x1_0000_0001) ^ mix(field)) >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// Rounds to 1e-4 so the written scene is short and reads back exactly.
+fn q(v: f64) -> f64 {
+    (v * 1e4).round() / 1e4
+}
+
+fn qv(v: DVec3) -> DVec3 {
+    DVec3::new(q(v.x), q(v.y), q(v.z))
+}
+
+/// Edge of the cube the `n` objects fill.
+pub fn extent(n: usize) -> f64 {
+    SPACING * (n.max(1) as f64).cbrt()
+}
+
+fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: usize) -> ObjectDesc {
+    ObjectDesc {
+        shape,
+        transform: Default::default(),
+        texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
+        interior: Default::default(),
+        no_shadow: false,
+        source: SourceRef { file: "scene::generate".into(), line: index as u32, col: 0 },
+    }
+}
+
+/// Shape `i` of kind `kind` (Mixed picks one per object) around `center`.
+fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
+    let u = |f: u64| unit(i, f);
+    let kind = match kind {
+        Kind::Mixed => [Kind::Spheres, Kind::Boxes, Kind::Triangles][(i % 3) as usize],
+        k => k,
+    };
+    match kind {
+        Kind::Spheres => ShapeDesc::Sphere { center, radius: q(0.35 + 0.3 * u(10)) },
+        Kind::Boxes => {
+            let half = DVec3::new(0.2 + 0.3 * u(10), 0.2 + 0.3 * u(11), 0.2 + 0.3 * u(12));
+            ShapeDesc::Box { corner1: qv(center - half), corner2: qv(center + half) }
+        }
+        Kind::Triangles | Kind::Mixed => {
+            let corner = |f: u64| qv(center + DVec3::new(u(f) - 0.5, u(f + 1) - 0.5, u(f + 2) - 0.5) * 1.6);
+            ShapeDesc::Triangle { a: corner(10), b: corner(13), c: corner(16) }
+        }
+    }
+}
+
+/// A scene of `n` objects of `kind` above a checkered floor, lit by two lights, seen by a camera
+/// (16:9, 60°) that frames the whole cloud from the front and above.
+pub fn generate(kind: Kind, n: usize) -> SceneDesc {
+    let edge = extent(n);
+    let mut objects = Vec::with_capacity(n + 1);
+    objects.push(object(
+        ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
+        PigmentPattern::Checker(Color::rgb(0.9, 0.9, 0.9), Color::rgb(0.25, 0.25, 0.25)),
+        FinishDesc::default(),
+        0,
+    ));
+    for i in 0..n as u64 {
+        // The cube [-edge/2, edge/2] × [0.8, edge + 0.8] × [-edge/2, edge/2], just above the floor.
+        let center = qv(DVec3::new((unit(i, 0) - 0.5) * edge, 0.8 + unit(i, 1) * edge, (unit(i, 2) - 0.5) * edge));
+        let [r, g, b] = PALETTE[(mix(i ^ 0xC0105) % PALETTE.len() as u64) as usize];
+        let finish = if mix(i ^ 0xF1) % REFLECTIVE_EVERY == 0 {
+            FinishDesc { phong: 0.8, reflection: DVec3::splat(0.35), ..FinishDesc::default() }
+        } else {
+            FinishDesc::default()
+        };
+        objects.push(object(
+            shape(kind, i, center),
+            PigmentPattern::Solid(Color::rgb(r, g, b)),
+            finish,
+            i as usize + 1,
+        ));
+    }
+    // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
+    let look_at = DVec3::new(0.0, 0.5 * edge, 0.0);
+    let location = qv(DVec3::new(0.3 * edge, 0.85 * edge + 2.0, -2.0 * edge - 4.0));
+    let like = Camera { location, direction: DVec3::Z, right: DVec3::X * (16.0 / 9.0), up: DVec3::Y };
+    let cam = Camera::looking_at(location, look_at, Some(60.0), &like);
+    let (lx, ly) = (edge + 5.0, 2.0 * edge + 10.0);
+    SceneDesc {
+        camera: CameraDesc {
+            location: cam.location,
+            direction: cam.direction,
+            right: cam.right,
+            up: cam.up,
+            ..CameraDesc::default()
+        },
+        lights: vec![
+            LightDesc { position: qv(DVec3::new(-lx, ly, -1.5 * lx)), color: DVec3::splat(0.8), shadowless: false },
+            LightDesc { position: qv(DVec3::new(lx, 0.7 * ly, -0.5 * lx)), color: DVec3::splat(0.5), shadowless: false },
+        ],
+        background: Color::rgb(0.55, 0.65, 0.85),
+        global: GlobalSettings { assumed_gamma: Some(1.0), ..GlobalSettings::default() },
+        objects,
+        ..SceneDesc::default()
+    }
+}
+
+pub fn spheres(n: usize) -> SceneDesc {
+    generate(Kind::Spheres, n)
+}
+
+pub fn boxes(n: usize) -> SceneDesc {
+    generate(Kind::Boxes, n)
+}
+
+pub fn triangles(n: usize) -> SceneDesc {
+    generate(Kind::Triangles, n)
+}
+
+pub fn mixed(n: usize) -> SceneDesc {
+    generate(Kind::Mixed, n)
+}
+
+/// Writes `desc` as POV-Ray 3.7 scene text. Only what the generators produce is supported:
+/// untransformed spheres, boxes, triangles and planes with solid or checker pigments; anything
+/// else is an error naming what it found.
+pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
+    let mut o = String::with_capacity(128 * desc.objects.len() + 1024);
+    let v = |p: DVec3| format!("<{}, {}, {}>", p.x, p.y, p.z);
+    let rgb = |c: &Color| {
+        if c.filter != 0.0 || c.transmit != 0.0 {
+            Err("filter/transmit colours are not supported by write_pov".to_string())
+        } else {
+            Ok(format!("rgb {}", v(c.rgb)))
+        }
+    };
+    let _ = writeln!(o, "// Written by strahl (scene::generate); renders the same in POV-Ray 3.7 and strahl.");
+    let _ = writeln!(o, "#version {};", desc.version);
+    let g = &desc.global;
+    let _ = write!(
+        o,
+        "global_settings {{ max_trace_level {} ambient_light {}",
+        g.max_trace_level,
+        rgb(&Color { rgb: g.ambient_light, ..Color::BLACK })?
+    );
+    if let Some(gamma) = g.assumed_gamma {
+        let _ = write!(o, " assumed_gamma {gamma}");
+    }
+    let _ = writeln!(o, " }}");
+    let c = &desc.camera;
+    if c.look_at.is_some() || c.angle.is_some() || c.sky != DVec3::Y {
+        return Err("write_pov writes cameras as explicit vectors; clear look_at, angle and sky".into());
+    }
+    let _ = writeln!(
+        o,
+        "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n}}",
+        v(c.location),
+        v(c.direction),
+        v(c.right),
+        v(c.up)
+    );
+    let _ = writeln!(o, "background {{ color {} }}", rgb(&desc.background)?);
+    for l in &desc.lights {
+        let _ =
+            writeln!(o, "light_source {{ {} color {} }}", v(l.position), rgb(&Color { rgb: l.color, ..Color::BLACK })?);
+    }
+    let default_finish = FinishDesc::default();
+    for obj in &desc.objects {
+        if !obj.transform.is_identity() || !obj.texture.pigment.transform.is_identity() {
+            return Err(format!("write_pov: transformed {} is not supported", obj.shape.keyword()));
+        }
+        if obj.texture.normal.is_some() || obj.texture.pigment.turbulence.is_some() || obj.interior.ior != 1.0 {
+            return Err(format!(
+                "write_pov: {} with normal, turbulence or interior is not supported",
+                obj.shape.keyword()
+            ));
+        }
+        match &obj.shape {
+            ShapeDesc::Sphere { center, radius } => {
+                let _ = write!(o, "sphere {{ {}, {radius}", v(*center));
+            }
+            ShapeDesc::Box { corner1, corner2 } => {
+                let _ = write!(o, "box {{ {}, {}", v(*corner1), v(*corner2));
+            }
+            ShapeDesc::Triangle { a, b, c } => {
+                let _ = write!(o, "triangle {{ {}, {}, {}", v(*a), v(*b), v(*c));
+            }
+            ShapeDesc::Plane { normal, distance } => {
+                let _ = write!(o, "plane {{ {}, {distance}", v(*normal));
+            }
+            ShapeDesc::Polygon { .. } => return Err("write_pov: polygon is not supported".into()),
+        }
+        match &obj.texture.pigment.pattern {
+            PigmentPattern::Solid(c) => {
+                let _ = write!(o, " pigment {{ color {} }}", rgb(c)?);
+            }
+            PigmentPattern::Checker(a, b) => {
+                let _ = write!(o, " pigment {{ checker color {} color {} }}", rgb(a)?, rgb(b)?);
+            }
+            PigmentPattern::Wood(_) => return Err("write_pov: wood pigment is not supported".into()),
+        }
+        let f = &obj.texture.finish;
+        let mut items = String::new();
+        if f.ambient != default_finish.ambient {
+            let _ = write!(items, " ambient {}", rgb(&Color { rgb: f.ambient, ..Color::BLACK })?);
+        }
+        if f.diffuse != default_finish.diffuse {
+            let _ = write!(items, " diffuse {}", f.diffuse);
+        }
+        if f.phong != default_finish.phong {
+            let _ = write!(items, " phong {}", f.phong);
+        }
+        if f.reflection != default_finish.reflection {
+            let _ = write!(items, " reflection {}", rgb(&Color { rgb: f.reflection, ..Color::BLACK })?);
+        }
+        if f.brilliance != default_finish.brilliance
+            || f.phong_size != default_finish.phong_size
+            || f.specular != default_finish.specular
+            || f.roughness != default_finish.roughness
+        {
+            return Err("write_pov: brilliance, phong_size, specular and roughness are not supported".into());
+        }
+        if !items.is_empty() {
+            let _ = write!(o, " finish {{{items} }}");
+        }
+        let _ = writeln!(o, " }}");
+    }
+    Ok(o)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn deterministic_and_sized() {
+        for kind in Kind::ALL {
+            let a = generate(kind, 300);
+            assert_eq!(a, generate(kind, 300), "{kind:?}");
+            // The floor plus n objects.
+            assert_eq!(a.objects.len(), 301);
+            assert_eq!(a.lights.len(), 2);
+        }
+        assert_eq!(generate(Kind::Spheres, 0).objects.len(), 1);
+    }
+
+    #[test]
+    fn cloud_grows_with_cube_root() {
+        let max_x = |d: &SceneDesc| {
+            d.objects
+                .iter()
+                .filter_map(|o| match o.shape {
+                    ShapeDesc::Sphere { center, .. } => Some(center.x.abs()),
+                    _ => None,
+                })
+                .fold(0.0, f64::max)
+        };
+        let (small, big) = (max_x(&spheres(1000)), max_x(&spheres(8000)));
+        assert!((big / small - 2.0).abs() < 0.1, "{small} {big}");
+        assert!(small <= extent(1000) / 2.0 + 1e-9);
+    }
+
+    #[test]
+    fn some_reflect_and_kinds_mix() {
+        let d = mixed(900);
+        let reflective = d.objects.iter().filter(|o| o.texture.finish.reflection != DVec3::ZERO).count();
+        assert!((30..=90).contains(&reflective), "{reflective}");
+        for k in ["sphere", "box", "triangle"] {
+            assert_eq!(d.objects.iter().filter(|o| o.shape.keyword() == k).count(), 300);
+        }
+    }
+
+    #[test]
+    fn write_pov_rejects_what_it_cannot_write() {
+        let mut d = spheres(2);
+        d.objects[1].shape = ShapeDesc::Polygon { points: vec![] };
+        assert!(write_pov(&d).unwrap_err().contains("polygon"));
+    }
+}

@@ -20,6 +20,19 @@ pub struct Ray8 {
 }
 
 impl Ray8 {
+    pub const ZERO: Ray8 = Ray8 {
+        o: V3 { x: F8([0.0; 8]), y: F8([0.0; 8]), z: F8([0.0; 8]) },
+        d: V3 { x: F8([0.0; 8]), y: F8([0.0; 8]), z: F8([0.0; 8]) },
+        inv: V3 { x: F8([0.0; 8]), y: F8([0.0; 8]), z: F8([0.0; 8]) },
+    };
+
+    #[inline]
+    pub fn set_lane(&mut self, i: usize, o: Vec3, d: Vec3, inv: Vec3) {
+        (self.o.x.0[i], self.o.y.0[i], self.o.z.0[i]) = (o.x, o.y, o.z);
+        (self.d.x.0[i], self.d.y.0[i], self.d.z.0[i]) = (d.x, d.y, d.z);
+        (self.inv.x.0[i], self.inv.y.0[i], self.inv.z.0[i]) = (inv.x, inv.y, inv.z);
+    }
+
     pub fn from_fn(f: impl Fn(usize) -> (Vec3, Vec3, Vec3)) -> Ray8 {
         let mut r = Ray8 { o: V3::splat(Vec3::ZERO), d: V3::splat(Vec3::ZERO), inv: V3::splat(Vec3::ZERO) };
         for i in 0..8 {

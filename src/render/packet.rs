@@ -61,32 +61,50 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
     }
     let packet_shadows =
         tracer.quality.shadows && !scene.features.transparency && scene.lights.len() <= MAX_PACKET_LIGHTS;
-    let mut pass = [[[1.0f32; MAX_PACKET_LIGHTS]; 8]; 8];
-    if packet_shadows {
-        for (l, light) in scene.lights.iter().enumerate().filter(|(_, light)| !light.shadowless) {
-            let mut shadow_rays = [[Ray::new(Vec3::ZERO, Vec3::Z); 8]; 8];
-            let mut t_max = [F8::splat(f32::NEG_INFINITY); 8];
-            let mut active = [M8::default(); 8];
-            for r in 0..rows {
-                for i in 0..lanes {
-                    let Some(surface) = &surfaces[r][i] else { continue };
-                    let Some(l) = light_direction(surface, light.position) else { continue };
-                    let s = shadow_ray(surface.p, surface.facing, l, light.position);
-                    shadow_rays[r][i] = s.ray;
-                    t_max[r].0[i] = s.t_max;
-                    active[r].0[i] = -1;
-                    tracer.stats.shadow_rays += 1;
-                }
+    if !packet_shadows {
+        let mut colors = [[Vec3::ZERO; 8]; 8];
+        for r in 0..rows {
+            for i in 0..lanes {
+                colors[r][i] = match &surfaces[r][i] {
+                    None => scene.background.rgb,
+                    Some(s) => tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Trace),
+                };
             }
-            let rows8: [Ray8; 8] = std::array::from_fn(|r| {
-                Ray8::from_fn(|i| (shadow_rays[r][i].origin, shadow_rays[r][i].dir, shadow_rays[r][i].inv_dir))
-            });
-            let blocked = occluded_rows(scene, &rows8[..rows], &mut t_max[..rows], &active[..rows], light.position, &mut tracer.stats);
-            for r in 0..rows {
-                for i in 0..lanes {
-                    if blocked[r].lane(i) {
-                        pass[r][i][l] = 0.0;
-                    }
+        }
+        return colors;
+    }
+    // Per lane and light: the direction to the light, or zero where it does not arrive (behind
+    // the surface, or blocked). Computed once here and handed to shading.
+    let mut lit = [[[Vec3::ZERO; MAX_PACKET_LIGHTS]; 8]; 8];
+    for (l, light) in scene.lights.iter().enumerate() {
+        let mut shadow_rows = [Ray8::ZERO; 8];
+        let mut t_max = [F8::splat(f32::NEG_INFINITY); 8];
+        let mut active = [M8::default(); 8];
+        let mut any = false;
+        for r in 0..rows {
+            for i in 0..lanes {
+                let Some(surface) = &surfaces[r][i] else { continue };
+                let Some(dir) = light_direction(surface, light.position) else { continue };
+                lit[r][i][l] = dir;
+                if light.shadowless {
+                    continue;
+                }
+                let s = shadow_ray(surface.p, surface.facing, dir, light.position);
+                shadow_rows[r].set_lane(i, s.ray.origin, s.ray.dir, s.ray.inv_dir);
+                t_max[r].0[i] = s.t_max;
+                active[r].0[i] = -1;
+                any = true;
+                tracer.stats.shadow_rays += 1;
+            }
+        }
+        if !any {
+            continue;
+        }
+        let blocked = occluded_rows(scene, &shadow_rows[..rows], &mut t_max[..rows], &active[..rows], light.position, &mut tracer.stats);
+        for r in 0..rows {
+            for i in 0..lanes {
+                if blocked[r].lane(i) {
+                    lit[r][i][l] = Vec3::ZERO;
                 }
             }
         }
@@ -96,10 +114,7 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
         for i in 0..lanes {
             colors[r][i] = match &surfaces[r][i] {
                 None => scene.background.rgb,
-                Some(s) => {
-                    let shadows = if packet_shadows { Shadows::Given(&pass[r][i][..scene.lights.len()]) } else { Shadows::Trace };
-                    tracer.shade_surface(&rays[r][i], s, 1, 1.0, shadows)
-                }
+                Some(s) => tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Given(&lit[r][i][..scene.lights.len()])),
             };
         }
     }

@@ -103,16 +103,28 @@ impl<'a> Tracer<'a> {
         let mut color = finish.ambient * c * scene.ambient_light * opacity;
         let reflected_dir = ray.dir - 2.0 * ray.dir.dot(normal) * normal;
         for (i, light) in scene.lights.iter().enumerate() {
-            let Some(l) = light_direction(surface, light.position) else { continue };
-            let n_dot_l = normal.dot(l);
-            let passed = match shadows {
-                _ if !self.quality.shadows || light.shadowless => Vec3::ONE,
-                Shadows::Trace => self.shadow(&shadow_ray(p, facing, l, light.position)),
-                Shadows::Given(pass) => Vec3::splat(pass[i]),
+            let (l, passed) = match shadows {
+                Shadows::Given(lit) => {
+                    let l = lit[i];
+                    if l == Vec3::ZERO {
+                        continue;
+                    }
+                    (l, Vec3::ONE)
+                }
+                Shadows::Trace => {
+                    let Some(l) = light_direction(surface, light.position) else { continue };
+                    let passed = if !self.quality.shadows || light.shadowless {
+                        Vec3::ONE
+                    } else {
+                        self.shadow(&shadow_ray(p, facing, l, light.position))
+                    };
+                    if passed == Vec3::ZERO {
+                        continue;
+                    }
+                    (l, passed)
+                }
             };
-            if passed == Vec3::ZERO {
-                continue;
-            }
+            let n_dot_l = normal.dot(l);
             let light_color = light.color * passed;
             if finish.diffuse > 0.0 {
                 let d = finish.brilliance.pow(n_dot_l);
@@ -224,8 +236,9 @@ pub struct Surface<'a> {
 pub enum Shadows<'p> {
     /// Trace a shadow ray per light now.
     Trace,
-    /// Already traced: the light passed (0 or 1) per light, in scene order.
-    Given(&'p [f32]),
+    /// Already traced (opaque scenes, as packets): per light in scene order, the unit direction
+    /// to a light that reaches the point unblocked, or zero.
+    Given(&'p [Vec3]),
 }
 
 /// A shadow ray from a surface towards a light, and where it must stop.

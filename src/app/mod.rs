@@ -22,6 +22,7 @@ use crate::app::render_thread::Watch;
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
 use crate::headless::CliError;
+use crate::render::preset::Preset;
 use crate::render::Quality;
 use crate::scene::build::{AccelKind, Scene};
 use crate::scene::desc::SceneDesc;
@@ -101,26 +102,29 @@ pub fn check_display() -> Result<(), CliError> {
     Ok(())
 }
 
-/// Quality presets F2 cycles through: the command line's, then two cheaper ones.
-pub fn quality_preset(full: Quality, index: usize) -> (&'static str, Quality) {
-    match index % 3 {
-        0 => ("full", full),
-        1 => (
-            "fast",
-            Quality {
-                max_trace_level: Some(full.max_trace_level.unwrap_or(u32::MAX).min(2)),
-                max_octaves: Some(2),
-                ..full
-            },
-        ),
-        _ => (
-            "draft",
-            Quality {
-                max_trace_level: Some(1),
-                shadows: false,
-                max_octaves: Some(1),
-            },
-        ),
+/// What F2 selects: the command line's settings, then the presets that `strahl tradeoff` put
+/// on the seed scene's Pareto front (`render::preset`): each caps the resolution the view
+/// renders at while moving and sets the antialiasing a still view converges to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WindowPreset {
+    pub name: &'static str,
+    pub quality: Quality,
+    pub aa: u32,
+    /// Upper bound on the adaptive render scale.
+    pub max_scale: f64,
+}
+
+/// The presets F2 cycles through, starting with the command line's.
+pub fn quality_preset(full: Quality, aa: u32, index: usize) -> WindowPreset {
+    let from = |p: Preset| {
+        let s = p.settings();
+        WindowPreset { name: p.name(), quality: s.quality, aa: s.aa, max_scale: s.res_scale as f64 }
+    };
+    match index % 4 {
+        0 => WindowPreset { name: "command line", quality: full, aa, max_scale: 1.0 },
+        1 => from(Preset::Balanced),
+        2 => from(Preset::Fast),
+        _ => from(Preset::Reference),
     }
 }
 

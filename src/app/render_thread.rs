@@ -44,6 +44,8 @@ pub struct View {
     pub height: u32,
     pub aa: u32,
     pub quality: Quality,
+    /// Upper bound on the adaptive scale while moving (a preset's `res_scale`; 1 = none).
+    pub max_scale: f64,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -267,7 +269,7 @@ impl Worker {
             let start = Instant::now();
             match job {
                 Job::Preview(view) => {
-                    let scale = self.controller.scale();
+                    let scale = self.controller.scale().min(view.max_scale);
                     let w = ((view.width as f64 * scale).round() as u32).max(1);
                     let h = ((view.height as f64 * scale).round() as u32).max(1);
                     let settings = self.settings(&view, w, h, None);
@@ -475,6 +477,7 @@ mod tests {
             height: 48,
             aa: 2,
             quality: Quality::default(),
+            max_scale: 1.0,
         };
         rt.submit(View {
             camera: Camera {
@@ -583,6 +586,7 @@ mod tests {
             height: 24,
             aa: 1,
             quality: Quality::default(),
+            max_scale: 1.0,
         };
         rt.submit(view);
         let red = converged(&rt, &woke, view);

@@ -164,10 +164,10 @@ impl App {
                 self.redraw();
             }
             Command::CycleQuality => {
-                self.preset = (self.preset + 1) % 3;
+                self.preset = (self.preset + 1) % 4;
                 eprintln!(
                     "quality: {}",
-                    quality_preset(self.options.quality, self.preset).0
+                    quality_preset(self.options.quality, self.options.aa, self.preset).name
                 );
             }
             Command::PrintCamera => println!("{}", self.fly.camera().to_pov()),
@@ -213,12 +213,14 @@ impl App {
         self.input.speed_steps = 0;
         self.was_active = active;
         if self.size.0 > 0 && self.size.1 > 0 {
+            let preset = quality_preset(self.options.quality, self.options.aa, self.preset);
             self.render.submit(View {
                 camera: self.fly.camera(),
                 width: self.size.0,
                 height: self.size.1,
-                aa: self.options.aa,
-                quality: quality_preset(self.options.quality, self.preset).1,
+                aa: preset.aa,
+                quality: preset.quality,
+                max_scale: preset.max_scale,
             });
         }
         if !self.render.is_alive() {
@@ -300,7 +302,7 @@ impl App {
                 },
                 position: self.fly.position,
                 speed: self.fly.speed,
-                quality: quality_preset(self.options.quality, self.preset).0,
+                quality: quality_preset(self.options.quality, self.options.aa, self.preset).name,
                 state: &state,
             };
             let mut canvas = Canvas {

@@ -38,13 +38,7 @@ impl LocatedError {
 
     /// An error about a whole file (unreadable, not text), located at its start.
     pub fn whole_file(file: &str, message: impl Into<String>) -> Self {
-        LocatedError {
-            file: file.to_string(),
-            line: 1,
-            col: 1,
-            message: message.into(),
-            source_line: String::new(),
-        }
+        LocatedError { file: file.to_string(), line: 1, col: 1, message: message.into(), source_line: String::new() }
     }
 }
 

@@ -86,15 +86,7 @@ impl FlyState {
         let d = origin.direction.try_normalize().unwrap_or(DVec3::Z);
         let yaw = d.x.atan2(d.z);
         let pitch = d.y.clamp(-1.0, 1.0).asin();
-        FlyState {
-            position: origin.location,
-            yaw,
-            pitch,
-            speed,
-            origin,
-            origin_yaw: yaw,
-            origin_pitch: pitch,
-        }
+        FlyState { position: origin.location, yaw, pitch, speed, origin, origin_yaw: yaw, origin_pitch: pitch }
     }
 
     /// Unit viewing direction.
@@ -107,19 +99,12 @@ impl FlyState {
     /// The POV-Ray camera for this state.
     pub fn camera(&self) -> Camera {
         if self.yaw == self.origin_yaw && self.pitch == self.origin_pitch {
-            return Camera {
-                location: self.position,
-                ..self.origin
-            };
+            return Camera { location: self.position, ..self.origin };
         }
         let o = &self.origin;
         let basis = Basis::from_forward(self.forward(), DVec3::Y);
         // A scene that flips `right` (right-handed coordinates) keeps that flip.
-        let sign = if o.right.dot(DVec3::Y.cross(o.direction)) < 0.0 {
-            -1.0
-        } else {
-            1.0
-        };
+        let sign = if o.right.dot(DVec3::Y.cross(o.direction)) < 0.0 { -1.0 } else { 1.0 };
         Camera {
             location: self.position,
             direction: basis.forward * o.direction.length(),
@@ -134,11 +119,7 @@ impl FlyState {
 /// W/S move along the view direction, A/D strafe horizontally, up/down move along world +y.
 pub fn step(state: &FlyState, input: &InputState, dt: f64) -> FlyState {
     let mut s = *state;
-    let dt = if dt.is_finite() {
-        dt.clamp(0.0, 0.25)
-    } else {
-        0.0
-    };
+    let dt = if dt.is_finite() { dt.clamp(0.0, 0.25) } else { 0.0 };
     s.speed = (s.speed * SPEED_STEP.powi(input.speed_steps.clamp(-100, 100))).clamp(1e-4, 1e6);
 
     s.yaw += input.mouse.x * MOUSE_SENSITIVITY + input.stick_look.x * STICK_TURN_RATE * dt;
@@ -196,12 +177,7 @@ mod tests {
 
     fn seed_camera() -> Camera {
         let base = Camera::from_desc(&CameraDesc::default());
-        Camera::looking_at(
-            DVec3::new(3.0, 3.0, -1.0),
-            DVec3::new(0.0, 1.0, 2.0),
-            None,
-            &base,
-        )
+        Camera::looking_at(DVec3::new(3.0, 3.0, -1.0), DVec3::new(0.0, 1.0, 2.0), None, &base)
     }
 
     #[test]
@@ -217,14 +193,7 @@ mod tests {
     fn turning_keeps_lengths_and_rebuilding_matches_look_at() {
         let cam = seed_camera();
         let s = FlyState::new(cam, 1.0);
-        let turned = step(
-            &s,
-            &InputState {
-                mouse: DVec2::new(40.0, -10.0),
-                ..Default::default()
-            },
-            0.016,
-        );
+        let turned = step(&s, &InputState { mouse: DVec2::new(40.0, -10.0), ..Default::default() }, 0.016);
         let c = turned.camera();
         assert!((c.direction.length() - cam.direction.length()).abs() < 1e-12);
         assert!((c.right.length() - cam.right.length()).abs() < 1e-12);
@@ -234,12 +203,7 @@ mod tests {
         let mut back = turned;
         back.yaw += 1e-3;
         let rebuilt = back.camera();
-        let expect = Camera::looking_at(
-            rebuilt.location,
-            rebuilt.location + back.forward(),
-            None,
-            &cam,
-        );
+        let expect = Camera::looking_at(rebuilt.location, rebuilt.location + back.forward(), None, &cam);
         assert!((rebuilt.right - expect.right).length() < 1e-12);
         assert!((rebuilt.up - expect.up).length() < 1e-12);
     }
@@ -247,58 +211,20 @@ mod tests {
     #[test]
     fn keys_move_along_view_and_world_axes() {
         let s = FlyState::new(Camera::from_desc(&CameraDesc::default()), 2.0);
-        let fwd = step(
-            &s,
-            &InputState {
-                forward: true,
-                ..Default::default()
-            },
-            0.25,
-        );
+        let fwd = step(&s, &InputState { forward: true, ..Default::default() }, 0.25);
         assert!((fwd.position - DVec3::new(0.0, 0.0, 0.5)).length() < 1e-12);
-        let right = step(
-            &s,
-            &InputState {
-                right: true,
-                fast: true,
-                ..Default::default()
-            },
-            0.25,
-        );
+        let right = step(&s, &InputState { right: true, fast: true, ..Default::default() }, 0.25);
         assert!((right.position - DVec3::new(2.0, 0.0, 0.0)).length() < 1e-12);
-        let up = step(
-            &s,
-            &InputState {
-                up: true,
-                slow: true,
-                ..Default::default()
-            },
-            0.25,
-        );
+        let up = step(&s, &InputState { up: true, slow: true, ..Default::default() }, 0.25);
         assert!((up.position - DVec3::new(0.0, 0.125, 0.0)).length() < 1e-12);
-        let both = step(
-            &s,
-            &InputState {
-                forward: true,
-                back: true,
-                ..Default::default()
-            },
-            0.25,
-        );
+        let both = step(&s, &InputState { forward: true, back: true, ..Default::default() }, 0.25);
         assert_eq!(both.position, s.position);
     }
 
     #[test]
     fn mouse_right_turns_right_and_up_looks_up() {
         let s = FlyState::new(Camera::from_desc(&CameraDesc::default()), 1.0);
-        let t = step(
-            &s,
-            &InputState {
-                mouse: DVec2::new(100.0, -100.0),
-                ..Default::default()
-            },
-            0.0,
-        );
+        let t = step(&s, &InputState { mouse: DVec2::new(100.0, -100.0), ..Default::default() }, 0.0);
         let f = t.forward();
         assert!(f.x > 0.0 && f.y > 0.0);
         // POV-Ray's right vector still points to the right of the view.
@@ -308,15 +234,7 @@ mod tests {
     #[test]
     fn pitch_is_clamped_and_speed_steps_scale() {
         let s = FlyState::new(Camera::from_desc(&CameraDesc::default()), 1.0);
-        let t = step(
-            &s,
-            &InputState {
-                mouse: DVec2::new(0.0, -1e6),
-                speed_steps: 2,
-                ..Default::default()
-            },
-            0.0,
-        );
+        let t = step(&s, &InputState { mouse: DVec2::new(0.0, -1e6), speed_steps: 2, ..Default::default() }, 0.0);
         assert!(t.pitch <= MAX_PITCH && t.camera().right.is_finite());
         assert!((t.speed - 1.5625).abs() < 1e-12);
     }
@@ -324,37 +242,24 @@ mod tests {
     #[test]
     fn huge_or_bad_dt_is_harmless() {
         let s = FlyState::new(seed_camera(), 1.0);
-        let input = InputState {
-            forward: true,
-            ..Default::default()
-        };
+        let input = InputState { forward: true, ..Default::default() };
         assert!(step(&s, &input, f64::NAN).position == s.position);
         assert!((step(&s, &input, 100.0).position - s.position).length() <= 0.25 + 1e-12);
     }
 
     #[test]
     fn stick_dead_zone_and_curve() {
-        assert_eq!(
-            stick_response(DVec2::new(0.1, 0.05), 0.15, 2.0),
-            DVec2::ZERO
-        );
+        assert_eq!(stick_response(DVec2::new(0.1, 0.05), 0.15, 2.0), DVec2::ZERO);
         let full = stick_response(DVec2::new(1.0, 0.0), 0.15, 2.0);
         assert!((full - DVec2::X).length() < 1e-12);
         let half = stick_response(DVec2::new(0.0, 0.575), 0.15, 2.0);
         assert!((half.y - 0.25).abs() < 1e-12, "{half}");
-        assert_eq!(
-            stick_response(DVec2::new(f64::NAN, 0.0), 0.15, 2.0),
-            DVec2::ZERO
-        );
+        assert_eq!(stick_response(DVec2::new(f64::NAN, 0.0), 0.15, 2.0), DVec2::ZERO);
     }
 
     #[test]
     fn release_all_stops_motion() {
-        let mut i = InputState {
-            forward: true,
-            mouse: DVec2::ONE,
-            ..Default::default()
-        };
+        let mut i = InputState { forward: true, mouse: DVec2::ONE, ..Default::default() };
         assert!(i.is_active());
         i.release_all();
         assert!(!i.is_active());

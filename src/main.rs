@@ -271,7 +271,9 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
         return Err(CliError::user(format!("--target-fps must be a positive number, not {}", v.target_fps)));
     }
     if v.common.res_scale.is_some() {
-        return Err(CliError::user("--res-scale is for render, capture and bench: the window picks its own resolution while the camera moves"));
+        return Err(CliError::user(
+            "--res-scale is for render, capture and bench: the window picks its own resolution while the camera moves",
+        ));
     }
     let settings = v.common.settings();
     let options = strahl::app::ViewOptions {
@@ -324,10 +326,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             include: c.common.include.clone(),
             range: c.frames_range,
             output: c.output,
-            settings: RenderSettings {
-                tile: c.tile,
-                ..c.common.settings()
-            },
+            settings: RenderSettings { tile: c.tile, ..c.common.settings() },
             res_scale: c.common.res_scale(),
             threads: c.common.threads,
             accel: c.common.accel.into(),
@@ -352,10 +351,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             frames: b.frames,
             warmup: b.warmup,
             json: b.json,
-            settings: RenderSettings {
-                tile: b.tile,
-                ..b.common.settings()
-            },
+            settings: RenderSettings { tile: b.tile, ..b.common.settings() },
             res_scale: b.common.res_scale(),
             threads: b.common.threads,
             accel: b.common.accel.into(),

@@ -21,49 +21,32 @@ fn orbit() -> String {
 
 /// A fresh, empty scratch folder for one test (the folder itself is not created).
 fn scratch(test: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join("cli")
-        .join(test);
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli").join(test);
     let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(dir.parent().unwrap_or(Path::new(".")))
-        .unwrap_or_else(|e| panic!("{e}"));
+    std::fs::create_dir_all(dir.parent().unwrap_or(Path::new("."))).unwrap_or_else(|e| panic!("{e}"));
     dir
 }
 
 fn strahl(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_strahl"))
-        .args(args)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run strahl: {e}"))
+    Command::new(env!("CARGO_BIN_EXE_strahl")).args(args).output().unwrap_or_else(|e| panic!("cannot run strahl: {e}"))
 }
 
 fn ok(args: &[&str]) -> Output {
     let out = strahl(args);
-    assert!(
-        out.status.success(),
-        "strahl {args:?} failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "strahl {args:?} failed:\n{}", String::from_utf8_lossy(&out.stderr));
     out
 }
 
 /// Runs a command that must fail with exit code 2; returns its stderr.
 fn fails(args: &[&str]) -> String {
     let out = strahl(args);
-    assert_eq!(
-        out.status.code(),
-        Some(2),
-        "strahl {args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_eq!(out.status.code(), Some(2), "strahl {args:?}: {}", String::from_utf8_lossy(&out.stderr));
     String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
 fn capture(dir: &Path, extra: &[&str]) -> Manifest {
     let (scene, path, d) = (seed(), orbit(), dir.display().to_string());
-    let mut args = vec![
-        "capture", &scene, "--path", &path, "--frames", "5", "-W", "32", "-H", "24", "-q", "-o", &d,
-    ];
+    let mut args = vec!["capture", &scene, "--path", &path, "--frames", "5", "-W", "32", "-H", "24", "-q", "-o", &d];
     args.extend_from_slice(extra);
     ok(&args);
     Manifest::read(dir).unwrap_or_else(|e| panic!("{e}"))
@@ -73,10 +56,7 @@ fn capture(dir: &Path, extra: &[&str]) -> Manifest {
 fn capture_writes_frames_and_manifest() {
     let dir = scratch("capture_writes");
     let m = capture(&dir, &[]);
-    assert_eq!(
-        (m.width, m.height, m.frame_count, m.frames.len()),
-        (32, 24, 5, 5)
-    );
+    assert_eq!((m.width, m.height, m.frame_count, m.frames.len()), (32, 24, 5, 5));
     assert_eq!(m.frames[4].t, 1.0);
     for f in &m.frames {
         assert!(dir.join(&f.file).is_file(), "{}", f.file);
@@ -89,14 +69,8 @@ fn capture_writes_frames_and_manifest() {
 
 #[test]
 fn capture_is_deterministic_across_runs_and_threads() {
-    let a = capture(
-        &scratch("determinism_a"),
-        &["--threads", "1", "--tile", "8"],
-    );
-    let b = capture(
-        &scratch("determinism_b"),
-        &["--threads", "2", "--tile", "37"],
-    );
+    let a = capture(&scratch("determinism_a"), &["--threads", "1", "--tile", "8"]);
+    let b = capture(&scratch("determinism_b"), &["--threads", "2", "--tile", "37"]);
     let c = capture(&scratch("determinism_c"), &["--threads", "8"]);
     assert!(a.same_content(&b) && b.same_content(&c));
 }
@@ -104,32 +78,19 @@ fn capture_is_deterministic_across_runs_and_threads() {
 #[test]
 fn capture_shards_merge_into_the_whole() {
     let whole = capture(&scratch("merge_whole"), &[]);
-    let (s1, s2, out) = (
-        scratch("merge_s1"),
-        scratch("merge_s2"),
-        scratch("merge_out"),
-    );
+    let (s1, s2, out) = (scratch("merge_s1"), scratch("merge_s2"), scratch("merge_out"));
     let first = capture(&s1, &["--frames-range", "0..2"]);
     assert_eq!(first.frames.len(), 2, "a shard lists only its frames");
     capture(&s2, &["--frames-range", "2..5"]);
-    let (p1, p2, po) = (
-        s1.display().to_string(),
-        s2.display().to_string(),
-        out.display().to_string(),
-    );
+    let (p1, p2, po) = (s1.display().to_string(), s2.display().to_string(), out.display().to_string());
     ok(&["capture", "--merge", &p1, &p2, "-o", &po]);
     let merged = Manifest::read(&out).unwrap_or_else(|e| panic!("{e}"));
-    assert!(
-        merged.same_content(&whole),
-        "merged shards differ from one run"
-    );
+    assert!(merged.same_content(&whole), "merged shards differ from one run");
     assert!(out.join("frame_0004.png").is_file());
     // An incomplete merge is refused and writes nothing.
     let partial = scratch("merge_partial");
     let pp = partial.display().to_string();
-    assert!(
-        fails(&["capture", "--merge", &p1, "-o", &pp]).contains("no shard has frame 2, 3, 4 of 5")
-    );
+    assert!(fails(&["capture", "--merge", &p1, "-o", &pp]).contains("no shard has frame 2, 3, 4 of 5"));
     assert!(!partial.exists());
 }
 
@@ -137,16 +98,7 @@ fn capture_shards_merge_into_the_whole() {
 fn capture_rejects_zero_frames() {
     let dir = scratch("zero_frames");
     let d = dir.display().to_string();
-    fails(&[
-        "capture",
-        &seed(),
-        "--path",
-        &orbit(),
-        "--frames",
-        "0",
-        "-o",
-        &d,
-    ]);
+    fails(&["capture", &seed(), "--path", &orbit(), "--frames", "0", "-o", &d]);
     assert!(!dir.exists(), "nothing may be written");
 }
 
@@ -154,22 +106,8 @@ fn capture_rejects_zero_frames() {
 fn capture_rejects_range_out_of_bounds() {
     let dir = scratch("range_bounds");
     let d = dir.display().to_string();
-    let err = fails(&[
-        "capture",
-        &seed(),
-        "--path",
-        &orbit(),
-        "--frames",
-        "4",
-        "--frames-range",
-        "2..5",
-        "-o",
-        &d,
-    ]);
-    assert!(
-        err.contains("--frames-range 2..5 is out of bounds: the capture has frames 0..4"),
-        "{err}"
-    );
+    let err = fails(&["capture", &seed(), "--path", &orbit(), "--frames", "4", "--frames-range", "2..5", "-o", &d]);
+    assert!(err.contains("--frames-range 2..5 is out of bounds: the capture has frames 0..4"), "{err}");
     assert!(!dir.exists());
 }
 
@@ -177,24 +115,10 @@ fn capture_rejects_range_out_of_bounds() {
 fn capture_rejects_malformed_ranges() {
     let dir = scratch("range_malformed");
     let d = dir.display().to_string();
-    for (range, says) in [
-        ("2-5", "not a frame range"),
-        ("5..3", "is empty"),
-        ("a..3", "not a frame range"),
-        ("3..3", "is empty"),
-    ] {
-        let err = fails(&[
-            "capture",
-            &seed(),
-            "--path",
-            &orbit(),
-            "--frames",
-            "9",
-            "--frames-range",
-            range,
-            "-o",
-            &d,
-        ]);
+    for (range, says) in
+        [("2-5", "not a frame range"), ("5..3", "is empty"), ("a..3", "not a frame range"), ("3..3", "is empty")]
+    {
+        let err = fails(&["capture", &seed(), "--path", &orbit(), "--frames", "9", "--frames-range", range, "-o", &d]);
         assert!(err.contains(says), "{range}: {err}");
     }
     assert!(!dir.exists());
@@ -205,11 +129,8 @@ fn capture_reports_path_errors_with_location() {
     let dir = scratch("bad_path");
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
     let file = dir.join("bad.path");
-    std::fs::write(
-        &file,
-        "key 0 location <0,0,0> look_at <1,1,1>\nkey 1 location <0,nan,0> look_at <1,1,1>\n",
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(&file, "key 0 location <0,0,0> look_at <1,1,1>\nkey 1 location <0,nan,0> look_at <1,1,1>\n")
+        .unwrap_or_else(|e| panic!("{e}"));
     let out = dir.join("out");
     let err = fails(&[
         "capture",
@@ -221,10 +142,7 @@ fn capture_reports_path_errors_with_location() {
         "-o",
         &out.display().to_string(),
     ]);
-    assert!(
-        err.contains("bad.path:2:19: location y must be a finite number"),
-        "{err}"
-    );
+    assert!(err.contains("bad.path:2:19: location y must be a finite number"), "{err}");
     assert!(err.contains("^"), "a caret under the column: {err}");
     assert!(!out.exists());
 }
@@ -278,21 +196,11 @@ fn bench_writes_json_report() {
     }
     assert_eq!(v.get("threads").and_then(Json::as_u64), Some(2));
     assert_eq!(v.get("frames").and_then(Json::as_u64), Some(4));
-    assert!(v
-        .get("median_ms")
-        .and_then(Json::as_f64)
-        .is_some_and(|m| m > 0.0));
+    assert!(v.get("median_ms").and_then(Json::as_f64).is_some_and(|m| m > 0.0));
 }
 
 #[test]
 fn bench_rejects_a_bad_path_file() {
-    let err = fails(&[
-        "bench",
-        &seed(),
-        "--path",
-        "/nonexistent/x.path",
-        "--frames",
-        "2",
-    ]);
+    let err = fails(&["bench", &seed(), "--path", "/nonexistent/x.path", "--frames", "2"]);
     assert!(err.contains("x.path:1:1: cannot read"), "{err}");
 }

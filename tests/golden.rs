@@ -36,9 +36,7 @@ fn golden_dir() -> PathBuf {
 }
 
 fn failure_dir() -> PathBuf {
-    std::env::var_os("CARGO_TARGET_DIR")
-        .map_or_else(|| root().join("target"), PathBuf::from)
-        .join("golden-failures")
+    std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root().join("target"), PathBuf::from).join("golden-failures")
 }
 
 /// Where a frame's pixels come from: "x86_64-linux" and the like. Exact matches are expected
@@ -59,30 +57,18 @@ fn render_frames() -> Vec<Frame> {
         .unwrap_or_else(|e| panic!("cannot load {}: {e}", scene_file.display()));
     let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
     let base = Camera::from_desc(&desc.camera);
-    let settings = RenderSettings {
-        width: WIDTH,
-        height: HEIGHT,
-        ..RenderSettings::default()
-    };
+    let settings = RenderSettings { width: WIDTH, height: HEIGHT, ..RenderSettings::default() };
     let mut image = Image::default();
     let mut frames = Vec::new();
     for path_name in PATHS {
-        let path = CameraPath::load(&root().join("scenes").join(path_name))
-            .unwrap_or_else(|e| panic!("{e}"));
+        let path = CameraPath::load(&root().join("scenes").join(path_name)).unwrap_or_else(|e| panic!("{e}"));
         for i in 0..FRAMES {
             // A closed path's last frame repeats its first, so spread its frames over the loop.
-            let t = if path.closed {
-                i as f64 / FRAMES as f64
-            } else {
-                frame_t(i, FRAMES)
-            };
+            let t = if path.closed { i as f64 / FRAMES as f64 } else { frame_t(i, FRAMES) };
             let camera = path.camera_at(t, &base);
             let (rgb, _) = render_rgb8(&scene, &camera, &settings, &mut image);
             let stem = path_name.trim_end_matches(".path");
-            frames.push(Frame {
-                name: format!("{stem}.{i}.png"),
-                rgb,
-            });
+            frames.push(Frame { name: format!("{stem}.{i}.png"), rgb });
         }
     }
     frames
@@ -95,11 +81,7 @@ fn read_sums() -> Vec<(String, String, String)> {
         .filter(|l| !l.starts_with('#'))
         .filter_map(|l| {
             let mut w = l.split_whitespace();
-            Some((
-                w.next()?.to_string(),
-                w.next()?.to_string(),
-                w.next()?.to_string(),
-            ))
+            Some((w.next()?.to_string(), w.next()?.to_string(), w.next()?.to_string()))
         })
         .collect()
 }
@@ -108,55 +90,26 @@ fn regenerate(frames: &[Frame]) {
     std::fs::create_dir_all(golden_dir()).unwrap_or_else(|e| panic!("{e}"));
     let mut sums = format!("# Golden frames for tests/golden.rs; regenerate with: {REGEN}\n");
     for f in frames {
-        write_png(&golden_dir().join(&f.name), WIDTH, HEIGHT, &f.rgb)
-            .unwrap_or_else(|e| panic!("{e}"));
-        let _ = writeln!(
-            sums,
-            "{}  {}  {}",
-            sha256_hex(&f.rgb),
-            f.name,
-            this_target()
-        );
+        write_png(&golden_dir().join(&f.name), WIDTH, HEIGHT, &f.rgb).unwrap_or_else(|e| panic!("{e}"));
+        let _ = writeln!(sums, "{}  {}  {}", sha256_hex(&f.rgb), f.name, this_target());
     }
     std::fs::write(golden_dir().join("SHA256SUMS"), sums).unwrap_or_else(|e| panic!("{e}"));
-    eprintln!(
-        "regenerated {} golden frames in {}",
-        frames.len(),
-        golden_dir().display()
-    );
+    eprintln!("regenerated {} golden frames in {}", frames.len(), golden_dir().display());
 }
 
 /// Amplified absolute difference, so one-step differences are visible.
 fn diff_image(a: &[u8], b: &[u8]) -> Vec<u8> {
-    a.iter()
-        .zip(b)
-        .map(|(&x, &y)| ((x as i32 - y as i32).unsigned_abs() * 16).min(255) as u8)
-        .collect()
+    a.iter().zip(b).map(|(&x, &y)| ((x as i32 - y as i32).unsigned_abs() * 16).min(255) as u8).collect()
 }
 
 fn save_failure(name: &str, actual: &[u8], expected: Option<&[u8]>) -> PathBuf {
     let dir = failure_dir();
     let _ = std::fs::create_dir_all(&dir);
     let stem = name.trim_end_matches(".png");
-    let _ = write_png(
-        &dir.join(format!("{stem}.actual.png")),
-        WIDTH,
-        HEIGHT,
-        actual,
-    );
+    let _ = write_png(&dir.join(format!("{stem}.actual.png")), WIDTH, HEIGHT, actual);
     if let Some(expected) = expected {
-        let _ = write_png(
-            &dir.join(format!("{stem}.expected.png")),
-            WIDTH,
-            HEIGHT,
-            expected,
-        );
-        let _ = write_png(
-            &dir.join(format!("{stem}.diff.png")),
-            WIDTH,
-            HEIGHT,
-            &diff_image(actual, expected),
-        );
+        let _ = write_png(&dir.join(format!("{stem}.expected.png")), WIDTH, HEIGHT, expected);
+        let _ = write_png(&dir.join(format!("{stem}.diff.png")), WIDTH, HEIGHT, &diff_image(actual, expected));
     }
     dir
 }
@@ -195,7 +148,11 @@ fn check(frame: &Frame, sums: &[(String, String, String)]) -> Option<String> {
     }
     if *target != this_target() && db >= MIN_PSNR_DB {
         // A different CPU or libm: small rounding differences are expected, large ones are not.
-        eprintln!("note: {} differs from its {target} golden at {db:.1} dB (>= {MIN_PSNR_DB}): accepted on {}", frame.name, this_target());
+        eprintln!(
+            "note: {} differs from its {target} golden at {db:.1} dB (>= {MIN_PSNR_DB}): accepted on {}",
+            frame.name,
+            this_target()
+        );
         return None;
     }
     let dir = save_failure(&frame.name, &frame.rgb, Some(&expected));

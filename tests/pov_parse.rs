@@ -5,9 +5,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 use strahl::error::LocatedError;
-use strahl::pov::{
-    load_scene, load_scene_with_options, load_scene_with_warnings, IncludePath, ParseOptions,
-};
+use strahl::pov::{load_scene, load_scene_with_options, load_scene_with_warnings, IncludePath, ParseOptions};
 use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc};
 
 fn repo() -> PathBuf {
@@ -15,16 +13,12 @@ fn repo() -> PathBuf {
 }
 
 fn std_include() -> IncludePath {
-    IncludePath {
-        dirs: vec![repo().join("scenes/include")],
-    }
+    IncludePath { dirs: vec![repo().join("scenes/include")] }
 }
 
 /// A fresh folder for one test's scene files.
 fn dir(test: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR"))
-        .join("pov_parse")
-        .join(test);
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("pov_parse").join(test);
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
@@ -60,10 +54,7 @@ fn seed_scene_loads() {
     let d = DVec3::new(-3.0, -2.0, 3.0).normalize();
     assert!(close(s.camera.direction, d));
     // Right is horizontal and to the viewer's right in the left-handed frame: (1,0,1) here.
-    assert!(close(
-        s.camera.right,
-        DVec3::new(1.0, 0.0, 1.0).normalize() * 1.33
-    ));
+    assert!(close(s.camera.right, DVec3::new(1.0, 0.0, 1.0).normalize() * 1.33));
     assert!(s.camera.up.y > 0.0 && s.camera.up.dot(d).abs() < 1e-12);
     assert_eq!(s.lights.len(), 3);
     assert_eq!(s.lights[2].position, DVec3::new(6.0, 4.0, -3.0));
@@ -71,30 +62,15 @@ fn seed_scene_loads() {
     assert_eq!(s.objects.len(), 3);
 
     let plane = &s.objects[0];
-    assert_eq!(
-        plane.shape,
-        ShapeDesc::Plane {
-            normal: DVec3::Y,
-            distance: 0.0
-        }
-    );
+    assert_eq!(plane.shape, ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 });
     match &plane.texture.pigment.pattern {
         PigmentPattern::Checker(a, b) => assert_eq!((a.rgb, b.rgb), (DVec3::ONE, DVec3::ZERO)),
         other => panic!("{other:?}"),
     }
 
     let sphere = &s.objects[1];
-    assert_eq!(
-        sphere.shape,
-        ShapeDesc::Sphere {
-            center: DVec3::new(0.0, 2.0, 4.0),
-            radius: 2.0
-        }
-    );
-    assert_eq!(
-        sphere.texture.pigment.pattern,
-        PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0))
-    );
+    assert_eq!(sphere.shape, ShapeDesc::Sphere { center: DVec3::new(0.0, 2.0, 4.0), radius: 2.0 });
+    assert_eq!(sphere.texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0)));
     let n = sphere.texture.normal.as_ref().unwrap();
     assert_eq!(n.pattern, strahl::scene::desc::NormalPattern::Bumps(0.4));
     assert_eq!(n.transform.matrix, DMat4::from_scale(DVec3::splat(0.2)));
@@ -102,37 +78,21 @@ fn seed_scene_loads() {
     assert_eq!(sphere.source.line, 22);
 
     let bx = &s.objects[2];
-    assert_eq!(
-        bx.shape,
-        ShapeDesc::Box {
-            corner1: DVec3::new(-1.0, 0.0, -0.5),
-            corner2: DVec3::new(1.0, 2.0, 1.5)
-        }
-    );
+    assert_eq!(bx.shape, ShapeDesc::Box { corner1: DVec3::new(-1.0, 0.0, -0.5), corner2: DVec3::new(1.0, 2.0, 1.5) });
     let p = &bx.texture.pigment;
     match &p.pattern {
         PigmentPattern::Wood(map) => {
             assert_eq!(map.len(), 2);
-            assert_eq!(
-                (map[0].value, map[0].color.rgb),
-                (0.1, DVec3::new(0.888, 0.6, 0.3))
-            );
-            assert_eq!(
-                (map[1].value, map[1].color.rgb),
-                (0.9, DVec3::new(0.6, 0.4, 0.2))
-            );
+            assert_eq!((map[0].value, map[0].color.rgb), (0.1, DVec3::new(0.888, 0.6, 0.3)));
+            assert_eq!((map[1].value, map[1].color.rgb), (0.9, DVec3::new(0.6, 0.4, 0.2)));
         }
         other => panic!("{other:?}"),
     }
     let t = p.turbulence.unwrap();
-    assert_eq!(
-        (t.amount, t.octaves, t.omega, t.lambda),
-        (DVec3::splat(0.04), 3, 0.5, 2.0)
-    );
+    assert_eq!((t.amount, t.octaves, t.omega, t.lambda), (DVec3::splat(0.04), 3, 0.5, 2.0));
     // DMFWood4's own scale, then `scale 2`, then the object's `rotate y*(-20)`.
     let rot = DMat4::from_rotation_y((-20f64).to_radians());
-    let want =
-        rot * DMat4::from_scale(DVec3::splat(2.0)) * DMat4::from_scale(DVec3::new(0.05, 0.05, 1.0));
+    let want = rot * DMat4::from_scale(DVec3::splat(2.0)) * DMat4::from_scale(DVec3::new(0.05, 0.05, 1.0));
     assert!(p.transform.matrix.abs_diff_eq(want, 1e-12));
     assert!((p.transform.matrix * p.transform.inverse).abs_diff_eq(DMat4::IDENTITY, 1e-12));
     assert!(bx.transform.matrix.abs_diff_eq(rot, 1e-12));
@@ -153,11 +113,8 @@ fn rotate_y_90_takes_x_to_minus_z_as_in_povray() {
 
 #[test]
 fn transforms_carry_textures_written_before_them_only() {
-    let s = load_text(
-        "carry",
-        "sphere { 0, 1 pigment { checker } translate x pigment { checker scale 2 } scale 3 }",
-    )
-    .unwrap();
+    let s = load_text("carry", "sphere { 0, 1 pigment { checker } translate x pigment { checker scale 2 } scale 3 }")
+        .unwrap();
     let o = &s.objects[0];
     // The second pigment replaced the first, so it only sees `scale 3`.
     let want = DMat4::from_scale(DVec3::splat(3.0)) * DMat4::from_scale(DVec3::splat(2.0));
@@ -168,12 +125,8 @@ fn transforms_carry_textures_written_before_them_only() {
 
 #[test]
 fn camera_angle_and_order() {
-    let a = load_text("cam_a", "camera { location <3,2,-5> look_at 0 angle 30 }")
-        .unwrap()
-        .camera;
-    let b = load_text("cam_b", "camera { angle 30 look_at 0 location <3,2,-5> }")
-        .unwrap()
-        .camera;
+    let a = load_text("cam_a", "camera { location <3,2,-5> look_at 0 angle 30 }").unwrap().camera;
+    let b = load_text("cam_b", "camera { angle 30 look_at 0 location <3,2,-5> }").unwrap().camera;
     // POV-Ray 3.7 renders these two identically (checked), so order does not matter.
     assert!(close(a.direction, b.direction) && close(a.right, b.right) && close(a.up, b.up));
     let len = 0.5 * 1.33 / 15f64.to_radians().tan();
@@ -204,10 +157,7 @@ fn expressions_colors_and_declares() {
     assert_eq!(s.global.max_trace_level, 7);
     assert!(close(s.global.ambient_light, DVec3::splat(0.1)));
     let o = &s.objects[0];
-    assert_eq!(
-        o.texture.pigment.pattern,
-        PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0))
-    );
+    assert_eq!(o.texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0)));
     assert_eq!(o.texture.finish.ambient, DVec3::splat(0.2));
     assert_eq!(o.texture.finish.reflection, DVec3::new(0.1, 0.2, 0.3));
     assert_eq!(o.interior.ior, 1.5);
@@ -229,21 +179,15 @@ fn declared_objects_textures_and_ifdef() {
     .unwrap();
     assert_eq!(s.objects.len(), 1);
     assert_eq!(s.objects[0].texture.finish.phong, 0.5);
-    assert_eq!(
-        s.objects[0].transform.matrix,
-        DMat4::from_translation(DVec3::X)
-    );
+    assert_eq!(s.objects[0].transform.matrix, DMat4::from_translation(DVec3::X));
     assert_eq!(s.version, 3.6);
 }
 
 #[test]
 fn scale_by_zero_warns_like_povray() {
     let d = dir("scale0");
-    let (s, w) = load_scene_with_warnings(
-        &write(&d, "s.pov", "sphere { 0, 1 scale <0, 1, 1> }"),
-        &std_include(),
-    )
-    .unwrap();
+    let (s, w) =
+        load_scene_with_warnings(&write(&d, "s.pov", "sphere { 0, 1 scale <0, 1, 1> }"), &std_include()).unwrap();
     assert_eq!(s.objects[0].transform.matrix, DMat4::IDENTITY);
     assert_eq!(w.len(), 1);
     assert_eq!((w[0].line, w[0].col), (1, 15));
@@ -256,28 +200,22 @@ fn scale_by_zero_warns_like_povray() {
 fn error_unknown_camera_keyword() {
     let (l, c, m) = err("e_cam", "camera {\n  locaton <0,0,0>\n}");
     assert_eq!((l, c), (2, 3));
-    assert_eq!(m, "unknown keyword `locaton` in camera (expected one of: location, look_at, angle, right, up, direction, sky)");
+    assert_eq!(
+        m,
+        "unknown keyword `locaton` in camera (expected one of: location, look_at, angle, right, up, direction, sky)"
+    );
 }
 
 #[test]
 fn error_unclosed_block() {
-    let (l, c, m) = err(
-        "e_close",
-        "\n\nsphere { <0,0,0>, 1\n  pigment { color rgb 1 }\n",
-    );
+    let (l, c, m) = err("e_close", "\n\nsphere { <0,0,0>, 1\n  pigment { color rgb 1 }\n");
     assert_eq!((l, c), (5, 1));
-    assert_eq!(
-        m,
-        "expected `}` to close `sphere` opened at 3:1, found end of file"
-    );
+    assert_eq!(m, "expected `}` to close `sphere` opened at 3:1, found end of file");
 }
 
 #[test]
 fn error_undefined_identifier() {
-    let (l, c, m) = err(
-        "e_undef",
-        "#include \"colors.inc\"\nsphere { 0, 1 pigment { color Whit } }",
-    );
+    let (l, c, m) = err("e_undef", "#include \"colors.inc\"\nsphere { 0, 1 pigment { color Whit } }");
     assert_eq!((l, c), (2, 31));
     assert_eq!(m, "undefined identifier `Whit`");
 }
@@ -293,20 +231,14 @@ fn error_argument_count() {
 fn error_unsupported_keywords() {
     let (l, c, m) = err("e_torus", "\n torus { 1, 0.5 }");
     assert_eq!((l, c), (2, 2));
-    assert_eq!(
-        m,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
-    );
+    assert_eq!(m, "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)");
     let (l, c, m) = err("e_macro", "#declare A = 1;\n#macro F() #end");
     assert_eq!((l, c), (2, 1));
     assert!(m.starts_with("`#macro` is not supported"), "{m}");
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
     let (_, _, m) = err("e_spot", "light_source { 0 color rgb 1 spotlight }");
-    assert!(
-        m.starts_with("`spotlight` is not supported in light_source"),
-        "{m}"
-    );
+    assert!(m.starts_with("`spotlight` is not supported in light_source"), "{m}");
     let (_, _, m) = err("e_fog", "fog { distance 3 }");
     assert!(m.starts_with("`fog` is not supported in the scene"), "{m}");
 }
@@ -323,14 +255,8 @@ fn error_numbers() {
 
 #[test]
 fn error_zero_sizes() {
-    assert_eq!(
-        err("z1", "sphere { 0, -1 }"),
-        (1, 13, "sphere radius must be positive".into())
-    );
-    assert_eq!(
-        err("z2", "plane { <0,0,0>, 1 }"),
-        (1, 9, "plane normal must not be zero".into())
-    );
+    assert_eq!(err("z1", "sphere { 0, -1 }"), (1, 13, "sphere radius must be positive".into()));
+    assert_eq!(err("z2", "plane { <0,0,0>, 1 }"), (1, 9, "plane normal must not be zero".into()));
     let (l, c, m) = err("z3", "triangle { <0,0,0>, <1,1,1>, <2,2,2> }");
     assert_eq!((l, c), (1, 1));
     assert!(m.contains("collinear"), "{m}");
@@ -345,10 +271,7 @@ fn error_zero_sizes() {
 fn error_include_not_found() {
     let (l, c, m) = err("e_inc", "\n#include \"nothere.inc\"");
     assert_eq!((l, c), (2, 10));
-    assert!(
-        m.starts_with("include file \"nothere.inc\" not found"),
-        "{m}"
-    );
+    assert!(m.starts_with("include file \"nothere.inc\" not found"), "{m}");
 }
 
 #[test]
@@ -366,11 +289,7 @@ fn error_include_cycle() {
 fn error_include_too_deep() {
     let d = dir("e_deep");
     for i in 0..40 {
-        write(
-            &d,
-            &format!("f{i}.inc"),
-            &format!("#include \"f{}.inc\"\n", i + 1),
-        );
+        write(&d, &format!("f{i}.inc"), &format!("#include \"f{}.inc\"\n", i + 1));
     }
     write(&d, "f40.inc", "");
     let e = load_scene(&d.join("f0.inc"), &IncludePath::default()).unwrap_err();
@@ -387,26 +306,12 @@ fn include_search_order_prefers_the_scene_folder() {
     write(&lib, "c.inc", "#declare R = 2;");
     write(&d, "c.inc", "#declare R = 1;");
     let s = write(&d, "s.pov", "#include \"c.inc\"\nsphere { 0, R }");
-    let inc = IncludePath {
-        dirs: vec![lib.clone()],
-    };
+    let inc = IncludePath { dirs: vec![lib.clone()] };
     let scene = load_scene(&s, &inc).unwrap();
-    assert_eq!(
-        scene.objects[0].shape,
-        ShapeDesc::Sphere {
-            center: DVec3::ZERO,
-            radius: 1.0
-        }
-    );
+    assert_eq!(scene.objects[0].shape, ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.0 });
     std::fs::remove_file(d.join("c.inc")).unwrap();
     let scene = load_scene(&s, &inc).unwrap();
-    assert_eq!(
-        scene.objects[0].shape,
-        ShapeDesc::Sphere {
-            center: DVec3::ZERO,
-            radius: 2.0
-        }
-    );
+    assert_eq!(scene.objects[0].shape, ShapeDesc::Sphere { center: DVec3::ZERO, radius: 2.0 });
 }
 
 #[test]
@@ -428,11 +333,7 @@ fn error_deep_nesting_does_not_overflow() {
     let text = format!("#declare A = 1{};", "+1".repeat(100_000));
     let (_, _, m) = err("e_chain", &text);
     assert!(m.starts_with("nesting deeper than"), "{m}");
-    let text = format!(
-        "#declare A = {}1{};",
-        "(".repeat(50_000),
-        ")".repeat(50_000)
-    );
+    let text = format!("#declare A = {}1{};", "(".repeat(50_000), ")".repeat(50_000));
     let (_, _, m) = err("e_nest", &text);
     assert!(m.starts_with("nesting deeper than"), "{m}");
 }
@@ -498,14 +399,9 @@ fn arbitrary_bytes_never_panic() {
     };
     for i in 0..300 {
         let text: String = if i % 2 == 0 {
-            (0..64)
-                .map(|_| words[(next() % words.len() as u64) as usize])
-                .collect::<Vec<_>>()
-                .join(" ")
+            (0..64).map(|_| words[(next() % words.len() as u64) as usize]).collect::<Vec<_>>().join(" ")
         } else {
-            (0..64)
-                .map(|_| char::from((next() % 96 + 32) as u8))
-                .collect()
+            (0..64).map(|_| char::from((next() % 96 + 32) as u8)).collect()
         };
         let p = write(&d, "f.pov", &text);
         let _ = load_scene(&p, &IncludePath::default());
@@ -515,15 +411,8 @@ fn arbitrary_bytes_never_panic() {
 #[test]
 fn image_size_reaches_the_scene() {
     let d = dir("image_size");
-    let p = write(
-        &d,
-        "scene.pov",
-        "camera { right x*image_width/image_height look_at z }",
-    );
-    let options = ParseOptions {
-        image_width: 800,
-        image_height: 400,
-    };
+    let p = write(&d, "scene.pov", "camera { right x*image_width/image_height look_at z }");
+    let options = ParseOptions { image_width: 800, image_height: 400 };
     let s = load_scene_with_options(&p, &std_include(), &options).unwrap();
     assert!(close(s.camera.right, DVec3::new(2.0, 0.0, 0.0)));
     // `load_scene` parses for POV-Ray's default 640×480.
@@ -557,17 +446,8 @@ fn while_loops_build_a_thousand_spheres() {
     .unwrap();
     assert_eq!(s.objects.len(), 1000);
     assert_eq!(s.objects.iter().filter(|o| o.no_shadow).count(), 500);
-    assert_eq!(
-        (s.objects[0].source.line, s.objects[1].source.line),
-        (9, 11)
-    );
-    assert_eq!(
-        s.objects[999].shape,
-        ShapeDesc::Sphere {
-            center: DVec3::splat(9.0),
-            radius: 0.4
-        }
-    );
+    assert_eq!((s.objects[0].source.line, s.objects[1].source.line), (9, 11));
+    assert_eq!(s.objects[999].shape, ShapeDesc::Sphere { center: DVec3::splat(9.0), radius: 0.4 });
 }
 
 #[test]
@@ -587,33 +467,15 @@ fn declared_union_from_an_include() {
     );
     let s = load_scene(&p, &std_include()).unwrap();
     assert_eq!(s.objects.len(), 5);
-    assert_eq!(
-        s.objects[0].source.file,
-        d.join("pair.inc").display().to_string()
-    );
+    assert_eq!(s.objects[0].source.file, d.join("pair.inc").display().to_string());
     assert_eq!(s.objects[0].source.line, 2);
-    assert_eq!(
-        s.objects[0].transform.matrix,
-        DMat4::from_translation(DVec3::new(0.0, 5.0, 0.0))
-    );
+    assert_eq!(s.objects[0].transform.matrix, DMat4::from_translation(DVec3::new(0.0, 5.0, 0.0)));
     let red = strahl::scene::desc::Color::rgb(1.0, 0.0, 0.0);
-    assert_eq!(
-        s.objects[2].texture.pigment.pattern,
-        PigmentPattern::Solid(red)
-    );
-    assert_eq!(
-        s.objects[3].texture.pigment.pattern,
-        PigmentPattern::Solid(strahl::scene::desc::Color::WHITE)
-    );
+    assert_eq!(s.objects[2].texture.pigment.pattern, PigmentPattern::Solid(red));
+    assert_eq!(s.objects[3].texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::WHITE));
     // The bare sphere in the outer union has no texture anywhere: POV-Ray's default (black).
-    assert_eq!(
-        s.objects[4].texture.pigment.pattern,
-        PigmentPattern::Solid(strahl::scene::desc::Color::BLACK)
-    );
-    assert_eq!(
-        s.objects[4].transform.matrix,
-        DMat4::from_scale(DVec3::splat(2.0))
-    );
+    assert_eq!(s.objects[4].texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::BLACK));
+    assert_eq!(s.objects[4].transform.matrix, DMat4::from_scale(DVec3::splat(2.0)));
 }
 
 #[test]
@@ -626,9 +488,7 @@ fn shadowless_light_and_default_wood() {
     .unwrap();
     assert!(s.lights[0].shadowless);
     assert!(s.objects[0].no_shadow);
-    assert!(
-        matches!(&s.objects[0].texture.pigment.pattern, PigmentPattern::Wood(m) if m.len() == 4)
-    );
+    assert!(matches!(&s.objects[0].texture.pigment.pattern, PigmentPattern::Wood(m) if m.len() == 4));
 }
 
 #[test]
@@ -637,20 +497,11 @@ fn error_control_flow() {
     assert_eq!((l, c), (2, 3));
     assert!(m.contains("more than 10000000 iterations"), "{m}");
     let (l, c, m) = err("e_else", "sphere { 0, 1 }\n#else\n");
-    assert_eq!(
-        (l, c, m.as_str()),
-        (2, 1, "`#else` without a matching `#if`")
-    );
+    assert_eq!((l, c, m.as_str()), (2, 1, "`#else` without a matching `#if`"));
     let (l, c, m) = err("e_unclosed", "#if (1)\nsphere { 0, 1 }\n");
-    assert_eq!(
-        (l, c, m.as_str()),
-        (3, 1, "expected `#end`, found end of file")
-    );
+    assert_eq!((l, c, m.as_str()), (3, 1, "expected `#end`, found end of file"));
     let (l, c, m) = err("e_cmp", "#declare A = 1;\n#if (A < <1, 2, 3>) #end");
-    assert_eq!(
-        (l, c, m.as_str()),
-        (2, 10, "expected a float, found a vector")
-    );
+    assert_eq!((l, c, m.as_str()), (2, 10, "expected a float, found a vector"));
     let (l, c, m) = err("e_break", "#declare A = 1;\n  #break");
     assert_eq!((l, c), (2, 3));
     assert_eq!(m, "`#break` outside `#switch` or `#while`");
@@ -660,23 +511,14 @@ fn error_control_flow() {
 fn error_csg() {
     let (l, c, m) = err("e_diff", "union {\n  difference { sphere { 0, 1 } }\n}");
     assert_eq!((l, c), (2, 3));
-    assert!(
-        m.starts_with("`difference` is not supported (supported: "),
-        "{m}"
-    );
+    assert!(m.starts_with("`difference` is not supported (supported: "), "{m}");
     let (l, c, m) = err("e_cam", "union {\n  sphere { 0, 1 }\n  camera { }\n}");
     assert_eq!((l, c), (3, 3));
     assert_eq!(m, "`camera` is not supported inside `union` or `merge`");
-    let (l, c, m) = err(
-        "e_poly",
-        "polygon { 4,\n <0,0,0>, <1,0,0>, <1,1,0>, <0,1,1> }",
-    );
+    let (l, c, m) = err("e_poly", "polygon { 4,\n <0,0,0>, <1,0,0>, <1,1,0>, <0,1,1> }");
     assert_eq!((l, c), (2, 29));
     assert_eq!(m, "polygon points must lie in one plane; point 4 does not");
     let (l, c, m) = err("e_vec4", "sphere {\n <1, 2, 3, 4>, 1 }");
     assert_eq!((l, c), (2, 2));
-    assert!(
-        m.starts_with("expected a 3-component vector, found 4"),
-        "{m}"
-    );
+    assert!(m.starts_with("expected a 3-component vector, found 4"), "{m}");
 }

@@ -180,7 +180,9 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
         look_at: None,
         angle: None,
     };
-    let lights = (0..1 + r.pick(3)).map(|_| LightDesc { position: r.v(-10.0, 10.0), color: r.v(0.2, 1.0), shadowless: r.pick(4) == 0 }).collect();
+    let lights = (0..1 + r.pick(3))
+        .map(|_| LightDesc { position: r.v(-10.0, 10.0), color: r.v(0.2, 1.0), shadowless: r.pick(4) == 0 })
+        .collect();
     let objects = (0..objects)
         .map(|i| {
             let shape = random_shape(r);

@@ -19,8 +19,8 @@ use strahl::headless::{include_path, output};
 use strahl::pov::load_scene;
 use strahl::render::image::Image;
 use strahl::render::intersect::HitShape;
-use strahl::render::{primary_ray, render, RenderSettings};
 use strahl::render::stats::RenderStats;
+use strahl::render::{primary_ray, render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 
 const W: u32 = 640;
@@ -59,7 +59,8 @@ fn expected(name: &str) -> Vec<u8> {
 fn write_failure(name: &str, actual: &[u8], expected: &[u8]) -> PathBuf {
     let dir = root().join("target/reference-failures");
     std::fs::create_dir_all(&dir).expect("create target/reference-failures");
-    let diff: Vec<u8> = actual.iter().zip(expected).map(|(a, b)| ((*a as i32 - *b as i32).unsigned_abs() * 4).min(255) as u8).collect();
+    let diff: Vec<u8> =
+        actual.iter().zip(expected).map(|(a, b)| ((*a as i32 - *b as i32).unsigned_abs() * 4).min(255) as u8).collect();
     for (suffix, img) in [("actual", actual), ("expected", expected), ("diff", &diff[..])] {
         output::write_png(&dir.join(format!("{name}.{suffix}.png")), W, H, img).expect("write failure image");
     }
@@ -203,7 +204,11 @@ fn seed_scene_matches_povray_by_region() {
         // average look rather than where each bump or ring happens to lie.
         let (ours, _) = local_stats(&r.rgb, &mask, 33);
         let (theirs, _) = local_stats(&exp, &mask, 33);
-        let mse: f64 = ours.iter().zip(&theirs).map(|(a, b)| (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>() / 3.0).sum::<f64>()
+        let mse: f64 = ours
+            .iter()
+            .zip(&theirs)
+            .map(|(a, b)| (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>() / 3.0)
+            .sum::<f64>()
             / ours.len().max(1) as f64;
         let blurred_psnr = 10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10();
         let ratio = strength_ours / strength_theirs;

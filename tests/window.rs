@@ -11,14 +11,11 @@ use strahl::headless::output::read_png;
 const BIN: &str = env!("CARGO_BIN_EXE_strahl");
 
 fn seed() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join("seed.pov")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("seed.pov")
 }
 
 fn on_path(program: &str) -> bool {
-    std::env::var_os("PATH")
-        .is_some_and(|paths| std::env::split_paths(&paths).any(|d| d.join(program).is_file()))
+    std::env::var_os("PATH").is_some_and(|paths| std::env::split_paths(&paths).any(|d| d.join(program).is_file()))
 }
 
 /// An Xvfb server on a free display number, stopped on drop.
@@ -36,14 +33,7 @@ impl Xvfb {
                 continue;
             }
             let mut child = Command::new("Xvfb")
-                .args([
-                    format!(":{n}").as_str(),
-                    "-screen",
-                    "0",
-                    "1280x1024x24",
-                    "-nolisten",
-                    "tcp",
-                ])
+                .args([format!(":{n}").as_str(), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"])
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
                 .spawn()
@@ -51,10 +41,7 @@ impl Xvfb {
             let start = Instant::now();
             while start.elapsed() < Duration::from_secs(10) {
                 if Path::new(&socket).exists() {
-                    return Some(Xvfb {
-                        child,
-                        display: format!(":{n}"),
-                    });
+                    return Some(Xvfb { child, display: format!(":{n}") });
                 }
                 if let Ok(Some(_)) = child.try_wait() {
                     break; // lost a race for this number; try the next
@@ -78,12 +65,7 @@ impl Drop for Xvfb {
 /// Peak signal-to-noise ratio of two 8-bit images of the same size, in dB.
 fn psnr(a: &[u8], b: &[u8]) -> f64 {
     assert_eq!(a.len(), b.len());
-    let mse = a
-        .iter()
-        .zip(b)
-        .map(|(&x, &y)| (x as f64 - y as f64).powi(2))
-        .sum::<f64>()
-        / a.len() as f64;
+    let mse = a.iter().zip(b).map(|(&x, &y)| (x as f64 - y as f64).powi(2)).sum::<f64>() / a.len() as f64;
     if mse == 0.0 {
         f64::INFINITY
     } else {
@@ -170,44 +152,20 @@ fn view_screenshot_matches_render() {
         .spawn()
         .unwrap();
     let out = finish(child, Duration::from_secs(240));
-    assert!(
-        out.status.success(),
-        "strahl view failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "strahl view failed: {}", String::from_utf8_lossy(&out.stderr));
 
     let r = Command::new(BIN)
-        .args([
-            "render",
-            seed().to_str().unwrap(),
-            "-W",
-            "640",
-            "-H",
-            "480",
-            "--aa",
-            "1",
-            "-q",
-            "-o",
-        ])
+        .args(["render", seed().to_str().unwrap(), "-W", "640", "-H", "480", "--aa", "1", "-q", "-o"])
         .arg(&reference)
         .output()
         .unwrap();
-    assert!(
-        r.status.success(),
-        "strahl render failed: {}",
-        String::from_utf8_lossy(&r.stderr)
-    );
+    assert!(r.status.success(), "strahl render failed: {}", String::from_utf8_lossy(&r.stderr));
 
     let (sw, sh, a) = read_png(&shot).unwrap();
     let (rw, rh, b) = read_png(&reference).unwrap();
     assert_eq!((sw, sh), (rw, rh), "screenshot size");
     let p = psnr(&a, &b);
-    assert!(
-        p >= 40.0,
-        "screenshot vs render: PSNR {p:.2} dB < 40 dB ({} and {})",
-        shot.display(),
-        reference.display()
-    );
+    assert!(p >= 40.0, "screenshot vs render: PSNR {p:.2} dB < 40 dB ({} and {})", shot.display(), reference.display());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -223,10 +181,7 @@ fn view_without_display_points_to_headless_commands() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("cannot open a window"), "{err}");
-    assert!(
-        err.contains("strahl render") && err.contains("strahl capture"),
-        "{err}"
-    );
+    assert!(err.contains("strahl render") && err.contains("strahl capture"), "{err}");
 }
 
 /// `--path --report`: plays the orbit for two seconds and writes sane measurements.

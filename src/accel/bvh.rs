@@ -62,9 +62,9 @@ struct BuildPrim {
 impl Bvh {
     /// Builds over primitives with the given bounds; index `i` of `bounds` is primitive `i`.
     pub fn build(bounds: &[Aabb]) -> Bvh {
-        let prims: Vec<BuildPrim> =
-            bounds.iter().map(|b| BuildPrim { bounds: *b, center: b.center() }).collect();
-        let mut bvh = Bvh { nodes: Vec::with_capacity(2 * prims.len().max(1)), prim_order: (0..prims.len() as u32).collect() };
+        let prims: Vec<BuildPrim> = bounds.iter().map(|b| BuildPrim { bounds: *b, center: b.center() }).collect();
+        let mut bvh =
+            Bvh { nodes: Vec::with_capacity(2 * prims.len().max(1)), prim_order: (0..prims.len() as u32).collect() };
         if prims.is_empty() {
             return bvh;
         }
@@ -85,7 +85,8 @@ impl Bvh {
                 continue;
             }
             let leaf_cost = count as f32;
-            let split = best_split(&prims, &bvh.prim_order[first..first + count], &center_bounds, node_bounds.half_area());
+            let split =
+                best_split(&prims, &bvh.prim_order[first..first + count], &center_bounds, node_bounds.half_area());
             let Some((axis, position, cost)) = split else { continue };
             if cost >= leaf_cost && count <= MAX_LEAF {
                 continue;
@@ -105,7 +106,12 @@ impl Bvh {
             }
             let child = bvh.nodes.len();
             bvh.nodes.push(BvhNode { min: [0.0; 3], first: first as u32, max: [0.0; 3], count: left as u32 });
-            bvh.nodes.push(BvhNode { min: [0.0; 3], first: (first + left) as u32, max: [0.0; 3], count: (count - left) as u32 });
+            bvh.nodes.push(BvhNode {
+                min: [0.0; 3],
+                first: (first + left) as u32,
+                max: [0.0; 3],
+                count: (count - left) as u32,
+            });
             bvh.nodes[node_index].first = child as u32;
             bvh.nodes[node_index].count = 0;
             stack.push((child, depth + 1));
@@ -142,7 +148,8 @@ impl Bvh {
         let mut sp = 0usize;
         let mut node = &self.nodes[0];
         let mut visited = 1;
-        let (root_near, root_far) = slabs(Vec3::from_array(node.min), Vec3::from_array(node.max), ray.origin, ray.inv_dir);
+        let (root_near, root_far) =
+            slabs(Vec3::from_array(node.min), Vec3::from_array(node.max), ray.origin, ray.inv_dir);
         if root_near > root_far || root_far < 0.0 || root_near > t_max {
             return visited;
         }
@@ -227,7 +234,8 @@ fn best_split(prims: &[BuildPrim], order: &[u32], centers: &Aabb, parent_area: f
             acc.grow(&bin_bounds[i]);
             n += bin_count[i];
             let cost = TRAVERSAL_COST
-                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32) / parent_area.max(f32::MIN_POSITIVE);
+                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32)
+                    / parent_area.max(f32::MIN_POSITIVE);
             if left_count[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
                 best = Some((axis, lo + i as f32 / scale, cost));
             }
@@ -274,10 +282,12 @@ mod tests {
     #[test]
     fn depth_is_capped_on_degenerate_input() {
         // Exponentially spaced centres make every SAH split peel off one primitive.
-        let b: Vec<Aabb> = (0..200).map(|i| {
-            let c = Vec3::splat(1.5f32.powi(i));
-            Aabb::new(c, c + Vec3::splat(1e-3))
-        }).collect();
+        let b: Vec<Aabb> = (0..200)
+            .map(|i| {
+                let c = Vec3::splat(1.5f32.powi(i));
+                Aabb::new(c, c + Vec3::splat(1e-3))
+            })
+            .collect();
         let bvh = Bvh::build(&b);
         assert!(bvh.depth() <= MAX_DEPTH);
         let mut seen = vec![false; b.len()];
@@ -299,7 +309,8 @@ mod tests {
     #[test]
     fn degenerate_flat_bounds() {
         // Zero-thickness boxes (e.g. axis-aligned triangles) must still be found.
-        let b: Vec<Aabb> = (0..50).map(|i| Aabb::new(Vec3::new(i as f32, 0.0, 0.0), Vec3::new(i as f32 + 0.5, 1.0, 0.0))).collect();
+        let b: Vec<Aabb> =
+            (0..50).map(|i| Aabb::new(Vec3::new(i as f32, 0.0, 0.0), Vec3::new(i as f32 + 0.5, 1.0, 0.0))).collect();
         let bvh = Bvh::build(&b);
         let ray = Ray::new(Vec3::new(10.25, 0.5, -1.0), Vec3::Z);
         let mut found = vec![];

@@ -31,7 +31,8 @@ impl Grid {
             return Grid { bounds, res: IVec3::ZERO, cell_size: Vec3::ONE, cell_start: vec![0], items: vec![] };
         }
         // Pad degenerate (flat) extents so every axis has a positive size.
-        let extent = (bounds.max - bounds.min).max(Vec3::splat(1e-6 * (bounds.max - bounds.min).max_element().max(1e-6)));
+        let extent =
+            (bounds.max - bounds.min).max(Vec3::splat(1e-6 * (bounds.max - bounds.min).max_element().max(1e-6)));
         bounds.max = bounds.min + extent;
         let cells = CELLS_PER_PRIM * prims.len() as f32;
         let k = (cells / (extent.x * extent.y * extent.z)).cbrt();
@@ -87,7 +88,8 @@ impl Grid {
         let step = IVec3::new(dir_step(ray.dir.x), dir_step(ray.dir.y), dir_step(ray.dir.z));
         // Distance along the ray to the next cell boundary on each axis, and between boundaries.
         let next_boundary = self.bounds.min + (cell + step.max(IVec3::ZERO)).as_vec3() * self.cell_size;
-        let mut t_next = Vec3::select(step.cmpeq(IVec3::ZERO), Vec3::INFINITY, (next_boundary - ray.origin) * ray.inv_dir);
+        let mut t_next =
+            Vec3::select(step.cmpeq(IVec3::ZERO), Vec3::INFINITY, (next_boundary - ray.origin) * ray.inv_dir);
         let t_delta = Vec3::select(step.cmpeq(IVec3::ZERO), Vec3::INFINITY, (self.cell_size * ray.inv_dir).abs());
         let mut visited = 0;
         loop {
@@ -135,8 +137,9 @@ mod tests {
 
     #[test]
     fn finds_a_box_along_an_axis_parallel_ray() {
-        let prims: Vec<Aabb> =
-            (0..10).map(|i| Aabb::new(Vec3::new(i as f32 * 2.0, 0.0, 0.0), Vec3::new(i as f32 * 2.0 + 1.0, 1.0, 1.0))).collect();
+        let prims: Vec<Aabb> = (0..10)
+            .map(|i| Aabb::new(Vec3::new(i as f32 * 2.0, 0.0, 0.0), Vec3::new(i as f32 * 2.0 + 1.0, 1.0, 1.0)))
+            .collect();
         let g = Grid::build(&prims);
         let ray = Ray::new(Vec3::new(-5.0, 0.5, 0.5), Vec3::X);
         let mut order = vec![];

@@ -18,7 +18,9 @@ pub enum Accel {
     Bvh(Bvh),
     Grid(Grid),
     /// Brute force over `count` primitives: the chapter's first algorithm.
-    None { count: u32 },
+    None {
+        count: u32,
+    },
 }
 
 impl Accel {

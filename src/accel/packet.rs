@@ -149,7 +149,11 @@ impl Bvh {
                     for row in &t[first + 1..=last] {
                         far = far.max(*row);
                     }
-                    f.culls(Vec3::from_array(n.min), Vec3::from_array(n.max), far.0.iter().fold(0.0f32, |m, &v| m.max(v)))
+                    f.culls(
+                        Vec3::from_array(n.min),
+                        Vec3::from_array(n.max),
+                        far.0.iter().fold(0.0f32, |m, &v| m.max(v)),
+                    )
                 }
                 None => false,
             };
@@ -177,7 +181,13 @@ impl Bvh {
                     let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
                     let cb = Vec3::from_array(b.min) + Vec3::from_array(b.max);
                     let sep = (cb - ca).abs();
-                    let axis = if sep.x >= sep.y && sep.x >= sep.z { 0 } else if sep.y >= sep.z { 1 } else { 2 };
+                    let axis = if sep.x >= sep.y && sep.x >= sep.z {
+                        0
+                    } else if sep.y >= sep.z {
+                        1
+                    } else {
+                        2
+                    };
                     let d = [rows[first].d.x.0[0], rows[first].d.y.0[0], rows[first].d.z.0[0]][axis];
                     let a_first = (cb[axis] - ca[axis]) * d >= 0.0;
                     let (near, far) = if a_first { (n.first, n.first + 1) } else { (n.first + 1, n.first) };

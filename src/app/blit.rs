@@ -26,9 +26,7 @@ impl Blitter {
             self.key = (sw, dw);
             self.columns.clear();
             // Centre sampling: destination pixel x covers source (x + 0.5) · sw / dw.
-            self.columns.extend(
-                (0..dw as u64).map(|x| (((2 * x + 1) * sw as u64) / (2 * dw as u64)) as u32),
-            );
+            self.columns.extend((0..dw as u64).map(|x| (((2 * x + 1) * sw as u64) / (2 * dw as u64)) as u32));
         }
         let mut prev_row = usize::MAX;
         for y in 0..dh as usize {
@@ -72,12 +70,7 @@ mod tests {
     #[test]
     fn odd_sizes_stay_in_bounds() {
         let mut b = Blitter::default();
-        for (sw, sh, dw, dh) in [
-            (7, 5, 640, 480),
-            (128, 96, 13, 7),
-            (1, 1, 3, 3),
-            (3, 3, 1, 1),
-        ] {
+        for (sw, sh, dw, dh) in [(7, 5, 640, 480), (128, 96, 13, 7), (1, 1, 3, 3), (3, 3, 1, 1)] {
             let src = vec![7u32; (sw * sh) as usize];
             let mut dst = vec![0; (dw * dh) as usize];
             b.blit(&src, sw, sh, &mut dst, dw, dh);

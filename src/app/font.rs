@@ -134,13 +134,7 @@ impl Canvas<'_> {
                 let bits = (g >> (row * 8)) as u8;
                 for col in 0..8 {
                     if bits & (1 << col) != 0 {
-                        self.fill(
-                            gx + col * scale,
-                            y + row * scale,
-                            scale as u32,
-                            scale as u32,
-                            color,
-                        );
+                        self.fill(gx + col * scale, y + row * scale, scale as u32, scale as u32, color);
                     }
                 }
             }
@@ -189,11 +183,7 @@ mod tests {
     #[test]
     fn drawing_clips_at_every_edge() {
         let mut px = vec![0u32; 20 * 10];
-        let mut c = Canvas {
-            pixels: &mut px,
-            width: 20,
-            height: 10,
-        };
+        let mut c = Canvas { pixels: &mut px, width: 20, height: 10 };
         c.text(-5, -5, "Hello", 0xffffff, 2);
         c.text(15, 8, "W", 0xffffff, 3);
         c.shade(-100, -100, 1000, 1000, 128);
@@ -204,12 +194,7 @@ mod tests {
     #[test]
     fn a_glyph_lands_where_asked() {
         let mut px = vec![0u32; 8 * 8];
-        Canvas {
-            pixels: &mut px,
-            width: 8,
-            height: 8,
-        }
-        .text(0, 0, "!", 1, 1);
+        Canvas { pixels: &mut px, width: 8, height: 8 }.text(0, 0, "!", 1, 1);
         // '!' row 0 is 0x18: columns 3 and 4.
         assert_eq!(&px[..8], &[0, 0, 0, 1, 1, 0, 0, 0]);
     }

@@ -27,16 +27,12 @@ impl Gamepads {
     /// Starts gilrs; `None` inside means no gamepad support here.
     pub fn open() -> Gamepads {
         // No gamepad support is not an error worth showing: the keyboard works regardless.
-        Gamepads {
-            gilrs: Gilrs::new().ok(),
-        }
+        Gamepads { gilrs: Gilrs::new().ok() }
     }
 
     /// Whether a gamepad is connected (the window then polls instead of sleeping).
     pub fn any_connected(&self) -> bool {
-        self.gilrs
-            .as_ref()
-            .is_some_and(|g| g.gamepads().next().is_some())
+        self.gilrs.as_ref().is_some_and(|g| g.gamepads().next().is_some())
     }
 
     /// Drains pending events into `input` (bumpers → speed steps) and sets the analog state from
@@ -62,16 +58,10 @@ impl Gamepads {
         if let Some((_, pad)) = gilrs.gamepads().next() {
             let axis = |a: Axis| pad.value(a) as f64;
             // gilrs reports stick y positive up: pushing forward moves forward, pulling back looks down.
-            input.stick_move = stick_response(
-                DVec2::new(axis(Axis::LeftStickX), axis(Axis::LeftStickY)),
-                DEAD_ZONE,
-                RESPONSE,
-            );
-            input.stick_look = stick_response(
-                DVec2::new(axis(Axis::RightStickX), axis(Axis::RightStickY)),
-                DEAD_ZONE,
-                RESPONSE,
-            );
+            input.stick_move =
+                stick_response(DVec2::new(axis(Axis::LeftStickX), axis(Axis::LeftStickY)), DEAD_ZONE, RESPONSE);
+            input.stick_look =
+                stick_response(DVec2::new(axis(Axis::RightStickX), axis(Axis::RightStickY)), DEAD_ZONE, RESPONSE);
             let trigger = |b: Button| {
                 let v = pad.button_data(b).map_or(0.0, |d| d.value() as f64);
                 if v > TRIGGER_DEAD {

@@ -17,11 +17,7 @@ pub struct FrameTimes {
 
 impl FrameTimes {
     pub fn new(capacity: usize) -> FrameTimes {
-        FrameTimes {
-            times: Vec::with_capacity(capacity),
-            next: 0,
-            sorted: Vec::with_capacity(capacity),
-        }
+        FrameTimes { times: Vec::with_capacity(capacity), next: 0, sorted: Vec::with_capacity(capacity) }
     }
 
     pub fn push(&mut self, d: Duration) {
@@ -77,54 +73,22 @@ fn panel(canvas: &mut Canvas, x: i32, y: i32, lines: &[(String, u32)], scale: u3
     let line_h = (GLYPH + 3) * scale;
     let cols = lines.iter().map(|(l, _)| l.len()).max().unwrap_or(0) as u32;
     let pad = 4 * scale;
-    canvas.shade(
-        x,
-        y,
-        cols * GLYPH * scale + 2 * pad,
-        lines.len() as u32 * line_h + 2 * pad,
-        80,
-    );
+    canvas.shade(x, y, cols * GLYPH * scale + 2 * pad, lines.len() as u32 * line_h + 2 * pad, 80);
     for (i, (line, color)) in lines.iter().enumerate() {
-        canvas.text(
-            x + pad as i32,
-            y + (pad + i as u32 * line_h) as i32,
-            line,
-            *color,
-            scale,
-        );
+        canvas.text(x + pad as i32, y + (pad + i as u32 * line_h) as i32, line, *color, scale);
     }
 }
 
 pub fn draw_hud(canvas: &mut Canvas, info: &HudInfo) {
-    let fps = if info.frame_avg > 0.0 {
-        1.0 / info.frame_avg
-    } else {
-        0.0
-    };
+    let fps = if info.frame_avg > 0.0 { 1.0 / info.frame_avg } else { 0.0 };
     let p = info.position;
     let lines = [
         (format!("{fps:6.1} fps   {}", info.state), ACCENT),
-        (
-            format!(
-                "frame {:6.1} ms avg {:6.1} ms p95",
-                info.frame_avg * 1e3,
-                info.frame_p95 * 1e3
-            ),
-            TEXT,
-        ),
-        (
-            format!(
-                "scale {:4.2}  ({} x {})",
-                info.scale, info.internal.0, info.internal.1
-            ),
-            TEXT,
-        ),
+        (format!("frame {:6.1} ms avg {:6.1} ms p95", info.frame_avg * 1e3, info.frame_p95 * 1e3), TEXT),
+        (format!("scale {:4.2}  ({} x {})", info.scale, info.internal.0, info.internal.1), TEXT),
         (format!("{:7.2} Mrays/s", info.rays_per_s / 1e6), TEXT),
         (format!("pos <{:.2}, {:.2}, {:.2}>", p.x, p.y, p.z), TEXT),
-        (
-            format!("speed {:.2}/s  quality {}", info.speed, info.quality),
-            TEXT,
-        ),
+        (format!("speed {:.2}/s  quality {}", info.speed, info.quality), TEXT),
     ];
     panel(canvas, 8, 8, &lines, text_scale(canvas.width));
 }
@@ -197,16 +161,11 @@ mod tests {
     fn a_reload_error_is_drawn_in_red_along_the_bottom() {
         let (w, h) = (640u32, 480u32);
         let mut px = vec![0x808080; (w * h) as usize];
-        let mut c = Canvas {
-            pixels: &mut px,
-            width: w,
-            height: h,
-        };
+        let mut c = Canvas { pixels: &mut px, width: w, height: h };
         let long = "x".repeat(500);
         draw_error(&mut c, &format!("s.pov:2:3: unknown keyword `locaton`\n  locaton {long}\n  ^\nmore\nand more"));
-        let red_rows: Vec<usize> = (0..h as usize)
-            .filter(|y| px[y * w as usize..(y + 1) * w as usize].contains(&ERROR))
-            .collect();
+        let red_rows: Vec<usize> =
+            (0..h as usize).filter(|y| px[y * w as usize..(y + 1) * w as usize].contains(&ERROR)).collect();
         assert!(!red_rows.is_empty());
         assert!(red_rows[0] > h as usize / 2, "the message sits in the lower half");
         assert!(px[..w as usize * 8].iter().all(|&p| p == 0x808080), "the top (HUD) is untouched");
@@ -227,11 +186,7 @@ mod tests {
         };
         for (w, h) in [(1, 1), (50, 20), (640, 480)] {
             let mut px = vec![0x808080; (w * h) as usize];
-            let mut c = Canvas {
-                pixels: &mut px,
-                width: w,
-                height: h,
-            };
+            let mut c = Canvas { pixels: &mut px, width: w, height: h };
             draw_hud(&mut c, &info);
             draw_help(&mut c);
             draw_error(&mut c, "s.pov:2:3: unknown keyword `locaton`\n    locaton <0,0,0>\n    ^");

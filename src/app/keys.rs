@@ -19,12 +19,7 @@ pub enum Command {
 }
 
 /// Applies a key to the held-key state; returns the command a fresh press asks for.
-pub fn apply_key(
-    code: KeyCode,
-    pressed: bool,
-    repeat: bool,
-    input: &mut InputState,
-) -> Option<Command> {
+pub fn apply_key(code: KeyCode, pressed: bool, repeat: bool, input: &mut InputState) -> Option<Command> {
     let held = match code {
         KeyCode::KeyW | KeyCode::ArrowUp => Some(&mut input.forward),
         KeyCode::KeyS | KeyCode::ArrowDown => Some(&mut input.back),
@@ -73,10 +68,7 @@ mod tests {
     #[test]
     fn commands_fire_once_per_press() {
         let mut i = InputState::default();
-        assert_eq!(
-            apply_key(KeyCode::F12, true, false, &mut i),
-            Some(Command::Screenshot)
-        );
+        assert_eq!(apply_key(KeyCode::F12, true, false, &mut i), Some(Command::Screenshot));
         assert_eq!(apply_key(KeyCode::F12, true, true, &mut i), None);
         assert_eq!(apply_key(KeyCode::F12, false, false, &mut i), None);
         assert_eq!(i, InputState::default());

@@ -69,7 +69,9 @@ impl PathPlay {
         let path = CameraPath::load(file)?;
         let seconds = match seconds {
             Some(s) if s.is_finite() && s > 0.0 && s <= 1e6 => s,
-            Some(s) => return Err(CliError::user(format!("--path-seconds must be a positive number of seconds, not {s}"))),
+            Some(s) => {
+                return Err(CliError::user(format!("--path-seconds must be a positive number of seconds, not {s}")))
+            }
             None => default_seconds(&path),
         };
         Ok(PathPlay { file: file.to_path_buf(), path, seconds })
@@ -88,12 +90,7 @@ pub fn no_display(detail: &str) -> CliError {
 
 /// Fails early, with [`no_display`], where no display server can be reached.
 pub fn check_display() -> Result<(), CliError> {
-    if cfg!(all(
-        unix,
-        not(target_os = "macos"),
-        not(target_os = "ios"),
-        not(target_os = "android")
-    )) {
+    if cfg!(all(unix, not(target_os = "macos"), not(target_os = "ios"), not(target_os = "android"))) {
         let set = |k: &str| std::env::var_os(k).is_some_and(|v| !v.is_empty());
         if !set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("WAYLAND_SOCKET") {
             return Err(no_display("neither DISPLAY nor WAYLAND_DISPLAY is set"));
@@ -136,11 +133,7 @@ fn initial_speed(scene: &Scene, camera: &Camera) -> f64 {
         lo = lo.min(b.min);
         hi = hi.max(b.max);
     }
-    let extent = if bounds.is_empty() {
-        0.0
-    } else {
-        (hi - lo).length() as f64
-    };
+    let extent = if bounds.is_empty() { 0.0 } else { (hi - lo).length() as f64 };
     if extent.is_finite() && extent > 1e-6 {
         (extent / 10.0).clamp(1e-3, 1e5)
     } else {
@@ -165,7 +158,9 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     let speed = initial_speed(&scene, &camera);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
     let playback = options.path.as_ref().map(|p| Playback::new(p.path.clone(), p.seconds));
-    let (Some(playback), Some(report), Some(play)) = (window::run(scene, camera, speed, watch, playback, options.clone())?, &options.report, &options.path) else {
+    let (Some(playback), Some(report), Some(play)) =
+        (window::run(scene, camera, speed, watch, playback, options.clone())?, &options.report, &options.path)
+    else {
         return Ok(());
     };
     // The window is closed: now the references can take all the cores. They use the scene as
@@ -205,7 +200,10 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
 /// window opens, with or without a display.
 pub fn check_options(options: &ViewOptions) -> Result<(), CliError> {
     if options.width == 0 || options.height == 0 {
-        return Err(CliError::user(format!("window size must be at least 1x1, not {}x{}", options.width, options.height)));
+        return Err(CliError::user(format!(
+            "window size must be at least 1x1, not {}x{}",
+            options.width, options.height
+        )));
     }
     if options.report.is_some() && options.path.is_none() {
         return Err(CliError::user("--report needs --path: it measures a camera path played back"));

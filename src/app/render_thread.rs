@@ -131,12 +131,7 @@ impl RenderThread {
             .build()
             .map_err(|e| CliError::user(format!("cannot start {threads} render threads: {e}")))?;
         let shared: Shared = Arc::new((
-            Mutex::new(Slot {
-                view: None,
-                quit: false,
-                reload: false,
-                status: ReloadStatus::default(),
-            }),
+            Mutex::new(Slot { view: None, quit: false, reload: false, status: ReloadStatus::default() }),
             Condvar::new(),
         ));
         let (frame_tx, frame_rx) = mpsc::channel();
@@ -156,12 +151,7 @@ impl RenderThread {
             .name("strahl-view".into())
             .spawn(move || worker.run())
             .map_err(|e| CliError::user(format!("cannot start the render thread: {e}")))?;
-        Ok(RenderThread {
-            shared,
-            frames: frame_rx,
-            recycle: recycle_tx,
-            handle: Some(handle),
-        })
+        Ok(RenderThread { shared, frames: frame_rx, recycle: recycle_tx, handle: Some(handle) })
     }
 
     /// Asks for `view`; the thread renders the latest view it has been given.
@@ -273,15 +263,12 @@ impl Worker {
                     let w = ((view.width as f64 * scale).round() as u32).max(1);
                     let h = ((view.height as f64 * scale).round() as u32).max(1);
                     let settings = self.settings(&view, w, h, None);
-                    frame.stats = self
-                        .pool
-                        .install(|| render(&self.scene, &view.camera, &settings, &mut pass));
+                    frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
                     self.encode(&pass, &mut frame);
                     frame.progress = Progress::Moving;
                     frame.scale = w as f64 / view.width as f64;
                     frame.view = Some(view);
-                    self.controller
-                        .update(frame.scale, start.elapsed().as_secs_f64());
+                    self.controller.update(frame.scale, start.elapsed().as_secs_f64());
                 }
                 Job::Refine(view) => {
                     if acc_view != Some(view) {
@@ -290,16 +277,11 @@ impl Worker {
                     }
                     let sub = acc.next_subsample();
                     let settings = self.settings(&view, view.width, view.height, sub);
-                    frame.stats = self
-                        .pool
-                        .install(|| render(&self.scene, &view.camera, &settings, &mut pass));
+                    frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
                     acc.add(&pass);
                     acc.resolve(&mut resolved);
                     self.encode(&resolved, &mut frame);
-                    frame.progress = Progress::Refining {
-                        pass: acc.passes(),
-                        total: acc.total(),
-                    };
+                    frame.progress = Progress::Refining { pass: acc.passes(), total: acc.total() };
                     frame.scale = 1.0;
                     frame.view = Some(view);
                 }
@@ -313,22 +295,9 @@ impl Worker {
         }
     }
 
-    fn settings(
-        &self,
-        view: &View,
-        width: u32,
-        height: u32,
-        subsample: Option<(u32, u32)>,
-    ) -> RenderSettings {
+    fn settings(&self, view: &View, width: u32, height: u32, subsample: Option<(u32, u32)>) -> RenderSettings {
         let aa = if subsample.is_some() { view.aa } else { 1 };
-        RenderSettings {
-            width,
-            height,
-            aa,
-            quality: view.quality,
-            subsample,
-            ..RenderSettings::default()
-        }
+        RenderSettings { width, height, aa, quality: view.quality, subsample, ..RenderSettings::default() }
     }
 
     /// Reloads the scene and publishes the outcome; whether the scene changed.
@@ -393,18 +362,13 @@ impl Worker {
                     if still >= SETTLE {
                         return Some(Job::Refine(view));
                     }
-                    slot = cvar
-                        .wait_timeout(slot, SETTLE - still)
-                        .unwrap_or_else(PoisonError::into_inner)
-                        .0;
+                    slot = cvar.wait_timeout(slot, SETTLE - still).unwrap_or_else(PoisonError::into_inner).0;
                     continue;
                 }
             }
             slot = if self.watch.is_some() {
                 // Idle, but the files still need looking at.
-                cvar.wait_timeout(slot, POLL)
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .0
+                cvar.wait_timeout(slot, POLL).unwrap_or_else(PoisonError::into_inner).0
             } else {
                 cvar.wait(slot).unwrap_or_else(PoisonError::into_inner)
             };
@@ -426,13 +390,7 @@ impl Worker {
                 Ok(f) => return Some(f),
                 Err(RecvTimeoutError::Disconnected) => return None,
                 Err(RecvTimeoutError::Timeout) => {
-                    if self
-                        .shared
-                        .0
-                        .lock()
-                        .unwrap_or_else(PoisonError::into_inner)
-                        .quit
-                    {
+                    if self.shared.0.lock().unwrap_or_else(PoisonError::into_inner).quit {
                         return None;
                     }
                 }
@@ -451,8 +409,7 @@ mod tests {
 
     fn next_frame(rt: &RenderThread, woke: &mpsc::Receiver<()>) -> Frame {
         loop {
-            woke.recv_timeout(Duration::from_secs(60))
-                .expect("a frame within a minute");
+            woke.recv_timeout(Duration::from_secs(60)).expect("a frame within a minute");
             if let Some(f) = rt.latest() {
                 return f;
             }
@@ -471,21 +428,8 @@ mod tests {
         })
         .unwrap();
         let camera = Camera::from_desc(&desc.camera);
-        let view = View {
-            camera,
-            width: 64,
-            height: 48,
-            aa: 2,
-            quality: Quality::default(),
-            max_scale: 1.0,
-        };
-        rt.submit(View {
-            camera: Camera {
-                location: camera.location + glam::DVec3::X,
-                ..camera
-            },
-            ..view
-        });
+        let view = View { camera, width: 64, height: 48, aa: 2, quality: Quality::default(), max_scale: 1.0 };
+        rt.submit(View { camera: Camera { location: camera.location + glam::DVec3::X, ..camera }, ..view });
         let first = next_frame(&rt, &woke);
         assert_eq!(first.progress, Progress::Moving);
         assert!(first.scale <= 1.0 && first.width == (64.0 * first.scale).round() as u32);
@@ -503,12 +447,7 @@ mod tests {
 
         let desc_scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
         let mut image = Image::default();
-        let settings = RenderSettings {
-            width: 64,
-            height: 48,
-            aa: 2,
-            ..RenderSettings::default()
-        };
+        let settings = RenderSettings { width: 64, height: 48, aa: 2, ..RenderSettings::default() };
         render(&desc_scene, &camera, &settings, &mut image);
         let mut expect = vec![0; 64 * 48];
         image.write_xrgb(srgb, &mut expect);
@@ -564,11 +503,7 @@ mod tests {
         let reloader = Reloader::open(&file, &[]).unwrap();
         let desc = reloader.last_good().clone();
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
-        let watch = Watch {
-            reloader,
-            origin: desc.camera.location,
-            accel: AccelKind::Bvh,
-        };
+        let watch = Watch { reloader, origin: desc.camera.location, accel: AccelKind::Bvh };
         let (tx, woke) = mpsc::channel();
         let rt = RenderThread::spawn(scene, Some(watch), 2, 60.0, move || {
             let _ = tx.send(());
@@ -576,18 +511,8 @@ mod tests {
         .unwrap();
         // A camera the user has flown somewhere else than the scene's.
         let camera = Camera::from_desc(&desc.camera);
-        let camera = Camera {
-            location: camera.location + glam::DVec3::new(0.1, 0.0, 0.5),
-            ..camera
-        };
-        let view = View {
-            camera,
-            width: 32,
-            height: 24,
-            aa: 1,
-            quality: Quality::default(),
-            max_scale: 1.0,
-        };
+        let camera = Camera { location: camera.location + glam::DVec3::new(0.1, 0.0, 0.5), ..camera };
+        let view = View { camera, width: 32, height: 24, aa: 1, quality: Quality::default(), max_scale: 1.0 };
         rt.submit(view);
         let red = converged(&rt, &woke, view);
         rt.give_back(red.clone());

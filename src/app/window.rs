@@ -9,9 +9,7 @@ use glam::DVec2;
 use softbuffer::{Context, Surface};
 use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
-use winit::event::{
-    DeviceEvent, DeviceId, ElementState, MouseButton, MouseScrollDelta, WindowEvent,
-};
+use winit::event::{DeviceEvent, DeviceId, ElementState, MouseButton, MouseScrollDelta, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::keyboard::PhysicalKey;
 use winit::window::{CursorGrabMode, Window, WindowId};
@@ -45,9 +43,7 @@ pub fn run(
     playback: Option<Playback>,
     options: ViewOptions,
 ) -> Result<Option<Playback>, CliError> {
-    let event_loop = EventLoop::<FrameReady>::with_user_event()
-        .build()
-        .map_err(|e| no_display(&e.to_string()))?;
+    let event_loop = EventLoop::<FrameReady>::with_user_event().build().map_err(|e| no_display(&e.to_string()))?;
     let proxy = event_loop.create_proxy();
     let render = RenderThread::spawn(scene, watch, options.threads, options.target_fps, move || {
         let _ = proxy.send_event(FrameReady);
@@ -78,9 +74,7 @@ pub fn run(
         options,
         win: None,
     };
-    event_loop
-        .run_app(&mut app)
-        .map_err(|e| CliError::user(format!("window: {e}")))?;
+    event_loop.run_app(&mut app).map_err(|e| CliError::user(format!("window: {e}")))?;
     match app.error.take() {
         Some(e) => Err(e),
         None => Ok(app.playback.take()),
@@ -135,9 +129,7 @@ impl App {
         let w = &win.window;
         if grab {
             // Locked keeps the pointer still (raw motion only); X11 can only confine it.
-            let _ = w
-                .set_cursor_grab(CursorGrabMode::Locked)
-                .or_else(|_| w.set_cursor_grab(CursorGrabMode::Confined));
+            let _ = w.set_cursor_grab(CursorGrabMode::Locked).or_else(|_| w.set_cursor_grab(CursorGrabMode::Confined));
             w.set_cursor_visible(false);
             // Raw motion turns the camera even where neither grab mode is available.
             self.grabbed = true;
@@ -155,9 +147,7 @@ impl App {
             Command::ResetCamera => self.fly = FlyState::new(self.scene_camera, self.speed),
             Command::Screenshot => {
                 let path = self.options.screenshot.clone().unwrap_or_else(|| {
-                    let secs = SystemTime::now()
-                        .duration_since(UNIX_EPOCH)
-                        .map_or(0, |d| d.as_secs());
+                    let secs = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
                     PathBuf::from(format!("strahl-{secs}.png"))
                 });
                 self.screenshot = Some(path);
@@ -165,10 +155,7 @@ impl App {
             }
             Command::CycleQuality => {
                 self.preset = (self.preset + 1) % 4;
-                eprintln!(
-                    "quality: {}",
-                    quality_preset(self.options.quality, self.options.aa, self.preset).name
-                );
+                eprintln!("quality: {}", quality_preset(self.options.quality, self.options.aa, self.preset).name);
             }
             Command::PrintCamera => println!("{}", self.fly.camera().to_pov()),
             Command::ToggleHud => {
@@ -188,11 +175,7 @@ impl App {
     /// Steps the camera and asks the render thread for the resulting view.
     fn tick(&mut self, event_loop: &ActiveEventLoop) {
         let now = Instant::now();
-        let dt = if self.was_active {
-            (now - self.last_tick).as_secs_f64()
-        } else {
-            0.0
-        };
+        let dt = if self.was_active { (now - self.last_tick).as_secs_f64() } else { 0.0 };
         self.last_tick = now;
         if self.gamepads.poll(&mut self.input).toggle_hud {
             self.hud = !self.hud;
@@ -224,13 +207,7 @@ impl App {
             });
         }
         if !self.render.is_alive() {
-            self.fail(
-                event_loop,
-                CliError {
-                    message: "the render thread stopped".into(),
-                    code: 1,
-                },
-            );
+            self.fail(event_loop, CliError { message: "the render thread stopped".into(), code: 1 });
         }
         event_loop.set_control_flow(if active || self.gamepads.any_connected() {
             ControlFlow::WaitUntil(now + TICK)
@@ -269,8 +246,7 @@ impl App {
                 return;
             }
         };
-        self.blitter
-            .blit(&frame.pixels, frame.width, frame.height, &mut buffer, w, h);
+        self.blitter.blit(&frame.pixels, frame.width, frame.height, &mut buffer, w, h);
         let now = Instant::now();
         if fresh {
             if let Some(prev) = self.last_present.replace(now) {
@@ -295,21 +271,13 @@ impl App {
                 frame_p95: p95,
                 scale: frame.scale,
                 internal: (frame.width, frame.height),
-                rays_per_s: if secs > 0.0 {
-                    frame.stats.total_rays() as f64 / secs
-                } else {
-                    0.0
-                },
+                rays_per_s: if secs > 0.0 { frame.stats.total_rays() as f64 / secs } else { 0.0 },
                 position: self.fly.position,
                 speed: self.fly.speed,
                 quality: quality_preset(self.options.quality, self.options.aa, self.preset).name,
                 state: &state,
             };
-            let mut canvas = Canvas {
-                pixels: &mut buffer,
-                width: w,
-                height: h,
-            };
+            let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };
             draw_hud(&mut canvas, &info);
             draw_help(&mut canvas);
         }
@@ -328,27 +296,17 @@ impl App {
             self.reload = status;
         }
         if let Some(message) = &self.reload.error {
-            let mut canvas = Canvas {
-                pixels: &mut buffer,
-                width: w,
-                height: h,
-            };
+            let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };
             draw_error(&mut canvas, message);
         }
         // A still view stops producing frames once converged, so that ends the run as well.
         let converged = frame.progress.is_converged();
-        let done = self
-            .options
-            .frames
-            .is_some_and(|n| fresh && (self.presented >= n || converged))
+        let done = self.options.frames.is_some_and(|n| fresh && (self.presented >= n || converged))
             || self.playback.as_ref().is_some_and(Playback::finished);
         if done && self.screenshot.is_none() {
             self.screenshot = self.options.screenshot.clone();
         }
-        let shot = self
-            .screenshot
-            .take()
-            .map(|path| (path, save_screenshot(&buffer, w, h)));
+        let shot = self.screenshot.take().map(|path| (path, save_screenshot(&buffer, w, h)));
         if let Err(e) = buffer.present() {
             eprintln!("warning: cannot present: {e}");
         }
@@ -394,10 +352,7 @@ impl ApplicationHandler<FrameReady> for App {
                 self.win = Some(Win { window, surface });
                 self.tick(event_loop);
             }
-            Err(e) => self.fail(
-                event_loop,
-                no_display(&format!("no pixel buffer for the window: {e}")),
-            ),
+            Err(e) => self.fail(event_loop, no_display(&format!("no pixel buffer for the window: {e}"))),
         }
     }
 

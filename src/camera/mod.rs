@@ -40,12 +40,7 @@ impl Camera {
         }
         let forward = (look_at - location).try_normalize().unwrap_or(DVec3::Z);
         let basis = Basis::from_forward(forward, DVec3::Y);
-        Camera {
-            location,
-            direction: basis.forward * dir_len,
-            right: basis.right * right_len,
-            up: basis.up * up_len,
-        }
+        Camera { location, direction: basis.forward * dir_len, right: basis.right * right_len, up: basis.up * up_len }
     }
 
     /// Horizontal field of view in degrees.

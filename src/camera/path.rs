@@ -72,17 +72,8 @@ impl CameraPath {
     /// user files get located errors from `parse`.
     pub fn new(keys: Vec<Key>, spline: Spline, closed: bool, constant_speed: bool) -> CameraPath {
         assert!(keys.len() >= 2, "a camera path needs two keys");
-        assert!(
-            keys.windows(2).all(|w| w[1].time > w[0].time),
-            "key times must increase"
-        );
-        let mut path = CameraPath {
-            keys,
-            spline,
-            closed,
-            constant_speed,
-            arc_table: Vec::new(),
-        };
+        assert!(keys.windows(2).all(|w| w[1].time > w[0].time), "key times must increase");
+        let mut path = CameraPath { keys, spline, closed, constant_speed, arc_table: Vec::new() };
         if constant_speed {
             path.arc_table = path.build_arc_table();
         }
@@ -97,8 +88,8 @@ impl CameraPath {
     /// Reads and parses a path file.
     pub fn load(path: &FsPath) -> Result<CameraPath, LocatedError> {
         let name = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| LocatedError::whole_file(&name, format!("cannot read: {e}")))?;
+        let text =
+            std::fs::read_to_string(path).map_err(|e| LocatedError::whole_file(&name, format!("cannot read: {e}")))?;
         Self::parse(&name, &text)
     }
 
@@ -115,11 +106,7 @@ impl CameraPath {
     /// (location, look_at, angle) at normalised position `t` in 0..=1.
     pub fn sample(&self, t: f64) -> (DVec3, DVec3, Option<f64>) {
         let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
-        let (seg, u) = if self.constant_speed {
-            self.param_by_arc(t)
-        } else {
-            self.param_by_time(t)
-        };
+        let (seg, u) = if self.constant_speed { self.param_by_arc(t) } else { self.param_by_time(t) };
         self.eval(seg, u)
     }
 
@@ -133,11 +120,7 @@ impl CameraPath {
         let last = self.keys[self.keys.len() - 1].time;
         let time = first + t * (last - first);
         // The last segment whose start is at or before `time`.
-        let seg = self.keys[1..]
-            .iter()
-            .take_while(|k| k.time <= time)
-            .count()
-            .min(self.segments() - 1);
+        let seg = self.keys[1..].iter().take_while(|k| k.time <= time).count().min(self.segments() - 1);
         let (a, b) = (self.keys[seg].time, self.keys[seg + 1].time);
         (seg, ((time - a) / (b - a)).clamp(0.0, 1.0))
     }
@@ -151,16 +134,9 @@ impl CameraPath {
         }
         let target = t * total;
         // First table entry at or past the target; the sample before it brackets it.
-        let i = self
-            .arc_table
-            .partition_point(|&s| s < target)
-            .clamp(1, self.arc_table.len() - 1);
+        let i = self.arc_table.partition_point(|&s| s < target).clamp(1, self.arc_table.len() - 1);
         let (s0, s1) = (self.arc_table[i - 1], self.arc_table[i]);
-        let frac = if s1 > s0 {
-            (target - s0) / (s1 - s0)
-        } else {
-            0.0
-        };
+        let frac = if s1 > s0 { (target - s0) / (s1 - s0) } else { 0.0 };
         let global = ((i - 1) as f64 + frac) / ARC_SAMPLES_PER_SEGMENT as f64;
         let seg = (global.floor() as usize).min(self.segments() - 1);
         (seg, (global - seg as f64).clamp(0.0, 1.0))
@@ -238,10 +214,7 @@ fn catmull_rom(p: [DVec3; 4], u: f64, alpha: f64) -> DVec3 {
     let m1 = ((p[1] - p[0]) / d0 - (p[2] - p[0]) / (d0 + d1) + (p[2] - p[1]) / d1) * d1;
     let m2 = ((p[2] - p[1]) / d1 - (p[3] - p[1]) / (d1 + d2) + (p[3] - p[2]) / d2) * d1;
     let (u2, u3) = (u * u, u * u * u);
-    p[1] * (2.0 * u3 - 3.0 * u2 + 1.0)
-        + m1 * (u3 - 2.0 * u2 + u)
-        + p[2] * (-2.0 * u3 + 3.0 * u2)
-        + m2 * (u3 - u2)
+    p[1] * (2.0 * u3 - 3.0 * u2 + 1.0) + m1 * (u3 - 2.0 * u2 + u) + p[2] * (-2.0 * u3 + 3.0 * u2) + m2 * (u3 - u2)
 }
 
 #[cfg(test)]
@@ -250,12 +223,7 @@ mod tests {
     use crate::scene::desc::CameraDesc;
 
     fn key(time: f64, location: DVec3, look_at: DVec3, angle: Option<f64>) -> Key {
-        Key {
-            time,
-            location,
-            look_at,
-            angle,
-        }
+        Key { time, location, look_at, angle }
     }
 
     fn zigzag(spline: Spline, constant_speed: bool) -> CameraPath {
@@ -274,16 +242,8 @@ mod tests {
             let path = zigzag(spline, false);
             for k in path.keys() {
                 let (l, a, ang) = path.sample(k.time / 4.0);
-                assert!(
-                    (l - k.location).length() < 1e-9,
-                    "{spline:?} location at {}",
-                    k.time
-                );
-                assert!(
-                    (a - k.look_at).length() < 1e-9,
-                    "{spline:?} look_at at {}",
-                    k.time
-                );
+                assert!((l - k.location).length() < 1e-9, "{spline:?} location at {}", k.time);
+                assert!((a - k.look_at).length() < 1e-9, "{spline:?} look_at at {}", k.time);
                 assert!((ang.unwrap_or(0.0) - k.angle.unwrap_or(0.0)).abs() < 1e-9);
             }
         }
@@ -298,12 +258,7 @@ mod tests {
 
     #[test]
     fn uniform_segment_midpoint_matches_textbook_weights() {
-        let p = [
-            DVec3::ZERO,
-            DVec3::X,
-            DVec3::new(2.0, 1.0, 0.0),
-            DVec3::new(3.0, 1.0, 0.0),
-        ];
+        let p = [DVec3::ZERO, DVec3::X, DVec3::new(2.0, 1.0, 0.0), DVec3::new(3.0, 1.0, 0.0)];
         // Uniform Catmull-Rom at u = 0.5: (-p0 + 9 p1 + 9 p2 - p3) / 16.
         let expect = (-p[0] + 9.0 * p[1] + 9.0 * p[2] - p[3]) / 16.0;
         assert!((catmull_rom(p, 0.5, 0.0) - expect).length() < 1e-12);
@@ -316,9 +271,7 @@ mod tests {
     }
 
     fn step_ratio(path: &CameraPath, n: usize) -> f64 {
-        let pts: Vec<DVec3> = (0..=n)
-            .map(|i| path.sample(i as f64 / n as f64).0)
-            .collect();
+        let pts: Vec<DVec3> = (0..=n).map(|i| path.sample(i as f64 / n as f64).0).collect();
         let steps: Vec<f64> = pts.windows(2).map(|w| (w[1] - w[0]).length()).collect();
         let max = steps.iter().cloned().fold(0.0, f64::max);
         let min = steps.iter().cloned().fold(f64::INFINITY, f64::min);
@@ -328,11 +281,7 @@ mod tests {
     #[test]
     fn constant_speed_spaces_samples_evenly() {
         let even = zigzag(Spline::Centripetal, true);
-        assert!(
-            step_ratio(&even, 100) < 1.05,
-            "ratio {}",
-            step_ratio(&even, 100)
-        );
+        assert!(step_ratio(&even, 100) < 1.05, "ratio {}", step_ratio(&even, 100));
         // The check can fail: by time, the same keys move at very different speeds.
         assert!(step_ratio(&zigzag(Spline::Centripetal, false), 100) > 2.0);
         // Constant speed still starts and ends on the end keys.
@@ -346,17 +295,12 @@ mod tests {
             let a = i as f64 * std::f64::consts::TAU / 4.0;
             DVec3::new(a.cos(), 0.0, a.sin()) * 5.0
         };
-        let keys = (0..=4)
-            .map(|i| key(i as f64, ring(i % 4), DVec3::ZERO, None))
-            .collect();
+        let keys = (0..=4).map(|i| key(i as f64, ring(i % 4), DVec3::ZERO, None)).collect();
         let path = CameraPath::new(keys, Spline::Centripetal, true, false);
         let h = 1e-4;
         let v_end = (path.sample(1.0).0 - path.sample(1.0 - h).0) / h;
         let v_start = (path.sample(h).0 - path.sample(0.0).0) / h;
-        assert!(
-            (v_end - v_start).length() < 1e-2 * v_start.length(),
-            "{v_end} vs {v_start}"
-        );
+        assert!((v_end - v_start).length() < 1e-2 * v_start.length(), "{v_end} vs {v_start}");
         assert!((path.sample(1.0).0 - path.sample(0.0).0).length() < 1e-9);
     }
 

@@ -30,26 +30,17 @@ fn words(line: &str, line_offset: usize) -> Vec<Word<'_>> {
         let punct = matches!(c, '<' | '>' | ',');
         if c.is_whitespace() || punct {
             if let Some(s) = start.take() {
-                out.push(Word {
-                    text: &line[s..i],
-                    offset: line_offset + s,
-                });
+                out.push(Word { text: &line[s..i], offset: line_offset + s });
             }
             if punct {
-                out.push(Word {
-                    text: &line[i..i + 1],
-                    offset: line_offset + i,
-                });
+                out.push(Word { text: &line[i..i + 1], offset: line_offset + i });
             }
         } else if start.is_none() {
             start = Some(i);
         }
     }
     if let Some(s) = start {
-        out.push(Word {
-            text: &line[s..],
-            offset: line_offset + s,
-        });
+        out.push(Word { text: &line[s..], offset: line_offset + s });
     }
     out
 }
@@ -80,22 +71,15 @@ impl<'a> Parser<'a> {
     }
 
     fn expect_word(&self, c: &mut Cursor<'a>, what: &str) -> Result<Word<'a>, LocatedError> {
-        c.next()
-            .ok_or_else(|| self.err(c.end, format!("expected {what}, found end of line")))
+        c.next().ok_or_else(|| self.err(c.end, format!("expected {what}, found end of line")))
     }
 
     fn number(&self, c: &mut Cursor<'a>, what: &str) -> Result<f64, LocatedError> {
         let w = self.expect_word(c, what)?;
         match w.text.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            Ok(_) => Err(self.err(
-                w.offset,
-                format!("{what} must be a finite number, found `{}`", w.text),
-            )),
-            Err(_) => Err(self.err(
-                w.offset,
-                format!("bad number `{}` (expected {what})", w.text),
-            )),
+            Ok(_) => Err(self.err(w.offset, format!("{what} must be a finite number, found `{}`", w.text))),
+            Err(_) => Err(self.err(w.offset, format!("bad number `{}` (expected {what})", w.text))),
         }
     }
 
@@ -124,10 +108,7 @@ impl<'a> Parser<'a> {
         match w.text {
             "true" | "on" | "yes" => Ok(true),
             "false" | "off" | "no" => Ok(false),
-            other => Err(self.err(
-                w.offset,
-                format!("expected `true` or `false` after `{what}`, found `{other}`"),
-            )),
+            other => Err(self.err(w.offset, format!("expected `true` or `false` after `{what}`, found `{other}`"))),
         }
     }
 
@@ -141,20 +122,13 @@ impl<'a> Parser<'a> {
                 "angle" => {
                     let a = self.number(c, "angle")?;
                     if !(a > 0.0 && a < 180.0) {
-                        return Err(self.err(
-                            w.offset,
-                            format!("angle must be between 0 and 180 degrees, found {a}"),
-                        ));
+                        return Err(self.err(w.offset, format!("angle must be between 0 and 180 degrees, found {a}")));
                     }
                     angle.replace(a).is_some()
                 }
                 other => {
-                    return Err(self.err(
-                        w.offset,
-                        format!(
-                            "unknown key field `{other}` (supported: location, look_at, angle)"
-                        ),
-                    ))
+                    return Err(self
+                        .err(w.offset, format!("unknown key field `{other}` (supported: location, look_at, angle)")))
                 }
             };
             if seen {
@@ -187,11 +161,7 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
     let mut line_offset = 0;
     for raw in text.split_inclusive('\n') {
         let line = raw.split('#').next().unwrap_or("");
-        let mut c = Cursor {
-            words: words(line, line_offset),
-            pos: 0,
-            end: line_offset + line.trim_end().len(),
-        };
+        let mut c = Cursor { words: words(line, line_offset), pos: 0, end: line_offset + line.trim_end().len() };
         line_offset += raw.len();
         let Some(first) = c.next() else { continue };
         let twice = |what: &str| p.err(first.offset, format!("`{what}` given twice"));
@@ -202,10 +172,7 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
                     if key.time <= prev.time {
                         return Err(p.err(
                             first.offset,
-                            format!(
-                                "key times must increase: {} comes after {}",
-                                key.time, prev.time
-                            ),
+                            format!("key times must increase: {} comes after {}", key.time, prev.time),
                         ));
                     }
                 }
@@ -217,10 +184,9 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
                     "centripetal" => Spline::Centripetal,
                     "uniform" => Spline::Uniform,
                     other => {
-                        return Err(p.err(
-                            w.offset,
-                            format!("unknown spline `{other}` (supported: centripetal, uniform)"),
-                        ))
+                        return Err(
+                            p.err(w.offset, format!("unknown spline `{other}` (supported: centripetal, uniform)"))
+                        )
                     }
                 };
                 if settings.spline.replace(s).is_some() {
@@ -228,37 +194,24 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
                 }
             }
             "constant_speed" => {
-                if settings
-                    .constant_speed
-                    .replace(p.boolean(&mut c, "constant_speed")?)
-                    .is_some()
-                {
+                if settings.constant_speed.replace(p.boolean(&mut c, "constant_speed")?).is_some() {
                     return Err(twice("constant_speed"));
                 }
             }
             "closed" => {
-                if settings
-                    .closed
-                    .replace(p.boolean(&mut c, "closed")?)
-                    .is_some()
-                {
+                if settings.closed.replace(p.boolean(&mut c, "closed")?).is_some() {
                     return Err(twice("closed"));
                 }
             }
             other => {
                 return Err(p.err(
                     first.offset,
-                    format!(
-                    "unknown keyword `{other}` (supported: key, spline, constant_speed, closed)"
-                ),
+                    format!("unknown keyword `{other}` (supported: key, spline, constant_speed, closed)"),
                 ))
             }
         }
         if let Some(extra) = c.next() {
-            return Err(p.err(
-                extra.offset,
-                format!("unexpected `{}` at end of statement", extra.text),
-            ));
+            return Err(p.err(extra.offset, format!("unexpected `{}` at end of statement", extra.text)));
         }
     }
     validate(&p, &keys, &settings)?;
@@ -273,10 +226,7 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
 
 fn validate(p: &Parser, keys: &[(Key, usize)], settings: &Settings) -> Result<(), LocatedError> {
     if keys.len() < 2 {
-        return Err(p.err(
-            p.text.len(),
-            format!("a camera path needs at least 2 keys, found {}", keys.len()),
-        ));
+        return Err(p.err(p.text.len(), format!("a camera path needs at least 2 keys, found {}", keys.len())));
     }
     let with_angle = keys.iter().filter(|(k, _)| k.angle.is_some()).count();
     if with_angle != 0 && with_angle != keys.len() {
@@ -293,16 +243,10 @@ fn validate(p: &Parser, keys: &[(Key, usize)], settings: &Settings) -> Result<()
             && (last.look_at - first.look_at).length() < 1e-9
             && last.angle == first.angle;
         if !same {
-            return Err(p.err(
-                *at,
-                "a closed path must end where it starts: the last key must repeat the first",
-            ));
+            return Err(p.err(*at, "a closed path must end where it starts: the last key must repeat the first"));
         }
         if keys.len() < 3 {
-            return Err(p.err(
-                *at,
-                "a closed path needs at least 3 keys (the last repeats the first)",
-            ));
+            return Err(p.err(*at, "a closed path needs at least 3 keys (the last repeats the first)"));
         }
     }
     Ok(())
@@ -338,11 +282,7 @@ mod tests {
     fn unknown_keyword_is_located() {
         let e = err("key 0 location <0,0,0> look_at <1,1,1>\n  wobble 3\n");
         assert_eq!((e.line, e.col), (2, 3));
-        assert!(
-            e.message.contains("unknown keyword `wobble`"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("unknown keyword `wobble`"), "{}", e.message);
         assert!(e.to_string().ends_with("  wobble 3\n    ^"), "{e}");
     }
 
@@ -376,8 +316,7 @@ mod tests {
 
     #[test]
     fn non_increasing_times_are_rejected() {
-        let e =
-            err("key 1 location <0,0,0> look_at <1,1,1>\nkey 1 location <1,0,0> look_at <1,1,1>\n");
+        let e = err("key 1 location <0,0,0> look_at <1,1,1>\nkey 1 location <1,0,0> look_at <1,1,1>\n");
         assert_eq!((e.line, e.col), (2, 1));
         assert!(e.message.contains("must increase"));
     }
@@ -385,43 +324,23 @@ mod tests {
     #[test]
     fn fewer_than_two_keys_is_rejected() {
         let e = err("# nothing\nkey 0 location <0,0,0> look_at <1,1,1>\n");
-        assert!(
-            e.message.contains("at least 2 keys, found 1"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("at least 2 keys, found 1"), "{}", e.message);
         assert!(err("").message.contains("found 0"));
     }
 
     #[test]
     fn missing_parts_are_rejected() {
-        assert!(
-            err("key 0 look_at <1,1,1>\nkey 1 location <0,0,0> look_at <1,1,1>\n")
-                .message
-                .contains("no `location`")
-        );
-        assert!(err("key 0 location <0,0,0 look_at <1,1,1>\n")
+        assert!(err("key 0 look_at <1,1,1>\nkey 1 location <0,0,0> look_at <1,1,1>\n")
             .message
-            .contains("expected `>`, found `look_at`"));
-        assert!(err("key 0 location <0,0,0> location <1,1,1>\n")
-            .message
-            .contains("given twice"));
+            .contains("no `location`"));
+        assert!(err("key 0 location <0,0,0 look_at <1,1,1>\n").message.contains("expected `>`, found `look_at`"));
+        assert!(err("key 0 location <0,0,0> location <1,1,1>\n").message.contains("given twice"));
         assert!(err("key\n").message.contains("found end of line"));
-        assert!(err("constant_speed maybe\n")
-            .message
-            .contains("`true` or `false`"));
-        assert!(err("spline bezier\n")
-            .message
-            .contains("unknown spline `bezier`"));
-        assert!(err("closed true\nclosed true\n")
-            .message
-            .contains("given twice"));
-        assert!(err("key 0 location <0,0,0> look_at <1,1,1> 7\n")
-            .message
-            .contains("unknown key field `7`"));
-        assert!(err("spline uniform extra\n")
-            .message
-            .contains("unexpected `extra`"));
+        assert!(err("constant_speed maybe\n").message.contains("`true` or `false`"));
+        assert!(err("spline bezier\n").message.contains("unknown spline `bezier`"));
+        assert!(err("closed true\nclosed true\n").message.contains("given twice"));
+        assert!(err("key 0 location <0,0,0> look_at <1,1,1> 7\n").message.contains("unknown key field `7`"));
+        assert!(err("spline uniform extra\n").message.contains("unexpected `extra`"));
     }
 
     #[test]
@@ -429,9 +348,7 @@ mod tests {
         let e = err("key 0 location <0,0,0> look_at <1,1,1> angle 50\nkey 1 location <1,0,0> look_at <1,1,1>\n");
         assert_eq!((e.line, e.col), (2, 1));
         assert!(e.message.contains("every key or on none"));
-        assert!(err("key 0 location <0,0,0> look_at <1,1,1> angle 180\n")
-            .message
-            .contains("between 0 and 180"));
+        assert!(err("key 0 location <0,0,0> look_at <1,1,1> angle 180\n").message.contains("between 0 and 180"));
     }
 
     #[test]
@@ -468,17 +385,10 @@ mod tests {
     fn shipped_fly_path_visits_the_hard_cases_without_entering_objects() {
         let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
         let path = CameraPath::load(&dir.join("seed.fly.path")).unwrap_or_else(|e| panic!("{e}"));
-        let pts: Vec<DVec3> = (0..=2000)
-            .map(|i| path.sample(i as f64 / 2000.0).0)
-            .collect();
-        let sphere_gap = pts
-            .iter()
-            .map(|p| (*p - DVec3::new(0.0, 2.0, 4.0)).length() - 2.0)
-            .fold(f64::INFINITY, f64::min);
-        assert!(
-            (0.3..1.0).contains(&sphere_gap),
-            "closest to the sphere: {sphere_gap}"
-        );
+        let pts: Vec<DVec3> = (0..=2000).map(|i| path.sample(i as f64 / 2000.0).0).collect();
+        let sphere_gap =
+            pts.iter().map(|p| (*p - DVec3::new(0.0, 2.0, 4.0)).length() - 2.0).fold(f64::INFINITY, f64::min);
+        assert!((0.3..1.0).contains(&sphere_gap), "closest to the sphere: {sphere_gap}");
         let lowest = pts.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
         assert!((0.15..0.5).contains(&lowest), "lowest: {lowest}");
         let farthest = pts.iter().map(|p| p.length()).fold(0.0, f64::max);
@@ -487,9 +397,7 @@ mod tests {
         let to_box = glam::DMat4::from_rotation_y((-20f64).to_radians()).inverse();
         for p in &pts {
             let q = to_box.transform_point3(*p);
-            let inside = (-1.0..=1.0).contains(&q.x)
-                && (0.0..=2.0).contains(&q.y)
-                && (-0.5..=1.5).contains(&q.z);
+            let inside = (-1.0..=1.0).contains(&q.x) && (0.0..=2.0).contains(&q.y) && (-0.5..=1.5).contains(&q.z);
             assert!(!inside, "inside the box at {p}");
         }
     }

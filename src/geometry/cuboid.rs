@@ -35,7 +35,14 @@ impl Cuboid {
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
         let (o, d) = (V3::from_vec3(ray.origin), V3::from_vec3(ray.dir));
         let t = match &self.frame {
-            None => lanes::aabb(V3::from_vec3(self.min), V3::from_vec3(self.max), o, V3::from_vec3(ray.inv_dir), t_min, t_max),
+            None => lanes::aabb(
+                V3::from_vec3(self.min),
+                V3::from_vec3(self.max),
+                o,
+                V3::from_vec3(ray.inv_dir),
+                t_min,
+                t_max,
+            ),
             Some(f) => {
                 let lo = o.transform_point(&f.object_from_render);
                 let ld = d.transform_vector(&f.object_from_render);
@@ -56,13 +63,9 @@ impl Cuboid {
         let d_min = ((local - self.min) / size).abs();
         let d_max = ((self.max - local) / size).abs();
         let mut best = (d_min.x, -Vec3::X);
-        for (d, n) in [
-            (d_max.x, Vec3::X),
-            (d_min.y, -Vec3::Y),
-            (d_max.y, Vec3::Y),
-            (d_min.z, -Vec3::Z),
-            (d_max.z, Vec3::Z),
-        ] {
+        for (d, n) in
+            [(d_max.x, Vec3::X), (d_min.y, -Vec3::Y), (d_max.y, Vec3::Y), (d_min.z, -Vec3::Z), (d_max.z, Vec3::Z)]
+        {
             if d < best.0 {
                 best = (d, n);
             }

@@ -11,7 +11,9 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use glam::Vec3;
 
-pub trait Lane: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self> {
+pub trait Lane:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
+{
     type Mask: Copy;
     fn splat(v: f32) -> Self;
     fn sqrt(self) -> Self;
@@ -281,9 +283,18 @@ impl<L: Lane> V3<L> {
     pub fn transform_point(self, a: &glam::Affine3A) -> V3<L> {
         let m = &a.matrix3;
         V3 {
-            x: self.x * L::splat(m.x_axis.x) + self.y * L::splat(m.y_axis.x) + self.z * L::splat(m.z_axis.x) + L::splat(a.translation.x),
-            y: self.x * L::splat(m.x_axis.y) + self.y * L::splat(m.y_axis.y) + self.z * L::splat(m.z_axis.y) + L::splat(a.translation.y),
-            z: self.x * L::splat(m.x_axis.z) + self.y * L::splat(m.y_axis.z) + self.z * L::splat(m.z_axis.z) + L::splat(a.translation.z),
+            x: self.x * L::splat(m.x_axis.x)
+                + self.y * L::splat(m.y_axis.x)
+                + self.z * L::splat(m.z_axis.x)
+                + L::splat(a.translation.x),
+            y: self.x * L::splat(m.x_axis.y)
+                + self.y * L::splat(m.y_axis.y)
+                + self.z * L::splat(m.z_axis.y)
+                + L::splat(a.translation.y),
+            z: self.x * L::splat(m.x_axis.z)
+                + self.y * L::splat(m.y_axis.z)
+                + self.z * L::splat(m.z_axis.z)
+                + L::splat(a.translation.z),
         }
     }
     #[inline(always)]
@@ -421,8 +432,16 @@ mod tests {
     fn packet_and_single_ray_kernels_agree_bit_for_bit() {
         for round in 0..500u32 {
             let b = round * 64;
-            let o = V3 { x: lanes(b, |i| rnd(i) * 4.0 - 2.0), y: lanes(b + 8, |i| rnd(i) * 4.0 - 2.0), z: lanes(b + 16, |i| -5.0 + rnd(i)) };
-            let d = V3 { x: lanes(b + 24, |i| rnd(i) - 0.5), y: lanes(b + 32, |i| rnd(i) - 0.5), z: lanes(b + 40, |_| 1.0) };
+            let o = V3 {
+                x: lanes(b, |i| rnd(i) * 4.0 - 2.0),
+                y: lanes(b + 8, |i| rnd(i) * 4.0 - 2.0),
+                z: lanes(b + 16, |i| -5.0 + rnd(i)),
+            };
+            let d = V3 {
+                x: lanes(b + 24, |i| rnd(i) - 0.5),
+                y: lanes(b + 32, |i| rnd(i) - 0.5),
+                z: lanes(b + 40, |_| 1.0),
+            };
             let c = Vec3::new(rnd(b + 50) - 0.5, rnd(b + 51) - 0.5, 2.0);
             let r = 0.5 + rnd(b + 52);
             let wide = sphere(V3::splat(c), F8::splat(r), o, d, F8::splat(0.0), F8::splat(MISS));

@@ -23,7 +23,14 @@ impl Plane {
     /// A ray parallel to the plane never hits it, even when it lies in it.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let t = lanes::plane(V3::from_vec3(self.normal), self.distance, V3::from_vec3(ray.origin), V3::from_vec3(ray.dir), t_min, t_max);
+        let t = lanes::plane(
+            V3::from_vec3(self.normal),
+            self.distance,
+            V3::from_vec3(ray.origin),
+            V3::from_vec3(ray.dir),
+            t_min,
+            t_max,
+        );
         (t != lanes::MISS).then_some(t)
     }
 }

@@ -16,7 +16,14 @@ impl Sphere {
     /// The formula (stable against cancellation for small or far spheres) is in `lanes::sphere`.
     #[inline]
     pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let t = lanes::sphere(V3::from_vec3(self.center), self.radius, V3::from_vec3(ray.origin), V3::from_vec3(ray.dir), t_min, t_max);
+        let t = lanes::sphere(
+            V3::from_vec3(self.center),
+            self.radius,
+            V3::from_vec3(ray.origin),
+            V3::from_vec3(ray.dir),
+            t_min,
+            t_max,
+        );
         (t != lanes::MISS).then_some(t)
     }
 
@@ -137,7 +144,9 @@ mod ellipsoid_tests {
 
     #[test]
     fn stretched_sphere_hits_at_its_semi_axes() {
-        let e = Ellipsoid::new(Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)) * Affine3A::from_scale(Vec3::new(1.0, 1.0, 3.0)));
+        let e = Ellipsoid::new(
+            Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)) * Affine3A::from_scale(Vec3::new(1.0, 1.0, 3.0)),
+        );
         let t = e.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0, f32::INFINITY).expect("hit");
         assert!((t - 7.0).abs() < 1e-4);
         let side = Ray::new(Vec3::new(-5.0, 0.0, 10.0), Vec3::X);

@@ -107,12 +107,7 @@ pub fn timed_run_scaled(
         stats += s;
     }
     let seconds = times_ms.iter().sum::<f64>() / 1e3;
-    Run {
-        threads: rayon::current_num_threads(),
-        times_ms,
-        stats,
-        seconds,
-    }
+    Run { threads: rayon::current_num_threads(), times_ms, stats, seconds }
 }
 
 pub struct BenchArgs {
@@ -141,10 +136,7 @@ fn quality_json(s: &RenderSettings, res_scale: f32) -> Json {
 }
 
 fn quality_text(s: &RenderSettings, res_scale: f32, scene_level: u32) -> String {
-    let octaves = s
-        .quality
-        .max_octaves
-        .map_or("scene".to_string(), |o| o.to_string());
+    let octaves = s.quality.max_octaves.map_or("scene".to_string(), |o| o.to_string());
     format!(
         "res_scale {res_scale}, aa {}x{}, max_trace_level {}, shadows {}, max_octaves {octaves}",
         s.aa,
@@ -160,12 +152,7 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
     let s = &run.stats;
     let secondary = s.reflected_rays + s.refracted_rays;
     let mut o = String::new();
-    let camera = args
-        .path
-        .as_ref()
-        .map_or("still scene camera".to_string(), |p| {
-            format!("path {}", p.display())
-        });
+    let camera = args.path.as_ref().map_or("still scene camera".to_string(), |p| format!("path {}", p.display()));
     let _ = writeln!(
         o,
         "bench {} {}x{}, {} frames (+{} warm-up), {camera}",
@@ -183,11 +170,7 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
         args.accel.name(),
         if args.settings.packets { "on" } else { "off" }
     );
-    let _ = writeln!(
-        o,
-        "quality:    {}",
-        quality_text(&args.settings, args.res_scale, scene_level)
-    );
+    let _ = writeln!(o, "quality:    {}", quality_text(&args.settings, args.res_scale, scene_level));
     let _ = writeln!(
         o,
         "frame time: median {:.2} ms   p95 {:.2} ms   p99 {:.2} ms   max {:.2} ms",
@@ -212,12 +195,7 @@ pub fn report_json(args: &BenchArgs, run: &Run, cpu: &str, sweep: &[Run]) -> Jso
     let secondary = s.reflected_rays + s.refracted_rays;
     let mut fields = vec![
         ("scene", Json::str(args.scene.display().to_string())),
-        (
-            "path",
-            args.path
-                .as_ref()
-                .map_or(Json::Null, |p| Json::str(p.display().to_string())),
-        ),
+        ("path", args.path.as_ref().map_or(Json::Null, |p| Json::str(p.display().to_string()))),
         ("width", Json::Number(args.settings.width as f64)),
         ("height", Json::Number(args.settings.height as f64)),
         ("frames", Json::Number(args.frames as f64)),
@@ -250,10 +228,7 @@ pub fn report_json(args: &BenchArgs, run: &Run, cpu: &str, sweep: &[Run]) -> Jso
         ("packets", Json::Bool(args.settings.packets)),
         ("quality", quality_json(&args.settings, args.res_scale)),
         ("cpu", Json::str(cpu)),
-        (
-            "frame_ms",
-            Json::Array(run.times_ms.iter().map(|&v| Json::Number(v)).collect()),
-        ),
+        ("frame_ms", Json::Array(run.times_ms.iter().map(|&v| Json::Number(v)).collect())),
     ];
     if !sweep.is_empty() {
         fields.push(("threads_sweep", sweep_json(sweep)));
@@ -299,15 +274,10 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     let base = Camera::from_desc(&desc.camera);
-    let cameras: Vec<Camera> = (0..args.frames)
-        .map(|i| {
-            path.as_ref()
-                .map_or(base, |p| p.camera_at(frame_t(i, args.frames), &base))
-        })
-        .collect();
-    let main_run = with_threads(args.threads, || {
-        timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale)
-    })?;
+    let cameras: Vec<Camera> =
+        (0..args.frames).map(|i| path.as_ref().map_or(base, |p| p.camera_at(frame_t(i, args.frames), &base))).collect();
+    let main_run =
+        with_threads(args.threads, || timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale))?;
     let cpu = cpu_model();
     print!("{}", report(args, &main_run, scene.max_trace_level, &cpu));
     let mut sweep = Vec::new();
@@ -322,12 +292,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     }
     output::flush_stdout();
     if let Some(file) = &args.json {
-        output::write_atomic(
-            file,
-            report_json(args, &main_run, &cpu, &sweep)
-                .to_pretty()
-                .as_bytes(),
-        )?;
+        output::write_atomic(file, report_json(args, &main_run, &cpu, &sweep).to_pretty().as_bytes())?;
     }
     Ok(())
 }
@@ -342,21 +307,10 @@ mod tests {
         // 1..=20 ms in shuffled order: median = 10 (rank 10), p95 = 19 (rank 19), p99 = 20.
         let times: Vec<f64> = (1..=20).map(|i| ((i * 7) % 20 + 1) as f64).collect();
         let t = frame_times(&times);
-        assert_eq!(
-            (t.median_ms, t.p95_ms, t.p99_ms, t.max_ms),
-            (10.0, 19.0, 20.0, 20.0)
-        );
+        assert_eq!((t.median_ms, t.p95_ms, t.p99_ms, t.max_ms), (10.0, 19.0, 20.0, 20.0));
         // Odd count: median is the middle value; a single value is every percentile.
         assert_eq!(percentile(&[1.0, 2.0, 3.0], 50.0), 2.0);
-        assert_eq!(
-            frame_times(&[4.5]),
-            FrameTimes {
-                median_ms: 4.5,
-                p95_ms: 4.5,
-                p99_ms: 4.5,
-                max_ms: 4.5
-            }
-        );
+        assert_eq!(frame_times(&[4.5]), FrameTimes { median_ms: 4.5, p95_ms: 4.5, p99_ms: 4.5, max_ms: 4.5 });
         assert!(percentile(&[], 50.0).is_nan());
         // Small samples: p95 of 10 values is rank 10 (the max), not an interpolation.
         let ten: Vec<f64> = (1..=10).map(f64::from).collect();
@@ -369,13 +323,9 @@ mod tests {
         let desc = seed_scene();
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
         let cam = Camera::from_desc(&desc.camera);
-        let settings = RenderSettings {
-            width: 16,
-            height: 12,
-            ..RenderSettings::default()
-        };
-        let run = with_threads(1, || timed_run(&scene, &[cam, cam, cam], 2, &settings))
-            .unwrap_or_else(|e| panic!("{e}"));
+        let settings = RenderSettings { width: 16, height: 12, ..RenderSettings::default() };
+        let run =
+            with_threads(1, || timed_run(&scene, &[cam, cam, cam], 2, &settings)).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(run.times_ms.len(), 3);
         assert_eq!(run.threads, 1);
         assert_eq!(run.stats.primary_rays, 3 * 16 * 12);

@@ -34,15 +34,12 @@ impl FromStr for FrameRange {
     type Err = String;
 
     fn from_str(s: &str) -> Result<FrameRange, String> {
-        let bad =
-            || format!("`{s}` is not a frame range: write START..END, e.g. 0..12 (END excluded)");
+        let bad = || format!("`{s}` is not a frame range: write START..END, e.g. 0..12 (END excluded)");
         let (a, b) = s.split_once("..").ok_or_else(bad)?;
         let start: u32 = a.trim().parse().map_err(|_| bad())?;
         let end: u32 = b.trim().parse().map_err(|_| bad())?;
         if end <= start {
-            return Err(format!(
-                "frame range `{s}` is empty: END must be greater than START"
-            ));
+            return Err(format!("frame range `{s}` is empty: END must be greater than START"));
         }
         Ok(FrameRange { start, end })
     }
@@ -77,10 +74,7 @@ pub fn frame_t(i: u32, n: u32) -> f64 {
 
 /// Lower-case hex SHA-256 of a byte buffer.
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
+    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
 }
 
 /// Everything `capture` needs besides the loaded scene; `scene_name`/`path_name` go into the
@@ -112,12 +106,7 @@ pub fn settings_json(s: &RenderSettings, res_scale: f32, accel: AccelKind) -> Js
 }
 
 /// Renders one frame into `image` and returns its 8-bit RGB pixels and the render time in ms.
-pub fn render_rgb8(
-    scene: &Scene,
-    camera: &Camera,
-    settings: &RenderSettings,
-    image: &mut Image,
-) -> (Vec<u8>, f64) {
+pub fn render_rgb8(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> (Vec<u8>, f64) {
     let start = Instant::now();
     render(scene, camera, settings, image);
     let ms = start.elapsed().as_secs_f64() * 1e3;
@@ -126,19 +115,10 @@ pub fn render_rgb8(
 
 /// Renders the job's frames into `out_dir` (which must exist) and returns their manifest, which
 /// the caller writes. Runs on the current rayon pool.
-pub fn capture(
-    scene: &Scene,
-    base: &Camera,
-    job: &CaptureJob,
-    out_dir: &Path,
-) -> Result<Manifest, CliError> {
+pub fn capture(scene: &Scene, base: &Camera, job: &CaptureJob, out_dir: &Path) -> Result<Manifest, CliError> {
     let mut image = Image::new(job.settings.width, job.settings.height);
     let mut low = Image::default();
-    let progress = Progress::new(
-        (job.range.end - job.range.start) as u64,
-        "frames",
-        job.quiet,
-    );
+    let progress = Progress::new((job.range.end - job.range.start) as u64, "frames", job.quiet);
     let mut frames = Vec::new();
     for index in job.range.start..job.range.end {
         let t = frame_t(index, job.frames);
@@ -173,15 +153,11 @@ pub fn capture(
 }
 
 pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
-    output::write_atomic(
-        &dir.join("manifest.json"),
-        manifest.to_json().to_pretty().as_bytes(),
-    )
+    output::write_atomic(&dir.join("manifest.json"), manifest.to_json().to_pretty().as_bytes())
 }
 
 fn create_dir(dir: &Path) -> Result<(), CliError> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
+    std::fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
 }
 
 pub struct CaptureArgs {
@@ -204,13 +180,7 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
     if args.frames == 0 {
         return Err(CliError::user("--frames must be at least 1"));
     }
-    let range = args
-        .range
-        .unwrap_or(FrameRange {
-            start: 0,
-            end: args.frames,
-        })
-        .within(args.frames)?;
+    let range = args.range.unwrap_or(FrameRange { start: 0, end: args.frames }).within(args.frames)?;
     let path = CameraPath::load(&args.path)?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
@@ -245,12 +215,8 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
 /// `strahl capture --merge DIR... -o OUT`: checks every shard's PNGs against its manifest,
 /// copies them into OUT (unless already there) and writes the merged manifest.
 pub fn run_merge(dirs: &[PathBuf], out: &Path) -> Result<(), CliError> {
-    let parts = dirs
-        .iter()
-        .map(|d| Manifest::read(d))
-        .collect::<Result<Vec<_>, _>>()?;
-    let merged =
-        Manifest::merge(&parts).map_err(|e| CliError::user(format!("cannot merge: {e}")))?;
+    let parts = dirs.iter().map(|d| Manifest::read(d)).collect::<Result<Vec<_>, _>>()?;
+    let merged = Manifest::merge(&parts).map_err(|e| CliError::user(format!("cannot merge: {e}")))?;
     // Verify before writing anything, so a bad shard leaves OUT untouched.
     let mut copies = Vec::new();
     for (dir, part) in dirs.iter().zip(&parts) {
@@ -258,10 +224,7 @@ pub fn run_merge(dirs: &[PathBuf], out: &Path) -> Result<(), CliError> {
             let src = dir.join(&f.file);
             let (_, _, rgb) = output::read_png(&src)?;
             if sha256_hex(&rgb) != f.sha256 {
-                return Err(CliError::user(format!(
-                    "{}: pixels do not match the manifest's sha256",
-                    src.display()
-                )));
+                return Err(CliError::user(format!("{}: pixels do not match the manifest's sha256", src.display())));
             }
             copies.push((src, out.join(&f.file)));
         }
@@ -270,18 +233,13 @@ pub fn run_merge(dirs: &[PathBuf], out: &Path) -> Result<(), CliError> {
     for (src, dst) in copies {
         let same = matches!((src.canonicalize(), dst.canonicalize()), (Ok(a), Ok(b)) if a == b);
         if !same {
-            let bytes = std::fs::read(&src)
-                .map_err(|e| CliError::user(format!("{}: cannot read: {e}", src.display())))?;
+            let bytes =
+                std::fs::read(&src).map_err(|e| CliError::user(format!("{}: cannot read: {e}", src.display())))?;
             output::write_atomic(&dst, &bytes)?;
         }
     }
     write_manifest(out, &merged)?;
-    println!(
-        "merged {} shards, {} frames, into {}",
-        dirs.len(),
-        merged.frames.len(),
-        out.display()
-    );
+    println!("merged {} shards, {} frames, into {}", dirs.len(), merged.frames.len(), out.display());
     output::flush_stdout();
     Ok(())
 }

@@ -20,11 +20,7 @@ fn orbit() -> CameraPath {
 }
 
 fn small() -> RenderSettings {
-    RenderSettings {
-        width: 61,
-        height: 47,
-        ..RenderSettings::default()
-    }
+    RenderSettings { width: 61, height: 47, ..RenderSettings::default() }
 }
 
 /// SHA-256 of the 8-bit pixels of frames 0, 2, 5 of 7 along the orbit.
@@ -36,12 +32,7 @@ fn hashes(scene: &Scene, threads: usize, settings: &RenderSettings) -> Vec<Strin
         [0, 2, 5]
             .iter()
             .map(|&i| {
-                let (rgb, _) = render_rgb8(
-                    scene,
-                    &path.camera_at(frame_t(i, 7), &base),
-                    settings,
-                    &mut image,
-                );
+                let (rgb, _) = render_rgb8(scene, &path.camera_at(frame_t(i, 7), &base), settings, &mut image);
                 sha256_hex(&rgb)
             })
             .collect()
@@ -81,20 +72,9 @@ fn frames_are_identical_across_thread_counts() {
 #[test]
 fn frames_are_identical_across_tile_sizes() {
     let scene = seed();
-    let reference = hashes(
-        &scene,
-        2,
-        &RenderSettings {
-            tile: 16,
-            ..small()
-        },
-    );
+    let reference = hashes(&scene, 2, &RenderSettings { tile: 16, ..small() });
     for tile in [8, 37, 1, 1000] {
-        assert_eq!(
-            hashes(&scene, 2, &RenderSettings { tile, ..small() }),
-            reference,
-            "tile {tile}"
-        );
+        assert_eq!(hashes(&scene, 2, &RenderSettings { tile, ..small() }), reference, "tile {tile}");
     }
 }
 
@@ -137,11 +117,7 @@ fn shards_merge_into_the_whole_capture() {
         path: &path,
         frames: 5,
         range: FrameRange { start, end },
-        settings: RenderSettings {
-            width: 24,
-            height: 18,
-            ..RenderSettings::default()
-        },
+        settings: RenderSettings { width: 24, height: 18, ..RenderSettings::default() },
         res_scale: 1.0,
         accel: AccelKind::Bvh,
         quiet: true,

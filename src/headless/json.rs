@@ -20,12 +20,7 @@ pub enum Json {
 
 impl Json {
     pub fn object(fields: Vec<(&str, Json)>) -> Json {
-        Json::Object(
-            fields
-                .into_iter()
-                .map(|(k, v)| (k.to_string(), v))
-                .collect(),
-        )
+        Json::Object(fields.into_iter().map(|(k, v)| (k.to_string(), v)).collect())
     }
 
     pub fn str(s: impl Into<String>) -> Json {
@@ -33,11 +28,7 @@ impl Json {
     }
 
     pub fn vec3(v: glam::DVec3) -> Json {
-        Json::Array(vec![
-            Json::Number(v.x),
-            Json::Number(v.y),
-            Json::Number(v.z),
-        ])
+        Json::Array(vec![Json::Number(v.x), Json::Number(v.y), Json::Number(v.z)])
     }
 
     pub fn opt_u32(v: Option<u32>) -> Json {
@@ -138,10 +129,7 @@ impl Json {
 
     /// Parses a JSON document; the error names the byte offset.
     pub fn parse(text: &str) -> Result<Json, String> {
-        let mut r = Reader {
-            b: text.as_bytes(),
-            i: 0,
-        };
+        let mut r = Reader { b: text.as_bytes(), i: 0 };
         let v = r.value(0)?;
         r.ws();
         if r.i != r.b.len() {
@@ -265,12 +253,7 @@ impl Reader<'_> {
 
     fn number(&mut self) -> Result<Json, String> {
         let start = self.i;
-        while self.i < self.b.len()
-            && matches!(
-                self.b[self.i],
-                b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9'
-            )
-        {
+        while self.i < self.b.len() && matches!(self.b[self.i], b'-' | b'+' | b'.' | b'e' | b'E' | b'0'..=b'9') {
             self.i += 1;
         }
         let s = std::str::from_utf8(&self.b[start..self.i]).unwrap_or("");
@@ -292,9 +275,7 @@ impl Reader<'_> {
                 self.i += 1;
             }
             // The input is a &str and we split only at ASCII bytes, so this slice is UTF-8.
-            out.push_str(
-                std::str::from_utf8(&self.b[start..self.i]).map_err(|_| self.fail("bad UTF-8"))?,
-            );
+            out.push_str(std::str::from_utf8(&self.b[start..self.i]).map_err(|_| self.fail("bad UTF-8"))?);
             match self.b.get(self.i) {
                 None => return Err(self.fail("unterminated string")),
                 Some(b'"') => {
@@ -314,10 +295,7 @@ impl Reader<'_> {
                         Some(b'b') => out.push('\u{8}'),
                         Some(b'f') => out.push('\u{c}'),
                         Some(b'u') => {
-                            let hex = self
-                                .b
-                                .get(self.i..self.i + 4)
-                                .and_then(|h| std::str::from_utf8(h).ok());
+                            let hex = self.b.get(self.i..self.i + 4).and_then(|h| std::str::from_utf8(h).ok());
                             let code = hex
                                 .and_then(|h| u32::from_str_radix(h, 16).ok())
                                 .ok_or_else(|| self.fail("bad \\u escape"))?;
@@ -346,11 +324,7 @@ mod tests {
 
     #[test]
     fn non_finite_numbers_become_null() {
-        let v = Json::Array(vec![
-            Json::Number(f64::NAN),
-            Json::Number(f64::INFINITY),
-            Json::Number(1.5),
-        ]);
+        let v = Json::Array(vec![Json::Number(f64::NAN), Json::Number(f64::INFINITY), Json::Number(1.5)]);
         assert_eq!(v.to_pretty(), "[null, null, 1.5]\n");
     }
 
@@ -360,10 +334,7 @@ mod tests {
             ("t", Json::Number(1.0 / 3.0)),
             ("tiny", Json::Number(1e-300)),
             ("big", Json::Number(-1.2345e200)),
-            (
-                "list",
-                Json::Array(vec![Json::Null, Json::Bool(true), Json::object(vec![])]),
-            ),
+            ("list", Json::Array(vec![Json::Null, Json::Bool(true), Json::object(vec![])])),
             ("empty", Json::Array(vec![])),
         ]);
         assert_eq!(Json::parse(&v.to_pretty()), Ok(v));
@@ -371,17 +342,7 @@ mod tests {
 
     #[test]
     fn rejects_malformed_documents() {
-        for bad in [
-            "",
-            "{",
-            "[1,]",
-            "{\"a\" 1}",
-            "nul",
-            "\"abc",
-            "1 2",
-            "{\"a\":1,}",
-            "[1e999]",
-        ] {
+        for bad in ["", "{", "[1,]", "{\"a\" 1}", "nul", "\"abc", "1 2", "{\"a\":1,}", "[1e999]"] {
             assert!(Json::parse(bad).is_err(), "{bad:?}");
         }
         let deep = "[".repeat(100) + &"]".repeat(100);

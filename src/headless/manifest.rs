@@ -53,13 +53,7 @@ pub struct FrameRecord {
 impl FrameRecord {
     /// Equal in everything but timing.
     pub fn same_content(&self, other: &FrameRecord) -> bool {
-        FrameRecord {
-            render_ms: 0.0,
-            ..self.clone()
-        } == FrameRecord {
-            render_ms: 0.0,
-            ..other.clone()
-        }
+        FrameRecord { render_ms: 0.0, ..self.clone() } == FrameRecord { render_ms: 0.0, ..other.clone() }
     }
 }
 
@@ -86,29 +80,12 @@ impl Manifest {
     pub fn same_content(&self, other: &Manifest) -> bool {
         self.same_header(other)
             && self.frames.len() == other.frames.len()
-            && self
-                .frames
-                .iter()
-                .zip(&other.frames)
-                .all(|(a, b)| a.same_content(b))
+            && self.frames.iter().zip(&other.frames).all(|(a, b)| a.same_content(b))
     }
 
     fn same_header(&self, o: &Manifest) -> bool {
-        (
-            &self.scene,
-            &self.path,
-            self.width,
-            self.height,
-            self.frame_count,
-            &self.settings,
-        ) == (
-            &o.scene,
-            &o.path,
-            o.width,
-            o.height,
-            o.frame_count,
-            &o.settings,
-        )
+        (&self.scene, &self.path, self.width, self.height, self.frame_count, &self.settings)
+            == (&o.scene, &o.path, o.width, o.height, o.frame_count, &o.settings)
     }
 
     pub fn to_json(&self) -> Json {
@@ -156,10 +133,7 @@ impl Manifest {
         }
         let field = |o: &Json, k: &str| o.get(k).cloned().ok_or_else(|| format!("missing `{k}`"));
         let string = |o: &Json, k: &str| {
-            field(o, k)?
-                .as_str()
-                .map(str::to_string)
-                .ok_or_else(|| format!("`{k}` is not a string"))
+            field(o, k)?.as_str().map(str::to_string).ok_or_else(|| format!("`{k}` is not a string"))
         };
         let int = |o: &Json, k: &str| {
             field(o, k)?
@@ -170,19 +144,13 @@ impl Manifest {
         };
         let vec3 = |o: &Json, k: &str| -> Result<DVec3, String> {
             let a = field(o, k)?;
-            match a
-                .as_array()
-                .map(|a| a.iter().map(Json::as_f64).collect::<Option<Vec<_>>>())
-            {
+            match a.as_array().map(|a| a.iter().map(Json::as_f64).collect::<Option<Vec<_>>>()) {
                 Some(Some(c)) if c.len() == 3 => Ok(DVec3::new(c[0], c[1], c[2])),
                 _ => Err(format!("`{k}` is not a 3-vector")),
             }
         };
         let mut frames = Vec::new();
-        for f in field(v, "frames")?
-            .as_array()
-            .ok_or("`frames` is not an array")?
-        {
+        for f in field(v, "frames")?.as_array().ok_or("`frames` is not an array")? {
             let cam = field(f, "camera")?;
             frames.push(FrameRecord {
                 index: int(f, "index")?,
@@ -197,10 +165,7 @@ impl Manifest {
                 },
                 sha256: string(f, "sha256")?,
                 // Timing is informative only; a missing or null value does not spoil a manifest.
-                render_ms: f
-                    .get("render_ms")
-                    .and_then(Json::as_f64)
-                    .unwrap_or(f64::NAN),
+                render_ms: f.get("render_ms").and_then(Json::as_f64).unwrap_or(f64::NAN),
             });
         }
         Ok(Manifest {
@@ -229,49 +194,31 @@ impl Manifest {
     /// together must cover every frame.
     pub fn merge(parts: &[Manifest]) -> Result<Manifest, String> {
         let first = parts.first().ok_or("nothing to merge")?;
-        let mut merged = Manifest {
-            frames: Vec::new(),
-            ..first.clone()
-        };
+        let mut merged = Manifest { frames: Vec::new(), ..first.clone() };
         for (i, part) in parts.iter().enumerate() {
             if !part.same_header(first) {
-                return Err(format!("shard {} is from a different capture (scene, path, size, frame count or settings differ)", i + 1));
+                return Err(format!(
+                    "shard {} is from a different capture (scene, path, size, frame count or settings differ)",
+                    i + 1
+                ));
             }
             merged.frames.extend(part.frames.iter().cloned());
         }
         merged.frames.sort_by_key(|f| f.index);
         if let Some(w) = merged.frames.windows(2).find(|w| w[0].index == w[1].index) {
-            return Err(format!(
-                "frame {} is listed by more than one shard",
-                w[0].index
-            ));
+            return Err(format!("frame {} is listed by more than one shard", w[0].index));
         }
         let missing: Vec<String> = (0..merged.frame_count)
             .filter(|i| merged.frames.binary_search_by_key(i, |f| f.index).is_err())
             .map(|i| i.to_string())
             .collect();
         if !missing.is_empty() {
-            let shown = missing
-                .iter()
-                .take(10)
-                .cloned()
-                .collect::<Vec<_>>()
-                .join(", ");
-            let more = if missing.len() > 10 {
-                format!(" and {} more", missing.len() - 10)
-            } else {
-                String::new()
-            };
-            return Err(format!(
-                "no shard has frame {shown}{more} of {}",
-                merged.frame_count
-            ));
+            let shown = missing.iter().take(10).cloned().collect::<Vec<_>>().join(", ");
+            let more = if missing.len() > 10 { format!(" and {} more", missing.len() - 10) } else { String::new() };
+            return Err(format!("no shard has frame {shown}{more} of {}", merged.frame_count));
         }
         if let Some(f) = merged.frames.iter().find(|f| f.index >= merged.frame_count) {
-            return Err(format!(
-                "frame {} is past the frame count {}",
-                f.index, merged.frame_count
-            ));
+            return Err(format!("frame {} is past the frame count {}", f.index, merged.frame_count));
         }
         Ok(merged)
     }
@@ -313,8 +260,7 @@ mod tests {
     #[test]
     fn json_round_trip() {
         let m = manifest((0..4).map(|i| frame(i, 1.25)).collect());
-        let back = Manifest::from_json(&Json::parse(&m.to_json().to_pretty()).expect("parses"))
-            .expect("valid");
+        let back = Manifest::from_json(&Json::parse(&m.to_json().to_pretty()).expect("parses")).expect("valid");
         assert_eq!(back, m);
     }
 
@@ -334,18 +280,12 @@ mod tests {
     #[test]
     fn merge_rejects_gaps_overlaps_and_strangers() {
         let a = manifest(vec![frame(0, 1.0), frame(1, 1.0)]);
-        assert!(Manifest::merge(std::slice::from_ref(&a))
-            .unwrap_err()
-            .contains("no shard has frame 2, 3 of 4"));
+        assert!(Manifest::merge(std::slice::from_ref(&a)).unwrap_err().contains("no shard has frame 2, 3 of 4"));
         let b = manifest(vec![frame(1, 1.0), frame(2, 1.0), frame(3, 1.0)]);
-        assert!(Manifest::merge(&[a.clone(), b])
-            .unwrap_err()
-            .contains("frame 1 is listed by more than one shard"));
+        assert!(Manifest::merge(&[a.clone(), b]).unwrap_err().contains("frame 1 is listed by more than one shard"));
         let mut c = manifest(vec![frame(2, 1.0), frame(3, 1.0)]);
         c.width = 9;
-        assert!(Manifest::merge(&[a, c])
-            .unwrap_err()
-            .contains("shard 2 is from a different capture"));
+        assert!(Manifest::merge(&[a, c]).unwrap_err().contains("shard 2 is from a different capture"));
         assert!(Manifest::merge(&[]).is_err());
     }
 }

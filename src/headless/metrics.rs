@@ -15,11 +15,7 @@ pub fn mse(a: &[u8], b: &[u8]) -> f64 {
     if a.is_empty() {
         return 0.0;
     }
-    let sse: u64 = a
-        .iter()
-        .zip(b)
-        .map(|(&x, &y)| (x as i64 - y as i64).pow(2) as u64)
-        .sum();
+    let sse: u64 = a.iter().zip(b).map(|(&x, &y)| (x as i64 - y as i64).pow(2) as u64).sum();
     sse as f64 / a.len() as f64
 }
 
@@ -68,8 +64,7 @@ pub fn ssim(width: u32, height: u32, a: &[u8], b: &[u8]) -> f64 {
             }
             let (ma, mb) = (sa / n, sb / n);
             let (va, vb, cov) = (saa / n - ma * ma, sbb / n - mb * mb, sab / n - ma * mb);
-            total += ((2.0 * ma * mb + c1) * (2.0 * cov + c2))
-                / ((ma * ma + mb * mb + c1) * (va + vb + c2));
+            total += ((2.0 * ma * mb + c1) * (2.0 * cov + c2)) / ((ma * ma + mb * mb + c1) * (va + vb + c2));
             blocks += 1;
         }
     }
@@ -99,9 +94,7 @@ mod tests {
     fn known_noise_gives_known_psnr() {
         // ±5 on every value: MSE = 25, PSNR = 20·log10(255/5) = 34.15 dB.
         let a = vec![128u8; 300];
-        let b: Vec<u8> = (0..300)
-            .map(|i| if i % 2 == 0 { 133 } else { 123 })
-            .collect();
+        let b: Vec<u8> = (0..300).map(|i| if i % 2 == 0 { 133 } else { 123 }).collect();
         assert!((psnr(&a, &b) - 20.0 * (255.0f64 / 5.0).log10()).abs() < 1e-9);
         // One value off by 255 in 3·100 values: MSE = 255²/300, PSNR = 10·log10(300) = 24.77 dB.
         let mut c = vec![0u8; 300];

@@ -70,7 +70,12 @@ pub fn load(path: &Path, user_dirs: &[PathBuf]) -> Result<(SceneDesc, Duration),
 
 /// Parses a scene for an image of `width`×`height`, which `image_width`/`image_height` report,
 /// printing the parser's warnings (POV-Ray's "Scale by 0.0 changed to 1.0") to stderr.
-pub fn load_sized(path: &Path, user_dirs: &[PathBuf], width: u32, height: u32) -> Result<(SceneDesc, Duration), CliError> {
+pub fn load_sized(
+    path: &Path,
+    user_dirs: &[PathBuf],
+    width: u32,
+    height: u32,
+) -> Result<(SceneDesc, Duration), CliError> {
     let start = Instant::now();
     let options = ParseOptions { image_width: width, image_height: height };
     let (desc, warnings) = load_scene_with_options_and_warnings(path, &include_path(user_dirs), &options)?;

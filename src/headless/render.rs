@@ -31,7 +31,9 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let camera = Camera::from_desc(&desc.camera);
     let (mut low, mut image) = (Image::default(), Image::default());
     let trace_start = Instant::now();
-    let stats = with_threads(args.threads, || render_scaled(&scene, &camera, &args.settings, args.res_scale, &mut low, &mut image))?;
+    let stats = with_threads(args.threads, || {
+        render_scaled(&scene, &camera, &args.settings, args.res_scale, &mut low, &mut image)
+    })?;
     let trace = trace_start.elapsed();
     output::write_png(&args.output, image.width, image.height, &image.to_rgb8(scene.srgb))?;
     if !args.quiet {
@@ -39,7 +41,15 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
         let max_level = args.settings.quality.max_trace_level.unwrap_or(scene.max_trace_level);
         print!(
             "{}",
-            statistics(&name, image.width, image.height, &stats, max_level, &Timings { parse, build, trace }, peak_memory_bytes())
+            statistics(
+                &name,
+                image.width,
+                image.height,
+                &stats,
+                max_level,
+                &Timings { parse, build, trace },
+                peak_memory_bytes()
+            )
         );
         output::flush_stdout();
     }

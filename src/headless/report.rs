@@ -12,7 +12,15 @@ pub struct Timings {
     pub trace: Duration,
 }
 
-pub fn statistics(name: &str, w: u32, h: u32, s: &RenderStats, max_level: u32, t: &Timings, peak: Option<u64>) -> String {
+pub fn statistics(
+    name: &str,
+    w: u32,
+    h: u32,
+    s: &RenderStats,
+    max_level: u32,
+    t: &Timings,
+    peak: Option<u64>,
+) -> String {
     let mut o = String::new();
     let line = "-".repeat(78);
     let _ = writeln!(o, "{name} Statistics, Resolution {w} x {h}");

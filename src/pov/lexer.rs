@@ -5,8 +5,8 @@ use super::source::{Diag, FileId, PResult, Span};
 
 /// The directives strahl understands; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
-    "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while",
-    "switch", "case", "range", "break", "end", "debug", "warning", "error",
+    "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while", "switch", "case",
+    "range", "break", "end", "debug", "warning", "error",
 ];
 
 #[derive(Clone, Debug, PartialEq)]
@@ -66,39 +66,22 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                 i += 1;
             }
         } else if bytes[i..].starts_with(b"/*") {
-            i = skip_block_comment(bytes, i).ok_or_else(|| {
-                Diag::new(
-                    span(start, start + 2),
-                    "block comment `/*` is never closed with `*/`",
-                )
-            })?;
-        } else if c.is_ascii_digit()
-            || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit))
-        {
-            let (value, end) =
-                lex_number(bytes, i).map_err(|m| Diag::new(span(start, i + 1), m))?;
+            i = skip_block_comment(bytes, i)
+                .ok_or_else(|| Diag::new(span(start, start + 2), "block comment `/*` is never closed with `*/`"))?;
+        } else if c.is_ascii_digit() || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)) {
+            let (value, end) = lex_number(bytes, i).map_err(|m| Diag::new(span(start, i + 1), m))?;
             i = end;
-            tokens.push(Token {
-                kind: TokenKind::Number(value),
-                span: span(start, end),
-            });
+            tokens.push(Token { kind: TokenKind::Number(value), span: span(start, end) });
         } else if c.is_ascii_alphabetic() || c == b'_' {
             while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
                 i += 1;
             }
-            tokens.push(Token {
-                kind: TokenKind::Ident(text[start..i].to_string()),
-                span: span(start, i),
-            });
+            tokens.push(Token { kind: TokenKind::Ident(text[start..i].to_string()), span: span(start, i) });
         } else if c == b'"' {
-            let (s, end) = lex_string(text, i).ok_or_else(|| {
-                Diag::new(span(start, start + 1), "string is never closed with `\"`")
-            })?;
+            let (s, end) = lex_string(text, i)
+                .ok_or_else(|| Diag::new(span(start, start + 1), "string is never closed with `\"`"))?;
             i = end;
-            tokens.push(Token {
-                kind: TokenKind::Str(s),
-                span: span(start, end),
-            });
+            tokens.push(Token { kind: TokenKind::Str(s), span: span(start, end) });
         } else if c == b'#' {
             i += 1;
             // POV-Ray allows blanks between `#` and the directive name.
@@ -111,10 +94,7 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             }
             let name = &text[name_start..i];
             if name.is_empty() {
-                return Err(Diag::new(
-                    span(start, start + 1),
-                    "expected a directive name after `#`",
-                ));
+                return Err(Diag::new(span(start, start + 1), "expected a directive name after `#`"));
             }
             if !DIRECTIVES.contains(&name) {
                 return Err(Diag::new(
@@ -126,34 +106,19 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                     ),
                 ));
             }
-            tokens.push(Token {
-                kind: TokenKind::Directive(name.to_string()),
-                span: span(start, i),
-            });
+            tokens.push(Token { kind: TokenKind::Directive(name.to_string()), span: span(start, i) });
         } else if let Some(op) = OPS2.iter().find(|op| bytes[i..].starts_with(op.as_bytes())) {
             i += 2;
-            tokens.push(Token {
-                kind: TokenKind::Op2(op),
-                span: span(start, i),
-            });
+            tokens.push(Token { kind: TokenKind::Op2(op), span: span(start, i) });
         } else if c.is_ascii() && PUNCT.contains(c as char) {
             i += 1;
-            tokens.push(Token {
-                kind: TokenKind::Punct(c as char),
-                span: span(start, i),
-            });
+            tokens.push(Token { kind: TokenKind::Punct(c as char), span: span(start, i) });
         } else {
             let ch = text[i..].chars().next().unwrap_or('?');
-            return Err(Diag::new(
-                span(start, start + ch.len_utf8()),
-                format!("unexpected character `{ch}`"),
-            ));
+            return Err(Diag::new(span(start, start + ch.len_utf8()), format!("unexpected character `{ch}`")));
         }
     }
-    tokens.push(Token {
-        kind: TokenKind::Eof,
-        span: span(bytes.len(), bytes.len()),
-    });
+    tokens.push(Token { kind: TokenKind::Eof, span: span(bytes.len(), bytes.len()) });
     Ok(tokens)
 }
 
@@ -262,11 +227,7 @@ mod tests {
     fn comments_nest_and_vanish() {
         assert_eq!(
             kinds("a // x\n /* b /* c */ d */ e"),
-            vec![
-                TokenKind::Ident("a".into()),
-                TokenKind::Ident("e".into()),
-                TokenKind::Eof
-            ]
+            vec![TokenKind::Ident("a".into()), TokenKind::Ident("e".into()), TokenKind::Eof]
         );
     }
 
@@ -281,11 +242,7 @@ mod tests {
     fn directives_and_strings() {
         assert_eq!(
             kinds("# include \"a b.inc\""),
-            vec![
-                TokenKind::Directive("include".into()),
-                TokenKind::Str("a b.inc".into()),
-                TokenKind::Eof
-            ]
+            vec![TokenKind::Directive("include".into()), TokenKind::Str("a b.inc".into()), TokenKind::Eof]
         );
     }
 
@@ -315,29 +272,16 @@ mod tests {
     #[test]
     fn unsupported_directive_is_named() {
         let e = lex(0, "\n #macro Foo()").unwrap_err();
-        assert!(
-            e.message.starts_with("`#macro` is not supported"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.starts_with("`#macro` is not supported"), "{}", e.message);
         assert_eq!(e.span.start, 2);
     }
 
     #[test]
     fn overflow_unclosed_and_stray_bytes_are_errors() {
-        assert_eq!(
-            lex(0, "1e999").unwrap_err().message,
-            "number overflows to infinity"
-        );
+        assert_eq!(lex(0, "1e999").unwrap_err().message, "number overflows to infinity");
         assert!(lex(0, "/* x").unwrap_err().message.contains("never closed"));
-        assert!(lex(0, "\"abc")
-            .unwrap_err()
-            .message
-            .contains("never closed"));
-        assert_eq!(
-            lex(0, "a @").unwrap_err().message,
-            "unexpected character `@`"
-        );
+        assert!(lex(0, "\"abc").unwrap_err().message.contains("never closed"));
+        assert_eq!(lex(0, "a @").unwrap_err().message, "unexpected character `@`");
         assert!(lex(0, "1e+").is_err());
     }
 }

@@ -36,10 +36,7 @@ pub struct ParseOptions {
 impl Default for ParseOptions {
     /// POV-Ray's default image size, 640×480.
     fn default() -> Self {
-        ParseOptions {
-            image_width: 640,
-            image_height: 480,
-        }
+        ParseOptions { image_width: 640, image_height: 480 }
     }
 }
 
@@ -73,12 +70,7 @@ pub fn load_scene_with_options_and_warnings(
     include: &IncludePath,
     options: &ParseOptions,
 ) -> Result<(SceneDesc, Vec<LocatedError>), LocatedError> {
-    let mut loader = Loader {
-        map: SourceMap::default(),
-        include,
-        stack: Vec::new(),
-        options: options.clone(),
-    };
+    let mut loader = Loader { map: SourceMap::default(), include, stack: Vec::new(), options: options.clone() };
     let result = loader.load_main(path);
     result.map_err(|d| loader.map.locate(&d))
 }
@@ -107,27 +99,18 @@ impl Loader<'_> {
         let bytes = std::fs::read(path);
         let (text, problem) = match bytes {
             Err(e) => (String::new(), Some((0, format!("cannot read file: {e}")))),
-            Ok(b) if b.len() >= u32::MAX as usize => {
-                (String::new(), Some((0, "file is too large".to_string())))
-            }
+            Ok(b) if b.len() >= u32::MAX as usize => (String::new(), Some((0, "file is too large".to_string()))),
             Ok(b) => match String::from_utf8(b) {
                 Ok(t) => (t, None),
                 Err(e) => {
                     let at = e.utf8_error().valid_up_to();
                     let bad = e.as_bytes()[at];
                     let prefix = String::from_utf8_lossy(&e.as_bytes()[..at]).into_owned();
-                    (
-                        prefix,
-                        Some((at, format!("file is not valid UTF-8 (byte 0x{bad:02x})"))),
-                    )
+                    (prefix, Some((at, format!("file is not valid UTF-8 (byte 0x{bad:02x})"))))
                 }
             },
         };
-        let id = self.map.add(SourceFile {
-            display,
-            path: path.to_path_buf(),
-            text,
-        });
+        let id = self.map.add(SourceFile { display, path: path.to_path_buf(), text });
         if let Some((at, message)) = problem {
             return Err(Diag::new(Span::new(id, at, at), message));
         }
@@ -138,36 +121,16 @@ impl Loader<'_> {
 
     /// The including file's folder first, then the include path in order.
     fn resolve(&self, name: &str) -> Option<PathBuf> {
-        let including = self
-            .stack
-            .last()
-            .and_then(|(_, id)| self.map.file(*id))
-            .map(|f| f.path.clone());
-        let here = including
-            .as_deref()
-            .and_then(Path::parent)
-            .map(Path::to_path_buf);
-        here.into_iter()
-            .chain(self.include.dirs.iter().cloned())
-            .map(|d| d.join(name))
-            .find(|p| p.is_file())
+        let including = self.stack.last().and_then(|(_, id)| self.map.file(*id)).map(|f| f.path.clone());
+        let here = including.as_deref().and_then(Path::parent).map(Path::to_path_buf);
+        here.into_iter().chain(self.include.dirs.iter().cloned()).map(|d| d.join(name)).find(|p| p.is_file())
     }
 }
 
 impl lower::Files for Loader<'_> {
-    fn enter_include(
-        &mut self,
-        name: &str,
-        directive: Span,
-        path_span: Span,
-    ) -> PResult<(FileId, Vec<Stmt>)> {
+    fn enter_include(&mut self, name: &str, directive: Span, path_span: Span) -> PResult<(FileId, Vec<Stmt>)> {
         let Some(found) = self.resolve(name) else {
-            let searched: Vec<String> = self
-                .include
-                .dirs
-                .iter()
-                .map(|d| d.display().to_string())
-                .collect();
+            let searched: Vec<String> = self.include.dirs.iter().map(|d| d.display().to_string()).collect();
             return Err(Diag::new(
                 path_span,
                 format!(
@@ -179,21 +142,12 @@ impl lower::Files for Loader<'_> {
         };
         let key = canonical(&found);
         if let Some(pos) = self.stack.iter().position(|(p, _)| *p == key) {
-            let mut chain: Vec<String> = self.stack[pos..]
-                .iter()
-                .map(|(p, _)| short_name(p))
-                .collect();
+            let mut chain: Vec<String> = self.stack[pos..].iter().map(|(p, _)| short_name(p)).collect();
             chain.push(short_name(&key));
-            return Err(Diag::new(
-                directive,
-                format!("include cycle: {}", chain.join(" → ")),
-            ));
+            return Err(Diag::new(directive, format!("include cycle: {}", chain.join(" → "))));
         }
         if self.stack.len() > MAX_INCLUDE_DEPTH {
-            return Err(Diag::new(
-                directive,
-                format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels"),
-            ));
+            return Err(Diag::new(directive, format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels")));
         }
         let (id, stmts) = self.read_and_parse(&found, found.display().to_string())?;
         self.stack.push((key, id));
@@ -206,11 +160,7 @@ impl lower::Files for Loader<'_> {
 
     fn source_ref(&self, span: Span) -> SourceRef {
         let (line, col) = self.map.line_col(span);
-        let file = self
-            .map
-            .file(span.file)
-            .map(|f| f.display.clone())
-            .unwrap_or_default();
+        let file = self.map.file(span.file).map(|f| f.display.clone()).unwrap_or_default();
         SourceRef { file, line, col }
     }
 }
@@ -220,8 +170,5 @@ fn canonical(p: &Path) -> PathBuf {
 }
 
 fn short_name(p: &Path) -> String {
-    p.file_name().map_or_else(
-        || p.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    )
+    p.file_name().map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into_owned())
 }

@@ -19,20 +19,12 @@ pub struct Span {
 impl Span {
     pub fn new(file: FileId, start: usize, end: usize) -> Span {
         // Files over 4 GiB are rejected when read, so offsets always fit.
-        Span {
-            file,
-            start: start as u32,
-            end: end as u32,
-        }
+        Span { file, start: start as u32, end: end as u32 }
     }
 
     /// The span covering both `self` and `other` (same file).
     pub fn to(self, other: Span) -> Span {
-        Span {
-            file: self.file,
-            start: self.start.min(other.start),
-            end: self.end.max(other.end),
-        }
+        Span { file: self.file, start: self.start.min(other.start), end: self.end.max(other.end) }
     }
 }
 
@@ -46,10 +38,7 @@ pub struct Diag {
 
 impl Diag {
     pub fn new(span: Span, message: impl Into<String>) -> Diag {
-        Diag {
-            span,
-            message: message.into(),
-        }
+        Diag { span, message: message.into() }
     }
 }
 
@@ -89,12 +78,7 @@ impl SourceMap {
 
     pub fn locate(&self, diag: &Diag) -> LocatedError {
         match self.file(diag.span.file) {
-            Some(f) => LocatedError::at_offset(
-                &f.display,
-                &f.text,
-                diag.span.start as usize,
-                &diag.message,
-            ),
+            Some(f) => LocatedError::at_offset(&f.display, &f.text, diag.span.start as usize, &diag.message),
             None => LocatedError::whole_file("<unknown>", &diag.message),
         }
     }

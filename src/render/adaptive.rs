@@ -44,16 +44,8 @@ impl ScaleController {
     /// A controller aiming at `target_fps` frames per second, starting at half resolution (a
     /// guess that the first frame corrects either way).
     pub fn new(target_fps: f64) -> ScaleController {
-        let fps = if target_fps.is_finite() && target_fps > 0.0 {
-            target_fps
-        } else {
-            60.0
-        };
-        ScaleController {
-            target: 1.0 / fps,
-            scale: 0.5,
-            cost: None,
-        }
+        let fps = if target_fps.is_finite() && target_fps > 0.0 { target_fps } else { 60.0 };
+        ScaleController { target: 1.0 / fps, scale: 0.5, cost: None }
     }
 
     /// The scale to render the next moving frame at.
@@ -77,9 +69,7 @@ impl ScaleController {
             _ => sample,
         };
         self.cost = Some(cost);
-        let ideal = (HEADROOM * self.target / cost)
-            .sqrt()
-            .clamp(MIN_SCALE, MAX_SCALE);
+        let ideal = (HEADROOM * self.target / cost).sqrt().clamp(MIN_SCALE, MAX_SCALE);
         if ideal < self.scale * DOWN_BAND {
             self.scale = ideal.max(self.scale * MAX_DOWN);
         } else if ideal > self.scale * UP_BAND || (ideal == MAX_SCALE && self.scale < MAX_SCALE) {
@@ -119,16 +109,9 @@ mod tests {
             history.push(c.scale());
         }
         let settled = history[20];
-        assert!(
-            history[20..].iter().all(|&s| s == settled),
-            "keeps moving: {:?}",
-            &history[..40]
-        );
+        assert!(history[20..].iter().all(|&s| s == settled), "keeps moving: {:?}", &history[..40]);
         let t = frame_time(0.040, settled);
-        assert!(
-            t <= c.target() * 1.1 && t >= c.target() * 0.6,
-            "frame time {t} at scale {settled}"
-        );
+        assert!(t <= c.target() * 1.1 && t >= c.target() * 0.6, "frame time {t} at scale {settled}");
     }
 
     #[test]
@@ -193,10 +176,7 @@ mod tests {
             }
             prev = c.scale();
         }
-        assert!(
-            changes <= 10,
-            "{changes} direction changes in 1000 noisy frames"
-        );
+        assert!(changes <= 10, "{changes} direction changes in 1000 noisy frames");
         let t = frame_time(0.040, c.scale());
         assert!(t <= c.target() * 1.2, "settled at {} ({t} s)", c.scale());
     }

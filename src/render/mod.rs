@@ -61,7 +61,15 @@ pub struct RenderSettings {
 
 impl Default for RenderSettings {
     fn default() -> Self {
-        RenderSettings { width: 640, height: 480, aa: 1, quality: Quality::default(), tile: 16, packets: true, subsample: None }
+        RenderSettings {
+            width: 640,
+            height: 480,
+            aa: 1,
+            quality: Quality::default(),
+            tile: 16,
+            packets: true,
+            subsample: None,
+        }
     }
 }
 
@@ -124,7 +132,8 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
             if use_packets {
                 for by in (y0..y1).step_by(packet::BLOCK as usize) {
                     for bx in (x0..x1).step_by(packet::BLOCK as usize) {
-                        let block = Block { x: bx, y: by, w: (x1 - bx).min(packet::BLOCK), h: (y1 - by).min(packet::BLOCK) };
+                        let block =
+                            Block { x: bx, y: by, w: (x1 - bx).min(packet::BLOCK), h: (y1 - by).min(packet::BLOCK) };
                         render_block(&mut tracer, &gen, &block, w, h, aa, samples, out);
                     }
                 }
@@ -177,7 +186,16 @@ impl Samples {
 /// The packet twin of `render_pixel` for a block: the same rays, the same per-sample clipping
 /// and the same order of additions, so both give the same bits.
 #[allow(clippy::too_many_arguments)]
-fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, w: u32, h: u32, aa: u32, samples: Samples, out: SharedPixels) {
+fn render_block(
+    tracer: &mut Tracer,
+    gen: &RayGen,
+    b: &Block,
+    w: u32,
+    h: u32,
+    aa: u32,
+    samples: Samples,
+    out: SharedPixels,
+) {
     let mut sums = [[Vec3::ZERO; 8]; 8];
     samples.each(aa, |sx, sy| {
         let rays: [[Ray; 8]; 8] = std::array::from_fn(|r| {

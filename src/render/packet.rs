@@ -38,7 +38,8 @@ pub fn supported(scene: &Scene) -> bool {
 /// per row) and returns their colours, exactly as `Tracer::trace` would for each ray.
 pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
     let scene = tracer.scene;
-    let rows8: [Ray8; 8] = std::array::from_fn(|r| Ray8::from_fn(|i| (rays[r][i].origin, rays[r][i].dir, rays[r][i].inv_dir)));
+    let rows8: [Ray8; 8] =
+        std::array::from_fn(|r| Ray8::from_fn(|i| (rays[r][i].origin, rays[r][i].dir, rays[r][i].inv_dir)));
     let mut t = [F8::splat(lanes::MISS); 8];
     let mut ids = [[NO_HIT; 8]; 8];
     let frustum = Frustum::new(rays[0][0].origin, &rows8[..rows]);
@@ -100,7 +101,14 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
         if !any {
             continue;
         }
-        let blocked = occluded_rows(scene, &shadow_rows[..rows], &mut t_max[..rows], &active[..rows], light.position, &mut tracer.stats);
+        let blocked = occluded_rows(
+            scene,
+            &shadow_rows[..rows],
+            &mut t_max[..rows],
+            &active[..rows],
+            light.position,
+            &mut tracer.stats,
+        );
         for r in 0..rows {
             for i in 0..lanes {
                 if blocked[r].lane(i) {
@@ -114,7 +122,9 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
         for i in 0..lanes {
             colors[r][i] = match &surfaces[r][i] {
                 None => scene.background.rgb,
-                Some(s) => tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Given(&lit[r][i][..scene.lights.len()])),
+                Some(s) => {
+                    tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Given(&lit[r][i][..scene.lights.len()]))
+                }
             };
         }
     }
@@ -132,7 +142,14 @@ fn has_avx2() -> bool {
 }
 
 /// Nearest hits of up to eight rows of rays: planes, then the BVH.
-fn intersect_rows(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+fn intersect_rows(
+    scene: &Scene,
+    rows: &[Ray8],
+    t: &mut [F8],
+    ids: &mut [[u32; 8]],
+    frustum: Option<&Frustum>,
+    stats: &mut RenderStats,
+) {
     #[cfg(target_arch = "x86_64")]
     if has_avx2() {
         // SAFETY: the CPU supports AVX2, checked just above.
@@ -143,7 +160,14 @@ fn intersect_rows(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn intersect_rows_avx2(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+unsafe fn intersect_rows_avx2(
+    scene: &Scene,
+    rows: &[Ray8],
+    t: &mut [F8],
+    ids: &mut [[u32; 8]],
+    frustum: Option<&Frustum>,
+    stats: &mut RenderStats,
+) {
     intersect_rows_generic(scene, rows, t, ids, frustum, stats)
 }
 
@@ -163,10 +187,18 @@ fn take_nearer(t: &mut F8, ids: &mut [u32; 8], t_new: F8, id: u32) -> u32 {
 }
 
 #[inline(always)]
-fn intersect_rows_generic(scene: &Scene, rows: &[Ray8], t: &mut [F8], ids: &mut [[u32; 8]], frustum: Option<&Frustum>, stats: &mut RenderStats) {
+fn intersect_rows_generic(
+    scene: &Scene,
+    rows: &[Ray8],
+    t: &mut [F8],
+    ids: &mut [[u32; 8]],
+    frustum: Option<&Frustum>,
+    stats: &mut RenderStats,
+) {
     for (p, plane) in scene.planes.iter().enumerate() {
         for (r, ray) in rows.iter().enumerate() {
-            let tp = lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t[r]);
+            let tp =
+                lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t[r]);
             let hits = take_nearer(&mut t[r], &mut ids[r], tp, PLANE_ID + p as u32);
             stats.tests[ShapeKind::Plane as usize] += 8;
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
@@ -277,7 +309,14 @@ fn prim_row(scene: &Scene, prim: u32, ray: &Ray8, t_max: F8) -> F8 {
 }
 
 /// Which lanes of each row are blocked before their `t_max` (`IntersectP` for packets).
-fn occluded_rows(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
+fn occluded_rows(
+    scene: &Scene,
+    rows: &[Ray8],
+    t_max: &mut [F8],
+    active: &[M8],
+    light: Vec3,
+    stats: &mut RenderStats,
+) -> [M8; 8] {
     #[cfg(target_arch = "x86_64")]
     if has_avx2() {
         // SAFETY: the CPU supports AVX2, checked just above.
@@ -288,12 +327,26 @@ fn occluded_rows(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], 
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn occluded_rows_avx2(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
+unsafe fn occluded_rows_avx2(
+    scene: &Scene,
+    rows: &[Ray8],
+    t_max: &mut [F8],
+    active: &[M8],
+    light: Vec3,
+    stats: &mut RenderStats,
+) -> [M8; 8] {
     occluded_rows_generic(scene, rows, t_max, active, light, stats)
 }
 
 #[inline(always)]
-fn occluded_rows_generic(scene: &Scene, rows: &[Ray8], t_max: &mut [F8], active: &[M8], light: Vec3, stats: &mut RenderStats) -> [M8; 8] {
+fn occluded_rows_generic(
+    scene: &Scene,
+    rows: &[Ray8],
+    t_max: &mut [F8],
+    active: &[M8],
+    light: Vec3,
+    stats: &mut RenderStats,
+) -> [M8; 8] {
     let mut test = BlockedRows { scene, rows, active, blocked: [M8::default(); 8], stats: RenderStats::default() };
     // Planes by side, as `Scene::occluded_towards`: blocked when the ray's origin and the light
     // lie strictly on opposite sides.

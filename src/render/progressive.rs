@@ -28,8 +28,7 @@ impl Accumulator {
         self.aa = aa.max(1);
         self.passes = 0;
         self.sum.clear();
-        self.sum
-            .resize(width as usize * height as usize, Vec3::ZERO);
+        self.sum.resize(width as usize * height as usize, Vec3::ZERO);
     }
 
     /// Passes added so far.
@@ -85,12 +84,7 @@ mod tests {
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
         let camera = Camera::from_desc(&desc.camera);
         for aa in [1, 2, 3] {
-            let settings = RenderSettings {
-                width: 48,
-                height: 36,
-                aa,
-                ..RenderSettings::default()
-            };
+            let settings = RenderSettings { width: 48, height: 36, aa, ..RenderSettings::default() };
             let mut full = Image::default();
             render(&scene, &camera, &settings, &mut full);
 
@@ -98,15 +92,7 @@ mod tests {
             acc.reset(48, 36, aa);
             let mut pass = Image::default();
             while let Some(sub) = acc.next_subsample() {
-                render(
-                    &scene,
-                    &camera,
-                    &RenderSettings {
-                        subsample: Some(sub),
-                        ..settings
-                    },
-                    &mut pass,
-                );
+                render(&scene, &camera, &RenderSettings { subsample: Some(sub), ..settings }, &mut pass);
                 acc.add(&pass);
             }
             assert_eq!(acc.passes(), aa * aa);
@@ -122,17 +108,9 @@ mod tests {
         let mut acc = Accumulator::default();
         acc.reset(1, 1, 2);
         assert_eq!(acc.next_subsample(), Some((0, 0)));
-        acc.add(&Image {
-            width: 1,
-            height: 1,
-            pixels: vec![Vec3::ONE],
-        });
+        acc.add(&Image { width: 1, height: 1, pixels: vec![Vec3::ONE] });
         assert_eq!(acc.next_subsample(), Some((1, 0)));
-        acc.add(&Image {
-            width: 1,
-            height: 1,
-            pixels: vec![Vec3::ZERO],
-        });
+        acc.add(&Image { width: 1, height: 1, pixels: vec![Vec3::ZERO] });
         assert_eq!(acc.next_subsample(), Some((0, 1)));
         let mut out = Image::default();
         acc.resolve(&mut out);

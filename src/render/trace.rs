@@ -14,8 +14,8 @@ use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::build::Scene;
 use crate::scene::material::Material;
-use crate::shading::pattern::Rgbft;
 use crate::shading::normal::perturb_normal;
+use crate::shading::pattern::Rgbft;
 use crate::shading::pigment::{eval_pigment, PatternQuality};
 
 /// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
@@ -165,7 +165,17 @@ impl<'a> Tracer<'a> {
     /// The colour arriving through a transparent surface: Snell's law with the chapter's
     /// formula; under total internal reflection the ray reflects instead, as in POV-Ray.
     #[allow(clippy::too_many_arguments)]
-    fn refract(&mut self, ray: &Ray, p: Vec3, facing: Vec3, normal: Vec3, entering: bool, ior: f32, level: u32, weight: f32) -> Vec3 {
+    fn refract(
+        &mut self,
+        ray: &Ray,
+        p: Vec3,
+        facing: Vec3,
+        normal: Vec3,
+        entering: bool,
+        ior: f32,
+        level: u32,
+        weight: f32,
+    ) -> Vec3 {
         // n = n1/n2 across the surface; rays leave an object into air (ior 1).
         let eta = if entering { 1.0 / ior } else { ior };
         let cos_i = -ray.dir.dot(normal);

@@ -139,7 +139,12 @@ fn uniform_scale(m: &DMat4) -> Option<f64> {
 
 /// Whether `m`'s linear part is diagonal (an axis-aligned box stays axis-aligned).
 fn is_axis_aligned(m: &DMat4) -> bool {
-    m.x_axis.y == 0.0 && m.x_axis.z == 0.0 && m.y_axis.x == 0.0 && m.y_axis.z == 0.0 && m.z_axis.x == 0.0 && m.z_axis.y == 0.0
+    m.x_axis.y == 0.0
+        && m.x_axis.z == 0.0
+        && m.y_axis.x == 0.0
+        && m.y_axis.z == 0.0
+        && m.z_axis.x == 0.0
+        && m.z_axis.y == 0.0
 }
 
 impl Scene {
@@ -160,7 +165,11 @@ impl Scene {
             lights: desc
                 .lights
                 .iter()
-                .map(|l| Light { position: (l.position - origin).as_vec3(), color: l.color.as_vec3(), shadowless: l.shadowless })
+                .map(|l| Light {
+                    position: (l.position - origin).as_vec3(),
+                    color: l.color.as_vec3(),
+                    shadowless: l.shadowless,
+                })
                 .collect(),
             background: Rgbft::from_desc(&desc.background),
             ambient_light: desc.global.ambient_light.as_vec3(),
@@ -208,7 +217,11 @@ impl Scene {
                     let b = world(hi);
                     Cuboid { min: a.min(b).as_vec3(), max: a.max(b).as_vec3(), frame: None }
                 } else {
-                    Cuboid { min: lo.as_vec3(), max: hi.as_vec3(), frame: Some(frame_for(render_from_object(t, self.origin))) }
+                    Cuboid {
+                        min: lo.as_vec3(),
+                        max: hi.as_vec3(),
+                        frame: Some(frame_for(render_from_object(t, self.origin))),
+                    }
                 };
                 self.boxes.push(cuboid);
                 push(ShapeKind::Box, self.boxes.len() - 1, &mut self.prims);

@@ -145,11 +145,7 @@ pub struct PigmentDesc {
 impl Default for PigmentDesc {
     /// POV-Ray's default pigment is black.
     fn default() -> Self {
-        PigmentDesc {
-            pattern: PigmentPattern::Solid(Color::BLACK),
-            turbulence: None,
-            transform: Transform::default(),
-        }
+        PigmentDesc { pattern: PigmentPattern::Solid(Color::BLACK), turbulence: None, transform: Transform::default() }
     }
 }
 
@@ -216,13 +212,28 @@ impl Default for InteriorDesc {
 /// A shape in its own object space, as written.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShapeDesc {
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
     /// Points `p` with `normal · p = distance` (normal as written, not normalised).
-    Plane { normal: DVec3, distance: f64 },
-    Box { corner1: DVec3, corner2: DVec3 },
-    Triangle { a: DVec3, b: DVec3, c: DVec3 },
+    Plane {
+        normal: DVec3,
+        distance: f64,
+    },
+    Box {
+        corner1: DVec3,
+        corner2: DVec3,
+    },
+    Triangle {
+        a: DVec3,
+        b: DVec3,
+        c: DVec3,
+    },
     /// A closed, planar outline (first point repeated at the end is allowed and removed).
-    Polygon { points: Vec<DVec3> },
+    Polygon {
+        points: Vec<DVec3>,
+    },
 }
 
 impl ShapeDesc {

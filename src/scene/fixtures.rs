@@ -8,45 +8,24 @@ use glam::{DMat4, DVec3};
 
 use crate::camera::Camera;
 use crate::scene::desc::{
-    CameraDesc, Color, FinishDesc, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc,
-    ShapeDesc, SourceRef, TextureDesc, Transform,
+    CameraDesc, Color, FinishDesc, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc, SourceRef,
+    TextureDesc, Transform,
 };
 
 /// The seed scene's camera: location <3,3,-1>, look_at <0,1,2>, POV-Ray's default lens.
 pub fn seed_camera() -> Camera {
     let base = Camera::from_desc(&CameraDesc::default());
-    Camera::looking_at(
-        DVec3::new(3.0, 3.0, -1.0),
-        DVec3::new(0.0, 1.0, 2.0),
-        None,
-        &base,
-    )
+    Camera::looking_at(DVec3::new(3.0, 3.0, -1.0), DVec3::new(0.0, 1.0, 2.0), None, &base)
 }
 
-fn object(
-    shape: ShapeDesc,
-    pattern: PigmentPattern,
-    finish: FinishDesc,
-    transform: Transform,
-) -> ObjectDesc {
+fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transform: Transform) -> ObjectDesc {
     ObjectDesc {
         shape,
         transform,
-        texture: TextureDesc {
-            pigment: PigmentDesc {
-                pattern,
-                ..PigmentDesc::default()
-            },
-            normal: None,
-            finish,
-        },
+        texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
         interior: Default::default(),
         no_shadow: false,
-        source: SourceRef {
-            file: "fixtures::seed_scene".into(),
-            line: 0,
-            col: 0,
-        },
+        source: SourceRef { file: "fixtures::seed_scene".into(), line: 0, col: 0 },
     }
 }
 
@@ -55,10 +34,7 @@ fn object(
 pub fn seed_scene() -> SceneDesc {
     let cam = seed_camera();
     let rotate = DMat4::from_rotation_y((-20f64).to_radians());
-    let box_transform = Transform {
-        matrix: rotate,
-        inverse: rotate.inverse(),
-    };
+    let box_transform = Transform { matrix: rotate, inverse: rotate.inverse() };
     SceneDesc {
         camera: CameraDesc {
             location: cam.location,
@@ -68,45 +44,25 @@ pub fn seed_scene() -> SceneDesc {
             look_at: Some(DVec3::new(0.0, 1.0, 2.0)),
             ..CameraDesc::default()
         },
-        lights: [
-            DVec3::new(0.0, 4.0, -3.0),
-            DVec3::new(0.0, 6.0, -4.0),
-            DVec3::new(6.0, 4.0, -3.0),
-        ]
-        .into_iter()
-        .map(|position| LightDesc {
-            position,
-            color: DVec3::ONE,
-            shadowless: false,
-        })
-        .collect(),
+        lights: [DVec3::new(0.0, 4.0, -3.0), DVec3::new(0.0, 6.0, -4.0), DVec3::new(6.0, 4.0, -3.0)]
+            .into_iter()
+            .map(|position| LightDesc { position, color: DVec3::ONE, shadowless: false })
+            .collect(),
         objects: vec![
             object(
-                ShapeDesc::Plane {
-                    normal: DVec3::Y,
-                    distance: 0.0,
-                },
+                ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
                 PigmentPattern::Checker(Color::WHITE, Color::BLACK),
                 FinishDesc::default(),
                 Transform::default(),
             ),
             object(
-                ShapeDesc::Sphere {
-                    center: DVec3::new(0.0, 2.0, 4.0),
-                    radius: 2.0,
-                },
+                ShapeDesc::Sphere { center: DVec3::new(0.0, 2.0, 4.0), radius: 2.0 },
                 PigmentPattern::Solid(Color::rgb(1.0, 0.5, 0.0)),
-                FinishDesc {
-                    phong: 1.0,
-                    ..FinishDesc::default()
-                },
+                FinishDesc { phong: 1.0, ..FinishDesc::default() },
                 Transform::default(),
             ),
             object(
-                ShapeDesc::Box {
-                    corner1: DVec3::new(-1.0, 0.0, -0.5),
-                    corner2: DVec3::new(1.0, 2.0, 1.5),
-                },
+                ShapeDesc::Box { corner1: DVec3::new(-1.0, 0.0, -0.5), corner2: DVec3::new(1.0, 2.0, 1.5) },
                 // colors.inc's Tan.
                 PigmentPattern::Solid(Color::rgb(0.858824, 0.576471, 0.439216)),
                 FinishDesc::default(),

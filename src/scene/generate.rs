@@ -164,7 +164,11 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
         },
         lights: vec![
             LightDesc { position: qv(DVec3::new(-lx, ly, -1.5 * lx)), color: DVec3::splat(0.8), shadowless: false },
-            LightDesc { position: qv(DVec3::new(lx, 0.7 * ly, -0.5 * lx)), color: DVec3::splat(0.5), shadowless: false },
+            LightDesc {
+                position: qv(DVec3::new(lx, 0.7 * ly, -0.5 * lx)),
+                color: DVec3::splat(0.5),
+                shadowless: false,
+            },
         ],
         background: Color::rgb(0.55, 0.65, 0.85),
         global: GlobalSettings { assumed_gamma: Some(1.0), ..GlobalSettings::default() },

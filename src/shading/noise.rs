@@ -32,12 +32,7 @@ pub struct TurbulenceF32 {
 
 impl TurbulenceF32 {
     pub fn from_desc(t: &crate::scene::desc::Turbulence) -> TurbulenceF32 {
-        TurbulenceF32 {
-            amount: t.amount.as_vec3(),
-            octaves: t.octaves,
-            omega: t.omega as f32,
-            lambda: t.lambda as f32,
-        }
+        TurbulenceF32 { amount: t.amount.as_vec3(), octaves: t.octaves, omega: t.omega as f32, lambda: t.lambda as f32 }
     }
 }
 
@@ -119,11 +114,8 @@ const fn build_grad3() -> [Mat3A; 256] {
         let g1 = GRADIENTS[((h >> 8) & 15) as usize];
         let g2 = GRADIENTS[((h >> 16) & 15) as usize];
         // Columns hold the x, y, z parts of the three gradients, so M * d = (g0·d, g1·d, g2·d).
-        t[i] = Mat3A::from_cols(
-            Vec3A::new(g0.x, g1.x, g2.x),
-            Vec3A::new(g0.y, g1.y, g2.y),
-            Vec3A::new(g0.z, g1.z, g2.z),
-        );
+        t[i] =
+            Mat3A::from_cols(Vec3A::new(g0.x, g1.x, g2.x), Vec3A::new(g0.y, g1.y, g2.y), Vec3A::new(g0.z, g1.z, g2.z));
         i += 1;
     }
     t
@@ -153,16 +145,7 @@ fn cell(p: Vec3) -> Cell {
     let b = PERM[x + 1] as usize + y;
     let (aa, ab) = (PERM[a] as usize + z, PERM[a + 1] as usize + z);
     let (ba, bb) = (PERM[b] as usize + z, PERM[b + 1] as usize + z);
-    let hash = [
-        PERM[aa],
-        PERM[ba],
-        PERM[ab],
-        PERM[bb],
-        PERM[aa + 1],
-        PERM[ba + 1],
-        PERM[ab + 1],
-        PERM[bb + 1],
-    ];
+    let hash = [PERM[aa], PERM[ba], PERM[ab], PERM[bb], PERM[aa + 1], PERM[ba + 1], PERM[ab + 1], PERM[bb + 1]];
     let weight = frac * frac * (Vec3::splat(3.0) - 2.0 * frac);
     Cell { hash, frac, weight }
 }

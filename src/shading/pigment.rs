@@ -43,11 +43,16 @@ fn wood_cycloidal(p: Vec3, t: &TurbulenceF32, max_octaves: Option<u32>) -> Vec3 
 fn sin_turns(x: f32) -> f32 {
     // y in [-0.5, 0.5] turns, then fold to [-0.25, 0.25] where the polynomial is accurate.
     let y = x - x.round();
-    let y = if y > 0.25 { 0.5 - y } else if y < -0.25 { -0.5 - y } else { y };
+    let y = if y > 0.25 {
+        0.5 - y
+    } else if y < -0.25 {
+        -0.5 - y
+    } else {
+        y
+    };
     let z = y * y;
     // Taylor coefficients of sin(2πy) up to y^11: (2π)^k / k!, alternating.
-    let p = 6.283_185_5
-        + z * (-41.341_7 + z * (81.605_25 + z * (-76.705_86 + z * (42.058_69 + z * -15.094_64))));
+    let p = 6.283_185_5 + z * (-41.341_7 + z * (81.605_25 + z * (-76.705_86 + z * (42.058_69 + z * -15.094_64))));
     y * p
 }
 
@@ -70,9 +75,7 @@ impl Pigment {
     pub fn from_desc(d: &PigmentDesc, render_origin: DVec3) -> Pigment {
         let pattern = match &d.pattern {
             PigmentPattern::Solid(c) => PigmentPattern32::Solid(Rgbft::from_desc(c)),
-            PigmentPattern::Checker(a, b) => {
-                PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)])
-            }
+            PigmentPattern::Checker(a, b) => PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)]),
             PigmentPattern::Wood(map) => PigmentPattern32::Wood(ColorMap::from_desc(map)),
         };
         Pigment {

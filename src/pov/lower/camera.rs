@@ -24,10 +24,7 @@ impl Lowerer<'_> {
                 CameraItem::Angle(e) => {
                     let a = self.float(e)?;
                     if !(a > 0.0 && a < 180.0) {
-                        return Err(Diag::new(
-                            e.span,
-                            "camera angle must be between 0 and 180 degrees",
-                        ));
+                        return Err(Diag::new(e.span, "camera angle must be between 0 and 180 degrees"));
                     }
                     angle = Some(a);
                 }
@@ -35,16 +32,9 @@ impl Lowerer<'_> {
                 CameraItem::Transform(t) => transforms.push(self.transform(t)?),
             }
         }
-        for (v, name) in [
-            (cam.direction, "direction"),
-            (cam.right, "right"),
-            (cam.up, "up"),
-        ] {
+        for (v, name) in [(cam.direction, "direction"), (cam.right, "right"), (cam.up, "up")] {
             if v.length() == 0.0 {
-                return Err(Diag::new(
-                    span,
-                    format!("camera {name} vector has zero length"),
-                ));
+                return Err(Diag::new(span, format!("camera {name} vector has zero length")));
             }
         }
         if let Some(a) = angle {
@@ -56,10 +46,7 @@ impl Lowerer<'_> {
         if let Some((target, target_span)) = look_at {
             let to = target - cam.location;
             if to.length() == 0.0 {
-                return Err(Diag::new(
-                    target_span,
-                    "camera look_at is the same point as its location",
-                ));
+                return Err(Diag::new(target_span, "camera look_at is the same point as its location"));
             }
             let direction = to.normalize() * cam.direction.length();
             let mut right = cam.sky.cross(direction);

@@ -36,9 +36,7 @@ impl Lowerer<'_> {
             }
             ExprKind::Member(inner, index) => self.member(inner, *index),
             ExprKind::Builtin(b) => Ok(Value::Float(self.builtin(*b))),
-            ExprKind::Binary(op, a, b) => {
-                binary(*op, &self.eval(a)?, &self.eval(b)?, a.span, b.span)
-            }
+            ExprKind::Binary(op, a, b) => binary(*op, &self.eval(a)?, &self.eval(b)?, a.span, b.span),
             ExprKind::Call(name, args) => self.call(name, args, e),
             ExprKind::Color(items) => {
                 let mut c = Color::BLACK;
@@ -49,34 +47,18 @@ impl Lowerer<'_> {
                     let comps = |n: usize| -> PResult<Vec<f64>> {
                         match &v {
                             Value::Float(f) => Ok(vec![*f; n]),
-                            Value::Vector(c) => {
-                                Ok((0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect())
-                            }
-                            Value::Color(c) => {
-                                Ok([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit][..n].to_vec())
-                            }
-                            other => Err(Diag::new(
-                                span,
-                                format!("expected a color, found {}", other.kind_name()),
-                            )),
+                            Value::Vector(c) => Ok((0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect()),
+                            Value::Color(c) => Ok([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit][..n].to_vec()),
+                            other => Err(Diag::new(span, format!("expected a color, found {}", other.kind_name()))),
                         }
                     };
                     match item.key {
                         ColorKey::Base => c = v.as_color(span)?,
                         ColorKey::Rgb => c.rgb = color_from(&comps(3)?).rgb,
-                        ColorKey::Rgbf => {
-                            c = Color {
-                                transmit: c.transmit,
-                                ..color_from(&comps(4)?)
-                            }
-                        }
+                        ColorKey::Rgbf => c = Color { transmit: c.transmit, ..color_from(&comps(4)?) },
                         ColorKey::Rgbt => {
                             let k = comps(4)?;
-                            c = Color {
-                                rgb: DVec3::new(k[0], k[1], k[2]),
-                                filter: c.filter,
-                                transmit: k[3],
-                            };
+                            c = Color { rgb: DVec3::new(k[0], k[1], k[2]), filter: c.filter, transmit: k[3] };
                         }
                         ColorKey::Rgbft => c = color_from(&comps(5)?),
                         ColorKey::Red => c.rgb.x = v.as_float(span)?,
@@ -100,11 +82,7 @@ impl Lowerer<'_> {
             other => {
                 return Err(Diag::new(
                     inner.span,
-                    format!(
-                        "`.{}` needs a vector or color, found {}",
-                        names[index.min(4)],
-                        other.kind_name()
-                    ),
+                    format!("`.{}` needs a vector or color, found {}", names[index.min(4)], other.kind_name()),
                 ))
             }
         };
@@ -180,10 +158,7 @@ impl Lowerer<'_> {
             "vnormalize" => {
                 let a = v(0)?;
                 if a.length() == 0.0 {
-                    return Err(Diag::new(
-                        args[0].span,
-                        "vnormalize of a zero-length vector",
-                    ));
+                    return Err(Diag::new(args[0].span, "vnormalize of a zero-length vector"));
                 }
                 Value::Vector(a.normalize().to_array().to_vec())
             }
@@ -195,10 +170,7 @@ impl Lowerer<'_> {
             _ => true,
         };
         if !finite {
-            return Err(Diag::new(
-                e.span,
-                format!("`{name}` gives no finite result here"),
-            ));
+            return Err(Diag::new(e.span, format!("`{name}` gives no finite result here")));
         }
         Ok(out)
     }
@@ -227,10 +199,7 @@ impl Lowerer<'_> {
                 for i in 0..3 {
                     if s[i] == 0.0 {
                         // POV-Ray's behaviour: warn and keep the axis unscaled.
-                        self.warnings.push(Diag::new(
-                            t.span,
-                            "Illegal Value: Scale by 0.0. Changed to 1.0.",
-                        ));
+                        self.warnings.push(Diag::new(t.span, "Illegal Value: Scale by 0.0. Changed to 1.0."));
                         s[i] = 1.0;
                     }
                 }
@@ -238,10 +207,7 @@ impl Lowerer<'_> {
             }
             TransformKind::Translate => DMat4::from_translation(v),
         };
-        Ok(Transform {
-            matrix,
-            inverse: matrix.inverse(),
-        })
+        Ok(Transform { matrix, inverse: matrix.inverse() })
     }
 }
 

@@ -50,21 +50,15 @@ fn comparisons_and_logic_inside_parentheses() {
 fn comparison_outside_parentheses_is_rejected_like_povray() {
     // POV-Ray: "All #declares of float, vector, and color require semi-colon" at the `<`.
     assert!(lower("#declare A = 1 < 2;").is_err());
-    assert!(lower("#declare A = (1 < <1,2,3>);")
-        .unwrap_err()
-        .contains("expected a float, found a vector"));
+    assert!(lower("#declare A = (1 < <1,2,3>);").unwrap_err().contains("expected a float, found a vector"));
 }
 
 #[test]
 fn vector_components() {
     assert_eq!(value_of("<1, 2, 3>.y + <1, 2, 3>.z"), 5.0);
     assert_eq!(value_of("(rgbft <0.1, 0.2, 0.3, 0.4, 0.5>).transmit"), 0.5);
-    assert!(lower("#declare A = <1, 2>.z;")
-        .unwrap_err()
-        .contains("at least 3"));
-    assert!(lower("#declare A = (1).x;")
-        .unwrap_err()
-        .contains("needs a vector"));
+    assert!(lower("#declare A = <1, 2>.z;").unwrap_err().contains("at least 3"));
+    assert!(lower("#declare A = (1).x;").unwrap_err().contains("needs a vector"));
 }
 
 #[test]
@@ -82,15 +76,9 @@ fn if_elseif_else() {
              #else sphere {{ 0, 3 }} #end"
         ))
     };
-    assert_eq!(
-        (pick(1), pick(2), pick(7)),
-        (vec![1.0], vec![2.0], vec![3.0])
-    );
+    assert_eq!((pick(1), pick(2), pick(7)), (vec![1.0], vec![2.0], vec![3.0]));
     assert_eq!(radii("#if (0) sphere { 0, 1 } #end"), Vec::<f64>::new());
-    assert_eq!(
-        radii("#ifndef (Q) sphere { 0, 1 } #else sphere { 0, 2 } #end"),
-        vec![1.0]
-    );
+    assert_eq!(radii("#ifndef (Q) sphere { 0, 1 } #else sphere { 0, 2 } #end"), vec![1.0]);
 }
 
 #[test]
@@ -102,13 +90,7 @@ fn while_builds_a_grid_of_spheres() {
     )
     .unwrap();
     assert_eq!(s.objects.len(), 1000);
-    assert_eq!(
-        s.objects[999].shape,
-        ShapeDesc::Sphere {
-            center: DVec3::splat(9.0),
-            radius: 0.3
-        }
-    );
+    assert_eq!(s.objects[999].shape, ShapeDesc::Sphere { center: DVec3::splat(9.0), radius: 0.3 });
 }
 
 #[test]
@@ -129,21 +111,14 @@ fn switch_falls_through_until_break() {
         )
     };
     let r = |v| radii(&text(v))[0] - 100.0;
-    assert_eq!(
-        (r(1.0), r(2.0), r(3.0), r(6.0), r(7.0)),
-        (1.0, 5.0, 3.0, 4.0, 9.0)
-    );
-    assert_eq!(
-        radii("#switch (7) #case (1) sphere { 0, 1 } #end"),
-        Vec::<f64>::new()
-    );
+    assert_eq!((r(1.0), r(2.0), r(3.0), r(6.0), r(7.0)), (1.0, 5.0, 3.0, 4.0, 9.0));
+    assert_eq!(radii("#switch (7) #case (1) sphere { 0, 1 } #end"), Vec::<f64>::new());
 }
 
 #[test]
 fn break_leaves_a_while_and_nowhere_else() {
     assert_eq!(
-        radii("#declare I = 0; #while (1) #if (I = 3) #break #end sphere { 0, 1 } #declare I = I + 1; #end")
-            .len(),
+        radii("#declare I = 0; #while (1) #if (I = 3) #break #end sphere { 0, 1 } #declare I = I + 1; #end").len(),
         3
     );
     assert!(lower("#break").unwrap_err().contains("outside"));
@@ -151,19 +126,10 @@ fn break_leaves_a_while_and_nowhere_else() {
 
 #[test]
 fn unmatched_directives_are_named() {
-    assert_eq!(
-        lower("#else").unwrap_err(),
-        "`#else` without a matching `#if`"
-    );
-    assert!(lower("#if (1) sphere { 0, 1 }")
-        .unwrap_err()
-        .contains("expected `#end`"));
-    assert!(lower("#while (1) #case (2) #end")
-        .unwrap_err()
-        .contains("`#case` is not allowed in `#while`"));
-    assert!(lower("#if 1 #end")
-        .unwrap_err()
-        .contains("expected `(` after `#if`"));
+    assert_eq!(lower("#else").unwrap_err(), "`#else` without a matching `#if`");
+    assert!(lower("#if (1) sphere { 0, 1 }").unwrap_err().contains("expected `#end`"));
+    assert!(lower("#while (1) #case (2) #end").unwrap_err().contains("`#case` is not allowed in `#while`"));
+    assert!(lower("#if 1 #end").unwrap_err().contains("expected `(` after `#if`"));
 }
 
 #[test]
@@ -202,15 +168,10 @@ fn nested_and_declared_unions() {
     let inner = s.objects[1].transform.matrix;
     assert_eq!(
         inner,
-        DMat4::from_translation(DVec3::Y)
-            * DMat4::from_translation(DVec3::X)
-            * DMat4::from_scale(DVec3::splat(2.0))
+        DMat4::from_translation(DVec3::Y) * DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0))
     );
     assert!(!s.objects[0].no_shadow && s.objects[2].no_shadow && s.objects[3].no_shadow);
-    assert_eq!(
-        s.objects[3].texture.pigment.pattern,
-        PigmentPattern::Solid(Color::WHITE)
-    );
+    assert_eq!(s.objects[3].texture.pigment.pattern, PigmentPattern::Solid(Color::WHITE));
 }
 
 #[test]
@@ -251,8 +212,5 @@ fn messages() {
     let (_, w) = lower("#debug \"ignored\\n\"\n#warning concat(\"w=\", str(1.5, 0, 2))").unwrap();
     assert_eq!(w.len(), 1);
     assert_eq!(w[0].message, "w=1.50");
-    assert_eq!(
-        lower("#if (1) #error \"stop\" #end").unwrap_err(),
-        "#error: stop"
-    );
+    assert_eq!(lower("#if (1) #error \"stop\" #end").unwrap_err(), "#error: stop");
 }

@@ -38,12 +38,7 @@ enum Flow {
 pub trait Files {
     /// Resolves, reads and parses `#include "path"`; errors (not found, cycle, too deep) are
     /// located at `path_span`/`directive`.
-    fn enter_include(
-        &mut self,
-        path: &str,
-        directive: Span,
-        path_span: Span,
-    ) -> PResult<(FileId, Vec<Stmt>)>;
+    fn enter_include(&mut self, path: &str, directive: Span, path_span: Span) -> PResult<(FileId, Vec<Stmt>)>;
     /// Called when the include entered last has been lowered.
     fn leave_include(&mut self);
     fn source_ref(&self, span: Span) -> SourceRef;
@@ -92,8 +87,7 @@ impl<'f> Lowerer<'f> {
     }
 
     fn lookup_or_err(&self, name: &str, span: Span) -> PResult<&Value> {
-        self.lookup(name)
-            .ok_or_else(|| Diag::new(span, format!("undefined identifier `{name}`")))
+        self.lookup(name).ok_or_else(|| Diag::new(span, format!("undefined identifier `{name}`")))
     }
 
     fn stmts(&mut self, stmts: &[Stmt]) -> PResult<Flow> {
@@ -132,10 +126,7 @@ impl<'f> Lowerer<'f> {
         if self.csg_stack.is_empty() {
             Ok(())
         } else {
-            Err(Diag::new(
-                span,
-                format!("`{what}` is not supported inside `union` or `merge`"),
-            ))
+            Err(Diag::new(span, format!("`{what}` is not supported inside `union` or `merge`")))
         }
     }
 
@@ -144,18 +135,11 @@ impl<'f> Lowerer<'f> {
             Stmt::Version { value, .. } => {
                 let v = self.eval(value)?.as_float(value.span)?;
                 if !(1.0..=3.8).contains(&v) {
-                    return Err(Diag::new(
-                        value.span,
-                        format!("unsupported #version {v} (expected 1.0 to 3.8)"),
-                    ));
+                    return Err(Diag::new(value.span, format!("unsupported #version {v} (expected 1.0 to 3.8)")));
                 }
                 self.version = v;
             }
-            Stmt::Include {
-                path,
-                span,
-                path_span,
-            } => {
+            Stmt::Include { path, span, path_span } => {
                 let (_, stmts) = self.files.enter_include(path, *span, *path_span)?;
                 self.scopes.push(HashMap::new());
                 let result = self.stmts(&stmts);
@@ -166,9 +150,7 @@ impl<'f> Lowerer<'f> {
                     return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
                 }
             }
-            Stmt::Declare {
-                name, local, value, ..
-            } => {
+            Stmt::Declare { name, local, value, .. } => {
                 let v = match value {
                     DeclValue::Expr(e) => self.eval(e)?,
                     DeclValue::Pigment(p) => Value::Pigment(Box::new(self.pigment(p)?)),
@@ -187,25 +169,11 @@ impl<'f> Lowerer<'f> {
                 }
                 self.scopes[scope].insert(name.clone(), v);
             }
-            Stmt::IfDef {
-                name,
-                negate,
-                body,
-                otherwise,
-                ..
-            } => {
-                let taken = if self.lookup(name).is_some() != *negate {
-                    body
-                } else {
-                    otherwise
-                };
+            Stmt::IfDef { name, negate, body, otherwise, .. } => {
+                let taken = if self.lookup(name).is_some() != *negate { body } else { otherwise };
                 return self.stmts(taken);
             }
-            Stmt::If {
-                branches,
-                otherwise,
-                ..
-            } => {
+            Stmt::If { branches, otherwise, .. } => {
                 for (cond, body) in branches {
                     if truthy(self.float(cond)?) {
                         return self.stmts(body);
@@ -238,9 +206,7 @@ impl<'f> Lowerer<'f> {
                 for (i, clause) in clauses.iter().enumerate() {
                     let hit = match &clause.test {
                         ClauseTest::Case(e) => (self.float(e)? - v).abs() < EPSILON,
-                        ClauseTest::Range(lo, hi) => {
-                            (self.float(lo)?..=self.float(hi)?).contains(&v)
-                        }
+                        ClauseTest::Range(lo, hi) => (self.float(lo)?..=self.float(hi)?).contains(&v),
                         ClauseTest::Else => true,
                     };
                     if hit {
@@ -283,11 +249,7 @@ impl<'f> Lowerer<'f> {
                 for t in &l.transforms {
                     position = self.transform(t)?.matrix.transform_point3(position);
                 }
-                self.scene.lights.push(LightDesc {
-                    position,
-                    color,
-                    shadowless: l.shadowless,
-                });
+                self.scene.lights.push(LightDesc { position, color, shadowless: l.shadowless });
             }
             Stmt::Background { color, span } => {
                 self.not_in_csg("background", *span)?;
@@ -307,16 +269,11 @@ impl<'f> Lowerer<'f> {
                         GlobalItem::MaxTraceLevel(e) => {
                             let n = self.float(e)?;
                             if !(1.0..=256.0).contains(&n) {
-                                return Err(Diag::new(
-                                    e.span,
-                                    "max_trace_level must be between 1 and 256",
-                                ));
+                                return Err(Diag::new(e.span, "max_trace_level must be between 1 and 256"));
                             }
                             self.scene.global.max_trace_level = n as u32;
                         }
-                        GlobalItem::AmbientLight(e) => {
-                            self.scene.global.ambient_light = self.color(e)?.rgb
-                        }
+                        GlobalItem::AmbientLight(e) => self.scene.global.ambient_light = self.color(e)?.rgb,
                     }
                 }
             }
@@ -327,22 +284,12 @@ impl<'f> Lowerer<'f> {
                     None => self.scene.objects.len(),
                 };
                 if before + group.parts.len() > MAX_OBJECTS {
-                    let place = if self.csg_stack.is_empty() {
-                        "the scene"
-                    } else {
-                        "a union"
-                    };
-                    return Err(Diag::new(
-                        o.span,
-                        format!("{place} would have more than {MAX_OBJECTS} objects"),
-                    ));
+                    let place = if self.csg_stack.is_empty() { "the scene" } else { "a union" };
+                    return Err(Diag::new(o.span, format!("{place} would have more than {MAX_OBJECTS} objects")));
                 }
                 match self.csg_stack.last_mut() {
                     Some(children) => children.extend(group.parts),
-                    None => self
-                        .scene
-                        .objects
-                        .extend(group.parts.into_iter().map(|p| p.desc)),
+                    None => self.scene.objects.extend(group.parts.into_iter().map(|p| p.desc)),
                 }
             }
         }

@@ -33,10 +33,7 @@ impl Lowerer<'_> {
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
                 (ExprKind::Ident(_), Value::Object(group)) => *group,
                 (_, other) => {
-                    return Err(Diag::new(
-                        e.span,
-                        format!("expected a declared object, found {}", other.kind_name()),
-                    ))
+                    return Err(Diag::new(e.span, format!("expected a declared object, found {}", other.kind_name())))
                 }
             },
             ObjectKind::Csg { children, merge } => self.csg(children, *merge, o.span)?,
@@ -72,13 +69,7 @@ impl Lowerer<'_> {
                 }
                 Modifier::NoShadow => obj.no_shadow = true,
             }
-            if matches!(
-                m,
-                Modifier::Pigment(_)
-                    | Modifier::Normal(_)
-                    | Modifier::Finish(_)
-                    | Modifier::Texture(_)
-            ) {
+            if matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_) | Modifier::Texture(_)) {
                 part.textured = true;
             }
         }
@@ -97,8 +88,7 @@ impl Lowerer<'_> {
         }
         if parts.is_empty() {
             let word = if merge { "merge" } else { "union" };
-            self.warnings
-                .push(Diag::new(span, format!("`{word}` has no objects")));
+            self.warnings.push(Diag::new(span, format!("`{word}` has no objects")));
         }
         Ok(Group { parts, csg: true })
     }
@@ -110,15 +100,9 @@ impl Lowerer<'_> {
         let mut interior = None;
         for m in modifiers {
             match m {
-                Modifier::Pigment(p) => {
-                    texture.get_or_insert_with(Default::default).pigment = self.pigment(p)?
-                }
-                Modifier::Normal(n) => {
-                    texture.get_or_insert_with(Default::default).normal = Some(self.normal(n)?)
-                }
-                Modifier::Finish(f) => {
-                    texture.get_or_insert_with(Default::default).finish = self.finish_block(f)?
-                }
+                Modifier::Pigment(p) => texture.get_or_insert_with(Default::default).pigment = self.pigment(p)?,
+                Modifier::Normal(n) => texture.get_or_insert_with(Default::default).normal = Some(self.normal(n)?),
+                Modifier::Finish(f) => texture.get_or_insert_with(Default::default).finish = self.finish_block(f)?,
                 Modifier::Texture(t) => texture = Some(self.texture(t)?),
                 Modifier::Interior(i) => interior = Some(self.interior(i)?),
                 Modifier::Transform(t) => {
@@ -153,10 +137,7 @@ impl Lowerer<'_> {
 
     fn shape(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
         // The parser guarantees the argument count for all shapes but polygon.
-        let arg = |i: usize| {
-            args.get(i)
-                .ok_or_else(|| Diag::new(span, "missing argument"))
-        };
+        let arg = |i: usize| args.get(i).ok_or_else(|| Diag::new(span, "missing argument"));
         Ok(match kind {
             ShapeKind::Sphere => {
                 let center = self.vec3(arg(0)?)?;
@@ -171,26 +152,13 @@ impl Lowerer<'_> {
                 if normal.length() == 0.0 {
                     return Err(Diag::new(arg(0)?.span, "plane normal must not be zero"));
                 }
-                ShapeDesc::Plane {
-                    normal,
-                    distance: self.float(arg(1)?)?,
-                }
+                ShapeDesc::Plane { normal, distance: self.float(arg(1)?)? }
             }
-            ShapeKind::Box => ShapeDesc::Box {
-                corner1: self.vec3(arg(0)?)?,
-                corner2: self.vec3(arg(1)?)?,
-            },
+            ShapeKind::Box => ShapeDesc::Box { corner1: self.vec3(arg(0)?)?, corner2: self.vec3(arg(1)?)? },
             ShapeKind::Triangle => {
-                let (a, b, c) = (
-                    self.vec3(arg(0)?)?,
-                    self.vec3(arg(1)?)?,
-                    self.vec3(arg(2)?)?,
-                );
+                let (a, b, c) = (self.vec3(arg(0)?)?, self.vec3(arg(1)?)?, self.vec3(arg(2)?)?);
                 if collinear(&[a, b, c]) {
-                    return Err(Diag::new(
-                        span,
-                        "triangle is degenerate: its corners are collinear",
-                    ));
+                    return Err(Diag::new(span, "triangle is degenerate: its corners are collinear"));
                 }
                 ShapeDesc::Triangle { a, b, c }
             }
@@ -199,9 +167,7 @@ impl Lowerer<'_> {
     }
 
     fn polygon(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
-        let count_expr = args
-            .first()
-            .ok_or_else(|| Diag::new(span, "polygon needs the number of points"))?;
+        let count_expr = args.first().ok_or_else(|| Diag::new(span, "polygon needs the number of points"))?;
         let count = self.float(count_expr)?;
         let given = args.len() - 1;
         if count != given as f64 {
@@ -224,29 +190,17 @@ impl Lowerer<'_> {
             }
         }
         if distinct.len() < 3 {
-            return Err(Diag::new(
-                span,
-                format!(
-                    "polygon needs at least 3 distinct points, found {}",
-                    distinct.len()
-                ),
-            ));
+            return Err(Diag::new(span, format!("polygon needs at least 3 distinct points, found {}", distinct.len())));
         }
         if collinear(&distinct) {
-            return Err(Diag::new(
-                span,
-                "polygon is degenerate: all its points are collinear",
-            ));
+            return Err(Diag::new(span, "polygon is degenerate: all its points are collinear"));
         }
         if let Some(i) = off_plane(&points) {
             // POV-Ray 3.7 silently accepts this (checked with povray 3.7.0.10); strahl's polygon
             // needs one plane, so it is an error here rather than a different picture.
             return Err(Diag::new(
                 args[i + 1].span,
-                format!(
-                    "polygon points must lie in one plane; point {} does not",
-                    i + 1
-                ),
+                format!("polygon points must lie in one plane; point {} does not", i + 1),
             ));
         }
         Ok(ShapeDesc::Polygon { points })
@@ -258,19 +212,11 @@ impl Lowerer<'_> {
 fn off_plane(points: &[DVec3]) -> Option<usize> {
     let a = points[0];
     let scale = points.iter().map(|p| (*p - a).length()).fold(0.0, f64::max);
-    let b = points
-        .iter()
-        .copied()
-        .find(|p| (*p - a).length() > 1e-9 * scale)?;
+    let b = points.iter().copied().find(|p| (*p - a).length() > 1e-9 * scale)?;
     let ab = (b - a).normalize();
-    let c = points
-        .iter()
-        .copied()
-        .find(|p| ab.cross(*p - a).length() > 1e-9 * scale)?;
+    let c = points.iter().copied().find(|p| ab.cross(*p - a).length() > 1e-9 * scale)?;
     let normal = ab.cross(c - a).normalize();
-    points
-        .iter()
-        .position(|p| normal.dot(*p - a).abs() > 1e-6 * scale)
+    points.iter().position(|p| normal.dot(*p - a).abs() > 1e-6 * scale)
 }
 
 /// True when every point lies on one line (relative tolerance, so tiny and huge shapes agree).
@@ -280,13 +226,7 @@ fn collinear(points: &[DVec3]) -> bool {
     if scale == 0.0 {
         return true;
     }
-    let far = points
-        .iter()
-        .copied()
-        .max_by(|p, q| (*p - a).length().total_cmp(&(*q - a).length()))
-        .unwrap_or(a);
+    let far = points.iter().copied().max_by(|p, q| (*p - a).length().total_cmp(&(*q - a).length())).unwrap_or(a);
     let dir = (far - a) / scale;
-    points
-        .iter()
-        .all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
+    points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
 }

@@ -26,39 +26,27 @@ pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
     let tokens = lex(0, text).map_err(|d| d.message)?;
     let stmts = parse(&tokens, text).map_err(|d| d.message)?;
     let mut files = NoFiles;
-    Lowerer::new(&mut files, &crate::pov::ParseOptions::default())
-        .finish(&stmts)
-        .map_err(|d| d.message)
+    Lowerer::new(&mut files, &crate::pov::ParseOptions::default()).finish(&stmts).map_err(|d| d.message)
 }
 
 /// The colour of the first light, written as `light_source { 0 color <expr> }`.
 fn color_of(expr: &str) -> Color {
-    let (s, _) = lower(&format!(
-        "light_source {{ 0 color {expr} }} background {{ {expr} }}"
-    ))
-    .unwrap();
+    let (s, _) = lower(&format!("light_source {{ 0 color {expr} }} background {{ {expr} }}")).unwrap();
     s.background
 }
 
 #[test]
 fn arithmetic_and_functions() {
-    let (s, _) = lower(
-        "#declare A = (1 + 2) * -3 / 2;\nsphere { <A, sqrt(16), max(2, pow(2, 3))>, abs(-2) }",
-    )
-    .unwrap();
+    let (s, _) = lower("#declare A = (1 + 2) * -3 / 2;\nsphere { <A, sqrt(16), max(2, pow(2, 3))>, abs(-2) }").unwrap();
     assert_eq!(
         s.objects[0].shape,
-        crate::scene::desc::ShapeDesc::Sphere {
-            center: DVec3::new(-4.5, 4.0, 8.0),
-            radius: 2.0
-        }
+        crate::scene::desc::ShapeDesc::Sphere { center: DVec3::new(-4.5, 4.0, 8.0), radius: 2.0 }
     );
 }
 
 #[test]
 fn version_keyword_and_directive() {
-    let (s, _) =
-        lower("#declare V = version;\n#version 3.5;\n#declare W = version;\n#version V;").unwrap();
+    let (s, _) = lower("#declare V = version;\n#version 3.5;\n#declare W = version;\n#version V;").unwrap();
     assert_eq!(s.version, 3.7);
     let (s, _) = lower("#version 3.5;").unwrap();
     assert_eq!(s.version, 3.5);
@@ -75,14 +63,7 @@ fn color_forms() {
     let c = color_of("rgbft <1, 1, 1, 0.25, 0.5>");
     assert_eq!((c.filter, c.transmit), (0.25, 0.5));
     let c = color_of("red 1 green 0.5 transmit 0.3");
-    assert_eq!(
-        c,
-        Color {
-            rgb: DVec3::new(1.0, 0.5, 0.0),
-            filter: 0.0,
-            transmit: 0.3
-        }
-    );
+    assert_eq!(c, Color { rgb: DVec3::new(1.0, 0.5, 0.0), filter: 0.0, transmit: 0.3 });
     // POV-Ray promotes a bare float to all five components (checked with a render).
     let c = color_of("color 0.5");
     assert_eq!((c.rgb, c.filter, c.transmit), (DVec3::splat(0.5), 0.5, 0.5));
@@ -93,16 +74,8 @@ fn color_forms() {
 
 #[test]
 fn color_with_base_and_override() {
-    let (s, _) =
-        lower("#declare C = rgb <1, 0, 0>;\nbackground { color C filter 0.5 green 1 }").unwrap();
-    assert_eq!(
-        s.background,
-        Color {
-            rgb: DVec3::new(1.0, 1.0, 0.0),
-            filter: 0.5,
-            transmit: 0.0
-        }
-    );
+    let (s, _) = lower("#declare C = rgb <1, 0, 0>;\nbackground { color C filter 0.5 green 1 }").unwrap();
+    assert_eq!(s.background, Color { rgb: DVec3::new(1.0, 1.0, 0.0), filter: 0.5, transmit: 0.0 });
 }
 
 #[test]
@@ -119,41 +92,26 @@ fn rotate_order_is_x_then_y_then_z() {
 fn transforms_compose_left_to_right() {
     let (s, _) = lower("sphere { 0, 1 scale 2 translate x }").unwrap();
     let m = s.objects[0].transform.matrix;
-    assert_eq!(
-        m,
-        DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0))
-    );
+    assert_eq!(m, DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0)));
     assert_eq!(m.transform_point3(DVec3::X), DVec3::new(3.0, 0.0, 0.0));
 }
 
 #[test]
 fn scale_by_zero_warns_and_keeps_the_axis() {
     let (s, w) = lower("sphere { 0, 1 scale <2, 0, 1> }").unwrap();
-    assert_eq!(
-        s.objects[0].transform.matrix,
-        DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0))
-    );
+    assert_eq!(s.objects[0].transform.matrix, DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0)));
     assert_eq!(w.len(), 1);
 }
 
 #[test]
 fn local_and_declare_scopes() {
     let (s, _) = lower("#local R = 2;\n#declare R = 3;\nsphere { 0, R }").unwrap();
-    assert_eq!(
-        s.objects[0].shape,
-        crate::scene::desc::ShapeDesc::Sphere {
-            center: DVec3::ZERO,
-            radius: 3.0
-        }
-    );
+    assert_eq!(s.objects[0].shape, crate::scene::desc::ShapeDesc::Sphere { center: DVec3::ZERO, radius: 3.0 });
 }
 
 #[test]
 fn type_errors_name_both_sides() {
-    assert_eq!(
-        lower("sphere { 0, <1, 2> }").unwrap_err(),
-        "expected a float, found a vector"
-    );
+    assert_eq!(lower("sphere { 0, <1, 2> }").unwrap_err(), "expected a float, found a vector");
     assert_eq!(
         lower("#declare P = pigment { checker }\n#declare A = P + 1;").unwrap_err(),
         "cannot do arithmetic on a pigment"
@@ -174,15 +132,9 @@ fn look_at_along_sky_keeps_the_given_right_vector() {
 
 #[test]
 fn camera_errors() {
-    assert!(lower("camera { location <0, 5, 0> right y look_at 0 }")
-        .unwrap_err()
-        .contains("parallel to sky"));
-    assert!(lower("camera { location 1 look_at 1 }")
-        .unwrap_err()
-        .contains("same point"));
-    assert!(lower("camera { angle 180 }")
-        .unwrap_err()
-        .contains("between 0 and 180"));
+    assert!(lower("camera { location <0, 5, 0> right y look_at 0 }").unwrap_err().contains("parallel to sky"));
+    assert!(lower("camera { location 1 look_at 1 }").unwrap_err().contains("same point"));
+    assert!(lower("camera { angle 180 }").unwrap_err().contains("between 0 and 180"));
 }
 
 #[test]
@@ -201,10 +153,7 @@ fn pigment_copies_then_modifies() {
     }
     let t = p.turbulence.unwrap();
     assert_eq!((t.amount, t.octaves), (DVec3::splat(0.1), 4));
-    assert_eq!(
-        p.transform.matrix,
-        DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0))
-    );
+    assert_eq!(p.transform.matrix, DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0)));
     // Without a map, wood uses POV-Ray's tan/brown default (measured by rendering).
     let (s, _) = lower("sphere { 0, 1 pigment { wood } }").unwrap();
     match &s.objects[0].texture.pigment.pattern {

@@ -4,13 +4,13 @@
 use super::value::Value;
 use super::Lowerer;
 use crate::pov::ast::{
-    Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
-    Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
+    Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem, Pigment, PigmentItem,
+    Texture, TextureItem, Turb, TurbKind,
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
-    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PigmentDesc,
-    PigmentPattern, TextureDesc, Transform, Turbulence,
+    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern,
+    TextureDesc, Transform, Turbulence,
 };
 
 /// POV-Ray's `bumps` amount when none is written.
@@ -31,10 +31,7 @@ struct TurbState {
 
 impl TurbState {
     fn from(t: Option<Turbulence>) -> Self {
-        TurbState {
-            given: t.is_some(),
-            value: t.unwrap_or_default(),
-        }
+        TurbState { given: t.is_some(), value: t.unwrap_or_default() }
     }
 
     fn finish(self) -> Option<Turbulence> {
@@ -92,10 +89,7 @@ impl Lowerer<'_> {
                         transform = base.transform;
                     } else {
                         pattern = Pattern::Solid(self.eval(e)?.as_color(e.span).map_err(|_| {
-                            Diag::new(
-                                e.span,
-                                "expected a declared pigment or a color at the start of `pigment`",
-                            )
+                            Diag::new(e.span, "expected a declared pigment or a color at the start of `pigment`")
                         })?);
                     }
                 }
@@ -118,15 +112,9 @@ impl Lowerer<'_> {
                     for entry in entries {
                         let value = self.float(&entry.value)?;
                         if !(0.0..=1.0).contains(&value) {
-                            return Err(Diag::new(
-                                entry.value.span,
-                                "color_map values must be between 0 and 1",
-                            ));
+                            return Err(Diag::new(entry.value.span, "color_map values must be between 0 and 1"));
                         }
-                        out.push(ColorMapEntry {
-                            value,
-                            color: self.color(&entry.color)?,
-                        });
+                        out.push(ColorMapEntry { value, color: self.color(&entry.color)? });
                     }
                     // Stable: entries with equal values keep their written order (a hard edge).
                     out.sort_by(|a, b| a.value.total_cmp(&b.value));
@@ -140,19 +128,12 @@ impl Lowerer<'_> {
             (Pattern::Wood, Some((m, _))) => PigmentPattern::Wood(m),
             (Pattern::Wood, None) => PigmentPattern::Wood(default_wood_map()),
             (_, Some((_, span))) => {
-                return Err(Diag::new(
-                    span,
-                    "color_map needs a pattern that uses it (supported: wood)",
-                ))
+                return Err(Diag::new(span, "color_map needs a pattern that uses it (supported: wood)"))
             }
             (Pattern::Solid(c), None) => PigmentPattern::Solid(c),
             (Pattern::Checker(a, b), None) => PigmentPattern::Checker(a, b),
         };
-        Ok(PigmentDesc {
-            pattern,
-            turbulence: turb.finish(),
-            transform,
-        })
+        Ok(PigmentDesc { pattern, turbulence: turb.finish(), transform })
     }
 
     pub(super) fn normal(&mut self, n: &Normal) -> PResult<NormalDesc> {
@@ -174,12 +155,7 @@ impl Lowerer<'_> {
                             format!("expected a declared normal, found {}", other.kind_name()),
                         ))
                     }
-                    None => {
-                        return Err(Diag::new(
-                            e.span,
-                            "expected a declared normal or a normal pattern",
-                        ))
-                    }
+                    None => return Err(Diag::new(e.span, "expected a declared normal or a normal pattern")),
                 },
                 NormalItem::Bumps(amount, _) => {
                     let a = match amount {
@@ -192,13 +168,8 @@ impl Lowerer<'_> {
                 NormalItem::Transform(t) => transform = transform.then(&self.transform(t)?),
             }
         }
-        let pattern = pattern
-            .ok_or_else(|| Diag::new(n.span, "normal needs a pattern (supported: bumps)"))?;
-        Ok(NormalDesc {
-            pattern,
-            turbulence: turb.finish(),
-            transform,
-        })
+        let pattern = pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (supported: bumps)"))?;
+        Ok(NormalDesc { pattern, turbulence: turb.finish(), transform })
     }
 
     pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {

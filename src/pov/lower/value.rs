@@ -6,9 +6,7 @@ use glam::DVec3;
 
 use crate::pov::ast::BinOp;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{
-    Color, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
-};
+use crate::scene::desc::{Color, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
@@ -65,10 +63,7 @@ impl Value {
     pub fn as_float(&self, span: Span) -> PResult<f64> {
         match self {
             Value::Float(v) => Ok(*v),
-            other => Err(Diag::new(
-                span,
-                format!("expected a float, found {}", other.kind_name()),
-            )),
+            other => Err(Diag::new(span, format!("expected a float, found {}", other.kind_name()))),
         }
     }
 
@@ -78,11 +73,9 @@ impl Value {
     pub fn as_vec3(&self, span: Span) -> PResult<DVec3> {
         match self {
             Value::Float(v) => Ok(DVec3::splat(*v)),
-            Value::Vector(c) if c.len() <= 3 => Ok(DVec3::new(
-                c[0],
-                c.get(1).copied().unwrap_or(0.0),
-                c.get(2).copied().unwrap_or(0.0),
-            )),
+            Value::Vector(c) if c.len() <= 3 => {
+                Ok(DVec3::new(c[0], c.get(1).copied().unwrap_or(0.0), c.get(2).copied().unwrap_or(0.0)))
+            }
             Value::Vector(c) => Err(Diag::new(
                 span,
                 format!(
@@ -91,10 +84,7 @@ impl Value {
                     c.len()
                 ),
             )),
-            other => Err(Diag::new(
-                span,
-                format!("expected a vector, found {}", other.kind_name()),
-            )),
+            other => Err(Diag::new(span, format!("expected a vector, found {}", other.kind_name()))),
         }
     }
 
@@ -103,10 +93,7 @@ impl Value {
         match self {
             Value::Color(c) => Ok(*c),
             Value::Float(_) | Value::Vector(_) => Ok(color_from(&self.components(5))),
-            other => Err(Diag::new(
-                span,
-                format!("expected a color, found {}", other.kind_name()),
-            )),
+            other => Err(Diag::new(span, format!("expected a color, found {}", other.kind_name()))),
         }
     }
 
@@ -132,11 +119,7 @@ impl Value {
 
 pub fn color_from(c: &[f64]) -> Color {
     let at = |i: usize| c.get(i).copied().unwrap_or(0.0);
-    Color {
-        rgb: DVec3::new(at(0), at(1), at(2)),
-        filter: at(3),
-        transmit: at(4),
-    }
+    Color { rgb: DVec3::new(at(0), at(1), at(2)), filter: at(3), transmit: at(4) }
 }
 
 fn finite(v: f64, span: Span) -> PResult<f64> {
@@ -177,18 +160,8 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PR
     let span = a_span.to(b_span);
     let (wa, wb) = match (a.width(), b.width()) {
         (Some(wa), Some(wb)) => (wa, wb),
-        (None, _) => {
-            return Err(Diag::new(
-                a_span,
-                format!("cannot do arithmetic on {}", a.kind_name()),
-            ))
-        }
-        (_, None) => {
-            return Err(Diag::new(
-                b_span,
-                format!("cannot do arithmetic on {}", b.kind_name()),
-            ))
-        }
+        (None, _) => return Err(Diag::new(a_span, format!("cannot do arithmetic on {}", a.kind_name()))),
+        (_, None) => return Err(Diag::new(b_span, format!("cannot do arithmetic on {}", b.kind_name()))),
     };
     let n = wa.max(wb);
     let (ca, cb) = (a.components(n), b.components(n));
@@ -208,15 +181,13 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PR
         };
         out.push(finite(v, span)?);
     }
-    Ok(
-        if matches!(a, Value::Color(_)) || matches!(b, Value::Color(_)) {
-            Value::Color(color_from(&out))
-        } else if n == 1 {
-            Value::Float(out[0])
-        } else {
-            Value::Vector(out)
-        },
-    )
+    Ok(if matches!(a, Value::Color(_)) || matches!(b, Value::Color(_)) {
+        Value::Color(color_from(&out))
+    } else if n == 1 {
+        Value::Float(out[0])
+    } else {
+        Value::Vector(out)
+    })
 }
 
 pub fn negate(v: &Value, span: Span) -> PResult<Value> {
@@ -233,13 +204,7 @@ mod tests {
 
     #[test]
     fn floats_promote_to_vectors_and_colors() {
-        let v = binary(
-            BinOp::Mul,
-            &Value::Float(2.0),
-            &Value::Vector(vec![0.0, 1.0, 0.0]),
-            s(),
-            s(),
-        );
+        let v = binary(BinOp::Mul, &Value::Float(2.0), &Value::Vector(vec![0.0, 1.0, 0.0]), s(), s());
         assert_eq!(v.unwrap(), Value::Vector(vec![0.0, 2.0, 0.0]));
         let white = Value::Color(Color::WHITE);
         let gray = binary(BinOp::Mul, &white, &Value::Float(0.05), s(), s()).unwrap();
@@ -248,43 +213,20 @@ mod tests {
 
     #[test]
     fn vectors_multiply_componentwise_and_pad() {
-        let v = binary(
-            BinOp::Mul,
-            &Value::Vector(vec![1.0, 2.0, 3.0]),
-            &Value::Vector(vec![2.0, 2.0]),
-            s(),
-            s(),
-        );
+        let v = binary(BinOp::Mul, &Value::Vector(vec![1.0, 2.0, 3.0]), &Value::Vector(vec![2.0, 2.0]), s(), s());
         assert_eq!(v.unwrap(), Value::Vector(vec![2.0, 4.0, 0.0]));
     }
 
     #[test]
     fn overflow_and_division_by_zero_are_errors() {
-        let e = binary(
-            BinOp::Mul,
-            &Value::Float(1e300),
-            &Value::Float(1e300),
-            s(),
-            s(),
-        )
-        .unwrap_err();
+        let e = binary(BinOp::Mul, &Value::Float(1e300), &Value::Float(1e300), s(), s()).unwrap_err();
         assert_eq!(e.message, "number overflows to infinity");
-        let e = binary(
-            BinOp::Div,
-            &Value::Float(1.0),
-            &Value::Vector(vec![1.0, 0.0]),
-            s(),
-            s(),
-        )
-        .unwrap_err();
+        let e = binary(BinOp::Div, &Value::Float(1.0), &Value::Vector(vec![1.0, 0.0]), s(), s()).unwrap_err();
         assert_eq!(e.message, "division by zero");
     }
 
     #[test]
     fn two_d_vectors_get_z_zero() {
-        assert_eq!(
-            Value::Vector(vec![1.0, 2.0]).as_vec3(s()).unwrap(),
-            DVec3::new(1.0, 2.0, 0.0)
-        );
+        assert_eq!(Value::Vector(vec![1.0, 2.0]).as_vec3(s()).unwrap(), DVec3::new(1.0, 2.0, 0.0));
     }
 }

@@ -87,29 +87,18 @@ impl Parser<'_> {
         let mut items = Vec::new();
         if self.peek_ident().and_then(color_key).is_none() {
             let value = self.expr()?;
-            items.push(ColorItem {
-                key: ColorKey::Base,
-                span: value.span,
-                value,
-            });
+            items.push(ColorItem { key: ColorKey::Base, span: value.span, value });
         }
         while let Some(key) = self.peek_ident().and_then(color_key) {
             let key_span = self.bump().span;
             let value = self.expr()?;
-            items.push(ColorItem {
-                key,
-                span: key_span.to(value.span),
-                value,
-            });
+            items.push(ColorItem { key, span: key_span.to(value.span), value });
         }
         if !explicit && items.len() == 1 && items[0].key == ColorKey::Base {
             return Ok(items.remove(0).value);
         }
         let span = start.to(items.last().map_or(start, |i| i.span));
-        Ok(Expr {
-            kind: ExprKind::Color(items),
-            span,
-        })
+        Ok(Expr { kind: ExprKind::Color(items), span })
     }
 
     /// True when the next token can start an expression or colour; identifiers in `stop` (the
@@ -137,10 +126,7 @@ impl Parser<'_> {
         self.expect_punct(':', "in `? :`")?;
         let b = self.full_expr()?;
         self.leave();
-        Ok(Expr {
-            span: cond.span.to(b.span),
-            kind: ExprKind::Ternary(Box::new(cond), Box::new(a), Box::new(b)),
-        })
+        Ok(Expr { span: cond.span.to(b.span), kind: ExprKind::Ternary(Box::new(cond), Box::new(a), Box::new(b)) })
     }
 
     /// `&` and `|`: one precedence level, left to right (POV-Ray 3.7 gives `(1 | 0 & 0)` = 0).
@@ -182,10 +168,7 @@ impl Parser<'_> {
             }
             chained += 1;
             let rhs = operand(self)?;
-            lhs = Expr {
-                span: lhs.span.to(rhs.span),
-                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
-            };
+            lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) };
         }
         self.depth -= chained;
         Ok(lhs)
@@ -209,10 +192,7 @@ impl Parser<'_> {
             self.enter(op_span)?;
             chained += 1;
             let rhs = self.term()?;
-            lhs = Expr {
-                span: lhs.span.to(rhs.span),
-                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
-            };
+            lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) };
         }
     }
 
@@ -232,10 +212,7 @@ impl Parser<'_> {
             self.enter(op_span)?;
             chained += 1;
             let rhs = self.unary()?;
-            lhs = Expr {
-                span: lhs.span.to(rhs.span),
-                kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
-            };
+            lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) };
         }
     }
 
@@ -248,24 +225,14 @@ impl Parser<'_> {
                 let inner = self.unary()?;
                 self.leave();
                 let span = t.span.to(inner.span);
-                Ok(if c == '-' {
-                    Expr {
-                        kind: ExprKind::Neg(Box::new(inner)),
-                        span,
-                    }
-                } else {
-                    inner
-                })
+                Ok(if c == '-' { Expr { kind: ExprKind::Neg(Box::new(inner)), span } } else { inner })
             }
             TokenKind::Punct('!') => {
                 self.bump();
                 self.enter(t.span)?;
                 let inner = self.unary()?;
                 self.leave();
-                Ok(Expr {
-                    span: t.span.to(inner.span),
-                    kind: ExprKind::Not(Box::new(inner)),
-                })
+                Ok(Expr { span: t.span.to(inner.span), kind: ExprKind::Not(Box::new(inner)) })
             }
             _ => {
                 let mut e = self.primary()?;
@@ -294,10 +261,7 @@ impl Parser<'_> {
                             ),
                         ));
                     };
-                    e = Expr {
-                        span: e.span.to(t.span),
-                        kind: ExprKind::Member(Box::new(e), index),
-                    };
+                    e = Expr { span: e.span.to(t.span), kind: ExprKind::Member(Box::new(e), index) };
                 }
                 self.depth -= chained;
                 Ok(e)
@@ -310,10 +274,7 @@ impl Parser<'_> {
         match &t.kind {
             TokenKind::Number(v) => {
                 self.bump();
-                Ok(Expr {
-                    kind: ExprKind::Number(*v),
-                    span: t.span,
-                })
+                Ok(Expr { kind: ExprKind::Number(*v), span: t.span })
             }
             TokenKind::Punct('(') => {
                 self.bump();
@@ -321,10 +282,7 @@ impl Parser<'_> {
                 let inner = self.full_expr()?;
                 let close = self.expect_punct(')', "to close `(`")?;
                 self.leave();
-                Ok(Expr {
-                    kind: inner.kind,
-                    span: t.span.to(close),
-                })
+                Ok(Expr { kind: inner.kind, span: t.span.to(close) })
             }
             TokenKind::Punct('<') => {
                 self.bump();
@@ -337,21 +295,12 @@ impl Parser<'_> {
                 self.leave();
                 let span = t.span.to(close);
                 if !(2..=5).contains(&parts.len()) {
-                    return Err(Diag::new(
-                        span,
-                        format!("a vector has 2 to 5 components, found {}", parts.len()),
-                    ));
+                    return Err(Diag::new(span, format!("a vector has 2 to 5 components, found {}", parts.len())));
                 }
-                Ok(Expr {
-                    kind: ExprKind::Vector(parts),
-                    span,
-                })
+                Ok(Expr { kind: ExprKind::Vector(parts), span })
             }
             TokenKind::Ident(word) => self.word(word, t.span),
-            _ => Err(Diag::new(
-                t.span,
-                format!("expected an expression, found {}", t.describe()),
-            )),
+            _ => Err(Diag::new(t.span, format!("expected an expression, found {}", t.describe()))),
         }
     }
 
@@ -388,32 +337,17 @@ impl Parser<'_> {
             let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
             self.leave();
             if args.len() != arity {
-                return Err(Diag::new(
-                    span,
-                    format!("`{word}` takes {arity} argument(s), found {}", args.len()),
-                ));
+                return Err(Diag::new(span, format!("`{word}` takes {arity} argument(s), found {}", args.len())));
             }
-            return Ok(Expr {
-                kind: ExprKind::Call(word.to_string(), args),
-                span: span.to(close),
-            });
+            return Ok(Expr { kind: ExprKind::Call(word.to_string(), args), span: span.to(close) });
         }
         if super::RESERVED.contains(&word) {
-            return Err(Diag::new(
-                span,
-                format!("expected an expression, found `{word}`"),
-            ));
+            return Err(Diag::new(span, format!("expected an expression, found `{word}`")));
         }
         if super::is_pov_keyword(word) {
-            return Err(Diag::new(
-                span,
-                format!("`{word}` is not supported in an expression"),
-            ));
+            return Err(Diag::new(span, format!("`{word}` is not supported in an expression")));
         }
         self.bump();
-        Ok(Expr {
-            kind: ExprKind::Ident(word.to_string()),
-            span,
-        })
+        Ok(Expr { kind: ExprKind::Ident(word.to_string()), span })
     }
 }

@@ -23,13 +23,7 @@ const BLOCK_ENDS: &[&str] = &["end", "else", "elseif", "case", "range"];
 
 /// Parses one file's tokens (`text` is only used to quote positions in messages).
 pub fn parse(tokens: &[Token], text: &str) -> PResult<Vec<Stmt>> {
-    let mut p = Parser {
-        tokens,
-        pos: 0,
-        depth: 0,
-        text,
-        in_csg: false,
-    };
+    let mut p = Parser { tokens, pos: 0, depth: 0, text, in_csg: false };
     let stmts = p.stmts(false)?;
     Ok(stmts)
 }
@@ -84,10 +78,7 @@ impl<'a> Parser<'a> {
             return Ok(self.bump().span);
         }
         let t = self.peek();
-        Err(Diag::new(
-            t.span,
-            format!("expected `{c}` {context}, found {}", t.describe()),
-        ))
+        Err(Diag::new(t.span, format!("expected `{c}` {context}, found {}", t.describe())))
     }
 
     /// "3:1" for a span in this file, for messages that point back at an opener.
@@ -102,10 +93,7 @@ impl<'a> Parser<'a> {
     fn enter(&mut self, span: Span) -> PResult<()> {
         self.depth += 1;
         if self.depth > MAX_DEPTH {
-            return Err(Diag::new(
-                span,
-                format!("nesting deeper than {MAX_DEPTH} levels"),
-            ));
+            return Err(Diag::new(span, format!("nesting deeper than {MAX_DEPTH} levels")));
         }
         Ok(())
     }
@@ -129,11 +117,7 @@ impl<'a> Parser<'a> {
         let t = self.peek();
         Err(Diag::new(
             t.span,
-            format!(
-                "expected `}}` to close `{keyword}` opened at {}, found {}",
-                self.line_col(kw_span),
-                t.describe()
-            ),
+            format!("expected `}}` to close `{keyword}` opened at {}, found {}", self.line_col(kw_span), t.describe()),
         ))
     }
 
@@ -156,10 +140,7 @@ impl<'a> Parser<'a> {
             TokenKind::Eof => {
                 format!("unexpected end of file in {context}")
             }
-            _ => format!(
-                "unexpected {} in {context} (expected one of: {list})",
-                t.describe()
-            ),
+            _ => format!("unexpected {} in {context} (expected one of: {list})", t.describe()),
         };
         Diag::new(t.span, message)
     }
@@ -189,10 +170,7 @@ impl<'a> Parser<'a> {
                         "end" => "`#if`, `#ifdef`, `#ifndef`, `#while` or `#switch`",
                         _ => "`#if`",
                     };
-                    return Err(Diag::new(
-                        t.span,
-                        format!("`#{d}` without a matching {opener}"),
-                    ));
+                    return Err(Diag::new(t.span, format!("`#{d}` without a matching {opener}")));
                 }
                 TokenKind::Directive(d) => {
                     let d = d.clone();
@@ -203,9 +181,7 @@ impl<'a> Parser<'a> {
                     self.bump();
                 }
                 TokenKind::Punct('}') if self.in_csg => return Ok(out),
-                TokenKind::Ident(w) if self.in_csg && scene::MODIFIERS.contains(&w.as_str()) => {
-                    return Ok(out)
-                }
+                TokenKind::Ident(w) if self.in_csg && scene::MODIFIERS.contains(&w.as_str()) => return Ok(out),
                 _ => out.push(self.item()?),
             }
         }
@@ -241,25 +217,15 @@ impl<'a> Parser<'a> {
             "version" => {
                 let value = self.expr()?;
                 self.eat_punct(';');
-                Ok(Stmt::Version {
-                    span: start.to(value.span),
-                    value,
-                })
+                Ok(Stmt::Version { span: start.to(value.span), value })
             }
             "include" => {
                 let t = self.bump();
                 match &t.kind {
-                    TokenKind::Str(path) => Ok(Stmt::Include {
-                        path: path.clone(),
-                        span: start,
-                        path_span: t.span,
-                    }),
+                    TokenKind::Str(path) => Ok(Stmt::Include { path: path.clone(), span: start, path_span: t.span }),
                     _ => Err(Diag::new(
                         t.span,
-                        format!(
-                            "expected a file name string after `#include`, found {}",
-                            t.describe()
-                        ),
+                        format!("expected a file name string after `#include`, found {}", t.describe()),
                     )),
                 }
             }
@@ -273,10 +239,7 @@ impl<'a> Parser<'a> {
                     _ => {
                         return Err(Diag::new(
                             t.span,
-                            format!(
-                                "expected an identifier in `#{name}`, found {}",
-                                t.describe()
-                            ),
+                            format!("expected an identifier in `#{name}`, found {}", t.describe()),
                         ))
                     }
                 };
@@ -289,13 +252,7 @@ impl<'a> Parser<'a> {
                 }
                 self.expect_end(name, start)?;
                 self.leave();
-                Ok(Stmt::IfDef {
-                    name: ident,
-                    negate: name == "ifndef",
-                    body,
-                    otherwise,
-                    span: start,
-                })
+                Ok(Stmt::IfDef { name: ident, negate: name == "ifndef", body, otherwise, span: start })
             }
             "if" => {
                 self.enter(start)?;
@@ -316,11 +273,7 @@ impl<'a> Parser<'a> {
                 }
                 self.expect_end("if", start)?;
                 self.leave();
-                Ok(Stmt::If {
-                    branches,
-                    otherwise,
-                    span: start,
-                })
+                Ok(Stmt::If { branches, otherwise, span: start })
             }
             "while" => {
                 self.enter(start)?;
@@ -328,11 +281,7 @@ impl<'a> Parser<'a> {
                 let body = self.stmts(true)?;
                 self.expect_end("while", start)?;
                 self.leave();
-                Ok(Stmt::While {
-                    cond,
-                    body,
-                    span: start,
-                })
+                Ok(Stmt::While { cond, body, span: start })
             }
             "switch" => self.switch(start),
             "break" => Ok(Stmt::Break { span: start }),
@@ -343,11 +292,7 @@ impl<'a> Parser<'a> {
                     _ => MessageKind::Error,
                 };
                 let text = self.str_expr()?;
-                Ok(Stmt::Message {
-                    kind,
-                    text,
-                    span: start,
-                })
+                Ok(Stmt::Message { kind, text, span: start })
             }
             // `lex` rejects unknown directives by name; block ends are handled by `stmts`.
             _ => Err(Diag::new(start, format!("`#{name}` is not allowed here"))),
@@ -363,10 +308,7 @@ impl<'a> Parser<'a> {
             }
             (d, span) => Err(Diag::new(
                 span,
-                format!(
-                    "`#{d}` is not allowed in `#{opener}` opened at {} (expected `#end`)",
-                    self.line_col(start)
-                ),
+                format!("`#{d}` is not allowed in `#{opener}` opened at {} (expected `#end`)", self.line_col(start)),
             )),
         }
     }
@@ -395,18 +337,11 @@ impl<'a> Parser<'a> {
                 self.expect_punct(',', "in `str(value, width, precision)`")?;
                 let precision = self.full_expr()?;
                 self.expect_punct(')', "to close `str(`")?;
-                Ok(StrExpr::Str(
-                    Box::new(value),
-                    Box::new(width),
-                    Box::new(precision),
-                ))
+                Ok(StrExpr::Str(Box::new(value), Box::new(width), Box::new(precision)))
             }
             _ => Err(Diag::new(
                 t.span,
-                format!(
-                    "expected a string (a literal, `concat(...)` or `str(...)`), found {}",
-                    t.describe()
-                ),
+                format!("expected a string (a literal, `concat(...)` or `str(...)`), found {}", t.describe()),
             )),
         }
     }
@@ -442,9 +377,7 @@ impl<'a> Parser<'a> {
                 _ => {
                     return Err(Diag::new(
                         span,
-                        format!(
-                        "expected `#case`, `#range`, `#else` or `#end` in `#switch`, found `#{d}`"
-                    ),
+                        format!("expected `#case`, `#range`, `#else` or `#end` in `#switch`, found `#{d}`"),
                     ))
                 }
             };
@@ -452,11 +385,7 @@ impl<'a> Parser<'a> {
             clauses.push(SwitchClause { test, body, span });
         }
         self.leave();
-        Ok(Stmt::Switch {
-            value,
-            clauses,
-            span: start,
-        })
+        Ok(Stmt::Switch { value, clauses, span: start })
     }
 
     fn declare(&mut self, local: bool, start: Span) -> PResult<Stmt> {
@@ -466,18 +395,12 @@ impl<'a> Parser<'a> {
             _ => {
                 return Err(Diag::new(
                     t.span,
-                    format!(
-                        "expected an identifier after `#declare`, found {}",
-                        t.describe()
-                    ),
+                    format!("expected an identifier after `#declare`, found {}", t.describe()),
                 ))
             }
         };
         if RESERVED.contains(&name.as_str()) || is_pov_keyword(&name) {
-            return Err(Diag::new(
-                t.span,
-                format!("cannot declare `{name}`: it is a keyword"),
-            ));
+            return Err(Diag::new(t.span, format!("cannot declare `{name}`: it is a keyword")));
         }
         let name_span = t.span;
         self.expect_punct('=', &format!("after `#declare {name}`"))?;
@@ -493,12 +416,7 @@ impl<'a> Parser<'a> {
             _ => DeclValue::Expr(self.color()?),
         };
         self.eat_punct(';');
-        Ok(Stmt::Declare {
-            name,
-            local,
-            value,
-            span: start.to(name_span),
-        })
+        Ok(Stmt::Declare { name, local, value, span: start.to(name_span) })
     }
 }
 

@@ -3,8 +3,7 @@
 
 use super::{Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
-    CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
-    TransformKind,
+    CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
 };
 use crate::pov::source::{Diag, PResult};
 
@@ -23,43 +22,14 @@ const TOP_LEVEL: &[&str] = &[
     "polygon",
 ];
 const SHAPES: &str = "sphere, plane, box, triangle, polygon, union, merge, object";
-const CAMERA: &[&str] = &[
-    "location",
-    "look_at",
-    "angle",
-    "right",
-    "up",
-    "direction",
-    "sky",
-    "perspective",
-    "rotate",
-    "translate",
-];
-const LIGHT: &[&str] = &[
-    "color",
-    "colour",
-    "rgb",
-    "rgbf",
-    "rgbt",
-    "rgbft",
-    "rotate",
-    "scale",
-    "translate",
-    "shadowless",
-];
+const CAMERA: &[&str] =
+    &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
+const LIGHT: &[&str] =
+    &["color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "rotate", "scale", "translate", "shadowless"];
 const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
 /// What may follow an object's arguments.
-pub const MODIFIERS: &[&str] = &[
-    "pigment",
-    "normal",
-    "finish",
-    "texture",
-    "interior",
-    "rotate",
-    "scale",
-    "translate",
-    "no_shadow",
-];
+pub const MODIFIERS: &[&str] =
+    &["pigment", "normal", "finish", "texture", "interior", "rotate", "scale", "translate", "no_shadow"];
 
 pub fn is_object_keyword(word: &str) -> bool {
     shape_kind(word).is_some() || matches!(word, "object" | "union" | "merge")
@@ -102,10 +72,9 @@ impl Parser<'_> {
             }
             Some("global_settings") => self.global_settings(),
             Some(w) if is_object_keyword(w) => self.object().map(Stmt::Object),
-            Some(w) if UNSUPPORTED_SHAPES.contains(&w) => Err(Diag::new(
-                self.peek().span,
-                format!("`{w}` is not supported (supported: {SHAPES})"),
-            )),
+            Some(w) if UNSUPPORTED_SHAPES.contains(&w) => {
+                Err(Diag::new(self.peek().span, format!("`{w}` is not supported (supported: {SHAPES})")))
+            }
             _ => Err(self.unknown_in("the scene", TOP_LEVEL)),
         }
     }
@@ -122,10 +91,7 @@ impl Parser<'_> {
                     continue;
                 }
                 Some("rotate" | "translate") => CameraItem::Transform(self.transform_item()?),
-                Some(
-                    word
-                    @ ("location" | "look_at" | "angle" | "right" | "up" | "direction" | "sky"),
-                ) => {
+                Some(word @ ("location" | "look_at" | "angle" | "right" | "up" | "direction" | "sky")) => {
                     self.bump();
                     let e = self.expr()?;
                     match word {
@@ -150,10 +116,7 @@ impl Parser<'_> {
         let kw = self.bump().span;
         self.open_block("light_source", kw)?;
         if self.at_block_end() {
-            return Err(Diag::new(
-                self.peek().span,
-                "light_source needs a position, found none",
-            ));
+            return Err(Diag::new(self.peek().span, "light_source needs a position, found none"));
         }
         let position = self.expr()?;
         self.eat_punct(',');
@@ -179,13 +142,7 @@ impl Parser<'_> {
             }
         }
         self.close_block("light_source", kw)?;
-        Ok(Light {
-            position,
-            color,
-            shadowless,
-            transforms,
-            span: kw,
-        })
+        Ok(Light { position, color, shadowless, transforms, span: kw })
     }
 
     fn global_settings(&mut self) -> PResult<Stmt> {
@@ -223,11 +180,7 @@ impl Parser<'_> {
             _ => TransformKind::Translate,
         };
         let value = self.expr()?;
-        Ok(TransformItem {
-            kind,
-            span: t.span.to(value.span),
-            value,
-        })
+        Ok(TransformItem { kind, span: t.span.to(value.span), value })
     }
 
     /// A shape or `object { ... }` with its modifiers.
@@ -235,10 +188,7 @@ impl Parser<'_> {
         let word = self.peek_ident().unwrap_or("");
         let kw = self.peek().span;
         if UNSUPPORTED_SHAPES.contains(&word) {
-            return Err(Diag::new(
-                kw,
-                format!("`{word}` is not supported (supported: {SHAPES})"),
-            ));
+            return Err(Diag::new(kw, format!("`{word}` is not supported (supported: {SHAPES})")));
         }
         let word = word.to_string();
         self.bump();
@@ -249,19 +199,13 @@ impl Parser<'_> {
                 let outer = std::mem::replace(&mut self.in_csg, true);
                 let children = self.stmts(false);
                 self.in_csg = outer;
-                ObjectKind::Csg {
-                    merge: word == "merge",
-                    children: children?,
-                }
+                ObjectKind::Csg { merge: word == "merge", children: children? }
             }
             None => {
                 if !self.starts_expr(MODIFIERS) {
                     return Err(Diag::new(
                         self.peek().span,
-                        format!(
-                            "expected the name of a declared object in `object`, found {}",
-                            self.peek().describe()
-                        ),
+                        format!("expected the name of a declared object in `object`, found {}", self.peek().describe()),
                     ));
                 }
                 ObjectKind::Ref(self.expr()?)
@@ -275,9 +219,7 @@ impl Parser<'_> {
                 Some("finish") => Modifier::Finish(self.finish()?),
                 Some("texture") => Modifier::Texture(self.texture()?),
                 Some("interior") => Modifier::Interior(self.interior()?),
-                Some("rotate" | "scale" | "translate") => {
-                    Modifier::Transform(self.transform_item()?)
-                }
+                Some("rotate" | "scale" | "translate") => Modifier::Transform(self.transform_item()?),
                 Some("no_shadow") => {
                     self.bump();
                     Modifier::NoShadow
@@ -295,11 +237,7 @@ impl Parser<'_> {
                     let message = match shape_kind(&word) {
                         Some(s) if s != ShapeKind::Polygon => {
                             let names = shape_args(s);
-                            format!(
-                                "{word} takes {} arguments ({}); found an extra `,`",
-                                names.len(),
-                                names.join(", ")
-                            )
+                            format!("{word} takes {} arguments ({}); found an extra `,`", names.len(), names.join(", "))
                         }
                         _ => format!("unexpected `,` in {word}"),
                     };
@@ -310,11 +248,7 @@ impl Parser<'_> {
             modifiers.push(m);
         }
         self.close_block(&word, kw)?;
-        Ok(Object {
-            kind,
-            modifiers,
-            span: kw,
-        })
+        Ok(Object { kind, modifiers, span: kw })
     }
 
     /// The comma-separated arguments of a shape; commas are optional, as in POV-Ray.
@@ -323,10 +257,7 @@ impl Parser<'_> {
         let mut args = Vec::new();
         if shape == ShapeKind::Polygon {
             if !self.starts_expr(MODIFIERS) {
-                return Err(Diag::new(
-                    self.peek().span,
-                    "polygon needs the number of points, then the points",
-                ));
+                return Err(Diag::new(self.peek().span, "polygon needs the number of points, then the points"));
             }
             args.push(self.expr()?);
             loop {
@@ -347,11 +278,7 @@ impl Parser<'_> {
             if !self.starts_expr(MODIFIERS) {
                 return Err(Diag::new(
                     self.peek().span,
-                    format!(
-                        "{word} needs {} arguments ({}), found {i}",
-                        names.len(),
-                        names.join(", ")
-                    ),
+                    format!("{word} needs {} arguments ({}), found {i}", names.len(), names.join(", ")),
                 ));
             }
             args.push(self.expr()?);

@@ -33,10 +33,7 @@ fn missing_argument_is_counted() {
 #[test]
 fn unclosed_block_names_its_opener() {
     let e = parse_str("\n\n  sphere { <0,0,0>, 1\n").unwrap_err();
-    assert_eq!(
-        e,
-        "expected `}` to close `sphere` opened at 3:3, found end of file"
-    );
+    assert_eq!(e, "expected `}` to close `sphere` opened at 3:3, found end of file");
 }
 
 #[test]
@@ -51,58 +48,36 @@ fn unknown_camera_keyword_lists_the_valid_ones() {
 #[test]
 fn unsupported_shape_is_named() {
     let e = parse_str("torus { 1, 0.5 }").unwrap_err();
-    assert_eq!(
-        e,
-        "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)"
-    );
+    assert_eq!(e, "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)");
 }
 
 #[test]
 fn deep_nesting_is_an_error_not_a_stack_overflow() {
-    let text = format!(
-        "#declare A = {}1{};",
-        "(".repeat(100_000),
-        ")".repeat(100_000)
-    );
+    let text = format!("#declare A = {}1{};", "(".repeat(100_000), ")".repeat(100_000));
     let e = parse_str(&text).unwrap_err();
     assert!(e.starts_with("nesting deeper than"), "{e}");
     let text = format!("#declare A = {}1;", "-".repeat(100_000));
-    assert!(parse_str(&text)
-        .unwrap_err()
-        .starts_with("nesting deeper than"));
+    assert!(parse_str(&text).unwrap_err().starts_with("nesting deeper than"));
 }
 
 #[test]
 fn keywords_cannot_be_declared() {
-    assert_eq!(
-        parse_str("#declare x = 1;").unwrap_err(),
-        "cannot declare `x`: it is a keyword"
-    );
+    assert_eq!(parse_str("#declare x = 1;").unwrap_err(), "cannot declare `x`: it is a keyword");
 }
 
 #[test]
 fn union_objects_come_before_modifiers() {
     let e = parse_str("union { sphere { 0, 1 } pigment { rgb 1 } sphere { x, 1 } }").unwrap_err();
-    assert_eq!(
-        e,
-        "`sphere` after the modifiers of `union`: its objects must come first (as in POV-Ray)"
-    );
+    assert_eq!(e, "`sphere` after the modifiers of `union`: its objects must come first (as in POV-Ray)");
 }
 
 #[test]
 fn conditions_need_parentheses_and_allow_comparisons() {
     let s = parse_str("#if (A <= 2 & !B) #elseif (1) #else #end").unwrap();
     match &s[0] {
-        Stmt::If {
-            branches,
-            otherwise,
-            ..
-        } => {
+        Stmt::If { branches, otherwise, .. } => {
             assert_eq!(branches.len(), 2);
-            assert!(matches!(
-                branches[0].0.kind,
-                ExprKind::Binary(crate::pov::ast::BinOp::And, _, _)
-            ));
+            assert!(matches!(branches[0].0.kind, ExprKind::Binary(crate::pov::ast::BinOp::And, _, _)));
             assert_eq!(otherwise.as_deref(), Some(&[][..]));
         }
         other => panic!("{other:?}"),

@@ -3,8 +3,8 @@
 use super::expr::color_key;
 use super::Parser;
 use crate::pov::ast::{
-    Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal, NormalItem, Pigment,
-    PigmentItem, Texture, TextureItem, Turb, TurbKind,
+    Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal, NormalItem, Pigment, PigmentItem, Texture,
+    TextureItem, Turb, TurbKind,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
@@ -28,34 +28,10 @@ const PIGMENT: &[&str] = &[
     "scale",
     "translate",
 ];
-const NORMAL: &[&str] = &[
-    "bumps",
-    "turbulence",
-    "octaves",
-    "omega",
-    "lambda",
-    "rotate",
-    "scale",
-    "translate",
-];
-const FINISH: &[&str] = &[
-    "ambient",
-    "diffuse",
-    "brilliance",
-    "phong",
-    "phong_size",
-    "specular",
-    "roughness",
-    "reflection",
-];
-const TEXTURE: &[&str] = &[
-    "pigment",
-    "normal",
-    "finish",
-    "rotate",
-    "scale",
-    "translate",
-];
+const NORMAL: &[&str] = &["bumps", "turbulence", "octaves", "omega", "lambda", "rotate", "scale", "translate"];
+const FINISH: &[&str] =
+    &["ambient", "diffuse", "brilliance", "phong", "phong_size", "specular", "roughness", "reflection"];
+const TEXTURE: &[&str] = &["pigment", "normal", "finish", "rotate", "scale", "translate"];
 const INTERIOR: &[&str] = &["ior"];
 
 fn turb_kind(word: &str) -> Option<TurbKind> {
@@ -85,10 +61,7 @@ impl Parser<'_> {
 
     fn turb(&mut self, kind: TurbKind) -> PResult<Turb> {
         self.bump();
-        Ok(Turb {
-            kind,
-            value: self.expr()?,
-        })
+        Ok(Turb { kind, value: self.expr()? })
     }
 
     pub(super) fn pigment(&mut self) -> PResult<Pigment> {
@@ -124,18 +97,13 @@ impl Parser<'_> {
                 Some(w) if turb_kind(w).is_some() => {
                     PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
-                Some("rotate" | "scale" | "translate") => {
-                    PigmentItem::Transform(self.transform_item()?)
-                }
+                Some("rotate" | "scale" | "translate") => PigmentItem::Transform(self.transform_item()?),
                 _ => return Err(self.unknown_in("pigment", PIGMENT)),
             };
             items.push(item);
         }
         let end = self.close_block("pigment", kw)?;
-        Ok(Pigment {
-            items,
-            span: kw.to(end),
-        })
+        Ok(Pigment { items, span: kw.to(end) })
     }
 
     fn color_map(&mut self) -> PResult<PigmentItem> {
@@ -148,11 +116,7 @@ impl Parser<'_> {
             self.eat_punct(',');
             let color = self.color()?;
             let close = self.expect_punct(']', "to close the color_map entry")?;
-            entries.push(MapEntry {
-                value,
-                color,
-                span: open.to(close),
-            });
+            entries.push(MapEntry { value, color, span: open.to(close) });
         }
         self.close_block("color_map", kw)?;
         if entries.is_empty() {
@@ -172,28 +136,19 @@ impl Parser<'_> {
             let item = match self.peek_ident() {
                 Some("bumps") => {
                     let span = self.bump().span;
-                    let amount = if self.starts_expr(NORMAL) {
-                        Some(self.expr()?)
-                    } else {
-                        None
-                    };
+                    let amount = if self.starts_expr(NORMAL) { Some(self.expr()?) } else { None };
                     NormalItem::Bumps(amount, span)
                 }
                 Some(w) if turb_kind(w).is_some() => {
                     NormalItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
-                Some("rotate" | "scale" | "translate") => {
-                    NormalItem::Transform(self.transform_item()?)
-                }
+                Some("rotate" | "scale" | "translate") => NormalItem::Transform(self.transform_item()?),
                 _ => return Err(self.unknown_in("normal", NORMAL)),
             };
             items.push(item);
         }
         let end = self.close_block("normal", kw)?;
-        Ok(Normal {
-            items,
-            span: kw.to(end),
-        })
+        Ok(Normal { items, span: kw.to(end) })
     }
 
     pub(super) fn finish(&mut self) -> PResult<Finish> {
@@ -231,10 +186,7 @@ impl Parser<'_> {
             items.push(FinishItem::Set(key, value));
         }
         let end = self.close_block("finish", kw)?;
-        Ok(Finish {
-            items,
-            span: kw.to(end),
-        })
+        Ok(Finish { items, span: kw.to(end) })
     }
 
     pub(super) fn texture(&mut self) -> PResult<Texture> {
@@ -249,18 +201,13 @@ impl Parser<'_> {
                 Some("pigment") => TextureItem::Pigment(self.pigment()?),
                 Some("normal") => TextureItem::Normal(self.normal()?),
                 Some("finish") => TextureItem::Finish(self.finish()?),
-                Some("rotate" | "scale" | "translate") => {
-                    TextureItem::Transform(self.transform_item()?)
-                }
+                Some("rotate" | "scale" | "translate") => TextureItem::Transform(self.transform_item()?),
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };
             items.push(item);
         }
         let end = self.close_block("texture", kw)?;
-        Ok(Texture {
-            items,
-            span: kw.to(end),
-        })
+        Ok(Texture { items, span: kw.to(end) })
     }
 
     pub(super) fn interior(&mut self) -> PResult<Interior> {
@@ -280,9 +227,6 @@ impl Parser<'_> {
             }
         }
         let end = self.close_block("interior", kw)?;
-        Ok(Interior {
-            items,
-            span: kw.to(end),
-        })
+        Ok(Interior { items, span: kw.to(end) })
     }
 }

@@ -7,6 +7,11 @@
 //! each loop into one 256-bit instruction, and elsewhere into two SSE instructions. Neither
 //! contracts `a*b + c` into FMA, so both give the same bits on every x86-64 CPU.
 
+// Lane loops index by `i` on purpose: a plain `for i in 0..8` over fixed arrays is the shape
+// LLVM turns into one vector instruction. `V3::add`/`sub`/`mul` are lane-generic helpers, not the
+// operator traits (which would need more bounds on `L` for no gain).
+#![allow(clippy::needless_range_loop, clippy::should_implement_trait)]
+
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use glam::Vec3;

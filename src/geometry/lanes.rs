@@ -33,6 +33,7 @@ pub trait Lane:
     fn select(m: Self::Mask, a: Self, b: Self) -> Self;
     /// 1 for `self >= 0` (including -0), else -1: the sign the stable quadratic needs, never 0.
     fn sign_or_one(self) -> Self;
+    fn abs(self) -> Self;
     fn recip(self) -> Self {
         Self::splat(1.0) / self
     }
@@ -91,6 +92,10 @@ impl Lane for f32 {
         } else {
             b
         }
+    }
+    #[inline(always)]
+    fn abs(self) -> f32 {
+        f32::abs(self)
     }
     #[inline(always)]
     fn sign_or_one(self) -> f32 {
@@ -229,6 +234,10 @@ impl Lane for F8 {
         F8(r)
     }
     #[inline(always)]
+    fn abs(self) -> F8 {
+        F8(self.0.map(f32::abs))
+    }
+    #[inline(always)]
     fn sign_or_one(self) -> F8 {
         F8(self.0.map(<f32 as Lane>::sign_or_one))
     }
@@ -282,6 +291,19 @@ impl<L: Lane> V3<L> {
     #[inline(always)]
     pub fn recip(self) -> V3<L> {
         V3 { x: self.x.recip(), y: self.y.recip(), z: self.z.recip() }
+    }
+    /// The largest absolute component, with `Lane::max`'s rule (as `geometry::ray::max_abs`).
+    #[inline(always)]
+    pub fn max_abs(self) -> L {
+        self.x.abs().max(self.y.abs()).max(self.z.abs())
+    }
+    #[inline(always)]
+    pub fn select(m: L::Mask, a: V3<L>, b: V3<L>) -> V3<L> {
+        V3 { x: L::select(m, a.x, b.x), y: L::select(m, a.y, b.y), z: L::select(m, a.z, b.z) }
+    }
+    #[inline(always)]
+    pub fn neg(self) -> V3<L> {
+        V3 { x: -self.x, y: -self.y, z: -self.z }
     }
     /// An affine map (column-major 3×3 plus translation) applied to a point.
     #[inline(always)]

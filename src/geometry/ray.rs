@@ -29,7 +29,9 @@ impl Ray {
 /// the point's magnitude, so the error is a small multiple of f32's epsilon times that magnitude.
 /// 32 ulps covers the worst routine (the oriented box: two affine transforms) with room to spare,
 /// while staying invisible: at |p| = 10 the offset is 2e-5.
-const HIT_ERROR_ULPS: f32 = 32.0 * f32::EPSILON;
+pub(crate) const HIT_ERROR_ULPS: f32 = 32.0 * f32::EPSILON;
+/// Shadow rays stop this fraction of their length short of the light (see `shadow_t_max`).
+pub(crate) const SHADOW_SHRINK: f32 = 1.0 - 4.0 * f32::EPSILON;
 
 /// The largest absolute coordinate. Plain comparisons: `f32::max` handles NaN with extra
 /// compare-and-blend instructions, which made this 4% of the seed scene's frame.
@@ -66,7 +68,7 @@ pub fn shadow_t_max(origin: Vec3, light: Vec3) -> f32 {
     let (a, b) = (max_abs(origin), max_abs(light));
     let magnitude = if a > b { a } else { b };
     let dist = (light - origin).length();
-    let t = dist * (1.0 - 4.0 * f32::EPSILON) - magnitude * HIT_ERROR_ULPS;
+    let t = dist * SHADOW_SHRINK - magnitude * HIT_ERROR_ULPS;
     if t > 0.0 {
         t
     } else {

@@ -13,9 +13,10 @@ use crate::accel::packet::{Frustum, Ray8, RowTest};
 use crate::accel::Accel;
 use crate::geometry::lanes::{self, Lane, F8, M8, V3};
 use crate::geometry::ray::Ray;
+use crate::geometry::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::stats::RenderStats;
-use crate::render::trace::{light_direction, shadow_ray, Shadows, Surface, Tracer};
+use crate::render::trace::{Shadows, Surface, Tracer};
 use crate::scene::build::{Scene, ShapeKind};
 
 /// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
@@ -50,6 +51,7 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
 
     // Surfaces first, so all shadow rays of the block can be traced together.
     let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
+    let mut rows_soa = SurfaceRows::default();
     for r in 0..rows {
         for i in 0..lanes {
             let hit = match ids[r][i] {
@@ -57,7 +59,9 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
                 id if id >= PLANE_ID => HitShape::Plane(id - PLANE_ID),
                 id => HitShape::Prim(id),
             };
-            surfaces[r][i] = Some(tracer.surface(&rays[r][i], &Hit { t: t[r].0[i], shape: hit }));
+            let s = tracer.surface(&rays[r][i], &Hit { t: t[r].0[i], shape: hit });
+            rows_soa.set_lane(r, i, &s);
+            surfaces[r][i] = Some(s);
         }
     }
     let packet_shadows =
@@ -78,33 +82,26 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
     // the surface, or blocked). Computed once here and handed to shading.
     let mut lit = [[[Vec3::ZERO; MAX_PACKET_LIGHTS]; 8]; 8];
     for (l, light) in scene.lights.iter().enumerate() {
-        let mut shadow_rows = [Ray8::ZERO; 8];
-        let mut t_max = [F8::splat(f32::NEG_INFINITY); 8];
-        let mut active = [M8::default(); 8];
-        let mut any = false;
+        let mut shadow = ShadowRows::new();
+        shadow_setup(&rows_soa, rows, light.position, light.shadowless, &mut shadow);
         for r in 0..rows {
             for i in 0..lanes {
-                let Some(surface) = &surfaces[r][i] else { continue };
-                let Some(dir) = light_direction(surface, light.position) else { continue };
-                lit[r][i][l] = dir;
-                if light.shadowless {
-                    continue;
+                if shadow.lit[r].lane(i) {
+                    let d = &shadow.rays[r].d;
+                    lit[r][i][l] = Vec3::new(d.x.0[i], d.y.0[i], d.z.0[i]);
                 }
-                let s = shadow_ray(surface.p, surface.facing, dir, light.position);
-                shadow_rows[r].set_lane(i, s.ray.origin, s.ray.dir, s.ray.inv_dir);
-                t_max[r].0[i] = s.t_max;
-                active[r].0[i] = -1;
-                any = true;
-                tracer.stats.shadow_rays += 1;
             }
         }
-        if !any {
+        let active = shadow.active;
+        let count: u64 = active[..rows].iter().map(|m| m.0.iter().filter(|&&v| v != 0).count() as u64).sum();
+        if count == 0 {
             continue;
         }
+        tracer.stats.shadow_rays += count;
         let blocked = occluded_rows(
             scene,
-            &shadow_rows[..rows],
-            &mut t_max[..rows],
+            &shadow.rays[..rows],
+            &mut shadow.t_max[..rows],
             &active[..rows],
             light.position,
             &mut tracer.stats,
@@ -129,6 +126,111 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes
         }
     }
     colors
+}
+
+/// A block's hit points and normals in structure-of-arrays form, eight lanes per row.
+#[derive(Default)]
+struct SurfaceRows {
+    p: [Soa3; 8],
+    facing: [Soa3; 8],
+    normal: [Soa3; 8],
+    valid: [M8; 8],
+}
+
+#[derive(Clone, Copy, Default)]
+struct Soa3 {
+    x: F8,
+    y: F8,
+    z: F8,
+}
+
+impl Soa3 {
+    #[inline(always)]
+    fn v(self) -> V3<F8> {
+        V3 { x: self.x, y: self.y, z: self.z }
+    }
+
+    #[inline(always)]
+    fn set(&mut self, i: usize, v: Vec3) {
+        (self.x.0[i], self.y.0[i], self.z.0[i]) = (v.x, v.y, v.z);
+    }
+}
+
+impl SurfaceRows {
+    fn set_lane(&mut self, r: usize, i: usize, s: &Surface) {
+        self.p[r].set(i, s.p);
+        self.facing[r].set(i, s.facing);
+        self.normal[r].set(i, s.normal);
+        self.valid[r].0[i] = -1;
+    }
+}
+
+/// Shadow rays towards one light for a block, and where they stop.
+struct ShadowRows {
+    rays: [Ray8; 8],
+    t_max: [F8; 8],
+    /// Lanes with a shadow ray to trace.
+    active: [M8; 8],
+    /// Lanes the light reaches unless something blocks it (direction in `rays[r].d`).
+    lit: [M8; 8],
+}
+
+impl ShadowRows {
+    fn new() -> ShadowRows {
+        ShadowRows {
+            rays: [Ray8::ZERO; 8],
+            t_max: [F8::splat(f32::NEG_INFINITY); 8],
+            active: [M8::default(); 8],
+            lit: [M8::default(); 8],
+        }
+    }
+}
+
+fn shadow_setup(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: bool, out: &mut ShadowRows) {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx2() {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { shadow_setup_avx2(s, rows, light, shadowless, out) };
+    }
+    shadow_setup_generic(s, rows, light, shadowless, out)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn shadow_setup_avx2(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: bool, out: &mut ShadowRows) {
+    shadow_setup_generic(s, rows, light, shadowless, out)
+}
+
+/// `trace::light_direction` and `trace::shadow_ray` eight lanes at a time: the same operations
+/// in the same order, so these rays are bit-identical to the single-ray path's (packet and
+/// `--no-packets` images are compared bit for bit in the tests). Done one lane at a time this
+/// was about a sixth of the seed scene's frame.
+#[inline(always)]
+fn shadow_setup_generic(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: bool, out: &mut ShadowRows) {
+    let zero = F8::splat(0.0);
+    let light8 = V3::splat(light);
+    let light_magnitude = F8::splat(V3::from_vec3(light).max_abs());
+    for r in 0..rows {
+        let (p, facing, normal) = (s.p[r].v(), s.facing[r].v(), s.normal[r].v());
+        // trace::light_direction
+        let to_light = light8.sub(p);
+        let dist = to_light.dot(to_light).sqrt();
+        let l = V3 { x: to_light.x / dist, y: to_light.y / dist, z: to_light.z / dist };
+        let lit = F8::and(F8::and(s.valid[r], zero.lt(dist)), F8::and(zero.lt(normal.dot(l)), zero.lt(facing.dot(l))));
+        // geometry::ray::offset_origin
+        let d = p.max_abs() * F8::splat(HIT_ERROR_ULPS) + F8::splat(f32::MIN_POSITIVE * 16.0);
+        let towards = zero.le(facing.dot(l));
+        let origin = p.add(V3::select(towards, facing.scale(d), facing.neg().scale(d)));
+        // geometry::ray::shadow_t_max
+        let magnitude = origin.max_abs().max(light_magnitude);
+        let span = light8.sub(origin);
+        let t = (span.dot(span).sqrt() * F8::splat(SHADOW_SHRINK) - magnitude * F8::splat(HIT_ERROR_ULPS)).max(zero);
+        let active = if shadowless { M8::default() } else { lit };
+        out.rays[r] = Ray8 { o: origin, d: l, inv: l.recip() };
+        out.t_max[r] = F8::select(active, t, F8::splat(f32::NEG_INFINITY));
+        out.active[r] = active;
+        out.lit[r] = lit;
+    }
 }
 
 #[cfg(target_arch = "x86_64")]

@@ -113,6 +113,16 @@ fn legacy_scene_writes_linear_values_like_povray() {
     check_psnr("legacy", &scene("legacy"), 35.0);
 }
 
+#[test]
+fn assumed_gamma_2_2_darkens_like_povray() {
+    check_psnr("gamma22", &scene("gamma22"), 35.0);
+}
+
+#[test]
+fn scene_without_version_directive_writes_linear_values_like_povray() {
+    check_psnr("noversion", &scene("noversion"), 35.0);
+}
+
 /// Per-pixel region of the seed scene: which material the primary ray hits (or none).
 fn regions(r: &Rendered) -> Vec<Option<u32>> {
     let mut stats = RenderStats::default();

@@ -96,6 +96,8 @@ pub struct Scene {
     pub max_trace_level: u32,
     /// Whether output pixels are sRGB-encoded (3.7 gamma handling) or written linear (legacy).
     pub srgb: bool,
+    /// `assumed_gamma`: each sample is raised to this power before encoding (1 for 3.7 scenes).
+    pub gamma: f32,
     pub features: Features,
     pub accel: Accel,
 }
@@ -175,6 +177,7 @@ impl Scene {
             ambient_light: desc.global.ambient_light.as_vec3(),
             max_trace_level: desc.global.max_trace_level.max(1),
             srgb: desc.writes_srgb(),
+            gamma: desc.output_gamma().unwrap_or(1.0) as f32,
             features: Features::default(),
             accel: Accel::None { count: 0 },
         };

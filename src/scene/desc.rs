@@ -273,6 +273,9 @@ pub struct ObjectDesc {
 pub struct SceneDesc {
     /// The language version in effect at the end of parsing (`#version`, or 3.7 when none).
     pub version: f64,
+    /// Whether any `#version` directive ran (an included `colors.inc` runs one). POV-Ray 3.7
+    /// treats a scene without one as legacy for gamma: no `assumed_gamma`, linear output.
+    pub version_directive: bool,
     pub camera: CameraDesc,
     pub lights: Vec<LightDesc>,
     /// `background { color C }`; black by default.
@@ -285,6 +288,7 @@ impl Default for SceneDesc {
     fn default() -> Self {
         SceneDesc {
             version: 3.7,
+            version_directive: false,
             camera: CameraDesc::default(),
             lights: Vec::new(),
             background: Color::BLACK,
@@ -295,12 +299,21 @@ impl Default for SceneDesc {
 }
 
 impl SceneDesc {
-    /// POV-Ray 3.7: an explicit `assumed_gamma` wins; otherwise a 3.7 scene is linear (1.0) and
-    /// writes sRGB, while a legacy scene gets no gamma handling at all.
-    pub fn writes_srgb(&self) -> bool {
+    /// How computed colours become output values, as POV-Ray 3.7 does it (checked by rendering):
+    /// `Some(g)`: raised to the power `g` (`assumed_gamma`), then sRGB-encoded; `None`: written
+    /// as they are (a legacy scene without `assumed_gamma`). A scene whose `#version` directive
+    /// says 3.7 or later and gives no `assumed_gamma` gets 1.0; one with no directive at all
+    /// is legacy.
+    pub fn output_gamma(&self) -> Option<f64> {
         match self.global.assumed_gamma {
-            Some(g) => (g - 1.0).abs() < 1e-9,
-            None => self.version >= 3.7 - 1e-9,
+            Some(g) => Some(g),
+            None if self.version_directive && self.version >= 3.7 - 1e-9 => Some(1.0),
+            None => None,
         }
+    }
+
+    /// Whether output pixels are sRGB-encoded.
+    pub fn writes_srgb(&self) -> bool {
+        self.output_gamma().is_some()
     }
 }

@@ -36,6 +36,8 @@ pub fn seed_scene() -> SceneDesc {
     let rotate = DMat4::from_rotation_y((-20f64).to_radians());
     let box_transform = Transform { matrix: rotate, inverse: rotate.inverse() };
     SceneDesc {
+        // As `scenes/seed.pov`, whose included colors.inc runs `#version`.
+        version_directive: true,
         camera: CameraDesc {
             location: cam.location,
             direction: cam.direction,

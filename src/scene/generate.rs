@@ -155,6 +155,8 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
     let cam = Camera::looking_at(location, look_at, Some(60.0), &like);
     let (lx, ly) = (edge + 5.0, 2.0 * edge + 10.0);
     SceneDesc {
+        // `write_pov` starts the file with `#version`.
+        version_directive: true,
         camera: CameraDesc {
             location: cam.location,
             direction: cam.direction,

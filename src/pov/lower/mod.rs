@@ -138,6 +138,7 @@ impl<'f> Lowerer<'f> {
                     return Err(Diag::new(value.span, format!("unsupported #version {v} (expected 1.0 to 3.8)")));
                 }
                 self.version = v;
+                self.scene.version_directive = true;
             }
             Stmt::Include { path, span, path_span } => {
                 let (_, stmts) = self.files.enter_include(path, *span, *path_span)?;

@@ -1,0 +1,6 @@
+// No #version directive and no include that runs one: POV-Ray 3.7 handles gamma as a legacy
+// scene and writes linear values.
+camera { location <0, 1, -4> look_at <0, 0.5, 0> angle 60 }
+light_source { <2, 4, -5> color rgb <1, 0.9, 0.8> }
+plane { y, 0 pigment { checker color rgb <0.8, 0.5, 0.2> color rgb 0.1 } }
+sphere { <0, 0.7, 0>, 0.7 pigment { color rgb <0.3, 0.6, 0.9> } finish { phong 0.5 specular 0.3 } }

@@ -522,3 +522,14 @@ fn error_csg() {
     assert_eq!((l, c), (2, 2));
     assert!(m.starts_with("expected a 3-component vector, found 4"), "{m}");
 }
+
+/// Regression: `look_at` must keep a right-handed camera right-handed (`right -x*4/3`, as
+/// modellers export scenes); it used to flip the picture. Checked against a POV-Ray render.
+#[test]
+fn look_at_keeps_a_right_handed_camera_right_handed() {
+    let s = load_text("handed", "camera { location <0, 1, -5> look_at <0, 1, 0> right -x*4/3 }").expect("loads");
+    assert!(close(s.camera.right, DVec3::new(-4.0 / 3.0, 0.0, 0.0)), "right = {:?}", s.camera.right);
+    assert!(close(s.camera.up, DVec3::Y));
+    let s = load_text("lefthanded", "camera { location <0, 1, -5> look_at <0, 1, 0> }").expect("loads");
+    assert!(close(s.camera.right, DVec3::new(1.33, 0.0, 0.0)), "right = {:?}", s.camera.right);
+}

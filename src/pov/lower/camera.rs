@@ -48,6 +48,9 @@ impl Lowerer<'_> {
             if to.length() == 0.0 {
                 return Err(Diag::new(target_span, "camera look_at is the same point as its location"));
             }
+            // A right-handed camera (`right -x*4/3`, as modellers export) stays right-handed:
+            // POV-Ray keeps the handedness of the vectors it was given (checked by rendering).
+            let right_handed = cam.right.cross(cam.up).dot(cam.direction) < 0.0;
             let direction = to.normalize() * cam.direction.length();
             let mut right = cam.sky.cross(direction);
             let parallel = |r: glam::DVec3, other: glam::DVec3| {
@@ -76,6 +79,7 @@ impl Lowerer<'_> {
             // POV-Ray's left-handed frame: cross(sky, direction) points to the image's right.
             let right = right.normalize() * cam.right.length();
             let up = direction.cross(right).normalize() * cam.up.length();
+            let right = if right_handed { -right } else { right };
             cam.direction = direction;
             cam.right = right;
             cam.up = up;

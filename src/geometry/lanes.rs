@@ -37,6 +37,17 @@ pub trait Lane:
     fn recip(self) -> Self {
         Self::splat(1.0) / self
     }
+    /// Lanes in one value: 1 for `f32`, 8 for `F8`.
+    const WIDTH: usize;
+    /// Lane `i`.
+    fn get(self, i: usize) -> f32;
+    fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+    /// Whether lane `i` of a mask is set.
+    fn mask_lane(m: Self::Mask, i: usize) -> bool;
+    fn mask_from_fn(f: impl FnMut(usize) -> bool) -> Self::Mask;
+    fn floor(self) -> Self;
+    /// `f` applied lane by lane, for what has no vector instruction (`powf`, `round`).
+    fn map(self, f: impl Fn(f32) -> f32) -> Self;
 }
 
 impl Lane for f32 {
@@ -104,6 +115,31 @@ impl Lane for f32 {
         } else {
             -1.0
         }
+    }
+    const WIDTH: usize = 1;
+    #[inline(always)]
+    fn get(self, _: usize) -> f32 {
+        self
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f32) -> f32 {
+        f(0)
+    }
+    #[inline(always)]
+    fn mask_lane(m: bool, _: usize) -> bool {
+        m
+    }
+    #[inline(always)]
+    fn mask_from_fn(mut f: impl FnMut(usize) -> bool) -> bool {
+        f(0)
+    }
+    #[inline(always)]
+    fn floor(self) -> f32 {
+        f32::floor(self)
+    }
+    #[inline(always)]
+    fn map(self, f: impl Fn(f32) -> f32) -> f32 {
+        f(self)
     }
 }
 
@@ -241,6 +277,31 @@ impl Lane for F8 {
     fn sign_or_one(self) -> F8 {
         F8(self.0.map(<f32 as Lane>::sign_or_one))
     }
+    const WIDTH: usize = 8;
+    #[inline(always)]
+    fn get(self, i: usize) -> f32 {
+        self.0[i]
+    }
+    #[inline(always)]
+    fn from_fn(f: impl FnMut(usize) -> f32) -> F8 {
+        F8(std::array::from_fn(f))
+    }
+    #[inline(always)]
+    fn mask_lane(m: M8, i: usize) -> bool {
+        m.0[i] != 0
+    }
+    #[inline(always)]
+    fn mask_from_fn(mut f: impl FnMut(usize) -> bool) -> M8 {
+        M8(std::array::from_fn(|i| -(f(i) as i32)))
+    }
+    #[inline(always)]
+    fn floor(self) -> F8 {
+        F8(self.0.map(f32::floor))
+    }
+    #[inline(always)]
+    fn map(self, f: impl Fn(f32) -> f32) -> F8 {
+        F8(self.0.map(f))
+    }
 }
 
 /// A vector of lanes.
@@ -305,6 +366,43 @@ impl<L: Lane> V3<L> {
     pub fn neg(self) -> V3<L> {
         V3 { x: -self.x, y: -self.y, z: -self.z }
     }
+    /// `1 / |v|`, as glam's `length_recip`.
+    #[inline(always)]
+    pub fn length_recip(self) -> L {
+        self.dot(self).sqrt().recip()
+    }
+    /// `v / |v|`, computed as glam's `Vec3::normalize` does (`v * (1 / sqrt(v·v))`).
+    #[inline(always)]
+    pub fn normalize(self) -> V3<L> {
+        self.scale(self.length_recip())
+    }
+    /// `v / |v|`, or `fallback` where that is not finite (glam's `normalize_or`).
+    #[inline(always)]
+    pub fn normalize_or(self, fallback: V3<L>) -> V3<L> {
+        let rcp = self.length_recip();
+        let ok = L::and(rcp.lt(L::splat(f32::INFINITY)), L::splat(0.0).lt(rcp));
+        V3::select(ok, self.scale(rcp), fallback)
+    }
+    /// Lane `i` as a `Vec3`.
+    #[inline(always)]
+    pub fn lane(self, i: usize) -> Vec3 {
+        Vec3::new(self.x.get(i), self.y.get(i), self.z.get(i))
+    }
+    /// Lanes built from one `Vec3` per lane.
+    #[inline(always)]
+    pub fn from_lanes(mut f: impl FnMut(usize) -> Vec3) -> V3<L> {
+        let mut v = [Vec3::ZERO; 8];
+        for (i, v) in v.iter_mut().enumerate().take(L::WIDTH) {
+            *v = f(i);
+        }
+        V3 { x: L::from_fn(|i| v[i].x), y: L::from_fn(|i| v[i].y), z: L::from_fn(|i| v[i].z) }
+    }
+    /// A 3×3 matrix times each lane's vector, in glam's `Mat3A * Vec3A` order (columns).
+    #[inline(always)]
+    pub fn mat3_mul(self, m: &glam::Mat3A) -> V3<L> {
+        let c = |a: glam::Vec3A| V3::<L>::splat(Vec3::from(a));
+        c(m.x_axis).scale(self.x).add(c(m.y_axis).scale(self.y)).add(c(m.z_axis).scale(self.z))
+    }
     /// An affine map (column-major 3×3 plus translation) applied to a point.
     #[inline(always)]
     pub fn transform_point(self, a: &glam::Affine3A) -> V3<L> {
@@ -339,6 +437,10 @@ impl V3<f32> {
     #[inline(always)]
     pub fn from_vec3(v: Vec3) -> V3<f32> {
         V3 { x: v.x, y: v.y, z: v.z }
+    }
+    #[inline(always)]
+    pub fn vec3(self) -> Vec3 {
+        Vec3::new(self.x, self.y, self.z)
     }
 }
 

@@ -11,6 +11,7 @@ pub mod packet;
 pub mod preset;
 pub mod progressive;
 pub mod resample;
+pub mod shade;
 pub mod stats;
 pub mod trace;
 

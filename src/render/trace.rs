@@ -8,8 +8,10 @@
 
 use glam::Vec3;
 
+use crate::geometry::lanes::V3;
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::render::intersect::Hit;
+use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::build::Scene;
@@ -97,11 +99,14 @@ impl<'a> Tracer<'a> {
         let Surface { p, facing, normal, entering, material, pigment } = *surface;
         let finish = &material.finish;
         let c = pigment.rgb;
-        // Light passing through the surface does not also light it.
-        let opacity = (1.0 - pigment.filter - pigment.transmit).max(0.0);
-
-        let mut color = finish.ambient * c * scene.ambient_light * opacity;
-        let reflected_dir = ray.dir - 2.0 * ray.dir.dot(normal) * normal;
+        let hit = LocalHit {
+            color: V3::from_vec3(c),
+            opacity: shade::opacity(pigment.filter, pigment.transmit),
+            normal: V3::from_vec3(normal),
+            ray_dir: V3::from_vec3(ray.dir),
+        };
+        let reflected = shade::reflect(hit.ray_dir, hit.normal);
+        let mut color = shade::ambient(finish, scene.ambient_light, &hit);
         for (i, light) in scene.lights.iter().enumerate() {
             let (l, passed) = match shadows {
                 Shadows::Given(lit) => {
@@ -124,26 +129,11 @@ impl<'a> Tracer<'a> {
                     (l, passed)
                 }
             };
-            let n_dot_l = normal.dot(l);
-            let light_color = light.color * passed;
-            if finish.diffuse > 0.0 {
-                let d = finish.brilliance.pow(n_dot_l);
-                color += light_color * c * (finish.diffuse * d * opacity);
-            }
-            if finish.phong > 0.0 {
-                let r_dot_l = reflected_dir.dot(l);
-                if r_dot_l > 0.0 {
-                    color += light_color * (finish.phong * finish.phong_size.pow(r_dot_l));
-                }
-            }
-            if finish.specular > 0.0 {
-                let h = (l - ray.dir).normalize_or_zero();
-                let n_dot_h = normal.dot(h);
-                if n_dot_h > 0.0 {
-                    color += light_color * (finish.specular * finish.specular_exponent.pow(n_dot_h));
-                }
-            }
+            let sample = LightSample { dir: V3::from_vec3(l), color: V3::from_vec3(light.color * passed), on: true };
+            color = shade::add_light(finish, &hit, reflected, color, &sample);
         }
+        let mut color = color.vec3();
+        let reflected_dir = reflected.vec3();
 
         if level < self.max_level() {
             if finish.reflects() {

@@ -2,6 +2,7 @@
 
 use glam::{DVec3, Vec3};
 
+use crate::geometry::lanes::Lane;
 use crate::scene::desc::{FinishDesc, InteriorDesc, TextureDesc};
 use crate::shading::normal::NormalF32;
 use crate::shading::pattern::Rgbft;
@@ -32,20 +33,26 @@ impl Exponent {
     /// `x` raised to this exponent, for `x` in (0, 1].
     #[inline]
     pub fn pow(self, x: f32) -> f32 {
+        self.pow_lanes(x)
+    }
+
+    /// `pow` for one or eight lanes, with the same operations in the same order.
+    #[inline(always)]
+    pub fn pow_lanes<L: Lane>(self, x: L) -> L {
         match self {
             Exponent::One => x,
             Exponent::Whole(mut n) => {
-                let (mut base, mut acc) = (x, 1.0f32);
+                let (mut base, mut acc) = (x, L::splat(1.0));
                 while n > 0 {
                     if n & 1 == 1 {
-                        acc *= base;
+                        acc = acc * base;
                     }
-                    base *= base;
+                    base = base * base;
                     n >>= 1;
                 }
                 acc
             }
-            Exponent::Real(e) => x.powf(e),
+            Exponent::Real(e) => x.map(|v| v.powf(e)),
         }
     }
 }

@@ -18,6 +18,8 @@
 
 use glam::{Mat3A, Vec3, Vec3A};
 
+use crate::geometry::lanes::{Lane, V3};
+
 /// Turbulence of a pattern, render-ready.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TurbulenceF32 {
@@ -125,6 +127,39 @@ const fn build_grad3() -> [Mat3A; 256] {
 /// scene's dnoise went from 360 to about 250 instructions a call, measured with callgrind).
 static GRAD3: [Mat3A; 256] = build_grad3();
 
+/// `GRAD3` as bits, for computing gradients eight lanes at a time without gathering floats:
+/// bit `3j + k` is set where component `k` of gradient `j` is non-zero, bit `16 + 3j + k` where
+/// it is negative.
+const fn build_grad_bits() -> [u32; 256] {
+    let mut t = [0u32; 256];
+    let mut i = 0;
+    while i < 256 {
+        let h = mix32(0xd1ce_0000 ^ i as u32);
+        let g = [GRADIENTS[(h & 15) as usize], GRADIENTS[((h >> 8) & 15) as usize], GRADIENTS[((h >> 16) & 15) as usize]];
+        let mut bits = 0;
+        let mut j = 0;
+        while j < 3 {
+            let c = [g[j].x, g[j].y, g[j].z];
+            let mut k = 0;
+            while k < 3 {
+                if c[k] != 0.0 {
+                    bits |= 1 << (3 * j + k);
+                }
+                if c[k] < 0.0 {
+                    bits |= 1 << (16 + 3 * j + k);
+                }
+                k += 1;
+            }
+            j += 1;
+        }
+        t[i] = bits;
+        i += 1;
+    }
+    t
+}
+
+static GRAD_BITS: [u32; 256] = build_grad_bits();
+
 /// The lattice cell around `p`: corner hashes, offset from the low corner, s-curve weights.
 struct Cell {
     /// Hash of corner (i, j, k) at index `i | j << 1 | k << 2`.
@@ -193,27 +228,84 @@ pub fn noise(p: Vec3) -> f32 {
 /// each component centred on 0 with std 0.251 (range about ±1).
 #[inline]
 pub fn dnoise(p: Vec3) -> Vec3 {
-    let c = cell(p);
-    let mut v = [Vec3A::ZERO; 8];
-    for (i, v) in v.iter_mut().enumerate() {
-        *v = GRAD3[c.hash[i] as usize] * Vec3A::from(corner_offset(c.frac, i));
+    dnoise_lanes(V3::from_vec3(p)).vec3()
+}
+
+/// `dnoise` for one or eight points, bit-identical lane by lane. The lattice hashes are looked
+/// up lane by lane; everything else is lane arithmetic, with each gradient component built from
+/// `GRAD_BITS` by two selects, and the products summed in `Mat3A * Vec3A` order.
+#[inline(always)]
+pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
+    let floor = V3 { x: p.x.floor(), y: p.y.floor(), z: p.z.floor() };
+    let frac = p.sub(floor);
+    let (three, two) = (L::splat(3.0), L::splat(2.0));
+    let weight = V3 {
+        x: frac.x * frac.x * (three - two * frac.x),
+        y: frac.y * frac.y * (three - two * frac.y),
+        z: frac.z * frac.z * (three - two * frac.z),
+    };
+    // Gradient bits of corner (i, j, k) at index `i | j << 1 | k << 2`, per lane.
+    let mut bits = [[0u32; 8]; 8];
+    for lane in 0..L::WIDTH {
+        // `as i32` saturates for huge inputs; `& 255` wraps the lattice every 256 units.
+        let x = (floor.x.get(lane) as i32 & 255) as usize;
+        let y = (floor.y.get(lane) as i32 & 255) as usize;
+        let z = (floor.z.get(lane) as i32 & 255) as usize;
+        let a = PERM[x] as usize + y;
+        let b = PERM[x + 1] as usize + y;
+        let (aa, ab) = (PERM[a] as usize + z, PERM[a + 1] as usize + z);
+        let (ba, bb) = (PERM[b] as usize + z, PERM[b + 1] as usize + z);
+        let hash = [PERM[aa], PERM[ba], PERM[ab], PERM[bb], PERM[aa + 1], PERM[ba + 1], PERM[ab + 1], PERM[bb + 1]];
+        for c in 0..8 {
+            bits[c][lane] = GRAD_BITS[hash[c] as usize];
+        }
     }
-    Vec3::from(blend(v, c.weight)) * DNOISE_SCALE
+    let (zero, one) = (L::splat(0.0), L::splat(1.0));
+    let corner = |c: usize| -> V3<L> {
+        let b = &bits[c];
+        let d = V3 {
+            x: if c & 1 == 0 { frac.x - zero } else { frac.x - one },
+            y: if c & 2 == 0 { frac.y - zero } else { frac.y - one },
+            z: if c & 4 == 0 { frac.z - zero } else { frac.z - one },
+        };
+        let g = |jk: u32| -> L {
+            let nonzero = L::mask_from_fn(|i| b[i] & (1 << jk) != 0);
+            let negative = L::mask_from_fn(|i| b[i] & (1 << (16 + jk)) != 0);
+            L::select(nonzero, L::select(negative, -one, one), zero)
+        };
+        V3 {
+            x: g(0) * d.x + g(1) * d.y + g(2) * d.z,
+            y: g(3) * d.x + g(4) * d.y + g(5) * d.z,
+            z: g(6) * d.x + g(7) * d.y + g(8) * d.z,
+        }
+    };
+    let lerp = |a: V3<L>, b: V3<L>, t: L| a.add(b.sub(a).scale(t));
+    let x00 = lerp(corner(0), corner(1), weight.x);
+    let x10 = lerp(corner(2), corner(3), weight.x);
+    let x01 = lerp(corner(4), corner(5), weight.x);
+    let x11 = lerp(corner(6), corner(7), weight.x);
+    lerp(lerp(x00, x10, weight.y), lerp(x01, x11, weight.y), weight.z).scale(L::splat(DNOISE_SCALE))
 }
 
 /// POV-Ray's vector turbulence: `Σ_{i<octaves} ω^i · dnoise(λ^i · p)`, with the octave count
 /// capped at `max_octaves` (a quality knob; `None` = as written).
 #[inline]
 pub fn turbulence(p: Vec3, t: &TurbulenceF32, max_octaves: Option<u32>) -> Vec3 {
+    turbulence_lanes(V3::from_vec3(p), t, max_octaves).vec3()
+}
+
+/// `turbulence` for one or eight points.
+#[inline(always)]
+pub fn turbulence_lanes<L: Lane>(p: V3<L>, t: &TurbulenceF32, max_octaves: Option<u32>) -> V3<L> {
     let octaves = match max_octaves {
         Some(cap) => t.octaves.min(cap),
         None => t.octaves,
     };
-    let mut sum = Vec3::ZERO;
-    let mut freq = 1.0;
-    let mut amp = 1.0;
+    let mut sum = V3::splat(Vec3::ZERO);
+    let mut freq = 1.0f32;
+    let mut amp = 1.0f32;
     for _ in 0..octaves {
-        sum += dnoise(p * freq) * amp;
+        sum = sum.add(dnoise_lanes(p.scale(L::splat(freq))).scale(L::splat(amp)));
         freq *= t.lambda;
         amp *= t.omega;
     }
@@ -223,7 +315,13 @@ pub fn turbulence(p: Vec3, t: &TurbulenceF32, max_octaves: Option<u32>) -> Vec3 
 /// The point a turbulent pattern is evaluated at: `p + amount ⊙ turbulence(p)`.
 #[inline]
 pub fn warp(p: Vec3, t: &TurbulenceF32, max_octaves: Option<u32>) -> Vec3 {
-    p + t.amount * turbulence(p, t, max_octaves)
+    warp_lanes(V3::from_vec3(p), t, max_octaves).vec3()
+}
+
+/// `warp` for one or eight points.
+#[inline(always)]
+pub fn warp_lanes<L: Lane>(p: V3<L>, t: &TurbulenceF32, max_octaves: Option<u32>) -> V3<L> {
+    p.add(V3::splat(t.amount).mul(turbulence_lanes(p, t, max_octaves)))
 }
 
 #[cfg(test)]

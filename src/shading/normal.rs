@@ -10,8 +10,9 @@
 
 use glam::{DVec3, Mat3A, Vec3};
 
-use super::noise::{dnoise, warp, TurbulenceF32};
+use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32};
 use super::pigment::{pattern_from_render, PatternQuality};
+use crate::geometry::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,15 +57,21 @@ impl NormalF32 {
 /// The perturbed unit normal at a render-space point; `n` is the unit geometric normal.
 #[inline]
 pub fn perturb_normal(nrm: &NormalF32, p_render: Vec3, n: Vec3, q: PatternQuality) -> Vec3 {
-    let mut p = nrm.pattern_from_render.transform_point3(p_render);
+    perturb_normal_lanes(nrm, V3::from_vec3(p_render), V3::from_vec3(n), q).vec3()
+}
+
+/// `perturb_normal` for one or eight points.
+#[inline(always)]
+pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>, q: PatternQuality) -> V3<L> {
+    let mut p = p_render.transform_point(&nrm.pattern_from_render);
     if let Some(t) = &nrm.turbulence {
-        p = warp(p, t, q.max_octaves);
+        p = warp_lanes(p, t, q.max_octaves);
     }
     match nrm.pattern {
         NormalPattern32::Bumps(amount) => {
-            let np = (nrm.normal_to_pattern * n).normalize_or(n);
-            let bumped = np + amount * dnoise(p);
-            (nrm.normal_from_pattern * bumped).normalize_or(n)
+            let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
+            let bumped = np.add(dnoise_lanes(p).scale(L::splat(amount)));
+            bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
         }
     }
 }

@@ -4,6 +4,8 @@
 
 use glam::Vec3;
 
+use crate::geometry::lanes::{Lane, V3};
+
 /// A colour with POV-Ray's filter and transmit channels, in linear light.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Rgbft {
@@ -27,6 +29,59 @@ impl Rgbft {
     }
 }
 
+/// `Rgbft` for one or eight points.
+#[derive(Clone, Copy)]
+pub struct RgbftLanes<L: Lane> {
+    pub rgb: V3<L>,
+    pub filter: L,
+    pub transmit: L,
+}
+
+impl<L: Lane> RgbftLanes<L> {
+    #[inline(always)]
+    pub fn splat(c: Rgbft) -> Self {
+        RgbftLanes { rgb: V3::splat(c.rgb), filter: L::splat(c.filter), transmit: L::splat(c.transmit) }
+    }
+
+    #[inline(always)]
+    pub fn select(m: L::Mask, a: Self, b: Self) -> Self {
+        RgbftLanes {
+            rgb: V3::select(m, a.rgb, b.rgb),
+            filter: L::select(m, a.filter, b.filter),
+            transmit: L::select(m, a.transmit, b.transmit),
+        }
+    }
+
+    /// As `Rgbft::lerp`.
+    #[inline(always)]
+    pub fn lerp(self, other: Self, t: L) -> Self {
+        let one_minus = L::splat(1.0) - t;
+        RgbftLanes {
+            rgb: self.rgb.scale(one_minus).add(other.rgb.scale(t)),
+            filter: self.filter + (other.filter - self.filter) * t,
+            transmit: self.transmit + (other.transmit - self.transmit) * t,
+        }
+    }
+
+    #[inline(always)]
+    pub fn lane(self, i: usize) -> Rgbft {
+        Rgbft { rgb: self.rgb.lane(i), filter: self.filter.get(i), transmit: self.transmit.get(i) }
+    }
+
+    #[inline(always)]
+    pub fn from_lanes(mut f: impl FnMut(usize) -> Rgbft) -> Self {
+        let mut c = [Rgbft::default(); 8];
+        for (i, c) in c.iter_mut().enumerate().take(L::WIDTH) {
+            *c = f(i);
+        }
+        RgbftLanes {
+            rgb: V3::from_lanes(|i| c[i].rgb),
+            filter: L::from_fn(|i| c[i].filter),
+            transmit: L::from_fn(|i| c[i].transmit),
+        }
+    }
+}
+
 /// How far past an integer a coordinate may fall short and still count as on it.
 ///
 /// POV-Ray 3.7 floors each coordinate plus a tiny tolerance: rendering `plane { y, -d }` with
@@ -34,17 +89,24 @@ impl Rgbft {
 /// shows the cell [0, 1): (0.5, 0, 0.5) gets the *first* colour. In f32 a hit on y = 0 lands
 /// up to a few ulps either side of 0, so we widen the tolerance to 1e-4 (plus 2^-16 relative, for
 /// large coordinates); this moves edges by at most that much, which no pixel can see.
-#[inline]
-fn floor_tolerant(v: f32) -> f32 {
-    (v + 1e-4 + v.abs() * (1.0 / 65536.0)).floor()
+#[inline(always)]
+fn floor_tolerant<L: Lane>(v: L) -> L {
+    (v + L::splat(1e-4) + v.abs() * L::splat(1.0 / 65536.0)).floor()
 }
 
 /// POV-Ray's `checker`: 0 for the first colour, 1 for the second, alternating in unit cubes.
 #[inline]
 pub fn checker(p: Vec3) -> u32 {
-    let s = floor_tolerant(p.x) + floor_tolerant(p.y) + floor_tolerant(p.z);
-    // `rem_euclid` keeps negative sums in {0, 1}.
-    (s.rem_euclid(2.0)) as u32
+    checker_lanes(V3::from_vec3(p)) as u32
+}
+
+/// `checker` for one or eight points: set where the second colour shows.
+#[inline(always)]
+pub fn checker_lanes<L: Lane>(p: V3<L>) -> L::Mask {
+    // An integer sum is odd where half of it has a fraction; that holds for negative sums too,
+    // and sums beyond 2^25 (whose halves are whole) count as even, as `rem_euclid(2.0)` does.
+    let half = (floor_tolerant(p.x) + floor_tolerant(p.y) + floor_tolerant(p.z)) * L::splat(0.5);
+    half.floor().lt(half)
 }
 
 /// POV-Ray's `wood`: concentric rings around the z axis with a triangle wave, 0 on the axis,
@@ -55,9 +117,15 @@ pub fn checker(p: Vec3) -> u32 {
 /// r = 0.1064 → 0.2128), i.e. a triangle wave, not a sawtooth.
 #[inline]
 pub fn wood(p: Vec3) -> f32 {
+    wood_lanes(V3::from_vec3(p))
+}
+
+/// `wood` for one or eight points.
+#[inline(always)]
+pub fn wood_lanes<L: Lane>(p: V3<L>) -> L {
     let r = (p.x * p.x + p.y * p.y).sqrt();
     let f = r - r.floor();
-    1.0 - (2.0 * f - 1.0).abs()
+    L::splat(1.0) - (L::splat(2.0) * f - L::splat(1.0)).abs()
 }
 
 /// A `color_map`: entries sorted by value.
@@ -82,24 +150,31 @@ impl ColorMap {
 
     /// Linear interpolation between the two entries around `v`, in linear colour (POV-Ray 3.7
     /// blends map entries in the working colour space, linear under `assumed_gamma 1`); clamped
-    /// to the first entry below it and the last above it. Maps are a handful of entries, so a
-    /// linear scan beats a binary search.
+    /// to the first entry below it and the last above it.
     #[inline]
     pub fn lookup(&self, v: f32) -> Rgbft {
+        self.lookup_lanes(v).lane(0)
+    }
+
+    /// `lookup` for one or eight values: every entry pair is blended and the first pair that
+    /// holds `v` selected, so one and eight lanes give the same bits.
+    #[inline(always)]
+    pub fn lookup_lanes<L: Lane>(&self, v: L) -> RgbftLanes<L> {
         let e = &self.entries;
-        let Some(first) = e.first() else { return Rgbft::default() };
-        if v <= first.0 {
-            return first.1;
-        }
-        for w in e.windows(2) {
+        let (Some(first), Some(last)) = (e.first(), e.last()) else { return RgbftLanes::splat(Rgbft::default()) };
+        let mut out = RgbftLanes::splat(last.1);
+        for w in e.windows(2).rev() {
             let ((v0, c0), (v1, c1)) = (w[0], w[1]);
-            if v <= v1 {
-                let span = v1 - v0;
-                // Equal values make a hard step: take the upper colour.
-                return if span > 0.0 { c0.lerp(c1, (v - v0) / span) } else { c1 };
-            }
+            let span = v1 - v0;
+            // Equal values make a hard step: take the upper colour.
+            let c = if span > 0.0 {
+                RgbftLanes::splat(c0).lerp(RgbftLanes::splat(c1), (v - L::splat(v0)) / L::splat(span))
+            } else {
+                RgbftLanes::splat(c1)
+            };
+            out = RgbftLanes::select(v.le(L::splat(v1)), c, out);
         }
-        e[e.len() - 1].1
+        RgbftLanes::select(v.le(L::splat(first.0)), RgbftLanes::splat(first.1), out)
     }
 }
 

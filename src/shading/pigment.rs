@@ -4,8 +4,9 @@
 
 use glam::{Affine3A, DMat4, DVec3, Vec3};
 
-use super::noise::{turbulence, warp, TurbulenceF32};
-use super::pattern::{checker, wood, ColorMap, Rgbft};
+use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32};
+use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
+use crate::geometry::lanes::{Lane, V3};
 use crate::scene::desc::{PigmentDesc, PigmentPattern};
 
 /// Per-frame knobs that trade pattern fidelity for speed.
@@ -30,29 +31,26 @@ pub enum PigmentPattern32 {
 /// displacement, x' = x + sin(2π·A·(x + T_x)) with T the vector turbulence (5.9 ≈ 2π is its
 /// slope at the origin). With it the DMFWood4 red channel differs from POV-Ray's by 0.035 per
 /// pixel on average (0.043 with the warp and a ring-density factor; the rest is our noise).
-#[inline]
-fn wood_cycloidal(p: Vec3, t: &TurbulenceF32, max_octaves: Option<u32>) -> Vec3 {
-    let turb = turbulence(p, t, max_octaves);
-    let cycloid = sin_turns;
-    Vec3::new(p.x + cycloid((p.x + turb.x) * t.amount.x), p.y + cycloid((p.y + turb.y) * t.amount.y), p.z)
+#[inline(always)]
+fn wood_cycloidal<L: Lane>(p: V3<L>, t: &TurbulenceF32, max_octaves: Option<u32>) -> V3<L> {
+    let turb = turbulence_lanes(p, t, max_octaves);
+    let (ax, ay) = (L::splat(t.amount.x), L::splat(t.amount.y));
+    V3 { x: p.x + sin_turns((p.x + turb.x) * ax), y: p.y + sin_turns((p.y + turb.y) * ay), z: p.z }
 }
 
 /// `sin(2π·x)` by range reduction to one turn and an odd polynomial (max error 1e-6, against
 /// `f32::sin`'s ~40 instructions and a libm call; two per wood hit were 3% of the seed scene).
-#[inline]
-fn sin_turns(x: f32) -> f32 {
+#[inline(always)]
+fn sin_turns<L: Lane>(x: L) -> L {
     // y in [-0.5, 0.5] turns, then fold to [-0.25, 0.25] where the polynomial is accurate.
-    let y = x - x.round();
-    let y = if y > 0.25 {
-        0.5 - y
-    } else if y < -0.25 {
-        -0.5 - y
-    } else {
-        y
-    };
+    let y = x - x.map(f32::round);
+    let (quarter, half) = (L::splat(0.25), L::splat(0.5));
+    let y = L::select(quarter.lt(y), half - y, L::select(y.lt(-quarter), -half - y, y));
     let z = y * y;
     // Taylor coefficients of sin(2πy) up to y^11: (2π)^k / k!, alternating.
-    let p = 6.283_185_5 + z * (-41.341_7 + z * (81.605_25 + z * (-76.705_86 + z * (42.058_69 + z * -15.094_64))));
+    let c = |v: f32| L::splat(v);
+    let p = c(6.283_185_5)
+        + z * (c(-41.341_7) + z * (c(81.605_25) + z * (c(-76.705_86) + z * (c(42.058_69) + z * c(-15.094_64)))));
     y * p
 }
 
@@ -86,11 +84,11 @@ impl Pigment {
     }
 
     /// Pattern-space point for a render-space hit, turbulence applied.
-    #[inline]
-    fn pattern_point(&self, p_render: Vec3, q: PatternQuality) -> Vec3 {
-        let p = self.pattern_from_render.transform_point3(p_render);
+    #[inline(always)]
+    fn pattern_point<L: Lane>(&self, p_render: V3<L>, q: PatternQuality) -> V3<L> {
+        let p = p_render.transform_point(&self.pattern_from_render);
         match &self.turbulence {
-            Some(t) => warp(p, t, q.max_octaves),
+            Some(t) => warp_lanes(p, t, q.max_octaves),
             None => p,
         }
     }
@@ -99,16 +97,25 @@ impl Pigment {
 /// The pigment's colour at a render-space point.
 #[inline]
 pub fn eval_pigment(pig: &Pigment, p_render: Vec3, q: PatternQuality) -> Rgbft {
+    eval_pigment_lanes(pig, V3::from_vec3(p_render), q).lane(0)
+}
+
+/// `eval_pigment` for one or eight render-space points.
+#[inline(always)]
+pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuality) -> RgbftLanes<L> {
     match &pig.pattern {
-        PigmentPattern32::Solid(c) => *c,
-        PigmentPattern32::Checker(c) => c[checker(pig.pattern_point(p_render, q)) as usize],
+        PigmentPattern32::Solid(c) => RgbftLanes::splat(*c),
+        PigmentPattern32::Checker(c) => {
+            let p = pig.pattern_point(p_render, q);
+            RgbftLanes::select(checker_lanes(p), RgbftLanes::splat(c[1]), RgbftLanes::splat(c[0]))
+        }
         PigmentPattern32::Wood(map) => {
-            let p = pig.pattern_from_render.transform_point3(p_render);
+            let p = p_render.transform_point(&pig.pattern_from_render);
             let p = match &pig.turbulence {
                 Some(t) => wood_cycloidal(p, t, q.max_octaves),
                 None => p,
             };
-            map.lookup(wood(p))
+            map.lookup_lanes(wood_lanes(p))
         }
     }
 }
@@ -122,10 +129,11 @@ mod tests {
         for i in -20_000..20_000 {
             let x = i as f32 * 0.000_37;
             let want = (x as f64 * std::f64::consts::TAU).sin();
-            assert!((sin_turns(x) as f64 - want).abs() < 2e-6, "x = {x}");
+            assert!((sin_turns::<f32>(x) as f64 - want).abs() < 2e-6, "x = {x}");
         }
     }
     use crate::scene::desc::{Color, ColorMapEntry, Transform};
+    use crate::shading::pattern::checker;
 
     fn scaled(s: DVec3) -> Transform {
         let m = DMat4::from_scale(s);

@@ -18,7 +18,9 @@ pub mod trace;
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
+use crate::accel::packet::Ray8;
 use crate::camera::Camera;
+use crate::geometry::lanes::{Lane, F8, V3};
 use crate::geometry::ray::Ray;
 use crate::scene::build::Scene;
 use image::Image;
@@ -96,8 +98,15 @@ impl RayGen {
     /// POV-Ray's perspective ray through image coordinates `u, v` in [0, 1] (v down).
     #[inline]
     fn ray(&self, u: f32, v: f32) -> Ray {
-        let d = self.direction + (u - 0.5) * self.right + (0.5 - v) * self.up;
-        Ray::new(self.origin, d.normalize())
+        Ray::new(self.origin, self.dir_lanes(u, v).vec3())
+    }
+
+    /// The unit directions of `ray` for one or eight pixels, with the same operations.
+    #[inline(always)]
+    fn dir_lanes<L: Lane>(&self, u: L, v: L) -> V3<L> {
+        let half = L::splat(0.5);
+        let d = V3::splat(self.direction).add(V3::splat(self.right).scale(u - half)).add(V3::splat(self.up).scale(half - v));
+        d.normalize()
     }
 }
 
@@ -198,16 +207,15 @@ fn render_block(
     out: SharedPixels,
 ) {
     let mut sums = [[Vec3::ZERO; 8]; 8];
+    // Lanes past the block's edge repeat its last pixel; their results are dropped.
+    let xs = F8::from_fn(|i| (b.x + (i as u32).min(b.w - 1)) as f32);
     samples.each(aa, |sx, sy| {
-        let rays: [[Ray; 8]; 8] = std::array::from_fn(|r| {
-            std::array::from_fn(|i| {
-                // Lanes past the block's edge repeat its last pixel; their results are dropped.
-                let x = b.x + (i as u32).min(b.w - 1);
-                let y = b.y + (r as u32).min(b.h - 1);
-                let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
-                let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-                gen.ray(u, v)
-            })
+        let rays: [Ray8; 8] = std::array::from_fn(|r| {
+            let y = b.y + (r as u32).min(b.h - 1);
+            let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
+            let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+            let d = gen.dir_lanes(u, F8::splat(v));
+            Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
         });
         let colors = packet::trace_block(tracer, &rays, b.h as usize, b.w as usize);
         let gamma = tracer.scene.gamma;

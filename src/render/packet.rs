@@ -15,9 +15,14 @@ use crate::geometry::lanes::{self, Lane, F8, M8, V3};
 use crate::geometry::ray::Ray;
 use crate::geometry::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
 use crate::render::intersect::{Hit, HitShape};
+use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
 use crate::render::trace::{Shadows, Surface, Tracer};
 use crate::scene::build::{Scene, ShapeKind};
+use crate::scene::material::Material;
+use crate::shading::normal::perturb_normal_lanes;
+use crate::shading::pattern::RgbftLanes;
+use crate::shading::pigment::eval_pigment_lanes;
 
 /// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
 pub const BLOCK: u32 = 8;
@@ -35,94 +40,188 @@ pub fn supported(scene: &Scene) -> bool {
     matches!(scene.accel, Accel::Bvh(_))
 }
 
-/// Traces one block of primary rays (`rays[row][lane]`, `rows` rows valid, `lanes` lanes valid
-/// per row) and returns their colours, exactly as `Tracer::trace` would for each ray.
-pub fn trace_block(tracer: &mut Tracer, rays: &[[Ray; 8]; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+/// Traces one block of primary rays (`rays[row]`, `rows` rows valid, `lanes` lanes valid per
+/// row) and returns their colours, exactly as `Tracer::trace` would for each ray.
+pub fn trace_block(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx2() {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { trace_block_avx2(tracer, rays, rows, lanes) };
+    }
+    trace_block_generic(tracer, rays, rows, lanes)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn trace_block_avx2(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+    trace_block_generic(tracer, rays, rows, lanes)
+}
+
+/// How a row of the block is shaded.
+#[derive(Clone, Copy)]
+enum RowShading<'a> {
+    /// No lane hit anything.
+    Background,
+    /// Every hit in the row has this material, which neither reflects nor transmits: shaded
+    /// eight lanes at a time, with this pigment colour.
+    Lanes(&'a Material, RgbftLanes<F8>),
+    /// Mixed materials or recursive ones: shaded lane by lane through `Tracer::shade_surface`.
+    Single,
+}
+
+/// The single ray of lane `i`.
+#[inline(always)]
+fn lane_ray(rays: &Ray8, i: usize) -> Ray {
+    Ray { origin: rays.o.lane(i), dir: rays.d.lane(i), inv_dir: rays.inv.lane(i) }
+}
+
+#[inline(always)]
+fn hit_shape(id: u32) -> Option<HitShape> {
+    match id {
+        NO_HIT => None,
+        id if id >= PLANE_ID => Some(HitShape::Plane(id - PLANE_ID)),
+        id => Some(HitShape::Prim(id)),
+    }
+}
+
+#[inline(always)]
+fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
     let scene = tracer.scene;
-    let rows8: [Ray8; 8] =
-        std::array::from_fn(|r| Ray8::from_fn(|i| (rays[r][i].origin, rays[r][i].dir, rays[r][i].inv_dir)));
     let mut t = [F8::splat(lanes::MISS); 8];
     let mut ids = [[NO_HIT; 8]; 8];
-    let frustum = Frustum::new(rays[0][0].origin, &rows8[..rows]);
-    intersect_rows(scene, &rows8[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
+    let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
+    intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
     let n = (rows * lanes) as u64;
     tracer.stats.primary_rays += n;
     tracer.stats.max_depth = tracer.stats.max_depth.max(1);
+    let background = scene.background.rgb;
 
-    // Surfaces first, so all shadow rays of the block can be traced together.
-    let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
-    let mut rows_soa = SurfaceRows::default();
-    for r in 0..rows {
-        for i in 0..lanes {
-            let hit = match ids[r][i] {
-                NO_HIT => continue,
-                id if id >= PLANE_ID => HitShape::Plane(id - PLANE_ID),
-                id => HitShape::Prim(id),
-            };
-            let s = tracer.surface(&rays[r][i], &Hit { t: t[r].0[i], shape: hit });
-            rows_soa.set_lane(r, i, &s);
-            surfaces[r][i] = Some(s);
-        }
-    }
-    let packet_shadows =
-        tracer.quality.shadows && !scene.features.transparency && scene.lights.len() <= MAX_PACKET_LIGHTS;
-    if !packet_shadows {
-        let mut colors = [[Vec3::ZERO; 8]; 8];
+    // Transparent blockers tint shadow rays, which only single rays model.
+    if scene.features.transparency || scene.lights.len() > MAX_PACKET_LIGHTS {
+        let mut colors = [[background; 8]; 8];
         for r in 0..rows {
             for i in 0..lanes {
-                colors[r][i] = match &surfaces[r][i] {
-                    None => scene.background.rgb,
-                    Some(s) => tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Trace),
-                };
+                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                let ray = lane_ray(&rays[r], i);
+                let s = tracer.surface(&ray, &Hit { t: t[r].0[i], shape });
+                colors[r][i] = tracer.shade_surface(&ray, &s, 1, 1.0, Shadows::Trace);
             }
         }
         return colors;
     }
-    // Per lane and light: the direction to the light, or zero where it does not arrive (behind
-    // the surface, or blocked). Computed once here and handed to shading.
-    let mut lit = [[[Vec3::ZERO; MAX_PACKET_LIGHTS]; 8]; 8];
-    for (l, light) in scene.lights.iter().enumerate() {
-        let mut shadow = ShadowRows::new();
-        shadow_setup(&rows_soa, rows, light.position, light.shadowless, &mut shadow);
-        for r in 0..rows {
-            for i in 0..lanes {
-                if shadow.lit[r].lane(i) {
-                    let d = &shadow.rays[r].d;
-                    lit[r][i][l] = Vec3::new(d.x.0[i], d.y.0[i], d.z.0[i]);
-                }
-            }
-        }
-        let active = shadow.active;
-        let count: u64 = active[..rows].iter().map(|m| m.0.iter().filter(|&&v| v != 0).count() as u64).sum();
-        if count == 0 {
+
+    // Surfaces first, so all shadow rays of the block can be traced together.
+    let q = tracer.pattern_quality();
+    let mut soa = SurfaceRows::default();
+    let mut shading = [RowShading::Background; 8];
+    let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
+    for r in 0..rows {
+        let hit = M8::from_fn(|i| i < lanes && ids[r][i] != NO_HIT);
+        if !hit.any() {
             continue;
         }
-        tracer.stats.shadow_rays += count;
-        let blocked = occluded_rows(
-            scene,
-            &shadow.rays[..rows],
-            &mut shadow.t_max[..rows],
-            &active[..rows],
-            light.position,
-            &mut tracer.stats,
-        );
-        for r in 0..rows {
+        let material_of = |i: usize| hit_shape(ids[r][i]).map(|s| scene.material_of(s));
+        let first = (0..lanes).find_map(material_of);
+        let uniform = (0..lanes).all(|i| matches!(material_of(i), None) || material_of(i) == first);
+        let material = &scene.materials[first.unwrap_or(0) as usize];
+        if uniform && !material.finish.reflects() && !material.may_be_transparent() {
+            // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
+            let ray = &rays[r];
+            let p = ray.o.add(ray.d.scale(F8::select(hit, t[r], F8::splat(0.0))));
+            let geometric = V3::from_lanes(|i| match hit_shape(ids[r][i]) {
+                Some(shape) if i < lanes => scene.normal_at(shape, p.lane(i)),
+                _ => Vec3::Y,
+            });
+            let entering = geometric.dot(ray.d).lt(F8::splat(0.0));
+            let facing = V3::select(entering, geometric, geometric.neg());
+            let normal = match &material.normal {
+                Some(n) => perturb_normal_lanes(n, p, facing, q),
+                None => facing,
+            };
+            soa.p[r] = Soa3::from(p);
+            soa.facing[r] = Soa3::from(facing);
+            soa.normal[r] = Soa3::from(normal);
+            soa.valid[r] = hit;
+            shading[r] = RowShading::Lanes(material, eval_pigment_lanes(&material.pigment, p, q));
+        } else {
             for i in 0..lanes {
-                if blocked[r].lane(i) {
-                    lit[r][i][l] = Vec3::ZERO;
-                }
+                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
+                soa.set_lane(r, i, &s);
+                surfaces[r][i] = Some(s);
             }
+            shading[r] = RowShading::Single;
         }
     }
-    let mut colors = [[Vec3::ZERO; 8]; 8];
+
+    // Per light and row: the direction to the light, and the lanes it reaches unblocked.
+    let mut light_dir = [[V3::splat(Vec3::ZERO); 8]; MAX_PACKET_LIGHTS];
+    let mut light_on = [[M8::default(); 8]; MAX_PACKET_LIGHTS];
+    for (l, light) in scene.lights.iter().enumerate() {
+        let mut shadow = ShadowRows::new();
+        let unshadowed = light.shadowless || !tracer.quality.shadows;
+        shadow_setup(&soa, rows, light.position, unshadowed, &mut shadow);
+        let active = shadow.active;
+        let count: u64 = active[..rows].iter().map(|m| m.0.iter().filter(|&&v| v != 0).count() as u64).sum();
+        let blocked = if count == 0 {
+            [M8::default(); 8]
+        } else {
+            tracer.stats.shadow_rays += count;
+            occluded_rows(
+                scene,
+                &shadow.rays[..rows],
+                &mut shadow.t_max[..rows],
+                &active[..rows],
+                light.position,
+                &mut tracer.stats,
+            )
+        };
+        for r in 0..rows {
+            light_dir[l][r] = shadow.rays[r].d;
+            light_on[l][r] = F8::and(shadow.lit[r], F8::not(blocked[r]));
+        }
+    }
+
+    let lights = scene.lights.len();
+    let mut colors = [[background; 8]; 8];
     for r in 0..rows {
-        for i in 0..lanes {
-            colors[r][i] = match &surfaces[r][i] {
-                None => scene.background.rgb,
-                Some(s) => {
-                    tracer.shade_surface(&rays[r][i], s, 1, 1.0, Shadows::Given(&lit[r][i][..scene.lights.len()]))
+        match shading[r] {
+            RowShading::Background => {}
+            RowShading::Lanes(material, pigment) => {
+                // `Tracer::shade_surface` for a material without reflection or refraction.
+                let finish = &material.finish;
+                let hit = LocalHit {
+                    color: pigment.rgb,
+                    opacity: shade::opacity(pigment.filter, pigment.transmit),
+                    normal: soa.normal[r].v(),
+                    ray_dir: rays[r].d,
+                };
+                let reflected = shade::reflect(hit.ray_dir, hit.normal);
+                let mut color = shade::ambient(finish, scene.ambient_light, &hit);
+                for (l, light) in scene.lights.iter().enumerate() {
+                    let sample =
+                        LightSample { dir: light_dir[l][r], color: V3::splat(light.color * Vec3::ONE), on: light_on[l][r] };
+                    color = shade::add_light(finish, &hit, reflected, color, &sample);
                 }
-            };
+                for i in 0..lanes {
+                    if soa.valid[r].lane(i) {
+                        colors[r][i] = color.lane(i);
+                    }
+                }
+            }
+            RowShading::Single => {
+                for i in 0..lanes {
+                    let Some(s) = &surfaces[r][i] else { continue };
+                    let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
+                        if l < lights && light_on[l][r].lane(i) {
+                            light_dir[l][r].lane(i)
+                        } else {
+                            Vec3::ZERO
+                        }
+                    });
+                    colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+                }
+            }
         }
     }
     colors
@@ -142,6 +241,13 @@ struct Soa3 {
     x: F8,
     y: F8,
     z: F8,
+}
+
+impl From<V3<F8>> for Soa3 {
+    #[inline(always)]
+    fn from(v: V3<F8>) -> Soa3 {
+        Soa3 { x: v.x, y: v.y, z: v.z }
+    }
 }
 
 impl Soa3 {

@@ -46,7 +46,7 @@ impl<'a> Tracer<'a> {
     }
 
     #[inline]
-    fn pattern_quality(&self) -> PatternQuality {
+    pub fn pattern_quality(&self) -> PatternQuality {
         PatternQuality { max_octaves: self.quality.max_octaves }
     }
 

@@ -2,9 +2,9 @@
 //!
 //! (Named `cuboid` because `box` is a Rust keyword.)
 
-use glam::{Affine3A, Mat3A, Vec3, Vec3A};
+use glam::{Affine3A, Mat3A, Vec3};
 
-use super::lanes::{self, V3};
+use super::lanes::{self, Lane, V3};
 use super::ray::Ray;
 
 /// An axis-aligned box in its own space, plus the map into it when that is not render space.
@@ -54,25 +54,33 @@ impl Cuboid {
 
     /// Outward normal of the face nearest to `p` (a point on the surface, render space).
     pub fn normal_at(&self, p: Vec3) -> Vec3 {
+        self.normal_lanes(V3::from_vec3(p)).vec3()
+    }
+
+    /// `normal_at` for one or eight points.
+    #[inline(always)]
+    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let local = match &self.frame {
             None => p,
-            Some(f) => f.object_from_render.transform_point3(p),
+            Some(f) => p.transform_point(&f.object_from_render),
         };
         let size = (self.max - self.min).max(Vec3::splat(f32::MIN_POSITIVE));
+        let (lo, hi, size) = (V3::splat(self.min), V3::splat(self.max), V3::splat(size));
         // Distance to each face, relative to the box's extent on that axis.
-        let d_min = ((local - self.min) / size).abs();
-        let d_max = ((self.max - local) / size).abs();
-        let mut best = (d_min.x, -Vec3::X);
+        let rel = |a: L, b: L, s: L| ((a - b) / s).abs();
+        let d_min = V3 { x: rel(local.x, lo.x, size.x), y: rel(local.y, lo.y, size.y), z: rel(local.z, lo.z, size.z) };
+        let d_max = V3 { x: rel(hi.x, local.x, size.x), y: rel(hi.y, local.y, size.y), z: rel(hi.z, local.z, size.z) };
+        let (mut best_d, mut best_n) = (d_min.x, V3::splat(-Vec3::X));
         for (d, n) in
             [(d_max.x, Vec3::X), (d_min.y, -Vec3::Y), (d_max.y, Vec3::Y), (d_min.z, -Vec3::Z), (d_max.z, Vec3::Z)]
         {
-            if d < best.0 {
-                best = (d, n);
-            }
+            let nearer = d.lt(best_d);
+            best_d = L::select(nearer, d, best_d);
+            best_n = V3::select(nearer, V3::splat(n), best_n);
         }
         match &self.frame {
-            None => best.1,
-            Some(f) => Vec3::from(f.normal_to_render * Vec3A::from(best.1)).normalize_or(best.1),
+            None => best_n,
+            Some(f) => best_n.mat3_mul(&f.normal_to_render).normalize_or(best_n),
         }
     }
 

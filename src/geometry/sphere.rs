@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 
-use super::lanes::{self, V3};
+use super::lanes::{self, Lane, V3};
 use super::ray::Ray;
 
 #[derive(Clone, Copy, Debug)]
@@ -29,7 +29,15 @@ impl Sphere {
 
     #[inline]
     pub fn normal_at(&self, p: Vec3) -> Vec3 {
-        ((p - self.center) / self.radius).normalize_or(Vec3::Y)
+        self.normal_lanes(V3::from_vec3(p)).vec3()
+    }
+
+    /// `normal_at` for one or eight points.
+    #[inline(always)]
+    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        let r = L::splat(self.radius);
+        let v = p.sub(V3::splat(self.center));
+        V3 { x: v.x / r, y: v.y / r, z: v.z / r }.normalize_or(V3::splat(Vec3::Y))
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -132,8 +140,14 @@ impl Ellipsoid {
     }
 
     pub fn normal_at(&self, p: Vec3) -> Vec3 {
-        let local = self.frame.object_from_render.transform_point3(p);
-        Vec3::from(self.frame.normal_to_render * glam::Vec3A::from(local)).normalize_or(Vec3::Y)
+        self.normal_lanes(V3::from_vec3(p)).vec3()
+    }
+
+    /// `normal_at` for one or eight points.
+    #[inline(always)]
+    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        let local = p.transform_point(&self.frame.object_from_render);
+        local.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
 }
 

@@ -3,6 +3,7 @@
 
 use glam::Vec3;
 
+use crate::geometry::lanes::{Lane, V3};
 use crate::geometry::ray::Ray;
 use crate::render::stats::RenderStats;
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
@@ -113,24 +114,29 @@ impl Scene {
 
     /// Geometric outward normal at a hit point.
     pub fn normal_at(&self, shape: HitShape, p: Vec3) -> Vec3 {
+        self.normal_lanes(shape, V3::from_vec3(p)).vec3()
+    }
+
+    /// `normal_at` for one or eight points on the same shape.
+    #[inline(always)]
+    pub fn normal_lanes<L: Lane>(&self, shape: HitShape, p: V3<L>) -> V3<L> {
         match shape {
-            HitShape::Plane(i) => self.planes[i as usize].normal,
+            HitShape::Plane(i) => V3::splat(self.planes[i as usize].normal),
             HitShape::Prim(i) => {
                 let r = &self.prims[i as usize];
                 let k = r.index as usize;
                 match r.kind {
-                    ShapeKind::Sphere => self.spheres[k].normal_at(p),
-                    ShapeKind::Ellipsoid => self.ellipsoids[k].normal_at(p),
-                    ShapeKind::Box => self.boxes[k].normal_at(p),
-                    ShapeKind::Triangle => self.triangles[k].normal,
-                    ShapeKind::Polygon => self.polygons[k].normal,
-                    ShapeKind::Plane => Vec3::Y,
+                    ShapeKind::Sphere => self.spheres[k].normal_lanes(p),
+                    ShapeKind::Ellipsoid => self.ellipsoids[k].normal_lanes(p),
+                    ShapeKind::Box => self.boxes[k].normal_lanes(p),
+                    ShapeKind::Triangle => V3::splat(self.triangles[k].normal),
+                    ShapeKind::Polygon => V3::splat(self.polygons[k].normal),
+                    ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }
         }
     }
 
-    /// Whether shadow rays see this shape (false for `no_shadow` objects).
     pub fn casts_shadow(&self, shape: HitShape) -> bool {
         match shape {
             HitShape::Plane(i) => self.plane_casts_shadow[i as usize],

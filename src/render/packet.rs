@@ -128,10 +128,16 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
             let ray = &rays[r];
             let p = ray.o.add(ray.d.scale(F8::select(hit, t[r], F8::splat(0.0))));
-            let geometric = V3::from_lanes(|i| match hit_shape(ids[r][i]) {
-                Some(shape) if i < lanes => scene.normal_at(shape, p.lane(i)),
-                _ => Vec3::Y,
-            });
+            let first_id = ids[r][(0..lanes).find(|&i| ids[r][i] != NO_HIT).unwrap_or(0)];
+            let geometric = match hit_shape(first_id) {
+                Some(shape) if (0..lanes).all(|i| ids[r][i] == first_id || ids[r][i] == NO_HIT) => {
+                    scene.normal_lanes(shape, p)
+                }
+                _ => V3::from_lanes(|i| match hit_shape(ids[r][i]) {
+                    Some(shape) if i < lanes => scene.normal_at(shape, p.lane(i)),
+                    _ => Vec3::Y,
+                }),
+            };
             let entering = geometric.dot(ray.d).lt(F8::splat(0.0));
             let facing = V3::select(entering, geometric, geometric.neg());
             let normal = match &material.normal {

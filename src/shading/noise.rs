@@ -260,31 +260,42 @@ pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
             bits[c][lane] = GRAD_BITS[hash[c] as usize];
         }
     }
+    let c = |i: usize| corner_dot(&bits[i], frac, i);
+    let x00 = lerp3(c(0), c(1), weight.x);
+    let x10 = lerp3(c(2), c(3), weight.x);
+    let x01 = lerp3(c(4), c(5), weight.x);
+    let x11 = lerp3(c(6), c(7), weight.x);
+    lerp3(lerp3(x00, x10, weight.y), lerp3(x01, x11, weight.y), weight.z).scale(L::splat(DNOISE_SCALE))
+}
+
+#[inline(always)]
+fn lerp3<L: Lane>(a: V3<L>, b: V3<L>, t: L) -> V3<L> {
+    a.add(b.sub(a).scale(t))
+}
+
+/// Corner `c`'s three gradients dotted with the offset from it, per lane.
+#[inline(always)]
+fn corner_dot<L: Lane>(bits: &[u32; 8], frac: V3<L>, c: usize) -> V3<L> {
     let (zero, one) = (L::splat(0.0), L::splat(1.0));
-    let corner = |c: usize| -> V3<L> {
-        let b = &bits[c];
-        let d = V3 {
-            x: if c & 1 == 0 { frac.x - zero } else { frac.x - one },
-            y: if c & 2 == 0 { frac.y - zero } else { frac.y - one },
-            z: if c & 4 == 0 { frac.z - zero } else { frac.z - one },
-        };
-        let g = |jk: u32| -> L {
-            let nonzero = L::mask_from_fn(|i| b[i] & (1 << jk) != 0);
-            let negative = L::mask_from_fn(|i| b[i] & (1 << (16 + jk)) != 0);
-            L::select(nonzero, L::select(negative, -one, one), zero)
-        };
-        V3 {
-            x: g(0) * d.x + g(1) * d.y + g(2) * d.z,
-            y: g(3) * d.x + g(4) * d.y + g(5) * d.z,
-            z: g(6) * d.x + g(7) * d.y + g(8) * d.z,
-        }
+    let d = V3 {
+        x: if c & 1 == 0 { frac.x - zero } else { frac.x - one },
+        y: if c & 2 == 0 { frac.y - zero } else { frac.y - one },
+        z: if c & 4 == 0 { frac.z - zero } else { frac.z - one },
     };
-    let lerp = |a: V3<L>, b: V3<L>, t: L| a.add(b.sub(a).scale(t));
-    let x00 = lerp(corner(0), corner(1), weight.x);
-    let x10 = lerp(corner(2), corner(3), weight.x);
-    let x01 = lerp(corner(4), corner(5), weight.x);
-    let x11 = lerp(corner(6), corner(7), weight.x);
-    lerp(lerp(x00, x10, weight.y), lerp(x01, x11, weight.y), weight.z).scale(L::splat(DNOISE_SCALE))
+    let g = |jk: u32| gradient_component::<L>(bits, jk);
+    V3 {
+        x: g(0) * d.x + g(1) * d.y + g(2) * d.z,
+        y: g(3) * d.x + g(4) * d.y + g(5) * d.z,
+        z: g(6) * d.x + g(7) * d.y + g(8) * d.z,
+    }
+}
+
+/// Component `jk % 3` of gradient `jk / 3`: -1, 0 or 1 per lane, from `GRAD_BITS`.
+#[inline(always)]
+fn gradient_component<L: Lane>(bits: &[u32; 8], jk: u32) -> L {
+    let nonzero = L::mask_from_fn(|i| bits[i] & (1 << jk) != 0);
+    let negative = L::mask_from_fn(|i| bits[i] & (1 << (16 + jk)) != 0);
+    L::select(nonzero, L::select(negative, L::splat(-1.0), L::splat(1.0)), L::splat(0.0))
 }
 
 /// POV-Ray's vector turbulence: `Σ_{i<octaves} ω^i · dnoise(λ^i · p)`, with the octave count

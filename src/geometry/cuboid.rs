@@ -120,6 +120,30 @@ pub fn frame_for(render_from_object: Affine3A) -> BoxFrame {
 mod tests {
     use super::*;
 
+    #[test]
+    fn eight_lanes_of_normals_match_one_lane_bit_for_bit() {
+        use crate::geometry::lanes::F8;
+        let rotated = Affine3A::from_rotation_y(0.35) * Affine3A::from_scale(Vec3::new(1.0, 2.0, 0.5));
+        for b in [unit_box(), Cuboid { min: Vec3::splat(-1.0), max: Vec3::ONE, frame: Some(frame_for(rotated)) }] {
+            for k in 0..400 {
+                // Points on and near the surface, some on edges and corners.
+                let p = |i: usize| {
+                    let j = (k * 8 + i) as f32;
+                    let v = Vec3::new((j * 0.91).sin(), (j * 0.53).cos(), (j * 0.27).sin()) * 1.2;
+                    let v = if i % 3 == 0 { v / v.abs().max_element() } else { v };
+                    rotated.transform_point3(v)
+                };
+                let wide = b.normal_lanes(V3::<F8>::from_lanes(p));
+                for i in 0..8 {
+                    assert_eq!(
+                        wide.lane(i).to_array().map(f32::to_bits),
+                        b.normal_at(p(i)).to_array().map(f32::to_bits)
+                    );
+                }
+            }
+        }
+    }
+
     fn unit_box() -> Cuboid {
         Cuboid { min: Vec3::splat(-1.0), max: Vec3::splat(1.0), frame: None }
     }

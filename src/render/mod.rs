@@ -105,7 +105,9 @@ impl RayGen {
     #[inline(always)]
     fn dir_lanes<L: Lane>(&self, u: L, v: L) -> V3<L> {
         let half = L::splat(0.5);
-        let d = V3::splat(self.direction).add(V3::splat(self.right).scale(u - half)).add(V3::splat(self.up).scale(half - v));
+        let d = V3::splat(self.direction)
+            .add(V3::splat(self.right).scale(u - half))
+            .add(V3::splat(self.up).scale(half - v));
         d.normalize()
     }
 }

@@ -205,8 +205,11 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 let reflected = shade::reflect(hit.ray_dir, hit.normal);
                 let mut color = shade::ambient(finish, scene.ambient_light, &hit);
                 for (l, light) in scene.lights.iter().enumerate() {
-                    let sample =
-                        LightSample { dir: light_dir[l][r], color: V3::splat(light.color * Vec3::ONE), on: light_on[l][r] };
+                    let sample = LightSample {
+                        dir: light_dir[l][r],
+                        color: V3::splat(light.color * Vec3::ONE),
+                        on: light_on[l][r],
+                    };
                     color = shade::add_light(finish, &hit, reflected, color, &sample);
                 }
                 for i in 0..lanes {
@@ -225,7 +228,8 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                             Vec3::ZERO
                         }
                     });
-                    colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+                    colors[r][i] =
+                        tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
                 }
             }
         }

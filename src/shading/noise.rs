@@ -135,7 +135,8 @@ const fn build_grad_bits() -> [u32; 256] {
     let mut i = 0;
     while i < 256 {
         let h = mix32(0xd1ce_0000 ^ i as u32);
-        let g = [GRADIENTS[(h & 15) as usize], GRADIENTS[((h >> 8) & 15) as usize], GRADIENTS[((h >> 16) & 15) as usize]];
+        let g =
+            [GRADIENTS[(h & 15) as usize], GRADIENTS[((h >> 8) & 15) as usize], GRADIENTS[((h >> 16) & 15) as usize]];
         let mut bits = 0;
         let mut j = 0;
         while j < 3 {

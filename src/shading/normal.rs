@@ -125,4 +125,22 @@ mod tests {
         assert!((a - b).abs() / a < 0.1, "{a} vs {b}");
         assert!((a - 0.1028).abs() / 0.1028 < 0.15, "{a}");
     }
+
+    #[test]
+    fn eight_lanes_match_one_lane_bit_for_bit() {
+        use crate::geometry::lanes::F8;
+        let q = PatternQuality::default();
+        for nrm in [bumps(0.4, DVec3::splat(0.2)), bumps(3.0, DVec3::new(1.0, 0.1, 5.0))] {
+            for k in 0..500 {
+                let j = |i: usize| (k * 8 + i) as f32;
+                let p = |i: usize| Vec3::new((j(i) * 0.7).sin() * 4.0, j(i) * 0.01, (j(i) * 0.3).cos() * 4.0);
+                let n = |i: usize| Vec3::new((j(i) * 0.2).sin(), 1.0, (j(i) * 0.45).cos()).normalize();
+                let wide = perturb_normal_lanes(&nrm, V3::<F8>::from_lanes(p), V3::<F8>::from_lanes(n), q);
+                for i in 0..8 {
+                    let one = perturb_normal(&nrm, p(i), n(i), q);
+                    assert_eq!(wide.lane(i).to_array().map(f32::to_bits), one.to_array().map(f32::to_bits));
+                }
+            }
+        }
+    }
 }

@@ -170,4 +170,49 @@ mod tests {
         let c = eval_pigment(&pig, Vec3::new(0.25, 0.0, 3.0), PatternQuality::default());
         assert!((c.rgb - Vec3::splat(0.5)).abs().max_element() < 1e-6);
     }
+
+    #[test]
+    fn eight_lanes_match_one_lane_bit_for_bit() {
+        use crate::geometry::lanes::F8;
+        use crate::scene::desc::Turbulence;
+        let map = vec![
+            ColorMapEntry { value: 0.1, color: Color::WHITE },
+            ColorMapEntry { value: 0.5, color: Color::BLACK },
+            ColorMapEntry { value: 0.5, color: Color::WHITE },
+            ColorMapEntry { value: 0.9, color: Color::BLACK },
+        ];
+        let turbulence = Some(Turbulence { amount: DVec3::new(0.04, 0.3, 0.1), octaves: 3, omega: 0.5, lambda: 2.0 });
+        let pigments = [
+            PigmentDesc {
+                pattern: PigmentPattern::Wood(map.clone()),
+                turbulence: turbulence.clone(),
+                transform: scaled(DVec3::new(0.05, 0.05, 1.0)),
+            },
+            PigmentDesc { pattern: PigmentPattern::Wood(map), turbulence: None, transform: Transform::default() },
+            PigmentDesc {
+                pattern: PigmentPattern::Checker(Color::WHITE, Color::BLACK),
+                turbulence,
+                transform: scaled(DVec3::splat(0.7)),
+            },
+        ];
+        for desc in &pigments {
+            let pig = Pigment::from_desc(desc, DVec3::new(3.0, 1.0, -2.0));
+            for k in 0..500 {
+                let p = |i: usize| {
+                    let j = (k * 8 + i) as f32;
+                    Vec3::new((j * 0.731).sin() * 7.0, (j * 0.377).cos() * 3.0, j * 0.013 - 2.0)
+                };
+                let wide = eval_pigment_lanes(&pig, V3::<F8>::from_lanes(p), PatternQuality::default());
+                for i in 0..8 {
+                    let one = eval_pigment(&pig, p(i), PatternQuality::default());
+                    let w = wide.lane(i);
+                    assert_eq!(w.rgb.to_array().map(f32::to_bits), one.rgb.to_array().map(f32::to_bits));
+                    assert_eq!(
+                        (w.filter.to_bits(), w.transmit.to_bits()),
+                        (one.filter.to_bits(), one.transmit.to_bits())
+                    );
+                }
+            }
+        }
+    }
 }

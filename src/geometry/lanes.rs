@@ -48,6 +48,19 @@ pub trait Lane:
     fn floor(self) -> Self;
     /// `f` applied lane by lane, for what has no vector instruction (`powf`, `round`).
     fn map(self, f: impl Fn(f32) -> f32) -> Self;
+    /// `self · g` per lane for a g ∈ {−1, 0, 1} packed in `bits[lane]`: bit `k` set means g ≠ 0,
+    /// bit `k + 16` set means g < 0. Bit for bit the product for finite `self` (a zero product
+    /// keeps `self`'s sign), by integer operations where selects would build g first.
+    fn times_unit(self, bits: &[u32; 8], k: u32) -> Self;
+}
+
+/// `times_unit` on one lane's bits.
+#[inline(always)]
+fn times_unit_bits(v: u32, bits: u32, k: u32) -> u32 {
+    const SIGN: u32 = 1 << 31;
+    let nonzero = ((bits >> k) & 1).wrapping_neg();
+    let flip = ((bits >> (16 + k)) & 1) << 31;
+    ((v ^ flip) & nonzero) | (v & SIGN & !nonzero)
 }
 
 impl Lane for f32 {
@@ -140,6 +153,10 @@ impl Lane for f32 {
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> f32 {
         f(self)
+    }
+    #[inline(always)]
+    fn times_unit(self, bits: &[u32; 8], k: u32) -> f32 {
+        f32::from_bits(times_unit_bits(self.to_bits(), bits[0], k))
     }
 }
 
@@ -301,6 +318,14 @@ impl Lane for F8 {
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> F8 {
         F8(self.0.map(f))
+    }
+    #[inline(always)]
+    fn times_unit(self, bits: &[u32; 8], k: u32) -> F8 {
+        let mut r = [0.0; 8];
+        for i in 0..8 {
+            r[i] = f32::from_bits(times_unit_bits(self.0[i].to_bits(), bits[i], k));
+        }
+        F8(r)
     }
 }
 

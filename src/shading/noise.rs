@@ -233,8 +233,9 @@ pub fn dnoise(p: Vec3) -> Vec3 {
 }
 
 /// `dnoise` for one or eight points, bit-identical lane by lane. The lattice hashes are looked
-/// up lane by lane; everything else is lane arithmetic, with each gradient component built from
-/// `GRAD_BITS` by two selects, and the products summed in `Mat3A * Vec3A` order.
+/// up lane by lane; everything else is lane arithmetic. A gradient component is −1, 0 or 1, so
+/// its product with the offset is a sign flip or a zero (`Lane::times_unit` on `GRAD_BITS`),
+/// and the products are summed in `Mat3A * Vec3A` order.
 #[inline(always)]
 pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
     let floor = V3 { x: p.x.floor(), y: p.y.floor(), z: p.z.floor() };
@@ -283,20 +284,11 @@ fn corner_dot<L: Lane>(bits: &[u32; 8], frac: V3<L>, c: usize) -> V3<L> {
         y: if c & 2 == 0 { frac.y - zero } else { frac.y - one },
         z: if c & 4 == 0 { frac.z - zero } else { frac.z - one },
     };
-    let g = |jk: u32| gradient_component::<L>(bits, jk);
     V3 {
-        x: g(0) * d.x + g(1) * d.y + g(2) * d.z,
-        y: g(3) * d.x + g(4) * d.y + g(5) * d.z,
-        z: g(6) * d.x + g(7) * d.y + g(8) * d.z,
+        x: d.x.times_unit(bits, 0) + d.y.times_unit(bits, 1) + d.z.times_unit(bits, 2),
+        y: d.x.times_unit(bits, 3) + d.y.times_unit(bits, 4) + d.z.times_unit(bits, 5),
+        z: d.x.times_unit(bits, 6) + d.y.times_unit(bits, 7) + d.z.times_unit(bits, 8),
     }
-}
-
-/// Component `jk % 3` of gradient `jk / 3`: -1, 0 or 1 per lane, from `GRAD_BITS`.
-#[inline(always)]
-fn gradient_component<L: Lane>(bits: &[u32; 8], jk: u32) -> L {
-    let nonzero = L::mask_from_fn(|i| bits[i] & (1 << jk) != 0);
-    let negative = L::mask_from_fn(|i| bits[i] & (1 << (16 + jk)) != 0);
-    L::select(nonzero, L::select(negative, L::splat(-1.0), L::splat(1.0)), L::splat(0.0))
 }
 
 /// POV-Ray's vector turbulence: `Σ_{i<octaves} ω^i · dnoise(λ^i · p)`, with the octave count

@@ -159,7 +159,19 @@ const fn build_grad_bits() -> [u32; 256] {
     t
 }
 
-static GRAD_BITS: [u32; 256] = build_grad_bits();
+/// `build_grad_bits()[PERM[i]]`: the last step of the corner hash and the gradient lookup in one load.
+const fn build_perm_grad_bits() -> [u32; 512] {
+    let (perm, grad) = (build_perm(), build_grad_bits());
+    let mut t = [0u32; 512];
+    let mut i = 0;
+    while i < 512 {
+        t[i] = grad[perm[i] as usize];
+        i += 1;
+    }
+    t
+}
+
+static PERM_GRAD_BITS: [u32; 512] = build_perm_grad_bits();
 
 /// The lattice cell around `p`: corner hashes, offset from the low corner, s-curve weights.
 struct Cell {
@@ -234,7 +246,7 @@ pub fn dnoise(p: Vec3) -> Vec3 {
 
 /// `dnoise` for one or eight points, bit-identical lane by lane. The lattice hashes are looked
 /// up lane by lane; everything else is lane arithmetic. A gradient component is −1, 0 or 1, so
-/// its product with the offset is a sign flip or a zero (`Lane::times_unit` on `GRAD_BITS`),
+/// its product with the offset is a sign flip or a zero (`Lane::times_unit` on `PERM_GRAD_BITS`),
 /// and the products are summed in `Mat3A * Vec3A` order.
 #[inline(always)]
 pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
@@ -257,9 +269,9 @@ pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
         let b = PERM[x + 1] as usize + y;
         let (aa, ab) = (PERM[a] as usize + z, PERM[a + 1] as usize + z);
         let (ba, bb) = (PERM[b] as usize + z, PERM[b + 1] as usize + z);
-        let hash = [PERM[aa], PERM[ba], PERM[ab], PERM[bb], PERM[aa + 1], PERM[ba + 1], PERM[ab + 1], PERM[bb + 1]];
+        let corners = [aa, ba, ab, bb, aa + 1, ba + 1, ab + 1, bb + 1];
         for c in 0..8 {
-            bits[c][lane] = GRAD_BITS[hash[c] as usize];
+            bits[c][lane] = PERM_GRAD_BITS[corners[c]];
         }
     }
     let c = |i: usize| corner_dot(&bits[i], frac, i);

@@ -163,8 +163,9 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // Per light and row: the direction to the light, and the lanes it reaches unblocked.
     let mut light_dir = [[V3::splat(Vec3::ZERO); 8]; MAX_PACKET_LIGHTS];
     let mut light_on = [[M8::default(); 8]; MAX_PACKET_LIGHTS];
+    // Rows past `rows` are never read, and `shadow_setup` rewrites rows below it per light.
+    let mut shadow = ShadowRows::new();
     for (l, light) in scene.lights.iter().enumerate() {
-        let mut shadow = ShadowRows::new();
         let unshadowed = light.shadowless || !tracer.quality.shadows;
         shadow_setup(&soa, rows, light.position, unshadowed, &mut shadow);
         let active = shadow.active;

@@ -101,14 +101,14 @@ fn check_checker(dir: &Path) {
     };
     let pig = Pigment::from_desc(&desc, loc);
     let mut ours = vec![-1.0; W * H];
-    for i in 0..W * H {
+    for (i, out) in ours.iter_mut().enumerate() {
         let (x, y) = ((i % W) as f64, (i / W) as f64);
         let ray = d + ((x + 0.5) / W as f64 - 0.5) * r + (0.5 - (y + 0.5) / H as f64) * u;
         if ray.y < 0.0 {
             // Intersect in f32 render space, as the renderer will.
             let (o, rd) = (Vec3::ZERO, ray.as_vec3());
             let t = -(loc.y as f32) / rd.y;
-            ours[i] = eval_pigment(&pig, o + rd * t, PatternQuality::default()).rgb.x as f64;
+            *out = eval_pigment(&pig, o + rd * t, PatternQuality::default()).rgb.x as f64;
         }
     }
     let (mut diff, mut total, mut edge) = (0, 0, 0);
@@ -229,6 +229,7 @@ fn check_bumps(dir: &Path) {
             DVec3::ZERO,
         );
         let (mut theirs, mut ours) = (Vec::new(), Vec::new());
+        #[allow(clippy::needless_range_loop)] // four images indexed together
         for i in 0..W * H {
             // n·L with L = (±s, s, 0): (I+ − I−) / (I+ + I−) = n_x / n_y.
             theirs.push((img[0][i] - img[1][i]) / (img[0][i] + img[1][i]));

@@ -6,6 +6,8 @@
 //! missed stop paying. A frustum interval test culls nodes that no ray of a shared-origin packet
 //! can reach before a single row is tested.
 
+// Lane loops index several per-lane arrays at once; iterators would hide which lane is meant.
+#![allow(clippy::needless_range_loop)]
 use glam::Vec3;
 
 use super::bvh::{Bvh, BvhNode};

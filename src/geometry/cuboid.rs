@@ -130,7 +130,7 @@ mod tests {
                 let p = |i: usize| {
                     let j = (k * 8 + i) as f32;
                     let v = Vec3::new((j * 0.91).sin(), (j * 0.53).cos(), (j * 0.27).sin()) * 1.2;
-                    let v = if i % 3 == 0 { v / v.abs().max_element() } else { v };
+                    let v = if i.is_multiple_of(3) { v / v.abs().max_element() } else { v };
                     rotated.transform_point3(v)
                 };
                 let wide = b.normal_lanes(V3::<F8>::from_lanes(p));

@@ -7,6 +7,8 @@
 //! compiled twice, once inside a `#[target_feature(enable = "avx2")]` function. Without FMA
 //! contraction both compute identical bits, so the choice never shows in the image.
 
+// Lane loops index several per-lane arrays at once; iterators would hide which lane is meant.
+#![allow(clippy::needless_range_loop)]
 use glam::Vec3;
 
 use crate::accel::packet::{Frustum, Ray8, RowTest};
@@ -122,7 +124,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         }
         let material_of = |i: usize| hit_shape(ids[r][i]).map(|s| scene.material_of(s));
         let first = (0..lanes).find_map(material_of);
-        let uniform = (0..lanes).all(|i| matches!(material_of(i), None) || material_of(i) == first);
+        let uniform = (0..lanes).all(|i| material_of(i).is_none() || material_of(i) == first);
         let material = &scene.materials[first.unwrap_or(0) as usize];
         if uniform && !material.finish.reflects() && !material.may_be_transparent() {
             // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.

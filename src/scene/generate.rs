@@ -136,7 +136,7 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
         // The cube [-edge/2, edge/2] × [0.8, edge + 0.8] × [-edge/2, edge/2], just above the floor.
         let center = qv(DVec3::new((unit(i, 0) - 0.5) * edge, 0.8 + unit(i, 1) * edge, (unit(i, 2) - 0.5) * edge));
         let [r, g, b] = PALETTE[(mix(i ^ 0xC0105) % PALETTE.len() as u64) as usize];
-        let finish = if mix(i ^ 0xF1) % REFLECTIVE_EVERY == 0 {
+        let finish = if mix(i ^ 0xF1).is_multiple_of(REFLECTIVE_EVERY) {
             FinishDesc { phong: 0.8, reflection: DVec3::splat(0.35), ..FinishDesc::default() }
         } else {
             FinishDesc::default()

@@ -23,7 +23,7 @@ impl Exponent {
     pub fn new(e: f64) -> Exponent {
         if e == 1.0 {
             Exponent::One
-        } else if e >= 0.0 && e <= 256.0 && e.fract() == 0.0 {
+        } else if (0.0..=256.0).contains(&e) && e.fract() == 0.0 {
             Exponent::Whole(e as u32)
         } else {
             Exponent::Real(e as f32)

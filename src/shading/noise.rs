@@ -12,6 +12,7 @@
 //!   0.56 at a lag of 0.5 units and 0.06 at 1 unit.
 //! - `gradient x/y/z` with `turbulence 0.1 octaves 1` gives one `DNoise` component: std 0.249,
 //!   0.248, 0.258, range about ±0.9, same autocorrelation as `Noise`.
+//!
 //! The two scale constants below are set so ours has the same standard deviations; the lattice
 //! spacing and s-curve give a similar autocorrelation: ours 0.50 at 0.5 units and 0.02 at 1 unit,
 //! so POV-Ray's features are about 10% larger (the lag where it falls to 0.5: 0.55 vs 0.50).
@@ -249,6 +250,7 @@ pub fn dnoise(p: Vec3) -> Vec3 {
 /// its product with the offset is a sign flip or a zero (`Lane::times_unit` on `PERM_GRAD_BITS`),
 /// and the products are summed in `Mat3A * Vec3A` order.
 #[inline(always)]
+#[allow(clippy::needless_range_loop)] // `lane` picks one lane of `floor` and of every corner's bits
 pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
     let floor = V3 { x: p.x.floor(), y: p.y.floor(), z: p.z.floor() };
     let frac = p.sub(floor);
@@ -270,8 +272,8 @@ pub fn dnoise_lanes<L: Lane>(p: V3<L>) -> V3<L> {
         let (aa, ab) = (PERM[a] as usize + z, PERM[a + 1] as usize + z);
         let (ba, bb) = (PERM[b] as usize + z, PERM[b + 1] as usize + z);
         let corners = [aa, ba, ab, bb, aa + 1, ba + 1, ab + 1, bb + 1];
-        for c in 0..8 {
-            bits[c][lane] = PERM_GRAD_BITS[corners[c]];
+        for (c, &corner) in corners.iter().enumerate() {
+            bits[c][lane] = PERM_GRAD_BITS[corner];
         }
     }
     let c = |i: usize| corner_dot(&bits[i], frac, i);

@@ -185,7 +185,7 @@ mod tests {
         let pigments = [
             PigmentDesc {
                 pattern: PigmentPattern::Wood(map.clone()),
-                turbulence: turbulence.clone(),
+                turbulence,
                 transform: scaled(DVec3::new(0.05, 0.05, 1.0)),
             },
             PigmentDesc { pattern: PigmentPattern::Wood(map), turbulence: None, transform: Transform::default() },

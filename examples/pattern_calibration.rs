@@ -99,7 +99,7 @@ fn check_checker(dir: &Path) {
         turbulence: None,
         transform: Transform::default(),
     };
-    let pig = Pigment::from_desc(&desc, loc);
+    let pig = Pigment::from_desc(&desc, &DMat4::from_translation(loc));
     let mut ours = vec![-1.0; W * H];
     for (i, out) in ours.iter_mut().enumerate() {
         let (x, y) = ((i % W) as f64, (i / W) as f64);
@@ -192,7 +192,7 @@ fn check_dmfwood4(dir: &Path) {
         turbulence: Some(Turbulence { amount: DVec3::splat(0.04), octaves: 3, ..Default::default() }),
         transform: Transform { matrix: s2 * s, inverse: (s2 * s).inverse() },
     };
-    let pig = Pigment::from_desc(&desc, DVec3::ZERO);
+    let pig = Pigment::from_desc(&desc, &DMat4::IDENTITY);
     let ours: Vec<f64> =
         pts.iter().map(|p| eval_pigment(&pig, p.as_vec3(), PatternQuality::default()).rgb.x as f64).collect();
     let ((mt, st), (mo, so)) = (stats(&img), stats(&ours));
@@ -226,7 +226,7 @@ fn check_bumps(dir: &Path) {
                 turbulence: None,
                 transform: scaled(DVec3::splat(scale)),
             },
-            DVec3::ZERO,
+            &DMat4::IDENTITY,
         );
         let (mut theirs, mut ours) = (Vec::new(), Vec::new());
         #[allow(clippy::needless_range_loop)] // four images indexed together

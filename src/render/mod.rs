@@ -15,14 +15,14 @@ pub mod shade;
 pub mod stats;
 pub mod trace;
 
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
 use crate::camera::Camera;
 use crate::geometry::lanes::{Lane, F8, V3};
 use crate::geometry::ray::Ray;
-use crate::scene::build::Scene;
+use crate::scene::build::{RenderFrame, Scene};
 use image::Image;
 use stats::RenderStats;
 use trace::{RayKind, Tracer};
@@ -86,12 +86,12 @@ struct RayGen {
 }
 
 impl RayGen {
-    fn new(camera: &Camera, origin: DVec3) -> RayGen {
+    fn new(camera: &Camera, frame: &RenderFrame) -> RayGen {
         RayGen {
-            origin: (camera.location - origin).as_vec3(),
-            direction: camera.direction.as_vec3(),
-            right: camera.right.as_vec3(),
-            up: camera.up.as_vec3(),
+            origin: frame.point(camera.location).as_vec3(),
+            direction: frame.vector(camera.direction).as_vec3(),
+            right: frame.vector(camera.right).as_vec3(),
+            up: frame.vector(camera.up).as_vec3(),
         }
     }
 
@@ -115,7 +115,7 @@ impl RayGen {
 /// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
 /// for that pixel without antialiasing. For tools that ask what a pixel sees.
 pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u32, y: u32) -> Ray {
-    let gen = RayGen::new(camera, scene.origin);
+    let gen = RayGen::new(camera, &scene.frame);
     gen.ray((x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32)
 }
 
@@ -123,7 +123,7 @@ pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
-    let gen = RayGen::new(camera, scene.origin);
+    let gen = RayGen::new(camera, &scene.frame);
     let tile = settings.tile.max(1);
     let tiles_x = w.div_ceil(tile);
     let tiles_y = h.div_ceil(tile);

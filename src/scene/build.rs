@@ -1,8 +1,10 @@
 //! SceneDesc (f64, world space) → Scene (f32, render space, arrays of primitives by kind).
 //!
 //! Render space is world space shifted so that `origin` (normally the scene's camera) sits at
-//! zero. Everything is subtracted in f64 before it becomes f32, so a scene translated 1e6 units
-//! away renders with the same precision as one at the world origin.
+//! zero, measured in a `unit` the scene's camera sets (`RenderFrame`). Everything is subtracted
+//! and divided in f64 before it becomes f32, so a scene translated 1e6 units away renders with
+//! the same precision as one at the world origin, and a scene scaled by 1e-4 or 1e5 becomes the
+//! same f32 numbers as the original: the same image, not merely a similar one.
 
 use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 
@@ -75,8 +77,8 @@ pub struct Features {
 }
 
 pub struct Scene {
-    /// World-space position of render space's zero.
-    pub origin: DVec3,
+    /// Where render space sits in world space.
+    pub frame: RenderFrame,
     pub spheres: Vec<Sphere>,
     pub ellipsoids: Vec<Ellipsoid>,
     pub boxes: Vec<Cuboid>,
@@ -121,9 +123,56 @@ impl AccelKind {
     }
 }
 
-/// An f64 world transform composed with the shift to render space, as f32.
-fn render_from_object(t: &Transform, origin: DVec3) -> Affine3A {
-    let m = DMat4::from_translation(-origin) * t.matrix;
+/// Where render space sits in world space: `render = (world − origin) / unit`.
+///
+/// The unit is a length the scene's own camera defines, the distance to `look_at` (else the
+/// length of `direction`), so it scales with the scene: scale a whole scene, camera included,
+/// by any factor and its render-space numbers stay the same, up to f64 rounding far below f32's.
+/// A power-of-two unit would only be exact for power-of-two scales. Ray tracing has no
+/// absolute lengths left after this (offsets and epsilons are relative; patterns live in their
+/// own space), so the unit changes no picture, only which f32 numbers represent it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderFrame {
+    pub origin: DVec3,
+    pub unit: f64,
+}
+
+impl RenderFrame {
+    /// Centred on `origin`, in the unit `desc`'s camera sets (1 where it sets none usable).
+    pub fn for_scene(desc: &SceneDesc, origin: DVec3) -> RenderFrame {
+        let c = &desc.camera;
+        let look = c.look_at.map_or(0.0, |p| (p - c.location).length());
+        let unit = [look, c.direction.length()]
+            .into_iter()
+            .find(|u| u.is_finite() && (1e-30..=1e30).contains(u))
+            .unwrap_or(1.0);
+        RenderFrame { origin, unit }
+    }
+
+    /// A world point in render space.
+    #[inline]
+    pub fn point(&self, p: DVec3) -> DVec3 {
+        (p - self.origin) / self.unit
+    }
+
+    /// A world vector (an offset, not a position) in render space.
+    #[inline]
+    pub fn vector(&self, v: DVec3) -> DVec3 {
+        v / self.unit
+    }
+
+    pub fn render_from_world(&self) -> DMat4 {
+        DMat4::from_scale(DVec3::splat(1.0 / self.unit)) * DMat4::from_translation(-self.origin)
+    }
+
+    pub fn world_from_render(&self) -> DMat4 {
+        DMat4::from_translation(self.origin) * DMat4::from_scale(DVec3::splat(self.unit))
+    }
+}
+
+/// An f64 world transform composed with the change to render space, as f32.
+fn render_from_object(t: &Transform, frame: &RenderFrame) -> Affine3A {
+    let m = frame.render_from_world() * t.matrix;
     let a = DAffine3::from_mat4(m);
     Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
 }
@@ -152,8 +201,9 @@ fn is_axis_aligned(m: &DMat4) -> bool {
 impl Scene {
     /// Builds render data with render space centred on `origin` (world space).
     pub fn build(desc: &SceneDesc, origin: DVec3, accel: AccelKind) -> Scene {
+        let frame = RenderFrame::for_scene(desc, origin);
         let mut scene = Scene {
-            origin,
+            frame,
             spheres: Vec::new(),
             ellipsoids: Vec::new(),
             boxes: Vec::new(),
@@ -168,7 +218,7 @@ impl Scene {
                 .lights
                 .iter()
                 .map(|l| Light {
-                    position: (l.position - origin).as_vec3(),
+                    position: frame.point(l.position).as_vec3(),
                     color: l.color.as_vec3(),
                     shadowless: l.shadowless,
                 })
@@ -183,7 +233,7 @@ impl Scene {
         };
         for object in &desc.objects {
             let material = scene.materials.len() as u32;
-            let m = Material::from_desc(&object.texture, &object.interior, origin);
+            let m = Material::from_desc(&object.texture, &object.interior, &frame.world_from_render());
             scene.features.transparency |= m.may_be_transparent();
             scene.features.reflection |= m.finish.reflects();
             scene.features.normals |= m.normal.is_some();
@@ -196,17 +246,19 @@ impl Scene {
     }
 
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {
-        let world = |p: DVec3| t.matrix.transform_point3(p) - self.origin;
+        let frame = self.frame;
+        let world = |p: DVec3| frame.point(t.matrix.transform_point3(p));
         let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
             prims.push(PrimRef { kind, casts_shadow, index: index as u32, material })
         };
         match shape {
             ShapeDesc::Sphere { center, radius } => {
                 if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres.push(Sphere { center: world(*center).as_vec3(), radius: (radius * s) as f32 });
+                    self.spheres
+                        .push(Sphere { center: world(*center).as_vec3(), radius: (radius * s / frame.unit) as f32 });
                     push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
                 } else {
-                    let xf = render_from_object(t, self.origin)
+                    let xf = render_from_object(t, &frame)
                         * Affine3A::from_translation(center.as_vec3())
                         * Affine3A::from_scale(Vec3::splat(*radius as f32));
                     self.ellipsoids.push(Ellipsoid::new(xf));
@@ -223,7 +275,7 @@ impl Scene {
                     Cuboid {
                         min: lo.as_vec3(),
                         max: hi.as_vec3(),
-                        frame: Some(frame_for(render_from_object(t, self.origin))),
+                        frame: Some(frame_for(render_from_object(t, &frame))),
                     }
                 };
                 self.boxes.push(cuboid);
@@ -243,9 +295,9 @@ impl Scene {
                 // through the inverse transpose.
                 let n_obj = normal.normalize();
                 let d_obj = distance / normal.length();
-                let p_world = t.matrix.transform_point3(n_obj * d_obj) - self.origin;
+                let p_render = frame.point(t.matrix.transform_point3(n_obj * d_obj));
                 let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
-                self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_world) as f32 });
+                self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_render) as f32 });
                 self.plane_materials.push(material);
                 self.plane_casts_shadow.push(casts_shadow);
             }

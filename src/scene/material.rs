@@ -1,6 +1,6 @@
 //! Render-ready surface description: pigment, normal perturbation, finish and interior, in f32.
 
-use glam::{DVec3, Vec3};
+use glam::{DMat4, Vec3};
 
 use crate::geometry::lanes::Lane;
 use crate::scene::desc::{FinishDesc, InteriorDesc, TextureDesc};
@@ -125,10 +125,11 @@ impl Material {
         }
     }
 
-    pub fn from_desc(texture: &TextureDesc, interior: &InteriorDesc, origin: DVec3) -> Material {
+    /// `world_from_render`: `RenderFrame::world_from_render` of the scene being built.
+    pub fn from_desc(texture: &TextureDesc, interior: &InteriorDesc, world_from_render: &DMat4) -> Material {
         Material {
-            pigment: Pigment::from_desc(&texture.pigment, origin),
-            normal: texture.normal.as_ref().map(|n| NormalF32::from_desc(n, origin)),
+            pigment: Pigment::from_desc(&texture.pigment, world_from_render),
+            normal: texture.normal.as_ref().map(|n| NormalF32::from_desc(n, world_from_render)),
             finish: Finish::from_desc(&texture.finish),
             ior: interior.ior as f32,
         }

@@ -8,7 +8,7 @@
 //! with the normal. Its autocorrelation (0.57 at 0.5 pattern units) equals DNoise's, so the
 //! bump vector is DNoise itself, not a derivative of Noise.
 
-use glam::{DVec3, Mat3A, Vec3};
+use glam::{DMat4, Mat3A, Vec3};
 
 use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32};
 use super::pigment::{pattern_from_render, PatternQuality};
@@ -38,8 +38,8 @@ pub struct NormalF32 {
 const BUMPS_GAIN: f64 = 0.1009 / 0.1084;
 
 impl NormalF32 {
-    pub fn from_desc(d: &NormalDesc, render_origin: DVec3) -> NormalF32 {
-        let pattern_from_render = pattern_from_render(&d.transform.inverse, render_origin);
+    pub fn from_desc(d: &NormalDesc, world_from_render: &DMat4) -> NormalF32 {
+        let pattern_from_render = pattern_from_render(&d.transform.inverse, world_from_render);
         let linear = pattern_from_render.matrix3;
         let pattern = match d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
@@ -80,7 +80,7 @@ pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>,
 mod tests {
     use super::*;
     use crate::scene::desc::Transform;
-    use glam::DMat4;
+    use glam::DVec3;
 
     fn bumps(amount: f64, scale: DVec3) -> NormalF32 {
         let m = DMat4::from_scale(scale);
@@ -89,7 +89,7 @@ mod tests {
             turbulence: None,
             transform: Transform { matrix: m, inverse: m.inverse() },
         };
-        NormalF32::from_desc(&d, DVec3::new(3.0, 1.0, -4.0))
+        NormalF32::from_desc(&d, &DMat4::from_translation(DVec3::new(3.0, 1.0, -4.0)))
     }
 
     #[test]

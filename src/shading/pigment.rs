@@ -2,7 +2,7 @@
 //!
 //! Solid colours return before any transform or noise work; only turbulent patterns pay for noise.
 
-use glam::{Affine3A, DMat4, DVec3, Vec3};
+use glam::{Affine3A, DMat4, Vec3};
 
 use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32};
 use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
@@ -58,19 +58,19 @@ fn sin_turns<L: Lane>(x: L) -> L {
 pub struct Pigment {
     pub pattern: PigmentPattern32,
     pub turbulence: Option<TurbulenceF32>,
-    /// Render space (world minus the render origin) → pattern space.
+    /// Render space (`scene::build::RenderFrame`) → pattern space.
     pub pattern_from_render: Affine3A,
 }
 
-/// `pattern_from_world ∘ translate(render_origin)`, composed in f64 then cast: the translation is
+/// `pattern_from_world ∘ world_from_render`, composed in f64 then cast: its translation is
 /// where the render origin sits in pattern space, so f32 keeps precision near the camera.
-pub fn pattern_from_render(world_from_pattern_inverse: &DMat4, render_origin: DVec3) -> Affine3A {
-    let m = *world_from_pattern_inverse * DMat4::from_translation(render_origin);
+pub fn pattern_from_render(world_from_pattern_inverse: &DMat4, world_from_render: &DMat4) -> Affine3A {
+    let m = *world_from_pattern_inverse * *world_from_render;
     Affine3A::from_mat4(m.as_mat4())
 }
 
 impl Pigment {
-    pub fn from_desc(d: &PigmentDesc, render_origin: DVec3) -> Pigment {
+    pub fn from_desc(d: &PigmentDesc, world_from_render: &DMat4) -> Pigment {
         let pattern = match &d.pattern {
             PigmentPattern::Solid(c) => PigmentPattern32::Solid(Rgbft::from_desc(c)),
             PigmentPattern::Checker(a, b) => PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)]),
@@ -79,7 +79,7 @@ impl Pigment {
         Pigment {
             pattern,
             turbulence: d.turbulence.as_ref().map(TurbulenceF32::from_desc),
-            pattern_from_render: pattern_from_render(&d.transform.inverse, render_origin),
+            pattern_from_render: pattern_from_render(&d.transform.inverse, world_from_render),
         }
     }
 
@@ -123,6 +123,7 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::DVec3;
 
     #[test]
     fn sin_turns_matches_sin() {
@@ -147,11 +148,12 @@ mod tests {
             turbulence: None,
             transform: scaled(DVec3::splat(2.0)),
         };
-        let origin = DVec3::new(1000.25, 3.0, -500.5);
-        let pig = Pigment::from_desc(&desc, origin);
+        let (origin, unit) = (DVec3::new(1000.25, 3.0, -500.5), 0.3);
+        let world_from_render = DMat4::from_translation(origin) * DMat4::from_scale(DVec3::splat(unit));
+        let pig = Pigment::from_desc(&desc, &world_from_render);
         for w in [DVec3::new(1001.0, 0.0, -499.0), DVec3::new(998.9, 0.5, -503.7)] {
             let expect = checker((w / 2.0).as_vec3());
-            let got = eval_pigment(&pig, (w - origin).as_vec3(), PatternQuality::default());
+            let got = eval_pigment(&pig, ((w - origin) / unit).as_vec3(), PatternQuality::default());
             assert_eq!(got, Rgbft::from_desc(if expect == 0 { &Color::WHITE } else { &Color::BLACK }));
         }
     }
@@ -166,7 +168,7 @@ mod tests {
             turbulence: None,
             transform: Transform::default(),
         };
-        let pig = Pigment::from_desc(&desc, DVec3::ZERO);
+        let pig = Pigment::from_desc(&desc, &DMat4::IDENTITY);
         let c = eval_pigment(&pig, Vec3::new(0.25, 0.0, 3.0), PatternQuality::default());
         assert!((c.rgb - Vec3::splat(0.5)).abs().max_element() < 1e-6);
     }
@@ -196,7 +198,7 @@ mod tests {
             },
         ];
         for desc in &pigments {
-            let pig = Pigment::from_desc(desc, DVec3::new(3.0, 1.0, -2.0));
+            let pig = Pigment::from_desc(desc, &DMat4::from_translation(DVec3::new(3.0, 1.0, -2.0)));
             for k in 0..500 {
                 let p = |i: usize| {
                     let j = (k * 8 + i) as f32;

@@ -7,6 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use strahl::headless::capture::{self, FrameRange};
 use strahl::headless::{self, bench, tradeoff, CliError};
+use strahl::render::precise::Precision;
 use strahl::render::preset::Preset;
 use strahl::render::resample::MIN_RES_SCALE;
 use strahl::render::{Quality, RenderSettings};
@@ -73,7 +74,7 @@ struct Common {
     #[arg(long, default_value_t = 0)]
     threads: usize,
     /// Speed/accuracy preset: fast, balanced, full (the scene as written; the default) or
-    /// reference (4×4 aa). Flags given explicitly override the preset's fields.
+    /// reference (4×4 aa, f64). Flags given explicitly override the preset's fields.
     #[arg(long, value_name = "NAME")]
     preset: Option<Preset>,
     /// Trace F×W by F×H pixels (0.1 to 1) and upscale back to W×H, bilinearly. Default 1.
@@ -98,6 +99,10 @@ struct Common {
     /// Cap on turbulence/noise octaves (texture detail).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=32))]
     max_octaves: Option<u32>,
+    /// Arithmetic of rays and intersections: f32 (fast, packets) or f64 (single rays, for
+    /// reference images and extreme scales). Default f32; the reference preset uses f64.
+    #[arg(long, value_name = "P")]
+    precision: Option<Precision>,
 }
 
 /// `--res-scale`: a number in MIN_RES_SCALE..=1.
@@ -120,6 +125,7 @@ impl Common {
                 max_trace_level: self.max_depth.or(preset.quality.max_trace_level),
                 shadows: preset.quality.shadows && !self.no_shadows,
                 max_octaves: self.max_octaves.or(preset.quality.max_octaves),
+                precision: self.precision.unwrap_or(preset.quality.precision),
             },
             packets: !self.no_packets,
             ..RenderSettings::default()

@@ -445,12 +445,23 @@ box { <-1000, -10, -1000>, <1000, 0, 1000> pigment { color rgbt <1, 1, 1, 1> } i
     assert_eq!(seen[1], [0, 0, 0], "above the critical angle the ray must stay trapped");
 }
 
-/// An object with `ior 1` and transmit 1 changes nothing: every pixel within 1 LSB.
+/// An object with `ior 1` and transmit 1 changes nothing: every pixel within 1 LSB, once the
+/// trace depth allows for it.
 ///
 /// The floor is made a solid colour here: far away, the checker has many checks per pixel, and
 /// the ray continuing behind a ghost starts from a point moved by one rounding, which picks
 /// another check there (seen in the small sphere's reflection of the horizon, 2 pixels by 33 LSB)
 /// — the same aliasing `scaled_and_translated_scenes_render_the_same` describes.
+///
+/// A ghost is not free for `max_trace_level`, in strahl as in POV-Ray: entering it and leaving
+/// it are two refracted rays, two levels. A ray reflected by the small mirror sphere (level 2)
+/// that passes through ghosts reaches the scene's limit of 5 on a ghost's surface, which is
+/// then shaded without its continuation: black (transmit 1 leaves it no colour of its own),
+/// where the scene without ghosts shows what lies behind, times the mirror's 0.3. Measured at
+/// 160×120, in both variants below: with level 5, 4 pixels differ, 3 of them by more than 1 LSB
+/// (at most 24 LSB), all in the mirror sphere's reflection; with level 20, 1 pixel differs, by
+/// 1 LSB. So the offset origin of the continued ray (`offset_origin`) is not the cause, the
+/// depth budget is: level 5 keeps the 4-pixel allowance, level 20 must be within 1 LSB.
 #[test]
 fn ior_one_transmit_one_is_invisible() {
     let mut desc = load(&root().join("tests/extremes/scene.pov"));
@@ -472,30 +483,45 @@ fn ior_one_transmit_one_is_invisible() {
     let opaque: Vec<_> = desc.objects.iter().filter(|o| o.interior.ior == 1.0).cloned().collect();
     let without_glass = SceneDesc { objects: opaque.clone(), ..desc.clone() };
     let with_ghosts = SceneDesc { objects: opaque.into_iter().chain(ghost.objects).collect(), ..desc.clone() };
-    for (name, a, b) in [("scene", &desc, &with), ("opaque scene", &without_glass, &with_ghosts)] {
-        let fa = render_clean(name, a, W, H);
-        let fb = render_clean(name, b, W, H);
-        let max = fa.rgb.iter().zip(&fb.rgb).map(|(p, q)| (*p as i32 - *q as i32).abs()).max().unwrap_or(0);
-        let off = fa.rgb.chunks(3).zip(fb.rgb.chunks(3)).filter(|(p, q)| p != q).count();
-        println!("ior 1 ghosts, {name}: max difference {max} LSB, {off} pixels differ");
-        if max > 1 {
-            let bad: Vec<(usize, usize)> = (0..(W * H) as usize)
-                .filter(|i| fa.rgb[3 * i..3 * i + 3] != fb.rgb[3 * i..3 * i + 3])
-                .map(|i| (i % W as usize, i / W as usize))
-                .collect();
-            println!("  differing pixels: {bad:?}");
-            write_failure(&format!("ghosts {name}"), W, H, &fb.rgb, &fa.rgb);
+    for level in [5, 20] {
+        for (name, a, b) in [("scene", &desc, &with), ("opaque scene", &without_glass, &with_ghosts)] {
+            let deep = |d: &SceneDesc| {
+                let mut d = d.clone();
+                d.global.max_trace_level = level;
+                d
+            };
+            let fa = render_clean(name, &deep(a), W, H);
+            let fb = render_clean(name, &deep(b), W, H);
+            let max = fa.rgb.iter().zip(&fb.rgb).map(|(p, q)| (*p as i32 - *q as i32).abs()).max().unwrap_or(0);
+            let off = fa.rgb.chunks(3).zip(fb.rgb.chunks(3)).filter(|(p, q)| p != q).count();
+            let beyond = fa
+                .rgb
+                .chunks(3)
+                .zip(fb.rgb.chunks(3))
+                .filter(|(p, q)| p.iter().zip(*q).any(|(a, b)| a.abs_diff(*b) > 1))
+                .count();
+            println!(
+                "ior 1 ghosts, {name}, max_trace_level {level}: max difference {max} LSB, {off} pixels differ, \
+                 {beyond} by more than 1 LSB"
+            );
+            if max > 1 {
+                let bad: Vec<(usize, usize)> = (0..(W * H) as usize)
+                    .filter(|i| fa.rgb[3 * i..3 * i + 3] != fb.rgb[3 * i..3 * i + 3])
+                    .map(|i| (i % W as usize, i / W as usize))
+                    .collect();
+                println!("  differing pixels: {bad:?}");
+                write_failure(&format!("ghosts {name} level {level}"), W, H, &fb.rgb, &fa.rgb);
+            }
+            if level == 5 {
+                // Rays through ghosts spend two levels per ghost and stop short (see above).
+                assert!(
+                    beyond <= 4,
+                    "{name}: an invisible object changes {beyond} pixels by more than 1 LSB (max {max})"
+                );
+            } else {
+                assert!(max <= 1, "{name}, max_trace_level {level}: an invisible object changes pixels by {max} LSB");
+            }
         }
-        // OPEN: 4 pixels (0.02%) still differ, by up to 24 LSB: in the small reflective sphere's
-        // reflection, edges seen through a ghost move because the continued ray starts from an
-        // offset origin (`offset_origin`), not from the original ray. Allow those few.
-        let beyond = fa
-            .rgb
-            .chunks(3)
-            .zip(fb.rgb.chunks(3))
-            .filter(|(p, q)| p.iter().zip(*q).any(|(a, b)| a.abs_diff(*b) > 1))
-            .count();
-        assert!(beyond <= 4, "{name}: an invisible object changes {beyond} pixels by more than 1 LSB (max {max})");
     }
 }
 

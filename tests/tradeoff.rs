@@ -66,7 +66,7 @@ fn tradeoff_writes_reports_and_full_beats_quarter_resolution() {
         assert!(dir.join(f).is_file(), "{f} missing");
     }
     let rows = read_csv(&dir.join("tradeoff.csv"));
-    assert_eq!(rows.len(), 16);
+    assert_eq!(rows.len(), 17);
     let row = |name: &str| rows.iter().find(|r| r[0].1 == name).unwrap_or_else(|| panic!("no row {name}")).clone();
     let (full, quarter, reference) = (row("preset full"), row("res-scale 0.25"), row("preset reference"));
     assert!(field(&full, "psnr_db") > field(&quarter, "psnr_db"));
@@ -122,8 +122,11 @@ fn render_presets_and_res_scale() {
     };
     // `--preset full` is the default; an explicit flag overrides a preset's field.
     assert_eq!(render(&["--preset", "full"], &png("full.png")), render(&[], &png("plain.png")));
-    assert_eq!(render(&["--preset", "reference", "--aa", "1"], &png("ref1.png")), render(&[], &png("plain.png")));
-    assert_eq!(render(&["--preset", "reference"], &png("ref.png")), render(&["--aa", "4"], &png("aa4.png")));
+    let ref1 = render(&["--preset", "reference", "--aa", "1", "--precision", "f32"], &png("ref1.png"));
+    assert_eq!(ref1, render(&[], &png("plain.png")));
+    // `reference` is 4×4 aa in f64.
+    let reference = render(&["--preset", "reference"], &png("ref.png"));
+    assert_eq!(reference, render(&["--aa", "4", "--precision", "f64"], &png("aa4.png")));
     // A quarter-size render comes back at the full size, and differs.
     let quarter = render(&["--res-scale", "0.25"], &png("quarter.png"));
     assert_ne!(quarter, render(&[], &png("plain.png")));

@@ -7,6 +7,7 @@ pub mod aabb;
 pub mod bvh;
 pub mod grid;
 pub mod packet;
+pub mod precise;
 
 use crate::geometry::ray::Ray;
 use crate::scene::build::AccelKind;

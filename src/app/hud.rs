@@ -5,6 +5,7 @@ use std::time::Duration;
 use glam::DVec3;
 
 use crate::app::font::{Canvas, GLYPH};
+use crate::render::precise::Precision;
 
 /// The last frame intervals, for average and 95th-percentile frame time.
 #[derive(Clone, Debug)]
@@ -54,6 +55,8 @@ pub struct HudInfo<'a> {
     pub position: DVec3,
     pub speed: f64,
     pub quality: &'a str,
+    /// The arithmetic the quality preset traces in.
+    pub precision: Precision,
     /// e.g. "moving" or "AA 3/9".
     pub state: &'a str,
 }
@@ -88,7 +91,7 @@ pub fn draw_hud(canvas: &mut Canvas, info: &HudInfo) {
         (format!("scale {:4.2}  ({} x {})", info.scale, info.internal.0, info.internal.1), TEXT),
         (format!("{:7.2} Mrays/s", info.rays_per_s / 1e6), TEXT),
         (format!("pos <{:.2}, {:.2}, {:.2}>", p.x, p.y, p.z), TEXT),
-        (format!("speed {:.2}/s  quality {}", info.speed, info.quality), TEXT),
+        (format!("speed {:.2}/s  quality {} ({})", info.speed, info.quality, info.precision), TEXT),
     ];
     panel(canvas, 8, 8, &lines, text_scale(canvas.width));
 }
@@ -182,6 +185,7 @@ mod tests {
             position: DVec3::ONE,
             speed: 2.0,
             quality: "full",
+            precision: Precision::F64,
             state: "moving",
         };
         for (w, h) in [(1, 1), (50, 20), (640, 480)] {

@@ -154,6 +154,8 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     }
     let origin = desc.camera.location;
     let scene = Scene::build(desc, origin, options.accel);
+    // F2 may switch to the `reference` preset, which traces in f64, at any time.
+    scene.prepare_precise(desc);
     let camera = Camera::from_desc(&desc.camera);
     let speed = initial_speed(&scene, &camera);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
@@ -167,6 +169,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     // the path started with it (a reload during playback is not reflected).
     eprintln!("comparing {} sampled frames with full-quality renders ...", playback.samples().len());
     let scene = Scene::build(desc, origin, options.accel);
+    crate::render::precise::prepare(&scene, desc, options.quality.precision);
     let cx = ReportContext {
         scene: &options.title,
         path: &play.file,

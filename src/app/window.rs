@@ -275,6 +275,7 @@ impl App {
                 position: self.fly.position,
                 speed: self.fly.speed,
                 quality: quality_preset(self.options.quality, self.options.aa, self.preset).name,
+                precision: quality_preset(self.options.quality, self.options.aa, self.preset).quality.precision,
                 state: &state,
             };
             let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };

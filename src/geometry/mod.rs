@@ -5,6 +5,7 @@ pub mod cuboid;
 pub mod lanes;
 pub mod plane;
 pub mod polygon;
+pub mod precise;
 pub mod ray;
 pub mod sphere;
 pub mod triangle;

@@ -15,6 +15,7 @@ use crate::headless::capture::frame_t;
 use crate::headless::json::Json;
 use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
+use crate::render::precise::{self, Precision};
 use crate::render::resample::render_scaled;
 use crate::render::stats::RenderStats;
 use crate::render::RenderSettings;
@@ -132,17 +133,19 @@ fn quality_json(s: &RenderSettings, res_scale: f32) -> Json {
         ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
         ("shadows", Json::Bool(s.quality.shadows)),
         ("max_octaves", Json::opt_u32(s.quality.max_octaves)),
+        ("precision", Json::str(s.quality.precision.name())),
     ])
 }
 
 fn quality_text(s: &RenderSettings, res_scale: f32, scene_level: u32) -> String {
     let octaves = s.quality.max_octaves.map_or("scene".to_string(), |o| o.to_string());
     format!(
-        "res_scale {res_scale}, aa {}x{}, max_trace_level {}, shadows {}, max_octaves {octaves}",
+        "res_scale {res_scale}, aa {}x{}, max_trace_level {}, shadows {}, max_octaves {octaves}, precision {}",
         s.aa,
         s.aa,
         s.quality.max_trace_level.unwrap_or(scene_level),
-        if s.quality.shadows { "on" } else { "off" }
+        if s.quality.shadows { "on" } else { "off" },
+        s.quality.precision
     )
 }
 
@@ -168,7 +171,7 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
         "threads:    {}   accel: {}   packets: {}",
         run.threads,
         args.accel.name(),
-        if args.settings.packets { "on" } else { "off" }
+        if args.settings.packets && args.settings.quality.precision == Precision::F32 { "on" } else { "off" }
     );
     let _ = writeln!(o, "quality:    {}", quality_text(&args.settings, args.res_scale, scene_level));
     let _ = writeln!(
@@ -273,6 +276,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
+    precise::prepare(&scene, &desc, args.settings.quality.precision);
     let base = Camera::from_desc(&desc.camera);
     let cameras: Vec<Camera> =
         (0..args.frames).map(|i| path.as_ref().map_or(base, |p| p.camera_at(frame_t(i, args.frames), &base))).collect();

@@ -19,6 +19,7 @@ use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Mani
 use crate::headless::progress::Progress;
 use crate::headless::{load_sized, output, with_threads, CliError};
 use crate::render::image::Image;
+use crate::render::precise;
 use crate::render::resample::render_scaled;
 use crate::render::{render, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
@@ -101,6 +102,7 @@ pub fn settings_json(s: &RenderSettings, res_scale: f32, accel: AccelKind) -> Js
         ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
         ("shadows", Json::Bool(s.quality.shadows)),
         ("max_octaves", Json::opt_u32(s.quality.max_octaves)),
+        ("precision", Json::str(s.quality.precision.name())),
         ("accel", Json::str(accel.name())),
     ])
 }
@@ -184,6 +186,7 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
     let path = CameraPath::load(&args.path)?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
+    precise::prepare(&scene, &desc, args.settings.quality.precision);
     let base = Camera::from_desc(&desc.camera);
     let job = CaptureJob {
         scene_name: args.scene.display().to_string(),

@@ -1,6 +1,6 @@
 //! `strahl tradeoff`: measures what each speed/accuracy knob buys. Renders the `reference`
-//! preset once per camera, then times every knob setting (one at a time, from `full`) and every
-//! preset, and scores its frames against the reference (PSNR, SSIM, largest 8-bit error).
+//! preset once per camera, then times every knob setting (one at a time, from `full`: resolution,
+//! trace depth, shadows, octaves, f64 precision, antialiasing) and every preset, and scores its frames against the reference (PSNR, SSIM, largest 8-bit error).
 //!
 //! Timing is bench-style: per setting and camera one untimed frame (the one scored, and the
 //! warm-up), then `repeats` timed frames into pre-allocated images, median; nothing is encoded or
@@ -25,6 +25,7 @@ use crate::headless::bench::{cpu_model, frame_times};
 use crate::headless::capture::frame_t;
 use crate::headless::{load, metrics, output, with_threads, CliError};
 use crate::render::image::Image;
+use crate::render::precise::Precision;
 use crate::render::preset::Preset;
 use crate::render::resample::render_scaled;
 use crate::render::{Quality, RenderSettings};
@@ -78,6 +79,7 @@ pub fn sweep() -> Vec<Setting> {
     for o in 0..=2 {
         s.push(Setting::knob(format!("max-octaves {o}"), |s| s.quality.max_octaves = Some(o)));
     }
+    s.push(Setting::knob("precision f64".into(), |s| s.quality.precision = Precision::F64));
     for aa in 2..=3 {
         s.push(Setting::knob(format!("aa {aa}"), |s| s.aa = aa));
     }
@@ -243,6 +245,8 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
     let (desc, _) = load(&args.scene, &args.include)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
+    // The reference preset and the precision knob trace in f64.
+    scene.prepare_precise(&desc);
     let base = Camera::from_desc(&desc.camera);
     let cameras: Vec<Camera> = match &path {
         Some(p) => (0..args.frames).map(|i| p.camera_at(frame_t(i, args.frames), &base)).collect(),
@@ -289,9 +293,10 @@ mod tests {
     fn sweep_moves_one_knob_at_a_time() {
         let full = Preset::Full.settings();
         let s = sweep();
-        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 2 + 4);
+        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 1 + 2 + 4);
         let names: Vec<&str> = s.iter().map(|s| s.name.as_str()).collect();
         assert!(names.contains(&"res-scale 0.25") && names.contains(&"no-shadows") && names.contains(&"aa 3"));
+        assert!(names.contains(&"precision f64"));
         assert_eq!(names[names.len() - 4..], ["preset fast", "preset balanced", "preset full", "preset reference"]);
         for k in &s[..s.len() - 4] {
             let changed = [
@@ -300,6 +305,7 @@ mod tests {
                 k.quality.max_trace_level != full.quality.max_trace_level,
                 k.quality.shadows != full.quality.shadows,
                 k.quality.max_octaves != full.quality.max_octaves,
+                k.quality.precision != full.quality.precision,
             ];
             assert_eq!(changed.iter().filter(|&&c| c).count(), 1, "{}", k.name);
         }

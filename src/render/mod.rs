@@ -8,6 +8,7 @@ pub mod adaptive;
 pub mod image;
 pub mod intersect;
 pub mod packet;
+pub mod precise;
 pub mod preset;
 pub mod progressive;
 pub mod resample;
@@ -35,11 +36,13 @@ pub struct Quality {
     pub shadows: bool,
     /// Caps turbulence and noise octaves (texture detail).
     pub max_octaves: Option<u32>,
+    /// f32 (packets) or f64 (`render::precise`; the scene must be prepared for it).
+    pub precision: precise::Precision,
 }
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality { max_trace_level: None, shadows: true, max_octaves: None }
+        Quality { max_trace_level: None, shadows: true, max_octaves: None, precision: precise::Precision::F32 }
     }
 }
 
@@ -121,6 +124,9 @@ pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
+    if settings.quality.precision == precise::Precision::F64 {
+        return precise::render(scene, camera, settings, image);
+    }
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGen::new(camera, &scene.frame);

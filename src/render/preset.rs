@@ -1,14 +1,16 @@
 //! Named speed/accuracy presets (`--preset fast|balanced|full|reference`): a resolution scale,
 //! an antialiasing level and the `Quality` knobs, chosen from measured trade-offs.
 //!
-//! `full` renders exactly what the scene asks; `reference` is the best strahl renders and the
-//! image `strahl tradeoff` measures every other setting against. `fast` and `balanced` are
+//! `full` renders exactly what the scene asks; `reference` is the best strahl renders (4×4
+//! antialiasing, traced in f64 by `render::precise`) and the image `strahl tradeoff` measures
+//! every other setting against. `fast` and `balanced` are
 //! points on the Pareto front that `strahl tradeoff` measured on the seed scene
 //! (`docs/tradeoff/seed.md`). Explicit flags override a preset's fields in the CLI.
 
 use std::fmt;
 use std::str::FromStr;
 
+use super::precise::Precision;
 use super::Quality;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -44,23 +46,28 @@ impl Preset {
         let full = PresetSettings { res_scale: 1.0, aa: 1, quality: Quality::default() };
         // `fast` and `balanced` are points of the Pareto front of (ms, 1 − SSIM) that
         // `strahl tradeoff scenes/seed.pov -W 640 -H 360 --repeats 9` measured (docs/tradeoff/seed.md,
-        // 2 shared cores). The front is res-scale 0.25 (8.5 ms, 1 − SSIM 0.194), 0.5 (18.3 ms, 0.101),
-        // 0.75 (40 ms, 0.064), aa 2 (254 ms, 0.036), aa 3 (581 ms, 0.026), reference (989 ms, 0);
-        // `full` (62.5 ms, 0.0645) is off it, because the bilinear upscale of a 0.75 render smooths
+        // 2 shared cores). The front is res-scale 0.25 (1.75 ms, 1 − SSIM 0.194), 0.5 (4.6 ms, 0.101),
+        // 0.75 (8.7 ms, 0.064), aa 2 (50.8 ms, 0.035), aa 3 (113.7 ms, 0.026), reference (936 ms, 0);
+        // `full` (13.2 ms, 0.0645) is off it, because the bilinear upscale of a 0.75 render smooths
         // the checker's aliasing about as much as it loses detail. No other knob reaches the front on
-        // this scene: shadows off saves 28% for 1.45× the error, max_octaves 0 saves 17% for 1.12×,
-        // and max_trace_level changes nothing (no reflection or refraction).
+        // this scene: shadows off saves 14% for 1.44× the error, max_octaves 0 saves 22% for 1.12×,
+        // max_trace_level changes nothing (no reflection or refraction), and precision f64 costs
+        // 4.5× the time for no visible gain at this scale (1 − SSIM 0.06451 against 0.06453).
         match self {
-            // 3.4× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
-            // the front before the error doubles with each halving of time (0.25 is 2.2× faster
+            // 2.9× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
+            // the front before the error doubles with each halving of time (0.25 is 2.6× faster
             // again for 1.9× the error, and traces 160×90 pixels at 640×360).
             Preset::Fast => PresetSettings { res_scale: 0.5, ..full },
-            // The knee of the front: 1.5-1.6× faster than `full` at its error (1 − SSIM 0.0644 vs
-            // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 6.4× the time for 0.55× the error.
+            // The knee of the front: 1.5× faster than `full` at its error (1 − SSIM 0.0642 vs
+            // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.9× the time for 0.55× the error.
             Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
             Preset::Full => full,
-            // 4×4 samples per pixel: strahl's best, and the reference errors are measured against.
-            Preset::Reference => PresetSettings { aa: 4, ..full },
+            // 4×4 samples per pixel, rays in f64: strahl's best, and the reference errors are
+            // measured against. f64 removes the f32 rounding of hit points, which at the horizon
+            // picks other checks of a checkerboard (docs/precision.md).
+            Preset::Reference => {
+                PresetSettings { aa: 4, quality: Quality { precision: Precision::F64, ..full.quality }, ..full }
+            }
         }
     }
 }
@@ -97,10 +104,18 @@ mod tests {
     }
 
     #[test]
-    fn full_is_the_scene_and_reference_is_4x4_aa() {
+    fn full_is_the_scene_and_reference_is_4x4_aa_in_f64() {
         let full = Preset::Full.settings();
         assert_eq!(full, PresetSettings { res_scale: 1.0, aa: 1, quality: Quality::default() });
-        assert_eq!(Preset::Reference.settings(), PresetSettings { aa: 4, ..full });
+        assert_eq!(full.quality.precision, Precision::F32);
+        let reference = Preset::Reference.settings();
+        assert_eq!(reference.quality.precision, Precision::F64);
+        let f64_full = Quality { precision: Precision::F64, ..full.quality };
+        assert_eq!(reference, PresetSettings { aa: 4, quality: f64_full, ..full });
+        // Only `reference` traces in f64: the others are points of the f32 front.
+        for p in [Preset::Fast, Preset::Balanced, Preset::Full] {
+            assert_eq!(p.settings().quality.precision, Precision::F32, "{p}");
+        }
     }
 
     #[test]

@@ -73,18 +73,22 @@ impl Accumulator {
 mod tests {
     use super::*;
     use crate::camera::Camera;
-    use crate::render::{render, RenderSettings};
+    use crate::render::precise::Precision;
+    use crate::render::{render, Quality, RenderSettings};
     use crate::scene::build::{AccelKind, Scene};
     use crate::scene::fixtures::seed_scene as seed_like;
 
-    /// The converged progressive image is the `--aa N` render, bit for bit (so within 1 LSB).
+    /// The converged progressive image is the `--aa N` render, bit for bit (so within 1 LSB),
+    /// in f32 and in f64 (the window's `reference` preset).
     #[test]
     fn progressive_aa_equals_full_render() {
         let desc = seed_like();
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
+        scene.prepare_precise(&desc);
         let camera = Camera::from_desc(&desc.camera);
-        for aa in [1, 2, 3] {
-            let settings = RenderSettings { width: 48, height: 36, aa, ..RenderSettings::default() };
+        for (aa, precision) in [1, 2, 3].into_iter().flat_map(|aa| Precision::ALL.map(|p| (aa, p))) {
+            let quality = Quality { precision, ..Quality::default() };
+            let settings = RenderSettings { width: 48, height: 36, aa, quality, ..RenderSettings::default() };
             let mut full = Image::default();
             render(&scene, &camera, &settings, &mut full);
 
@@ -98,7 +102,7 @@ mod tests {
             assert_eq!(acc.passes(), aa * aa);
             let mut out = Image::default();
             acc.resolve(&mut out);
-            assert_eq!(out.pixels, full.pixels, "aa {aa}");
+            assert_eq!(out.pixels, full.pixels, "aa {aa}, {precision}");
             assert_eq!(out.to_rgb8(true), full.to_rgb8(true));
         }
     }

@@ -6,6 +6,8 @@
 //! the same precision as one at the world origin, and a scene scaled by 1e-4 or 1e5 becomes the
 //! same f32 numbers as the original: the same image, not merely a similar one.
 
+use std::sync::OnceLock;
+
 use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 
 use crate::accel::aabb::Aabb;
@@ -17,6 +19,7 @@ use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 use crate::scene::material::Material;
+use crate::scene::precise::PreciseScene;
 use crate::shading::pattern::Rgbft;
 
 /// The kinds of shape, in the order the statistics report them.
@@ -102,6 +105,9 @@ pub struct Scene {
     pub gamma: f32,
     pub features: Features,
     pub accel: Accel,
+    /// The f64 geometry for `Precision::F64` renders, built on first request
+    /// (`prepare_precise`), so f32 renders pay nothing for it.
+    precise: OnceLock<PreciseScene>,
 }
 
 /// Which accelerator to build over the bounded primitives.
@@ -178,7 +184,7 @@ fn render_from_object(t: &Transform, frame: &RenderFrame) -> Affine3A {
 }
 
 /// Whether `m`'s linear part is a rotation times a uniform scale (a sphere stays a sphere).
-fn uniform_scale(m: &DMat4) -> Option<f64> {
+pub(crate) fn uniform_scale(m: &DMat4) -> Option<f64> {
     let c = [m.x_axis.truncate(), m.y_axis.truncate(), m.z_axis.truncate()];
     let s = c[0].length();
     let ok = c.iter().all(|v| (v.length() - s).abs() <= 1e-9 * s)
@@ -189,7 +195,7 @@ fn uniform_scale(m: &DMat4) -> Option<f64> {
 }
 
 /// Whether `m`'s linear part is diagonal (an axis-aligned box stays axis-aligned).
-fn is_axis_aligned(m: &DMat4) -> bool {
+pub(crate) fn is_axis_aligned(m: &DMat4) -> bool {
     m.x_axis.y == 0.0
         && m.x_axis.z == 0.0
         && m.y_axis.x == 0.0
@@ -230,6 +236,7 @@ impl Scene {
             gamma: desc.output_gamma().unwrap_or(1.0) as f32,
             features: Features::default(),
             accel: Accel::None { count: 0 },
+            precise: OnceLock::new(),
         };
         for object in &desc.objects {
             let material = scene.materials.len() as u32;
@@ -243,6 +250,18 @@ impl Scene {
         }
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
+    }
+
+    /// Builds the f64 geometry from `desc` (the description this scene was built from) unless
+    /// it is there already. Front ends call it before rendering with `Precision::F64`; the
+    /// window calls it at load, since F2 may switch to the `reference` preset at any time.
+    pub fn prepare_precise(&self, desc: &SceneDesc) -> &PreciseScene {
+        self.precise.get_or_init(|| PreciseScene::build(desc, self))
+    }
+
+    /// The f64 geometry, if `prepare_precise` built it.
+    pub fn precise(&self) -> Option<&PreciseScene> {
+        self.precise.get()
     }
 
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {

@@ -3,6 +3,7 @@
 use std::fmt::Write as _;
 
 use super::{Measure, Setting};
+use crate::render::precise::Precision;
 
 /// One measured setting, with its effective knob values.
 #[derive(Clone, Debug, PartialEq)]
@@ -16,6 +17,7 @@ pub struct Row {
     pub shadows: bool,
     /// `None`: as the scene's textures ask.
     pub max_octaves: Option<u32>,
+    pub precision: Precision,
     pub ms: f64,
     pub psnr_db: f64,
     pub ssim: f64,
@@ -33,6 +35,7 @@ impl Row {
             max_trace_level: s.quality.max_trace_level.unwrap_or(scene_level),
             shadows: s.quality.shadows,
             max_octaves: s.quality.max_octaves,
+            precision: s.quality.precision,
             ms: m.ms,
             psnr_db: m.psnr_db,
             ssim: m.ssim,
@@ -110,7 +113,7 @@ fn octaves_text(o: Option<u32>) -> String {
 }
 
 pub const CSV_HEADER: &str =
-    "setting,res_scale,aa,max_trace_level,shadows,max_octaves,ms,speedup,psnr_db,ssim,one_minus_ssim,max_abs_err,front";
+    "setting,res_scale,aa,max_trace_level,shadows,max_octaves,precision,ms,speedup,psnr_db,ssim,one_minus_ssim,max_abs_err,front";
 
 /// One line per row under `CSV_HEADER`. Numbers are plain decimals (`inf` for a PSNR of an
 /// exact match); `max_octaves` is `scene` where the scene's own counts apply.
@@ -119,13 +122,14 @@ pub fn csv(rows: &[Row]) -> String {
     for r in rows {
         let _ = writeln!(
             o,
-            "{},{},{},{},{},{},{:.3},{:.3},{},{:.6},{:.6},{},{}",
+            "{},{},{},{},{},{},{},{:.3},{:.3},{},{:.6},{:.6},{},{}",
             r.name,
             r.res_scale,
             r.aa,
             r.max_trace_level,
             r.shadows,
             octaves_text(r.max_octaves),
+            r.precision,
             r.ms,
             speedup(rows, r),
             psnr_text(r.psnr_db),
@@ -144,7 +148,7 @@ pub fn markdown(rows: &[Row], ctx: &Context, svg_name: &str) -> String {
     let mut o = format!("# Speed/accuracy trade-off: `{}`\n\n", ctx.scene);
     let _ = writeln!(o, "{}.\n", ctx.summary());
     o.push_str(
-        "Errors are against `--preset reference` (4×4 aa, everything else as the scene asks): PSNR over \
+        "Errors are against `--preset reference` (4×4 aa in f64, everything else as the scene asks): PSNR over \
          all cameras' pixels, SSIM (8×8 blocks of luma) averaged over cameras, and the largest 8-bit \
          error of any channel in any frame. Each row moves one knob from `full`, except the presets. \
          ★ marks the Pareto front of (ms, 1 − SSIM): no other setting is both faster and closer. \
@@ -211,6 +215,7 @@ pub(super) mod tests {
                 max_trace_level: 5,
                 shadows: true,
                 max_octaves: None,
+                precision: Precision::F32,
                 ms,
                 psnr_db: if ssim >= 1.0 { f64::INFINITY } else { 20.0 + 20.0 * ssim },
                 ssim,
@@ -259,6 +264,7 @@ pub(super) mod tests {
             assert_eq!(num("psnr_db").is_infinite(), row.psnr_db.is_infinite());
             assert_eq!(f[col("front")].parse::<bool>(), Ok(row.front));
             assert_eq!(f[col("max_octaves")], "scene");
+            assert_eq!(f[col("precision")], "f32");
         }
         assert_eq!(lines[1].split(',').nth(col("speedup")), Some("4.000"));
     }

@@ -137,10 +137,17 @@ impl AccelKind {
 /// A power-of-two unit would only be exact for power-of-two scales. Ray tracing has no
 /// absolute lengths left after this (offsets and epsilons are relative; patterns live in their
 /// own space), so the unit changes no picture, only which f32 numbers represent it.
+///
+/// Every conversion multiplies by the one rounded `1 / unit` (`per_unit`), never divides, so a
+/// point reached through an object's composed matrix and the same point converted directly get
+/// the same f64 bits wherever the world numbers are exact: faces that coincide in the scene
+/// (a box standing on the floor plane) still coincide in render space.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderFrame {
     pub origin: DVec3,
     pub unit: f64,
+    /// `1 / unit`, rounded once.
+    pub per_unit: f64,
 }
 
 impl RenderFrame {
@@ -152,23 +159,23 @@ impl RenderFrame {
             .into_iter()
             .find(|u| u.is_finite() && (1e-30..=1e30).contains(u))
             .unwrap_or(1.0);
-        RenderFrame { origin, unit }
+        RenderFrame { origin, unit, per_unit: 1.0 / unit }
     }
 
     /// A world point in render space.
     #[inline]
     pub fn point(&self, p: DVec3) -> DVec3 {
-        (p - self.origin) / self.unit
+        (p - self.origin) * self.per_unit
     }
 
     /// A world vector (an offset, not a position) in render space.
     #[inline]
     pub fn vector(&self, v: DVec3) -> DVec3 {
-        v / self.unit
+        v * self.per_unit
     }
 
     pub fn render_from_world(&self) -> DMat4 {
-        DMat4::from_scale(DVec3::splat(1.0 / self.unit)) * DMat4::from_translation(-self.origin)
+        DMat4::from_scale(DVec3::splat(self.per_unit)) * DMat4::from_translation(-self.origin)
     }
 
     pub fn world_from_render(&self) -> DMat4 {
@@ -273,8 +280,10 @@ impl Scene {
         match shape {
             ShapeDesc::Sphere { center, radius } => {
                 if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres
-                        .push(Sphere { center: world(*center).as_vec3(), radius: (radius * s / frame.unit) as f32 });
+                    self.spheres.push(Sphere {
+                        center: world(*center).as_vec3(),
+                        radius: (radius * s * frame.per_unit) as f32,
+                    });
                     push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
                 } else {
                     let xf = render_from_object(t, &frame)

@@ -8,13 +8,13 @@
 //! `prims[i].index` of the f64 array of its kind). A `Scene` builds it only when asked
 //! (`Scene::prepare_precise`), so f32 renders pay nothing for it.
 
-use glam::{DAffine3, DMat4, DVec3};
+use glam::{DAffine3, DVec3};
 
 use crate::accel::bvh::Bvh;
 use crate::accel::precise::BvhD;
 use crate::accel::Accel;
 use crate::geometry::precise::{CuboidD, EllipsoidD, FrameD, PlaneD, PolygonD, SphereD, TriangleD};
-use crate::scene::build::{is_axis_aligned, uniform_scale, Scene, ShapeKind};
+use crate::scene::build::{is_axis_aligned, uniform_scale, RenderFrame, Scene, ShapeKind};
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 
 /// How the f64 path finds candidates among the bounded primitives.
@@ -40,9 +40,9 @@ pub struct PreciseScene {
     pub accel: PreciseAccel,
 }
 
-/// An f64 world transform composed with the shift to render space.
-fn render_from_object(t: &Transform, origin: DVec3) -> DAffine3 {
-    DAffine3::from_mat4(DMat4::from_translation(-origin) * t.matrix)
+/// An f64 world transform composed with the change to render space.
+fn render_from_object(t: &Transform, frame: &RenderFrame) -> DAffine3 {
+    DAffine3::from_mat4(frame.render_from_world() * t.matrix)
 }
 
 impl PreciseScene {
@@ -52,7 +52,7 @@ impl PreciseScene {
     /// When `scene` holds a different number of shapes than `desc` describes (a programming
     /// error: the two were built from different descriptions).
     pub fn build(desc: &SceneDesc, scene: &Scene) -> PreciseScene {
-        let origin = scene.origin;
+        let frame = scene.frame;
         let mut p = PreciseScene {
             spheres: Vec::new(),
             ellipsoids: Vec::new(),
@@ -60,12 +60,12 @@ impl PreciseScene {
             triangles: Vec::new(),
             polygons: Vec::new(),
             planes: Vec::new(),
-            lights: desc.lights.iter().map(|l| l.position - origin).collect(),
+            lights: desc.lights.iter().map(|l| frame.point(l.position)).collect(),
             iors: desc.objects.iter().map(|o| o.interior.ior).collect(),
             accel: PreciseAccel::None { count: 0 },
         };
         for object in &desc.objects {
-            p.add_shape(&object.shape, &object.transform, origin);
+            p.add_shape(&object.shape, &object.transform, &frame);
         }
         let counts = |s: &Scene| {
             [s.spheres.len(), s.ellipsoids.len(), s.boxes.len(), s.triangles.len(), s.polygons.len(), s.planes.len()]
@@ -84,14 +84,14 @@ impl PreciseScene {
 
     /// The same classification as `Scene::add_shape` (sphere or ellipsoid, axis-aligned box or
     /// not), so the arrays line up with the f32 ones.
-    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, origin: DVec3) {
-        let world = |p: DVec3| t.matrix.transform_point3(p) - origin;
+    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, frame: &RenderFrame) {
+        let world = |p: DVec3| frame.point(t.matrix.transform_point3(p));
         match shape {
             ShapeDesc::Sphere { center, radius } => {
                 if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres.push(SphereD { center: world(*center), radius: radius * s });
+                    self.spheres.push(SphereD { center: world(*center), radius: radius * s * frame.per_unit });
                 } else {
-                    let xf = render_from_object(t, origin)
+                    let xf = render_from_object(t, frame)
                         * DAffine3::from_translation(*center)
                         * DAffine3::from_scale(DVec3::splat(*radius));
                     self.ellipsoids.push(EllipsoidD { frame: FrameD::new(xf) });
@@ -103,7 +103,7 @@ impl PreciseScene {
                     let (a, b) = (world(lo), world(hi));
                     CuboidD { min: a.min(b), max: a.max(b), frame: None }
                 } else {
-                    CuboidD { min: lo, max: hi, frame: Some(FrameD::new(render_from_object(t, origin))) }
+                    CuboidD { min: lo, max: hi, frame: Some(FrameD::new(render_from_object(t, frame))) }
                 });
             }
             ShapeDesc::Triangle { a, b, c } => self.triangles.push(TriangleD::new(world(*a), world(*b), world(*c))),
@@ -114,9 +114,9 @@ impl PreciseScene {
             ShapeDesc::Plane { normal, distance } => {
                 let n_obj = normal.normalize();
                 let d_obj = distance / normal.length();
-                let p_world = t.matrix.transform_point3(n_obj * d_obj) - origin;
+                let p_render = frame.point(t.matrix.transform_point3(n_obj * d_obj));
                 let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
-                self.planes.push(PlaneD { normal: n_world, distance: n_world.dot(p_world) });
+                self.planes.push(PlaneD { normal: n_world, distance: n_world.dot(p_render) });
             }
         }
     }

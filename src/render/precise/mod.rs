@@ -107,10 +107,10 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
     let gen = RayGenD {
-        origin: camera.location - scene.origin,
-        direction: camera.direction,
-        right: camera.right,
-        up: camera.up,
+        origin: scene.frame.point(camera.location),
+        direction: scene.frame.vector(camera.direction),
+        right: scene.frame.vector(camera.right),
+        up: scene.frame.vector(camera.up),
     };
     let tile = settings.tile.max(1);
     let tiles_x = w.div_ceil(tile);

@@ -46,25 +46,24 @@ impl Preset {
         let full = PresetSettings { res_scale: 1.0, aa: 1, quality: Quality::default() };
         // `fast` and `balanced` are points of the Pareto front of (ms, 1 − SSIM) that
         // `strahl tradeoff scenes/seed.pov -W 640 -H 360 --repeats 9` measured (docs/tradeoff/seed.md,
-        // 2 shared cores). The front is res-scale 0.25 (1.75 ms, 1 − SSIM 0.194), 0.5 (4.6 ms, 0.101),
-        // 0.75 (8.7 ms, 0.064), aa 2 (50.8 ms, 0.035), aa 3 (113.7 ms, 0.026), reference (936 ms, 0);
-        // `full` (13.2 ms, 0.0645) is off it, because the bilinear upscale of a 0.75 render smooths
+        // 2 shared cores). The front is res-scale 0.25 (1.5 ms, 1 − SSIM 0.194), 0.5 (2.6 ms, 0.101),
+        // 0.75 (4.4 ms, 0.064), aa 2 (24.2 ms, 0.035), aa 3 (54.0 ms, 0.026), reference (455 ms, 0);
+        // `full` (6.2 ms, 0.0645) is off it, because the bilinear upscale of a 0.75 render smooths
         // the checker's aliasing about as much as it loses detail. No other knob reaches the front on
-        // this scene: shadows off saves 14% for 1.44× the error, max_octaves 0 saves 22% for 1.12×,
+        // this scene: shadows off saves 14% for 1.44× the error, max_octaves 0 saves 14% for 1.12×,
         // max_trace_level changes nothing (no reflection or refraction), and precision f64 costs
-        // 4.5× the time for no visible gain at this scale (1 − SSIM 0.06451 against 0.06453).
+        // 4.7× the time for no visible gain here (1 − SSIM 0.06451 against 0.06447).
         match self {
-            // 2.9× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
-            // the front before the error doubles with each halving of time (0.25 is 2.6× faster
+            // 2.4× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
+            // the front before the error doubles with each halving of time (0.25 is 1.7× faster
             // again for 1.9× the error, and traces 160×90 pixels at 640×360).
             Preset::Fast => PresetSettings { res_scale: 0.5, ..full },
-            // The knee of the front: 1.5× faster than `full` at its error (1 − SSIM 0.0642 vs
-            // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.9× the time for 0.55× the error.
+            // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
+            // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
             Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
             Preset::Full => full,
             // 4×4 samples per pixel, rays in f64: strahl's best, and the reference errors are
-            // measured against. f64 removes the f32 rounding of hit points, which at the horizon
-            // picks other checks of a checkerboard (docs/precision.md).
+            // measured against. f64 removes the f32 rounding of intersections (docs/precision.md).
             Preset::Reference => {
                 PresetSettings { aa: 4, quality: Quality { precision: Precision::F64, ..full.quality }, ..full }
             }

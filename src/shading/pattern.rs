@@ -88,24 +88,29 @@ impl<L: Lane> RgbftLanes<L> {
 /// `checker` flips colour between d = 9.5e-11 and 1e-10 (and the same on x), so a plane at y = 0
 /// shows the cell [0, 1): (0.5, 0, 0.5) gets the *first* colour. In f32 a hit on y = 0 lands
 /// up to a few ulps either side of 0, so we widen the tolerance to 1e-4 (plus 2^-16 relative, for
-/// large coordinates); this moves edges by at most that much, which no pixel can see.
+/// large coordinates); this moves edges by at most that much, which no pixel can see. `slack`
+/// widens it further by how far the point itself may be off (see `checker_lanes`).
 #[inline(always)]
-fn floor_tolerant<L: Lane>(v: L) -> L {
-    (v + L::splat(1e-4) + v.abs() * L::splat(1.0 / 65536.0)).floor()
+fn floor_tolerant<L: Lane>(v: L, slack: L) -> L {
+    (v + L::splat(1e-4) + v.abs() * L::splat(1.0 / 65536.0) + slack).floor()
 }
 
 /// POV-Ray's `checker`: 0 for the first colour, 1 for the second, alternating in unit cubes.
 #[inline]
 pub fn checker(p: Vec3) -> u32 {
-    checker_lanes(V3::from_vec3(p)) as u32
+    checker_lanes(V3::from_vec3(p), 0.0) as u32
 }
 
-/// `checker` for one or eight points: set where the second colour shows.
+/// `checker` for one or eight points: set where the second colour shows. `slack` is the error
+/// the point may carry in pattern units: an f32 hit point far from the camera is off the surface
+/// by a relative 1e-7 of that distance, more than the fixed tolerance once the camera is some
+/// thousand units away, and a floor at y = 0 would then show the other colour wherever it
+/// lands below 0 (measured: 6.4e-4 units at 8.3e4, where the tolerance is 1e-4).
 #[inline(always)]
-pub fn checker_lanes<L: Lane>(p: V3<L>) -> L::Mask {
+pub fn checker_lanes<L: Lane>(p: V3<L>, slack: L) -> L::Mask {
     // An integer sum is odd where half of it has a fraction; that holds for negative sums too,
     // and sums beyond 2^25 (whose halves are whole) count as even, as `rem_euclid(2.0)` does.
-    let half = (floor_tolerant(p.x) + floor_tolerant(p.y) + floor_tolerant(p.z)) * L::splat(0.5);
+    let half = (floor_tolerant(p.x, slack) + floor_tolerant(p.y, slack) + floor_tolerant(p.z, slack)) * L::splat(0.5);
     half.floor().lt(half)
 }
 

@@ -6,8 +6,11 @@
 //! must produce no NaN or infinite sample (`RenderStats::bad_samples == 0`). Figures are printed
 //! (`cargo test --release --test extremes -- --nocapture`) so regressions show by how much.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
+use common::transform_scene;
 use glam::{DMat4, DVec3};
 use strahl::camera::Camera;
 use strahl::headless::include_path;
@@ -17,7 +20,7 @@ use strahl::render::image::Image;
 use strahl::render::stats::RenderStats;
 use strahl::render::{primary_ray, render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::{CameraDesc, SceneDesc, Transform};
+use strahl::scene::desc::{CameraDesc, SceneDesc};
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -82,34 +85,6 @@ fn write_failure(name: &str, w: u32, h: u32, actual: &[u8], expected: &[u8]) -> 
 fn pixel(f: &[u8], w: u32, x: u32, y: u32) -> [u8; 3] {
     let i = 3 * (y * w + x) as usize;
     [f[i], f[i + 1], f[i + 2]]
-}
-
-/// Applies the world transform `m` (after everything else) to camera, lights, objects and
-/// pattern transforms, so the scene looks the same from the moved camera.
-fn transform_scene(desc: &SceneDesc, m: DMat4) -> SceneDesc {
-    let t = Transform { matrix: m, inverse: m.inverse() };
-    let mut out = desc.clone();
-    let c = &mut out.camera;
-    *c = CameraDesc {
-        location: m.transform_point3(c.location),
-        direction: m.transform_vector3(c.direction),
-        right: m.transform_vector3(c.right),
-        up: m.transform_vector3(c.up),
-        sky: m.transform_vector3(c.sky),
-        look_at: c.look_at.map(|p| m.transform_point3(p)),
-        angle: c.angle,
-    };
-    for l in &mut out.lights {
-        l.position = m.transform_point3(l.position);
-    }
-    for o in &mut out.objects {
-        o.transform = o.transform.then(&t);
-        o.texture.pigment.transform = o.texture.pigment.transform.then(&t);
-        if let Some(n) = &mut o.texture.normal {
-            n.transform = n.transform.then(&t);
-        }
-    }
-    out
 }
 
 /// Scales and translations of the whole scene must not change the picture: render space is

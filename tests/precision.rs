@@ -4,9 +4,12 @@
 //! Figures are printed (`cargo test --release --test precision -- --nocapture`); the bounds sit
 //! below what was measured with a margin, and docs/precision.md records the measured values.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use common::transform_scene;
 use glam::{DMat4, DVec3};
 use strahl::camera::Camera;
 use strahl::geometry::precise::RayD;
@@ -19,7 +22,7 @@ use strahl::render::precise::Precision;
 use strahl::render::stats::RenderStats;
 use strahl::render::{render, Quality, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::{CameraDesc, SceneDesc, Transform};
+use strahl::scene::desc::SceneDesc;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -52,34 +55,6 @@ fn render_p(desc: &SceneDesc, w: u32, h: u32, aa: u32, precision: Precision) -> 
     let f = render_with(desc, w, h, aa, precision, AccelKind::Bvh);
     assert_eq!(f.stats.bad_samples, 0, "{precision}: {} NaN or infinite samples", f.stats.bad_samples);
     f
-}
-
-/// The world transform `m` applied to camera, lights, objects and patterns (as in
-/// tests/extremes.rs), so the scene looks the same from the moved camera.
-fn transform_scene(desc: &SceneDesc, m: DMat4) -> SceneDesc {
-    let t = Transform { matrix: m, inverse: m.inverse() };
-    let mut out = desc.clone();
-    let c = &mut out.camera;
-    *c = CameraDesc {
-        location: m.transform_point3(c.location),
-        direction: m.transform_vector3(c.direction),
-        right: m.transform_vector3(c.right),
-        up: m.transform_vector3(c.up),
-        sky: m.transform_vector3(c.sky),
-        look_at: c.look_at.map(|p| m.transform_point3(p)),
-        angle: c.angle,
-    };
-    for l in &mut out.lights {
-        l.position = m.transform_point3(l.position);
-    }
-    for o in &mut out.objects {
-        o.transform = o.transform.then(&t);
-        o.texture.pigment.transform = o.texture.pigment.transform.then(&t);
-        if let Some(n) = &mut o.texture.normal {
-            n.transform = n.transform.then(&t);
-        }
-    }
-    out
 }
 
 /// The seed scene in f64 looks like the seed scene in f32: the only differences are pixels

@@ -127,9 +127,71 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     if settings.quality.precision == precise::Precision::F64 {
         return precise::render(scene, camera, settings, image);
     }
+    let gen = RayGen::new(camera, &scene.frame);
+    let use_packets = settings.packets && packet::supported(scene);
+    render_tiles(settings, image, |t, raster| {
+        let mut tracer = Tracer::new(scene, &settings.quality);
+        if use_packets {
+            for by in (t.y0..t.y1).step_by(packet::BLOCK as usize) {
+                for bx in (t.x0..t.x1).step_by(packet::BLOCK as usize) {
+                    let (bw, bh) = ((t.x1 - bx).min(packet::BLOCK), (t.y1 - by).min(packet::BLOCK));
+                    render_block(&mut tracer, &gen, &Block { x: bx, y: by, w: bw, h: bh }, raster);
+                }
+            }
+        } else {
+            for y in t.y0..t.y1 {
+                for x in t.x0..t.x1 {
+                    let c = render_pixel(&mut tracer, &gen, x, y, raster);
+                    // SAFETY: tiles partition the image, so each pixel is written by one task.
+                    unsafe { raster.out.write((y * raster.w + x) as usize, c) };
+                }
+            }
+        }
+        tracer.stats
+    })
+}
+
+/// The pixels `[x0, x1) × [y0, y1)` of one tile.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Tile {
+    pub x0: u32,
+    pub y0: u32,
+    pub x1: u32,
+    pub y1: u32,
+}
+
+/// What every tile of a frame shares: the image size, the samples to trace and where pixels go.
+#[derive(Clone, Copy)]
+pub(crate) struct Raster {
+    pub w: u32,
+    pub h: u32,
+    pub aa: u32,
+    pub samples: Samples,
+    pub out: SharedPixels,
+}
+
+impl Raster {
+    /// A pixel's value from the sum of its traced samples: the mean over aa×aa, or a single
+    /// sub-sample unaveraged (`RenderSettings::subsample`).
+    #[inline]
+    pub fn resolve(&self, sum: Vec3) -> Vec3 {
+        match self.samples {
+            Samples::One(..) => sum,
+            Samples::All => sum / (self.aa * self.aa) as f32,
+        }
+    }
+}
+
+/// The frame loop every precision shares: sizes `image`, hands the tiles to rayon, and sums
+/// the statistics `trace_tile` returns for each (integers, so the sum never depends on which
+/// thread ran which tile), adding the pixel and sample counts.
+pub(crate) fn render_tiles(
+    settings: &RenderSettings,
+    image: &mut Image,
+    trace_tile: impl Fn(Tile, Raster) -> RenderStats + Sync,
+) -> RenderStats {
     let (w, h) = (settings.width.max(1), settings.height.max(1));
     image.resize(w, h);
-    let gen = RayGen::new(camera, &scene.frame);
     let tile = settings.tile.max(1);
     let tiles_x = w.div_ceil(tile);
     let tiles_y = h.div_ceil(tile);
@@ -138,33 +200,12 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
         Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
         None => Samples::All,
     };
-    let out = SharedPixels(image.pixels.as_mut_ptr());
-    let use_packets = settings.packets && packet::supported(scene);
+    let raster = Raster { w, h, aa, samples, out: SharedPixels(image.pixels.as_mut_ptr()) };
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
         .map(|t| {
-            let (tx, ty) = (t % tiles_x, t / tiles_x);
-            let mut tracer = Tracer::new(scene, &settings.quality);
-            let (x0, y0) = (tx * tile, ty * tile);
-            let (x1, y1) = ((x0 + tile).min(w), (y0 + tile).min(h));
-            if use_packets {
-                for by in (y0..y1).step_by(packet::BLOCK as usize) {
-                    for bx in (x0..x1).step_by(packet::BLOCK as usize) {
-                        let block =
-                            Block { x: bx, y: by, w: (x1 - bx).min(packet::BLOCK), h: (y1 - by).min(packet::BLOCK) };
-                        render_block(&mut tracer, &gen, &block, w, h, aa, samples, out);
-                    }
-                }
-            } else {
-                for y in y0..y1 {
-                    for x in x0..x1 {
-                        let c = render_pixel(&mut tracer, &gen, x, y, w, h, aa, samples);
-                        // SAFETY: tiles partition the image, so each pixel is written by one task.
-                        unsafe { out.write((y * w + x) as usize, c) };
-                    }
-                }
-            }
-            tracer.stats
+            let (x0, y0) = ((t % tiles_x) * tile, (t / tiles_x) * tile);
+            trace_tile(Tile { x0, y0, x1: (x0 + tile).min(w), y1: (y0 + tile).min(h) }, raster)
         })
         .reduce(RenderStats::default, |mut a, b| {
             a += b;
@@ -203,17 +244,8 @@ impl Samples {
 
 /// The packet twin of `render_pixel` for a block: the same rays, the same per-sample clipping
 /// and the same order of additions, so both give the same bits.
-#[allow(clippy::too_many_arguments)]
-fn render_block(
-    tracer: &mut Tracer,
-    gen: &RayGen,
-    b: &Block,
-    w: u32,
-    h: u32,
-    aa: u32,
-    samples: Samples,
-    out: SharedPixels,
-) {
+fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
+    let Raster { w, h, aa, samples, out } = raster;
     let mut sums = [[Vec3::ZERO; 8]; 8];
     // Lanes past the block's edge repeat its last pixel; their results are dropped.
     let xs = F8::from_fn(|i| (b.x + (i as u32).min(b.w - 1)) as f32);
@@ -240,11 +272,7 @@ fn render_block(
     });
     for r in 0..b.h {
         for i in 0..b.w {
-            let s = sums[r as usize][i as usize];
-            let c = match samples {
-                Samples::One(..) => s,
-                Samples::All => s / (aa * aa) as f32,
-            };
+            let c = raster.resolve(sums[r as usize][i as usize]);
             // SAFETY: tiles partition the image and blocks partition tiles.
             unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
         }
@@ -266,13 +294,13 @@ fn output_sample(c: Vec3, gamma: f32) -> Vec3 {
 
 /// Which of a pixel's aa×aa sub-samples to trace.
 #[derive(Clone, Copy, Debug)]
-enum Samples {
+pub(crate) enum Samples {
     All,
     One(u32, u32),
 }
 
-#[allow(clippy::too_many_arguments)]
-fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u32, aa: u32, samples: Samples) -> Vec3 {
+fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, raster: Raster) -> Vec3 {
+    let Raster { w, h, aa, samples, .. } = raster;
     let gamma = tracer.scene.gamma;
     let mut sample = |sx: u32, sy: u32| {
         let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
@@ -303,7 +331,7 @@ fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, w: u32, h: u3
 
 /// A raw pointer to the image's pixels that tiles may write through concurrently.
 #[derive(Clone, Copy)]
-struct SharedPixels(*mut Vec3);
+pub(crate) struct SharedPixels(*mut Vec3);
 // SAFETY: only used to write disjoint pixels from different tiles.
 unsafe impl Send for SharedPixels {}
 unsafe impl Sync for SharedPixels {}

@@ -21,14 +21,13 @@ use std::fmt;
 use std::str::FromStr;
 
 use glam::{DVec3, Vec3};
-use rayon::prelude::*;
 
 use crate::camera::Camera;
 use crate::geometry::precise::RayD;
 use crate::render::image::Image;
 use crate::render::stats::RenderStats;
 use crate::render::trace::RayKind;
-use crate::render::{output_sample, RenderSettings, Samples, SharedPixels};
+use crate::render::{output_sample, render_tiles, Raster, RenderSettings};
 use crate::scene::build::Scene;
 use crate::scene::desc::SceneDesc;
 use intersect::SceneD;
@@ -104,64 +103,35 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     let Some(scene_d) = SceneD::new(scene) else {
         panic!("an f64 render needs the f64 scene: call render::precise::prepare (or Scene::prepare_precise) first");
     };
-    let (w, h) = (settings.width.max(1), settings.height.max(1));
-    image.resize(w, h);
     let gen = RayGenD {
         origin: scene.frame.point(camera.location),
         direction: scene.frame.vector(camera.direction),
         right: scene.frame.vector(camera.right),
         up: scene.frame.vector(camera.up),
     };
-    let tile = settings.tile.max(1);
-    let tiles_x = w.div_ceil(tile);
-    let tiles_y = h.div_ceil(tile);
-    let aa = settings.aa.max(1);
-    let samples = match settings.subsample {
-        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
-        None => Samples::All,
-    };
-    let out = SharedPixels(image.pixels.as_mut_ptr());
-    let mut stats = (0..tiles_x * tiles_y)
-        .into_par_iter()
-        .map(|t| {
-            let (tx, ty) = (t % tiles_x, t / tiles_x);
-            let mut tracer = TracerD::new(scene_d, &settings.quality);
-            let (x0, y0) = (tx * tile, ty * tile);
-            let (x1, y1) = ((x0 + tile).min(w), (y0 + tile).min(h));
-            for y in y0..y1 {
-                for x in x0..x1 {
-                    let mut sum = Vec3::ZERO;
-                    // The order of additions is `render_pixel`'s, which `progressive` relies on.
-                    samples.each(aa, |sx, sy| {
-                        let u = (x as f64 + (sx as f64 + 0.5) / aa as f64) / w as f64;
-                        let v = (y as f64 + (sy as f64 + 0.5) / aa as f64) / h as f64;
-                        let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
-                        if c.is_finite() {
-                            sum += output_sample(c, scene.gamma);
-                        } else {
-                            tracer.stats.bad_samples += 1;
-                        }
-                    });
-                    let c = match samples {
-                        Samples::One(..) => sum,
-                        Samples::All => sum / (aa * aa) as f32,
-                    };
-                    // SAFETY: tiles partition the image, so each pixel is written by one task.
-                    unsafe { out.write((y * w + x) as usize, c) };
-                }
+    render_tiles(settings, image, |t, raster| {
+        let Raster { w, h, aa, samples, out } = raster;
+        let mut tracer = TracerD::new(scene_d, &settings.quality);
+        for y in t.y0..t.y1 {
+            for x in t.x0..t.x1 {
+                let mut sum = Vec3::ZERO;
+                // The order of additions is `render_pixel`'s, which `progressive` relies on.
+                samples.each(aa, |sx, sy| {
+                    let u = (x as f64 + (sx as f64 + 0.5) / aa as f64) / w as f64;
+                    let v = (y as f64 + (sy as f64 + 0.5) / aa as f64) / h as f64;
+                    let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
+                    if c.is_finite() {
+                        sum += output_sample(c, scene.gamma);
+                    } else {
+                        tracer.stats.bad_samples += 1;
+                    }
+                });
+                // SAFETY: tiles partition the image, so each pixel is written by one task.
+                unsafe { out.write((y * w + x) as usize, raster.resolve(sum)) };
             }
-            tracer.stats
-        })
-        .reduce(RenderStats::default, |mut a, b| {
-            a += b;
-            a
-        });
-    stats.pixels = w as u64 * h as u64;
-    stats.samples = match samples {
-        Samples::All => stats.pixels * (aa * aa) as u64,
-        Samples::One(..) => stats.pixels,
-    };
-    stats
+        }
+        tracer.stats
+    })
 }
 
 #[cfg(test)]

@@ -183,15 +183,81 @@ impl RenderFrame {
     }
 }
 
-/// An f64 world transform composed with the change to render space, as f32.
-fn render_from_object(t: &Transform, frame: &RenderFrame) -> Affine3A {
-    let m = frame.render_from_world() * t.matrix;
-    let a = DAffine3::from_mat4(m);
+/// One shape of the description placed in render space, in f64. `Scene::add_shape` casts it
+/// to the f32 arrays and `scene::precise` keeps it in f64, so both paths classify and place
+/// every shape the same way, and their arrays line up index for index.
+pub(crate) enum RenderShape {
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
+    /// A sphere under a non-uniform transform: the sphere (`center`, `radius`, object space)
+    /// under `render_from_object`.
+    Ellipsoid {
+        render_from_object: DAffine3,
+        center: DVec3,
+        radius: f64,
+    },
+    /// Axis-aligned in render space (`frame: None`), or corners in object space under `frame`.
+    Box {
+        min: DVec3,
+        max: DVec3,
+        frame: Option<DAffine3>,
+    },
+    Triangle([DVec3; 3]),
+    Polygon(Vec<DVec3>),
+    /// `normal · p = distance`, `normal` of unit length.
+    Plane {
+        normal: DVec3,
+        distance: f64,
+    },
+}
+
+impl RenderFrame {
+    /// `shape` under the object transform `t`, in render space.
+    pub(crate) fn place(&self, shape: &ShapeDesc, t: &Transform) -> RenderShape {
+        let point = |p: DVec3| self.point(t.matrix.transform_point3(p));
+        let render_from_object = || DAffine3::from_mat4(self.render_from_world() * t.matrix);
+        match shape {
+            ShapeDesc::Sphere { center, radius } => match uniform_scale(&t.matrix) {
+                Some(s) => RenderShape::Sphere { center: point(*center), radius: radius * s * self.per_unit },
+                None => RenderShape::Ellipsoid {
+                    render_from_object: render_from_object(),
+                    center: *center,
+                    radius: *radius,
+                },
+            },
+            ShapeDesc::Box { corner1, corner2 } => {
+                let (lo, hi) = (corner1.min(*corner2), corner1.max(*corner2));
+                if is_axis_aligned(&t.matrix) {
+                    let (a, b) = (point(lo), point(hi));
+                    RenderShape::Box { min: a.min(b), max: a.max(b), frame: None }
+                } else {
+                    RenderShape::Box { min: lo, max: hi, frame: Some(render_from_object()) }
+                }
+            }
+            ShapeDesc::Triangle { a, b, c } => RenderShape::Triangle([point(*a), point(*b), point(*c)]),
+            ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
+            ShapeDesc::Plane { normal, distance } => {
+                // n·p = d in object space; a point on it maps through the transform and the normal
+                // through the inverse transpose.
+                let n_obj = normal.normalize();
+                let d_obj = distance / normal.length();
+                let p_render = point(n_obj * d_obj);
+                let n = t.inverse.transpose().transform_vector3(n_obj).normalize();
+                RenderShape::Plane { normal: n, distance: n.dot(p_render) }
+            }
+        }
+    }
+}
+
+/// An f64 affine map as f32.
+fn affine_f32(a: &DAffine3) -> Affine3A {
     Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
 }
 
 /// Whether `m`'s linear part is a rotation times a uniform scale (a sphere stays a sphere).
-pub(crate) fn uniform_scale(m: &DMat4) -> Option<f64> {
+fn uniform_scale(m: &DMat4) -> Option<f64> {
     let c = [m.x_axis.truncate(), m.y_axis.truncate(), m.z_axis.truncate()];
     let s = c[0].length();
     let ok = c.iter().all(|v| (v.length() - s).abs() <= 1e-9 * s)
@@ -202,7 +268,7 @@ pub(crate) fn uniform_scale(m: &DMat4) -> Option<f64> {
 }
 
 /// Whether `m`'s linear part is diagonal (an axis-aligned box stays axis-aligned).
-pub(crate) fn is_axis_aligned(m: &DMat4) -> bool {
+fn is_axis_aligned(m: &DMat4) -> bool {
     m.x_axis.y == 0.0
         && m.x_axis.z == 0.0
         && m.y_axis.x == 0.0
@@ -272,60 +338,37 @@ impl Scene {
     }
 
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {
-        let frame = self.frame;
-        let world = |p: DVec3| frame.point(t.matrix.transform_point3(p));
         let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
             prims.push(PrimRef { kind, casts_shadow, index: index as u32, material })
         };
-        match shape {
-            ShapeDesc::Sphere { center, radius } => {
-                if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres.push(Sphere {
-                        center: world(*center).as_vec3(),
-                        radius: (radius * s * frame.per_unit) as f32,
-                    });
-                    push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
-                } else {
-                    let xf = render_from_object(t, &frame)
-                        * Affine3A::from_translation(center.as_vec3())
-                        * Affine3A::from_scale(Vec3::splat(*radius as f32));
-                    self.ellipsoids.push(Ellipsoid::new(xf));
-                    push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
-                }
+        match self.frame.place(shape, t) {
+            RenderShape::Sphere { center, radius } => {
+                self.spheres.push(Sphere { center: center.as_vec3(), radius: radius as f32 });
+                push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
             }
-            ShapeDesc::Box { corner1, corner2 } => {
-                let (lo, hi) = (corner1.min(*corner2), corner1.max(*corner2));
-                let cuboid = if is_axis_aligned(&t.matrix) {
-                    let a = world(lo);
-                    let b = world(hi);
-                    Cuboid { min: a.min(b).as_vec3(), max: a.max(b).as_vec3(), frame: None }
-                } else {
-                    Cuboid {
-                        min: lo.as_vec3(),
-                        max: hi.as_vec3(),
-                        frame: Some(frame_for(render_from_object(t, &frame))),
-                    }
-                };
-                self.boxes.push(cuboid);
+            RenderShape::Ellipsoid { render_from_object, center, radius } => {
+                let xf = affine_f32(&render_from_object)
+                    * Affine3A::from_translation(center.as_vec3())
+                    * Affine3A::from_scale(Vec3::splat(radius as f32));
+                self.ellipsoids.push(Ellipsoid::new(xf));
+                push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
+            }
+            RenderShape::Box { min, max, frame } => {
+                let frame = frame.map(|f| frame_for(affine_f32(&f)));
+                self.boxes.push(Cuboid { min: min.as_vec3(), max: max.as_vec3(), frame });
                 push(ShapeKind::Box, self.boxes.len() - 1, &mut self.prims);
             }
-            ShapeDesc::Triangle { a, b, c } => {
-                self.triangles.push(Triangle::new(world(*a).as_vec3(), world(*b).as_vec3(), world(*c).as_vec3()));
+            RenderShape::Triangle([a, b, c]) => {
+                self.triangles.push(Triangle::new(a.as_vec3(), b.as_vec3(), c.as_vec3()));
                 push(ShapeKind::Triangle, self.triangles.len() - 1, &mut self.prims);
             }
-            ShapeDesc::Polygon { points } => {
-                let pts: Vec<Vec3> = points.iter().map(|p| world(*p).as_vec3()).collect();
+            RenderShape::Polygon(points) => {
+                let pts: Vec<Vec3> = points.iter().map(|p| p.as_vec3()).collect();
                 self.polygons.push(Polygon::new(&pts));
                 push(ShapeKind::Polygon, self.polygons.len() - 1, &mut self.prims);
             }
-            ShapeDesc::Plane { normal, distance } => {
-                // n·p = d in object space; a point on it maps through the transform and the normal
-                // through the inverse transpose.
-                let n_obj = normal.normalize();
-                let d_obj = distance / normal.length();
-                let p_render = frame.point(t.matrix.transform_point3(n_obj * d_obj));
-                let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
-                self.planes.push(Plane { normal: n_world.as_vec3(), distance: n_world.dot(p_render) as f32 });
+            RenderShape::Plane { normal, distance } => {
+                self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                 self.plane_materials.push(material);
                 self.plane_casts_shadow.push(casts_shadow);
             }

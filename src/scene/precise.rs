@@ -14,7 +14,7 @@ use crate::accel::bvh::Bvh;
 use crate::accel::precise::BvhD;
 use crate::accel::Accel;
 use crate::geometry::precise::{CuboidD, EllipsoidD, FrameD, PlaneD, PolygonD, SphereD, TriangleD};
-use crate::scene::build::{is_axis_aligned, uniform_scale, RenderFrame, Scene, ShapeKind};
+use crate::scene::build::{RenderFrame, RenderShape, Scene, ShapeKind};
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 
 /// How the f64 path finds candidates among the bounded primitives.
@@ -38,11 +38,6 @@ pub struct PreciseScene {
     /// `interior { ior }` per material, in the order of `Scene::materials`.
     pub iors: Vec<f64>,
     pub accel: PreciseAccel,
-}
-
-/// An f64 world transform composed with the change to render space.
-fn render_from_object(t: &Transform, frame: &RenderFrame) -> DAffine3 {
-    DAffine3::from_mat4(frame.render_from_world() * t.matrix)
 }
 
 impl PreciseScene {
@@ -82,42 +77,22 @@ impl PreciseScene {
         p
     }
 
-    /// The same classification as `Scene::add_shape` (sphere or ellipsoid, axis-aligned box or
-    /// not), so the arrays line up with the f32 ones.
+    /// `Scene::add_shape`'s placement kept in f64, so the arrays line up with the f32 ones.
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, frame: &RenderFrame) {
-        let world = |p: DVec3| frame.point(t.matrix.transform_point3(p));
-        match shape {
-            ShapeDesc::Sphere { center, radius } => {
-                if let Some(s) = uniform_scale(&t.matrix) {
-                    self.spheres.push(SphereD { center: world(*center), radius: radius * s * frame.per_unit });
-                } else {
-                    let xf = render_from_object(t, frame)
-                        * DAffine3::from_translation(*center)
-                        * DAffine3::from_scale(DVec3::splat(*radius));
-                    self.ellipsoids.push(EllipsoidD { frame: FrameD::new(xf) });
-                }
+        match frame.place(shape, t) {
+            RenderShape::Sphere { center, radius } => self.spheres.push(SphereD { center, radius }),
+            RenderShape::Ellipsoid { render_from_object, center, radius } => {
+                let xf = render_from_object
+                    * DAffine3::from_translation(center)
+                    * DAffine3::from_scale(DVec3::splat(radius));
+                self.ellipsoids.push(EllipsoidD { frame: FrameD::new(xf) });
             }
-            ShapeDesc::Box { corner1, corner2 } => {
-                let (lo, hi) = (corner1.min(*corner2), corner1.max(*corner2));
-                self.boxes.push(if is_axis_aligned(&t.matrix) {
-                    let (a, b) = (world(lo), world(hi));
-                    CuboidD { min: a.min(b), max: a.max(b), frame: None }
-                } else {
-                    CuboidD { min: lo, max: hi, frame: Some(FrameD::new(render_from_object(t, frame))) }
-                });
+            RenderShape::Box { min, max, frame } => {
+                self.boxes.push(CuboidD { min, max, frame: frame.map(FrameD::new) })
             }
-            ShapeDesc::Triangle { a, b, c } => self.triangles.push(TriangleD::new(world(*a), world(*b), world(*c))),
-            ShapeDesc::Polygon { points } => {
-                let pts: Vec<DVec3> = points.iter().map(|p| world(*p)).collect();
-                self.polygons.push(PolygonD::new(&pts));
-            }
-            ShapeDesc::Plane { normal, distance } => {
-                let n_obj = normal.normalize();
-                let d_obj = distance / normal.length();
-                let p_render = frame.point(t.matrix.transform_point3(n_obj * d_obj));
-                let n_world = t.inverse.transpose().transform_vector3(n_obj).normalize();
-                self.planes.push(PlaneD { normal: n_world, distance: n_world.dot(p_render) });
-            }
+            RenderShape::Triangle([a, b, c]) => self.triangles.push(TriangleD::new(a, b, c)),
+            RenderShape::Polygon(points) => self.polygons.push(PolygonD::new(&points)),
+            RenderShape::Plane { normal, distance } => self.planes.push(PlaneD { normal, distance }),
         }
     }
 

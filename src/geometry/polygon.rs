@@ -1,8 +1,9 @@
 //! Ray/polygon intersection as in chapter 24.3: hit the polygon's plane, then test whether the
 //! point lies inside the outline (crossing-number test in the plane's dominant 2D projection).
 
-use glam::{Vec2, Vec3};
+use glam::{DVec3, Vec2, Vec3};
 
+use super::precise::PolygonD;
 use super::ray::Ray;
 
 #[derive(Clone, Debug)]
@@ -18,38 +19,18 @@ pub struct Polygon {
 }
 
 impl Polygon {
-    /// `points` must be planar with a well-defined normal (the parser rejects degenerate ones).
-    pub fn new(points: &[Vec3]) -> Polygon {
-        // Newell's method: a robust normal for any simple planar polygon.
-        let mut n = Vec3::ZERO;
-        for (i, a) in points.iter().enumerate() {
-            let b = points[(i + 1) % points.len()];
-            n += Vec3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-        }
-        let normal = n.normalize_or(Vec3::Y);
-        let centroid = points.iter().copied().sum::<Vec3>() / points.len().max(1) as f32;
-        let a = normal.abs();
-        let axes = if a.x >= a.y && a.x >= a.z {
-            [1, 2]
-        } else if a.y >= a.z {
-            [2, 0]
-        } else {
-            [0, 1]
-        };
-        let project = |p: Vec3| Vec2::new(p[axes[0]], p[axes[1]]);
-        let mut min = Vec3::splat(f32::INFINITY);
-        let mut max = Vec3::splat(f32::NEG_INFINITY);
-        for p in points {
-            min = min.min(*p);
-            max = max.max(*p);
-        }
+    /// `points` (render space, f64) must be planar with a well-defined normal (the parser
+    /// rejects degenerate ones). The plane and projection are found once, in f64
+    /// (`PolygonD::new`: Newell's normal, the dominant axes), and rounded to f32 here.
+    pub fn new(points: &[DVec3]) -> Polygon {
+        let d = PolygonD::new(points);
         Polygon {
-            normal,
-            distance: normal.dot(centroid),
-            axes,
-            points: points.iter().map(|p| project(*p)).collect(),
-            min,
-            max,
+            normal: d.normal.as_vec3(),
+            distance: d.distance as f32,
+            axes: d.axes,
+            points: d.points.iter().map(|p| p.as_vec2()).collect(),
+            min: d.min.as_vec3(),
+            max: d.max.as_vec3(),
         }
     }
 
@@ -90,7 +71,7 @@ mod tests {
     /// An L-shaped (concave) outline in the plane z = 3.
     fn ell() -> Polygon {
         let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)];
-        Polygon::new(&pts.map(|(x, y)| Vec3::new(x, y, 3.0)))
+        Polygon::new(&pts.map(|(x, y)| DVec3::new(x, y, 3.0)))
     }
 
     #[test]

@@ -330,7 +330,8 @@ pub struct PolygonD {
 }
 
 impl PolygonD {
-    /// As `Polygon::new`: Newell's normal, the dominant projection.
+    /// Newell's method (a robust normal for any simple planar polygon) and the dominant
+    /// projection; `Polygon::new` rounds this to f32.
     pub fn new(points: &[DVec3]) -> PolygonD {
         let mut n = DVec3::ZERO;
         for (i, a) in points.iter().enumerate() {

@@ -3,6 +3,7 @@
 
 use std::ops::AddAssign;
 
+use crate::render::trace::RayKind;
 use crate::scene::build::ShapeKind;
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -25,6 +26,17 @@ pub struct RenderStats {
 }
 
 impl RenderStats {
+    /// One ray of `kind` traced at recursion `level` (1 for primary rays).
+    #[inline]
+    pub fn count_ray(&mut self, kind: RayKind, level: u32) {
+        match kind {
+            RayKind::Primary => self.primary_rays += 1,
+            RayKind::Reflected => self.reflected_rays += 1,
+            RayKind::Refracted => self.refracted_rays += 1,
+        }
+        self.max_depth = self.max_depth.max(level);
+    }
+
     #[inline]
     pub fn count_test(&mut self, kind: ShapeKind, hit: bool) {
         self.tests[kind as usize] += 1;

@@ -22,9 +22,9 @@ use crate::shading::pigment::{eval_pigment, PatternQuality};
 
 /// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
 /// not traced.
-const ADC_BAILOUT: f32 = 1.0 / 255.0;
+pub(crate) const ADC_BAILOUT: f32 = 1.0 / 255.0;
 /// Transparent surfaces a shadow ray may pass before it counts as blocked.
-const MAX_SHADOW_LAYERS: u32 = 16;
+pub(crate) const MAX_SHADOW_LAYERS: u32 = 16;
 
 pub struct Tracer<'a> {
     pub scene: &'a Scene,
@@ -57,12 +57,7 @@ impl<'a> Tracer<'a> {
     /// Colour seen along `ray`. `level` is 1 for primary rays; `weight` is how much this ray can
     /// still change the pixel; `inside_ior` is the index of refraction the ray travels in.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
-        match kind {
-            RayKind::Primary => self.stats.primary_rays += 1,
-            RayKind::Reflected => self.stats.reflected_rays += 1,
-            RayKind::Refracted => self.stats.refracted_rays += 1,
-        }
-        self.stats.max_depth = self.stats.max_depth.max(level);
+        self.stats.count_ray(kind, level);
         match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
             Some(hit) => self.shade(ray, &hit, level, weight),
             None => self.scene.background.rgb,

@@ -363,8 +363,7 @@ impl Scene {
                 push(ShapeKind::Triangle, self.triangles.len() - 1, &mut self.prims);
             }
             RenderShape::Polygon(points) => {
-                let pts: Vec<Vec3> = points.iter().map(|p| p.as_vec3()).collect();
-                self.polygons.push(Polygon::new(&pts));
+                self.polygons.push(Polygon::new(&points));
                 push(ShapeKind::Polygon, self.polygons.len() - 1, &mut self.prims);
             }
             RenderShape::Plane { normal, distance } => {

@@ -15,16 +15,12 @@ use crate::geometry::lanes::V3;
 use crate::geometry::precise::{offset_origin, shadow_t_max, RayD};
 use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
-use crate::render::trace::RayKind;
+use crate::render::trace::{RayKind, ADC_BAILOUT, MAX_SHADOW_LAYERS};
 use crate::render::Quality;
 use crate::scene::material::Material;
 use crate::shading::normal::perturb_normal;
 use crate::shading::pattern::Rgbft;
 use crate::shading::pigment::{eval_pigment, PatternQuality};
-
-/// As in `render::trace`.
-const ADC_BAILOUT: f32 = 1.0 / 255.0;
-const MAX_SHADOW_LAYERS: u32 = 16;
 
 pub struct TracerD<'a> {
     pub scene: SceneD<'a>,
@@ -60,12 +56,7 @@ impl<'a> TracerD<'a> {
 
     /// Colour seen along `ray`, as `Tracer::trace`.
     pub fn trace(&mut self, ray: &RayD, level: u32, weight: f32, kind: RayKind) -> Vec3 {
-        match kind {
-            RayKind::Primary => self.stats.primary_rays += 1,
-            RayKind::Reflected => self.stats.reflected_rays += 1,
-            RayKind::Refracted => self.stats.refracted_rays += 1,
-        }
-        self.stats.max_depth = self.stats.max_depth.max(level);
+        self.stats.count_ray(kind, level);
         match self.scene.intersect(ray, f64::INFINITY, &mut self.stats) {
             Some(hit) => {
                 let surface = self.surface(ray, &hit);

@@ -365,14 +365,7 @@ impl PolygonD {
 
     #[inline]
     pub fn intersect(&self, ray: &RayD, t_min: f64, t_max: f64) -> Option<f64> {
-        let denom = self.normal.dot(ray.dir);
-        if denom == 0.0 {
-            return None;
-        }
-        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
-        if !(t > t_min && t < t_max) {
-            return None;
-        }
+        let t = PlaneD { normal: self.normal, distance: self.distance }.intersect(ray, t_min, t_max)?;
         let p = ray.at(t);
         self.contains(DVec2::new(p[self.axes[0]], p[self.axes[1]])).then_some(t)
     }

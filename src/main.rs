@@ -68,10 +68,10 @@ struct Common {
     #[arg(short = 'H', long, default_value_t = 480, value_parser = clap::value_parser!(u32).range(1..=16384))]
     height: u32,
     /// Extra include folder, searched after the scene's own folder (repeatable).
-    #[arg(short = 'L', long = "include-path", value_name = "DIR")]
+    #[arg(short = 'L', long = "include-path", value_name = "DIR", value_parser = headless::parse_include_dir)]
     include: Vec<PathBuf>,
-    /// Worker threads (0 = one per core).
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (0 = one per core; at most 4 per core).
+    #[arg(long, default_value_t = 0, value_parser = headless::parse_threads)]
     threads: usize,
     /// Speed/accuracy preset: fast, balanced, full (the scene as written; the default) or
     /// reference (4×4 aa, f64). Flags given explicitly override the preset's fields.
@@ -142,7 +142,7 @@ impl Common {
 struct RenderCmd {
     /// The POV-Ray scene file.
     scene: PathBuf,
-    /// Output PNG.
+    /// Output PNG (checked before rendering: its folder must exist and the name end in .png).
     #[arg(short = 'o', long, default_value = "out.png")]
     output: PathBuf,
     /// Print no statistics.
@@ -153,22 +153,30 @@ struct RenderCmd {
 }
 
 #[derive(Args)]
+#[command(override_usage = "strahl capture <SCENE> --path <PATH> --frames <N> -o <DIR> [OPTIONS]\n       \
+                            strahl capture --merge <DIR>... -o <DIR>")]
 struct CaptureCmd {
-    /// The POV-Ray scene file.
+    /// The POV-Ray scene file (required unless --merge).
     #[arg(required_unless_present = "merge")]
     scene: Option<PathBuf>,
-    /// Camera path file (see docs/camera-paths.md).
+    /// Camera path file, see docs/camera-paths.md (required unless --merge).
     #[arg(long, required_unless_present = "merge")]
     path: Option<PathBuf>,
-    /// Frames in the whole capture; frame i is at t = i/(N-1) on the path.
+    /// Frames in the whole capture; frame i is at t = i/(N-1) on the path (required unless --merge).
     #[arg(long, value_name = "N", required_unless_present = "merge", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     frames: Option<u32>,
     /// Render only frames START..END (END excluded) of the N, e.g. to shard across machines.
     #[arg(long, value_name = "START..END")]
     frames_range: Option<FrameRange>,
-    /// Output folder.
+    /// Output folder: created if missing. It must be empty or hold this same capture (same scene,
+    /// path, size, frame count and settings; its frames are replaced), so frames of two captures
+    /// never mix.
     #[arg(short = 'o', long, value_name = "DIR")]
     output: PathBuf,
+    /// Let -o name a folder of another capture: delete strahl's frame_NNNN.png and manifest.json
+    /// there first (other files are left alone).
+    #[arg(long, conflicts_with = "merge")]
+    force: bool,
     /// Tile edge in pixels (does not change the pixels).
     #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=4096))]
     tile: u32,
@@ -231,10 +239,10 @@ struct TradeoffCmd {
     #[arg(short = 'o', long, value_name = "DIR")]
     output: PathBuf,
     /// Extra include folder, searched after the scene's own folder (repeatable).
-    #[arg(short = 'L', long = "include-path", value_name = "DIR")]
+    #[arg(short = 'L', long = "include-path", value_name = "DIR", value_parser = headless::parse_include_dir)]
     include: Vec<PathBuf>,
-    /// Worker threads (0 = one per core).
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (0 = one per core; at most 4 per core).
+    #[arg(long, default_value_t = 0, value_parser = headless::parse_threads)]
     threads: usize,
     /// Acceleration structure for bounded objects.
     #[arg(long, value_enum, default_value_t = AccelArg::Bvh)]
@@ -337,6 +345,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             threads: c.common.threads,
             accel: c.common.accel.into(),
             quiet: c.quiet,
+            force: c.force,
         }),
         Command::Tradeoff(t) => tradeoff::run(&tradeoff::TradeoffArgs {
             scene: t.scene,

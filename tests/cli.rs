@@ -204,3 +204,130 @@ fn bench_rejects_a_bad_path_file() {
     let err = fails(&["bench", &seed(), "--path", "/nonexistent/x.path", "--frames", "2"]);
     assert!(err.contains("x.path:1:1: cannot read"), "{err}");
 }
+
+// What a new user trips over first: limits and outputs checked before any work.
+
+#[test]
+fn threads_above_cap_is_rejected_before_work() {
+    let dir = scratch("threads_cap");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("x.png").display().to_string();
+    let (scene, path) = (seed(), orbit());
+    for args in [
+        vec!["render", &scene, "--threads", "100000", "-o", &out],
+        vec!["bench", &scene, "--threads", "1000", "--frames", "1"],
+        vec!["capture", &scene, "--path", &path, "--frames", "2", "-o", &out, "--threads", "10000"],
+        vec!["tradeoff", &scene, "-o", &out, "--threads", "100000"],
+        vec!["view", &scene, "--threads", "100000"],
+    ] {
+        let err = fails(&args);
+        assert!(err.contains("too many") && err.contains("cores"), "{args:?}: {err}");
+    }
+    assert!(!dir.join("x.png").exists(), "nothing is written");
+    // Up to four per core (at least 16) stays allowed: determinism checks oversubscribe.
+    ok(&["render", &scene, "-W", "16", "-H", "12", "--threads", "16", "-q", "-o", &out]);
+}
+
+#[test]
+fn render_output_folder_is_checked_before_the_scene_is_read() {
+    let dir = scratch("render_output_checked");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let missing_scene = dir.join("missing.pov").display().to_string();
+    let out = dir.join("nodir").join("x.png").display().to_string();
+    // Were the output checked after the work, the missing scene would be the error.
+    let err = fails(&["render", &missing_scene, "-o", &out]);
+    assert!(err.contains("-o") && err.contains("does not exist"), "{err}");
+    let err = fails(&["render", &seed(), "--preset", "reference", "-o", dir.display().to_string().as_str()]);
+    assert!(err.contains("is a folder"), "{err}");
+}
+
+#[test]
+fn render_refuses_a_non_png_output_name() {
+    let dir = scratch("render_non_png");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("x.jpg");
+    let err = fails(&["render", &seed(), "-W", "16", "-H", "12", "-o", out.display().to_string().as_str()]);
+    assert!(err.contains(".png"), "{err}");
+    assert!(!out.exists(), "no PNG bytes under a .jpg name");
+}
+
+#[test]
+fn render_says_what_file_it_wrote() {
+    let dir = scratch("render_says");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("seed.png").display().to_string();
+    let stdout =
+        String::from_utf8_lossy(&ok(&["render", &seed(), "-W", "20", "-H", "10", "-o", &out]).stdout).into_owned();
+    assert!(stdout.lines().any(|l| l == format!("wrote {out} (20x10)")), "{stdout}");
+}
+
+#[test]
+fn bench_json_path_is_checked_before_the_benchmark_runs() {
+    let dir = scratch("bench_json_checked");
+    let json = dir.join("nodir").join("b.json").display().to_string();
+    let out = strahl(&["bench", &seed(), "-W", "16", "-H", "12", "--frames", "2", "--warmup", "0", "--json", &json]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("--json") && stderr.contains("does not exist"), "{stderr}");
+    assert!(out.stdout.is_empty(), "no report before the error: {}", String::from_utf8_lossy(&out.stdout));
+}
+
+#[test]
+fn include_folder_that_does_not_exist_is_an_error() {
+    let err = fails(&["render", &seed(), "-L", "/nonexistent/strahl-include", "-o", "unused.png"]);
+    assert!(err.contains("/nonexistent/strahl-include") && err.contains("does not exist"), "{err}");
+}
+
+#[test]
+fn capture_into_a_folder_of_another_capture_is_refused() {
+    let dir = scratch("capture_other_folder");
+    capture(&dir, &[]);
+    let old = std::fs::read(dir.join("frame_0004.png")).unwrap_or_else(|e| panic!("{e}"));
+    let (scene, path, d) = (seed(), orbit(), dir.display().to_string());
+    let smaller = ["capture", &scene, "--path", &path, "--frames", "3", "-W", "16", "-H", "12", "-q", "-o", &d];
+    let err = fails(&smaller);
+    assert!(err.contains("not empty") && err.contains("--force"), "{err}");
+    assert_eq!(std::fs::read(dir.join("frame_0004.png")).ok(), Some(old), "the refused capture changed nothing");
+    // The same capture again may reuse its own folder.
+    capture(&dir, &[]);
+    // --force deletes strahl's own files only, so no old frame survives among the new ones.
+    std::fs::write(dir.join("notes.txt"), "mine").unwrap_or_else(|e| panic!("{e}"));
+    let mut forced = smaller.to_vec();
+    forced.push("--force");
+    ok(&forced);
+    let m = Manifest::read(&dir).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((m.width, m.frames.len()), (16, 3));
+    assert!(!dir.join("frame_0003.png").exists() && !dir.join("frame_0004.png").exists());
+    assert_eq!(std::fs::read_to_string(dir.join("notes.txt")).ok().as_deref(), Some("mine"));
+}
+
+#[test]
+fn capture_into_a_non_empty_folder_without_a_manifest_is_refused() {
+    let dir = scratch("capture_foreign_folder");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    std::fs::write(dir.join("frame_0000.png"), b"not ours").unwrap_or_else(|e| panic!("{e}"));
+    let (scene, path, d) = (seed(), orbit(), dir.display().to_string());
+    let err = fails(&["capture", &scene, "--path", &path, "--frames", "2", "-W", "8", "-H", "6", "-q", "-o", &d]);
+    assert!(err.contains("not empty"), "{err}");
+    assert_eq!(std::fs::read(dir.join("frame_0000.png")).ok().as_deref(), Some(&b"not ours"[..]));
+}
+
+#[test]
+fn capture_help_shows_scene_path_and_frames_as_required() {
+    let help = String::from_utf8_lossy(&ok(&["help", "capture"]).stdout).into_owned();
+    assert!(help.contains("strahl capture <SCENE> --path <PATH> --frames <N> -o <DIR>"), "{help}");
+    assert!(help.contains("strahl capture --merge <DIR>... -o <DIR>"), "{help}");
+    assert!(help.contains("--force"), "{help}");
+}
+
+#[test]
+fn help_wraps_to_the_terminal_width() {
+    let out = Command::new(env!("CARGO_BIN_EXE_strahl"))
+        .args(["help", "render"])
+        .env("COLUMNS", "72")
+        .output()
+        .unwrap_or_else(|e| panic!("{e}"));
+    let help = String::from_utf8_lossy(&out.stdout);
+    let widest = help.lines().map(|l| l.chars().count()).max().unwrap_or(0);
+    assert!(widest <= 72, "help is {widest} columns wide:\n{help}");
+}

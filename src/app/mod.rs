@@ -16,12 +16,12 @@ mod window;
 
 use std::path::{Path, PathBuf};
 
-use crate::app::playback::{check_writable, default_seconds, Playback, ReportContext};
+use crate::app::playback::{default_seconds, Playback, ReportContext};
 use crate::app::reload::Reloader;
 use crate::app::render_thread::Watch;
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
-use crate::headless::CliError;
+use crate::headless::{output, CliError};
 use crate::render::preset::Preset;
 use crate::render::Quality;
 use crate::scene::build::{AccelKind, Scene};
@@ -150,7 +150,7 @@ pub fn run(desc: &SceneDesc, options: ViewOptions) -> Result<(), CliError> {
 fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOptions) -> Result<(), CliError> {
     check_display()?;
     if let Some(report) = &options.report {
-        check_writable(report)?;
+        output::check_writable("--report", report)?;
     }
     let origin = desc.camera.location;
     let scene = Scene::build(desc, origin, options.accel);
@@ -212,7 +212,10 @@ pub fn check_options(options: &ViewOptions) -> Result<(), CliError> {
         return Err(CliError::user("--report needs --path: it measures a camera path played back"));
     }
     if let Some(report) = &options.report {
-        check_writable(report)?;
+        output::check_writable("--report", report)?;
+    }
+    if let Some(shot) = &options.screenshot {
+        output::check_png_path("--screenshot", shot)?;
     }
     Ok(())
 }

@@ -4,7 +4,7 @@
 //!
 //! No window types here: the window hands over its presented 0RGB words and the frame's camera.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Instant;
 
 use crate::camera::path::CameraPath;
@@ -260,26 +260,6 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
             ]),
         ),
     ]))
-}
-
-/// Fails (exit 2) unless a file can be created next to `report`: found before the window opens,
-/// not after the whole path has played.
-pub fn check_writable(report: &Path) -> Result<(), CliError> {
-    let dir = match report.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    if report.is_dir() {
-        return Err(CliError::user(format!("--report {}: is a folder, not a file", report.display())));
-    }
-    let probe = dir.join(format!(".strahl-report-probe.{}", std::process::id()));
-    match std::fs::write(&probe, b"") {
-        Ok(()) => {
-            let _ = std::fs::remove_file(&probe);
-            Ok(())
-        }
-        Err(e) => Err(CliError::user(format!("--report {}: cannot write there: {e}", report.display()))),
-    }
 }
 
 pub fn write_report(path: &Path, report: &Json) -> Result<(), CliError> {

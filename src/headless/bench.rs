@@ -273,6 +273,9 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     if args.frames == 0 {
         return Err(CliError::user("--frames must be at least 1"));
     }
+    if let Some(file) = &args.json {
+        output::check_writable("--json", file)?;
+    }
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
@@ -286,8 +289,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     print!("{}", report(args, &main_run, scene.max_trace_level, &cpu));
     let mut sweep = Vec::new();
     if args.threads_sweep {
-        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-        for n in 1..=cores {
+        for n in 1..=crate::headless::cores() {
             sweep.push(with_threads(n, || {
                 timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale)
             })?);

@@ -115,6 +115,19 @@ pub fn render_rgb8(scene: &Scene, camera: &Camera, settings: &RenderSettings, im
     (image.to_rgb8(scene.srgb), ms)
 }
 
+/// The manifest of `job` before any frame is rendered: what identifies the capture.
+fn header(job: &CaptureJob) -> Manifest {
+    Manifest {
+        scene: job.scene_name.clone(),
+        path: job.path_name.clone(),
+        width: job.settings.width,
+        height: job.settings.height,
+        frame_count: job.frames,
+        settings: settings_json(&job.settings, job.res_scale, job.accel),
+        frames: Vec::new(),
+    }
+}
+
 /// Renders the job's frames into `out_dir` (which must exist) and returns their manifest, which
 /// the caller writes. Runs on the current rayon pool.
 pub fn capture(scene: &Scene, base: &Camera, job: &CaptureJob, out_dir: &Path) -> Result<Manifest, CliError> {
@@ -143,15 +156,7 @@ pub fn capture(scene: &Scene, base: &Camera, job: &CaptureJob, out_dir: &Path) -
         progress.update((index + 1 - job.range.start) as u64);
     }
     progress.finish();
-    Ok(Manifest {
-        scene: job.scene_name.clone(),
-        path: job.path_name.clone(),
-        width: job.settings.width,
-        height: job.settings.height,
-        frame_count: job.frames,
-        settings: settings_json(&job.settings, job.res_scale, job.accel),
-        frames,
-    })
+    Ok(Manifest { frames, ..header(job) })
 }
 
 pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
@@ -160,6 +165,81 @@ pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
 
 fn create_dir(dir: &Path) -> Result<(), CliError> {
     std::fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
+}
+
+/// A file that `capture` writes into its folder: a frame, the manifest, or a temporary of either.
+fn is_capture_file(name: &str) -> bool {
+    let name = name
+        .strip_prefix('.')
+        .and_then(|n| n.strip_suffix(".tmp"))
+        .map_or(name, |n| n.rsplit_once('.').map_or(n, |(a, _)| a));
+    name == "manifest.json" || (name.starts_with("frame_") && name.ends_with(".png"))
+}
+
+/// What to do to the output folder once the scene has loaded, decided before anything changes.
+#[derive(Debug, PartialEq)]
+enum OutputPlan {
+    /// Missing: create it.
+    Create,
+    /// Empty, or holding frames of this same capture (which it replaces): use it as it is.
+    Use,
+    /// `--force` on a folder of another capture: delete these files of strahl's first.
+    Clear(Vec<PathBuf>),
+}
+
+/// Checks `-o DIR` before any work, without changing it. A folder holding another capture's
+/// frames is refused (its `frame_0010.png` would survive a 5-frame capture and mix with the new
+/// frames under `ffmpeg -i frame_%04d.png`) unless `force`, which deletes strahl's own files
+/// there and nothing else.
+fn plan_output(dir: &Path, this: &Manifest, force: bool) -> Result<OutputPlan, CliError> {
+    let shown = dir.display();
+    if !dir.exists() {
+        // The nearest folder that exists must accept the new one.
+        let mut parent = dir.parent();
+        while let Some(p) = parent.filter(|p| !p.as_os_str().is_empty() && !p.exists()) {
+            parent = p.parent();
+        }
+        let parent = parent.filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        if !parent.is_dir() {
+            return Err(CliError::user(format!("-o {shown}: {} is not a folder", parent.display())));
+        }
+        output::check_writable("-o", &parent.join("strahl-capture-probe"))?;
+        return Ok(OutputPlan::Create);
+    }
+    if !dir.is_dir() {
+        return Err(CliError::user(format!("-o {shown}: is a file, not a folder")));
+    }
+    let listing = std::fs::read_dir(dir).map_err(|e| CliError::user(format!("-o {shown}: cannot read folder: {e}")))?;
+    let mut names: Vec<String> =
+        listing.filter_map(|e| e.ok()).map(|e| e.file_name().to_string_lossy().into_owned()).collect();
+    names.sort();
+    output::check_writable("-o", &dir.join("manifest.json"))?;
+    if names.is_empty() || Manifest::read(dir).is_ok_and(|m| m.same_header(this)) {
+        return Ok(OutputPlan::Use);
+    }
+    let ours: Vec<PathBuf> = names.iter().filter(|n| is_capture_file(n)).map(|n| dir.join(n)).collect();
+    if force {
+        return Ok(OutputPlan::Clear(ours));
+    }
+    let examples: Vec<&str> = names.iter().take(3).map(String::as_str).collect();
+    let more = if names.len() > 3 { ", ..." } else { "" };
+    Err(CliError::user(format!(
+        "-o {shown}: the folder is not empty ({} files: {}{more}) and holds no manifest of this capture \
+         (same scene, path, size, frame count and settings); its frames would mix with the new ones. \
+         Give an empty or new folder, or --force to delete strahl's frame_NNNN.png and manifest.json there first",
+        names.len(),
+        examples.join(", ")
+    )))
+}
+
+fn apply_output_plan(dir: &Path, plan: OutputPlan) -> Result<(), CliError> {
+    match plan {
+        OutputPlan::Create => create_dir(dir),
+        OutputPlan::Use => Ok(()),
+        OutputPlan::Clear(files) => files.iter().try_for_each(|f| {
+            std::fs::remove_file(f).map_err(|e| CliError::user(format!("{}: cannot delete: {e}", f.display())))
+        }),
+    }
 }
 
 pub struct CaptureArgs {
@@ -174,20 +254,19 @@ pub struct CaptureArgs {
     pub threads: usize,
     pub accel: AccelKind,
     pub quiet: bool,
+    /// Delete strahl's frames and manifest from an output folder of another capture.
+    pub force: bool,
 }
 
 /// `strahl capture SCENE --path P ...`. Everything a user can get wrong (frame count, range,
-/// path file, scene) is checked before the output folder is created or a frame is written.
+/// output folder, path file, scene) is checked before the output folder is created or changed
+/// and before a frame is rendered.
 pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
     if args.frames == 0 {
         return Err(CliError::user("--frames must be at least 1"));
     }
     let range = args.range.unwrap_or(FrameRange { start: 0, end: args.frames }).within(args.frames)?;
     let path = CameraPath::load(&args.path)?;
-    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
-    let scene = Scene::build(&desc, desc.camera.location, args.accel);
-    precise::prepare(&scene, &desc, args.settings.quality.precision);
-    let base = Camera::from_desc(&desc.camera);
     let job = CaptureJob {
         scene_name: args.scene.display().to_string(),
         path_name: args.path.display().to_string(),
@@ -199,7 +278,12 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
         accel: args.accel,
         quiet: args.quiet,
     };
-    create_dir(&args.output)?;
+    let plan = plan_output(&args.output, &header(&job), args.force)?;
+    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
+    let scene = Scene::build(&desc, desc.camera.location, args.accel);
+    precise::prepare(&scene, &desc, args.settings.quality.precision);
+    let base = Camera::from_desc(&desc.camera);
+    apply_output_plan(&args.output, plan)?;
     let manifest = with_threads(args.threads, || capture(&scene, &base, &job, &args.output))??;
     write_manifest(&args.output, &manifest)?;
     if !args.quiet {

@@ -83,7 +83,8 @@ impl Manifest {
             && self.frames.iter().zip(&other.frames).all(|(a, b)| a.same_content(b))
     }
 
-    fn same_header(&self, o: &Manifest) -> bool {
+    /// Of the same capture: scene, path, size, frame count and settings agree (frames may differ).
+    pub fn same_header(&self, o: &Manifest) -> bool {
         (&self.scene, &self.path, self.width, self.height, self.frame_count, &self.settings)
             == (&o.scene, &o.path, o.width, o.height, o.frame_count, &o.settings)
     }

@@ -85,8 +85,53 @@ pub fn load_sized(
     Ok((desc, start.elapsed()))
 }
 
-/// Runs `f` on a rayon pool of `threads` workers (0 = one per core).
+/// The cores rayon would use by default (one worker per core).
+pub fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// The most worker threads any command accepts: four per core, and at least 16 so determinism
+/// checks can oversubscribe a small machine. Beyond that threads only cost (1 000 threads took 37×
+/// as long as 2 on two cores), and around 10⁵ the OS refuses their stacks.
+pub fn max_threads() -> usize {
+    (4 * cores()).max(16)
+}
+
+/// Checks a thread count (0 = one per core) against [`max_threads`].
+pub fn check_threads(threads: usize) -> Result<usize, String> {
+    let max = max_threads();
+    if threads > max {
+        return Err(format!(
+            "{threads} threads is too many: this machine has {} cores; give at most {max} (4 per core), or 0 for one per core",
+            cores()
+        ));
+    }
+    Ok(threads)
+}
+
+/// `--threads N` as clap parses it, so a bad count fails before any work.
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    let n: usize =
+        s.trim().parse().map_err(|_| format!("`{s}` is not a thread count: give a whole number, 0 = one per core"))?;
+    check_threads(n)
+}
+
+/// `-L DIR` as clap parses it: the folder must exist, or a typo would silently leave includes
+/// unresolved until some `#include` fails far from the cause.
+pub fn parse_include_dir(s: &str) -> Result<PathBuf, String> {
+    let dir = PathBuf::from(s);
+    if dir.is_dir() {
+        Ok(dir)
+    } else if dir.exists() {
+        Err(format!("{s} is not a folder"))
+    } else {
+        Err(format!("include folder {s} does not exist"))
+    }
+}
+
+/// Runs `f` on a rayon pool of `threads` workers (0 = one per core), at most [`max_threads`].
 pub fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, CliError> {
+    check_threads(threads).map_err(CliError::user)?;
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()

@@ -12,6 +12,43 @@ fn temp_sibling(path: &Path) -> PathBuf {
     path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
 }
 
+/// Checks, before any work, that a file can be written at `path`: it is not a folder and its
+/// folder exists and accepts a new file (probed with an empty temporary file, removed at once).
+/// `what` names the option in the error, e.g. `-o` or `--json`.
+pub fn check_writable(what: &str, path: &Path) -> Result<(), CliError> {
+    if path.is_dir() {
+        return Err(CliError::user(format!("{what} {}: is a folder, not a file", path.display())));
+    }
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(CliError::user(format!("{what} {}: folder {} does not exist", path.display(), dir.display())));
+    }
+    let probe = temp_sibling(path);
+    match fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => Err(CliError::user(format!("{what} {}: cannot write there: {e}", path.display()))),
+    }
+}
+
+/// `check_writable` for an image: strahl writes PNG only, so any other extension (`x.jpg`) is an
+/// error rather than PNG bytes under a misleading name.
+pub fn check_png_path(what: &str, path: &Path) -> Result<(), CliError> {
+    let is_png = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"));
+    if !is_png && !path.is_dir() {
+        return Err(CliError::user(format!(
+            "{what} {}: strahl writes PNG images only; give a file name ending in .png",
+            path.display()
+        )));
+    }
+    check_writable(what, path)
+}
+
 /// Writes `bytes` to `path` atomically.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     let tmp = temp_sibling(path);

@@ -25,6 +25,7 @@ pub struct RenderArgs {
 }
 
 pub fn run(args: &RenderArgs) -> Result<(), CliError> {
+    output::check_png_path("-o", &args.output)?;
     let (desc, parse) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let build_start = Instant::now();
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
@@ -53,6 +54,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                 peak_memory_bytes()
             )
         );
+        println!("wrote {} ({}x{})", args.output.display(), image.width, image.height);
         output::flush_stdout();
     }
     Ok(())

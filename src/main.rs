@@ -39,6 +39,9 @@ enum Command {
     Scaling(headless::scaling::ScalingCmd),
     /// Write a generated many-object scene (spheres, boxes, triangles, mixed) as a POV-Ray file.
     Gen(headless::scaling::GenCmd),
+    /// Render every .pov under a folder (e.g. POV-Ray's samples) at a small size and count how
+    /// many render, grouping the others by their first error.
+    Survey(headless::survey::SurveyCmd),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -321,6 +324,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::View(v) => view(v),
         Command::Scaling(s) => headless::scaling::run_scaling(&s),
         Command::Gen(g) => headless::scaling::run_gen(&g),
+        Command::Survey(s) => headless::survey::run(&s),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
             scene: r.scene,
             include: r.common.include.clone(),

@@ -1,4 +1,4 @@
-//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, and the shared plumbing (loading,
+//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, `survey`, and the shared plumbing (loading,
 //! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 
 pub mod bench;
@@ -13,6 +13,7 @@ pub mod progress;
 pub mod render;
 pub mod report;
 pub mod scaling;
+pub mod survey;
 pub mod tradeoff;
 
 use std::fmt;

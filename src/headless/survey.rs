@@ -1,0 +1,300 @@
+//! `strahl survey DIR`: renders every `.pov` under a folder at a small size, as a user would
+//! (from the scene's own folder, no `-L`), and counts how many render; the others are grouped by
+//! the first error each one stops at, named by the keyword it quotes.
+//!
+//! Every scene runs in its own `strahl render` process with a time limit, so a scene that hangs
+//! or crashes is counted as such and cannot take the survey down with it.
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use clap::Args;
+
+use crate::headless::progress::Progress;
+use crate::headless::{output, CliError};
+
+#[derive(Args)]
+pub struct SurveyCmd {
+    /// Folder searched recursively for `.pov` files, e.g. /usr/share/povray-3.7/scenes.
+    dir: PathBuf,
+    /// Image width of each render.
+    #[arg(short = 'W', long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    width: u32,
+    /// Image height of each render.
+    #[arg(short = 'H', long, default_value_t = 48, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    height: u32,
+    /// Seconds a scene may take (parse and render) before it counts as timed out.
+    #[arg(long, value_name = "S", default_value_t = 10.0, value_parser = parse_seconds)]
+    timeout: f64,
+    /// Also print every scene's outcome, one line each.
+    #[arg(long)]
+    list: bool,
+    /// Groups of failures to print (the commonest first).
+    #[arg(long, value_name = "N", default_value_t = 25)]
+    top: usize,
+    /// Print nothing while running (no progress bar).
+    #[arg(short, long)]
+    quiet: bool,
+}
+
+fn parse_seconds(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(v) if v.is_finite() && v > 0.0 && v <= 3600.0 => Ok(v),
+        _ => Err(format!("`{s}` is not a time limit: give seconds from 0 to 3600")),
+    }
+}
+
+/// How one scene ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    Rendered,
+    /// Exited with an error: its first `error:` line, without the `error: file:line:col: ` prefix.
+    Failed(String),
+    TimedOut,
+    /// Ended by a signal or an exit code strahl never uses (a panic is 101).
+    Crashed(String),
+}
+
+/// Every `.pov` file under `dir`, sorted, so the survey's order and counts are reproducible.
+pub fn scene_files(dir: &Path) -> Result<Vec<PathBuf>, CliError> {
+    let mut found = Vec::new();
+    let mut todo = vec![dir.to_path_buf()];
+    while let Some(d) = todo.pop() {
+        let entries =
+            std::fs::read_dir(&d).map_err(|e| CliError::user(format!("{}: cannot read folder: {e}", d.display())))?;
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                todo.push(path);
+            } else if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("pov")) {
+                found.push(path);
+            }
+        }
+    }
+    found.sort();
+    Ok(found)
+}
+
+/// The message of the first `error:` line in a render's stderr, without its location.
+pub fn first_error(stderr: &str) -> Option<String> {
+    let line = stderr.lines().find_map(|l| l.strip_prefix("error: "))?;
+    Some(strip_location(line).to_string())
+}
+
+/// `file.pov:12:5: message` → `message`; a message without a location is returned as it is.
+fn strip_location(line: &str) -> &str {
+    let mut parts = line.splitn(4, ':');
+    match (parts.next(), parts.next(), parts.next(), parts.next()) {
+        (Some(_), Some(l), Some(c), Some(rest))
+            if l.trim().parse::<u32>().is_ok() && c.trim().parse::<u32>().is_ok() =>
+        {
+            rest.trim_start()
+        }
+        _ => line,
+    }
+}
+
+/// The group a failure is counted in: the message with every quoted name but the first replaced
+/// by `…`, and numbers and strings dropped, so `#macro is not supported` gathers all scenes that
+/// stop at a macro whatever else the line says.
+pub fn group_of(message: &str) -> String {
+    let mut out = String::new();
+    let mut quoted = 0;
+    let mut rest = message;
+    while let Some(open) = rest.find('`') {
+        out.push_str(&rest[..open]);
+        let after = &rest[open + 1..];
+        let Some(close) = after.find('`') else {
+            rest = after;
+            break;
+        };
+        quoted += 1;
+        if quoted == 1 {
+            let _ = write!(out, "`{}`", &after[..close]);
+        } else {
+            out.push('…');
+        }
+        rest = &after[close + 1..];
+    }
+    out.push_str(rest);
+    // Lists of what is supported are the same for every scene of a group; drop them.
+    let cut = out.find(" (").unwrap_or(out.len());
+    let words: Vec<String> = out[..cut]
+        .split_whitespace()
+        .map(|w| {
+            if w.starts_with('"') || w.trim_end_matches(',').parse::<f64>().is_ok() {
+                "…".to_string()
+            } else {
+                w.to_string()
+            }
+        })
+        .collect();
+    words.join(" ")
+}
+
+/// Renders one scene in a child `strahl render` from the scene's folder.
+fn survey_one(exe: &Path, scene: &Path, args: &SurveyCmd, scratch: &Path) -> Result<Outcome, CliError> {
+    let folder = scene.parent().unwrap_or(Path::new("."));
+    let image = scratch.join("survey.png");
+    let log = scratch.join("stderr.txt");
+    let err_file =
+        std::fs::File::create(&log).map_err(|e| CliError::user(format!("{}: cannot write: {e}", log.display())))?;
+    let mut child = Command::new(exe)
+        .arg("render")
+        .arg(scene)
+        .args(["-W", &args.width.to_string(), "-H", &args.height.to_string(), "-q", "-o"])
+        .arg(&image)
+        .current_dir(folder)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(err_file)
+        .spawn()
+        .map_err(|e| CliError::user(format!("cannot run {}: {e}", exe.display())))?;
+    let deadline = Instant::now() + Duration::from_secs_f64(args.timeout);
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break status,
+            Ok(None) if Instant::now() >= deadline => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Ok(Outcome::TimedOut);
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(5)),
+            Err(e) => return Err(CliError::user(format!("waiting for {}: {e}", scene.display()))),
+        }
+    };
+    let stderr = std::fs::read_to_string(&log).unwrap_or_default();
+    Ok(match status.code() {
+        Some(0) => Outcome::Rendered,
+        Some(2) => Outcome::Failed(first_error(&stderr).unwrap_or_else(|| "exit code 2 without a message".into())),
+        Some(code) => Outcome::Crashed(format!("exit code {code}")),
+        None => Outcome::Crashed("killed by a signal".into()),
+    })
+}
+
+/// The survey's summary: the count, a table by top-level folder, and the commonest failures.
+pub fn summary(dir: &Path, results: &[(PathBuf, Outcome)], top: usize) -> String {
+    let mut o = String::new();
+    let rendered = results.iter().filter(|(_, r)| *r == Outcome::Rendered).count();
+    let _ = writeln!(o, "survey of {}: {rendered} of {} scenes render", dir.display(), results.len());
+    let mut folders: BTreeMap<String, (usize, usize)> = BTreeMap::new();
+    let mut groups: BTreeMap<String, Vec<&Path>> = BTreeMap::new();
+    for (scene, outcome) in results {
+        let rel = scene.strip_prefix(dir).unwrap_or(scene);
+        let folder = match rel.components().count() {
+            0 | 1 => ".".to_string(),
+            _ => rel.components().next().map(|c| c.as_os_str().to_string_lossy().into_owned()).unwrap_or_default(),
+        };
+        let entry = folders.entry(folder).or_default();
+        entry.1 += 1;
+        match outcome {
+            Outcome::Rendered => entry.0 += 1,
+            Outcome::Failed(m) => groups.entry(group_of(m)).or_default().push(rel),
+            Outcome::TimedOut => groups.entry("timed out".into()).or_default().push(rel),
+            Outcome::Crashed(how) => groups.entry(format!("crashed ({how})")).or_default().push(rel),
+        }
+    }
+    let _ = writeln!(o, "\n| folder | render | scenes |\n|---|--:|--:|");
+    for (folder, (ok, n)) in &folders {
+        let _ = writeln!(o, "| {folder} | {ok} | {n} |");
+    }
+    let mut ranked: Vec<(&String, &Vec<&Path>)> = groups.iter().collect();
+    ranked.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then(a.0.cmp(b.0)));
+    let _ =
+        writeln!(o, "\nfirst errors of the others, commonest first:\n| scenes | first error | e.g. |\n|--:|---|---|");
+    for (group, scenes) in ranked.iter().take(top) {
+        let _ = writeln!(o, "| {} | {group} | {} |", scenes.len(), scenes[0].display());
+    }
+    if ranked.len() > top {
+        let rest: usize = ranked[top..].iter().map(|(_, s)| s.len()).sum();
+        let _ = writeln!(o, "| {rest} | ({} more groups) | |", ranked.len() - top);
+    }
+    o
+}
+
+pub fn run(args: &SurveyCmd) -> Result<(), CliError> {
+    if !args.dir.is_dir() {
+        return Err(CliError::user(format!("{}: not a folder", args.dir.display())));
+    }
+    let exe =
+        std::env::current_exe().map_err(|e| CliError::user(format!("cannot find strahl's own executable: {e}")))?;
+    let scenes = scene_files(&args.dir)?;
+    if scenes.is_empty() {
+        return Err(CliError::user(format!("{}: no .pov files under it", args.dir.display())));
+    }
+    let scratch = std::env::temp_dir().join(format!("strahl-survey.{}", std::process::id()));
+    std::fs::create_dir_all(&scratch)
+        .map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", scratch.display())))?;
+    let progress = Progress::new(scenes.len() as u64, "scenes", args.quiet);
+    let mut results = Vec::with_capacity(scenes.len());
+    for (i, scene) in scenes.iter().enumerate() {
+        let outcome = survey_one(&exe, scene, args, &scratch);
+        if args.list {
+            if let Ok(o) = &outcome {
+                println!("{}: {o:?}", scene.display());
+            }
+        }
+        results.push((scene.clone(), outcome));
+        progress.update(i as u64 + 1);
+    }
+    progress.finish();
+    let _ = std::fs::remove_dir_all(&scratch);
+    let results = results.into_iter().map(|(s, r)| r.map(|r| (s, r))).collect::<Result<Vec<_>, _>>()?;
+    print!("{}", summary(&args.dir, &results, args.top));
+    output::flush_stdout();
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn first_error_drops_the_location() {
+        let stderr =
+            "warning: x\nerror: /a/b.pov:3:5: `#macro` is not supported (supported directives: #if)\n  #macro\n";
+        assert_eq!(first_error(stderr).as_deref(), Some("`#macro` is not supported (supported directives: #if)"));
+        assert_eq!(first_error("error: --frames must be at least 1").as_deref(), Some("--frames must be at least 1"));
+        assert_eq!(first_error("nothing here"), None);
+    }
+
+    #[test]
+    fn failures_group_by_their_first_quoted_keyword() {
+        let a = group_of("`cylinder` is not supported (supported: sphere, plane)");
+        let b = group_of("`cylinder` is not supported (supported: sphere, plane, box)");
+        assert_eq!(a, b);
+        assert_eq!(a, "`cylinder` is not supported");
+        assert_ne!(a, group_of("`cone` is not supported (supported: sphere)"));
+        assert_eq!(
+            group_of("expected `>` to close the vector, found number 20"),
+            group_of("expected `>` to close the vector, found number 3")
+        );
+        assert_eq!(
+            group_of("unknown keyword `locaton` in camera (expected one of: location)"),
+            "unknown keyword `locaton` in camera"
+        );
+        assert_eq!(
+            group_of("expected an expression, found string \"a.ttf\""),
+            "expected an expression, found string …"
+        );
+    }
+
+    #[test]
+    fn summary_counts_by_folder_and_group() {
+        let dir = Path::new("/s");
+        let results = vec![
+            (PathBuf::from("/s/objects/a.pov"), Outcome::Rendered),
+            (PathBuf::from("/s/objects/b.pov"), Outcome::Failed("`cone` is not supported (x)".into())),
+            (PathBuf::from("/s/textures/c.pov"), Outcome::Failed("`cone` is not supported (y)".into())),
+            (PathBuf::from("/s/textures/d.pov"), Outcome::TimedOut),
+        ];
+        let s = summary(dir, &results, 10);
+        assert!(s.starts_with("survey of /s: 1 of 4 scenes render"), "{s}");
+        assert!(s.contains("| objects | 1 | 2 |") && s.contains("| textures | 0 | 2 |"), "{s}");
+        assert!(s.contains("| 2 | `cone` is not supported | objects/b.pov |"), "{s}");
+        assert!(s.contains("| 1 | timed out | textures/d.pov |"), "{s}");
+    }
+}

@@ -4,6 +4,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::camera::{Basis, Camera};
+use crate::scene::build::Scene;
 
 /// What the user is asking for right now, independent of any windowing library.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -61,6 +62,11 @@ pub const STICK_TURN_RATE: f64 = 2.5;
 pub const SPEED_STEP: f64 = 1.25;
 pub const FAST_FACTOR: f64 = 4.0;
 pub const SLOW_FACTOR: f64 = 0.25;
+/// Seconds the default speed takes to cross the diagonal of the scene's bounded objects.
+pub const CROSSING_SECONDS: f64 = 4.0;
+/// How far wheel and bumper steps may take the speed from the scene's default, either way: a
+/// bound relative to the scene, so a tiny or a huge scene steps exactly like the seed.
+pub const SPEED_RANGE: f64 = 1e4;
 const MAX_PITCH: f64 = 89.0 * std::f64::consts::PI / 180.0;
 
 /// Position, heading and speed of the fly camera. Starts as the scene's camera exactly: until the
@@ -75,6 +81,8 @@ pub struct FlyState {
     pub pitch: f64,
     /// World units per second.
     pub speed: f64,
+    /// The speed `new` was given (the scene's default): the centre of [`SPEED_RANGE`].
+    base_speed: f64,
     /// The scene camera: its vector lengths (field of view, aspect) and handedness are kept.
     pub origin: Camera,
     origin_yaw: f64,
@@ -86,7 +94,21 @@ impl FlyState {
         let d = origin.direction.try_normalize().unwrap_or(DVec3::Z);
         let yaw = d.x.atan2(d.z);
         let pitch = d.y.clamp(-1.0, 1.0).asin();
-        FlyState { position: origin.location, yaw, pitch, speed, origin, origin_yaw: yaw, origin_pitch: pitch }
+        FlyState {
+            position: origin.location,
+            yaw,
+            pitch,
+            speed,
+            base_speed: speed,
+            origin,
+            origin_yaw: yaw,
+            origin_pitch: pitch,
+        }
+    }
+
+    /// Starts again from `camera` (a played path's), keeping the speed and its range.
+    pub fn moved_to(&self, camera: Camera) -> FlyState {
+        FlyState { speed: self.speed, ..FlyState::new(camera, self.base_speed) }
     }
 
     /// Unit viewing direction.
@@ -120,7 +142,8 @@ impl FlyState {
 pub fn step(state: &FlyState, input: &InputState, dt: f64) -> FlyState {
     let mut s = *state;
     let dt = if dt.is_finite() { dt.clamp(0.0, 0.25) } else { 0.0 };
-    s.speed = (s.speed * SPEED_STEP.powi(input.speed_steps.clamp(-100, 100))).clamp(1e-4, 1e6);
+    let steps = SPEED_STEP.powi(input.speed_steps.clamp(-100, 100));
+    s.speed = (s.speed * steps).clamp(s.base_speed / SPEED_RANGE, s.base_speed * SPEED_RANGE);
 
     s.yaw += input.mouse.x * MOUSE_SENSITIVITY + input.stick_look.x * STICK_TURN_RATE * dt;
     s.pitch -= input.mouse.y * MOUSE_SENSITIVITY;
@@ -148,6 +171,17 @@ pub fn step(state: &FlyState, input: &InputState, dt: f64) -> FlyState {
         s.position += v * (speed * dt);
     }
     s
+}
+
+/// The default flying speed for `scene`: crosses its bounded objects' diagonal in
+/// [`CROSSING_SECONDS`], measured in world units because the camera flies in world units (render
+/// space is in the camera's unit of length, so its bounds would give every scale the same
+/// speed). A scene of planes alone crosses the camera's unit (its distance to `look_at`) instead.
+pub fn initial_speed(scene: &Scene) -> f64 {
+    let extent = scene.world_bounds().map_or(0.0, |(lo, hi)| (hi - lo).length());
+    let unit = scene.frame.unit;
+    let length = if extent.is_finite() && extent > 0.0 { extent } else { unit };
+    length / CROSSING_SECONDS
 }
 
 fn wrap_angle(a: f64) -> f64 {
@@ -237,6 +271,28 @@ mod tests {
         let t = step(&s, &InputState { mouse: DVec2::new(0.0, -1e6), speed_steps: 2, ..Default::default() }, 0.0);
         assert!(t.pitch <= MAX_PITCH && t.camera().right.is_finite());
         assert!((t.speed - 1.5625).abs() < 1e-12);
+    }
+
+    /// The speed's limits were absolute (1e-4..1e6 units/s): a scene scaled by 1e-6 started at
+    /// the floor and its first wheel notch did nothing, or jumped.
+    #[test]
+    fn speed_steps_scale_with_the_scene_not_absolute_limits() {
+        for base in [1e-7, 1.0, 1e7] {
+            let s = FlyState::new(Camera::from_desc(&CameraDesc::default()), base);
+            let up = step(&s, &InputState { speed_steps: 1, ..Default::default() }, 0.0);
+            assert!((up.speed / base - SPEED_STEP).abs() < 1e-12, "{base}: {}", up.speed);
+            let down = step(&s, &InputState { speed_steps: -3, ..Default::default() }, 0.0);
+            assert!((down.speed / base - SPEED_STEP.powi(-3)).abs() < 1e-12, "{base}: {}", down.speed);
+            let floor = step(&s, &InputState { speed_steps: -100, ..Default::default() }, 0.0);
+            assert!((floor.speed / base - 1.0 / SPEED_RANGE).abs() < 1e-12);
+            let ceiling = step(&s, &InputState { speed_steps: 100, ..Default::default() }, 0.0);
+            assert!((ceiling.speed / base - SPEED_RANGE).abs() < 1e-9);
+            // Following a path keeps the range centred on the scene's speed.
+            let moved = ceiling.moved_to(seed_camera());
+            assert_eq!(moved.speed, ceiling.speed);
+            let back = step(&moved, &InputState { speed_steps: -100, ..Default::default() }, 0.0);
+            assert!((back.speed / base - 1.0 / SPEED_RANGE).abs() < 1e-12);
+        }
     }
 
     #[test]

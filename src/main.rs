@@ -261,7 +261,7 @@ struct ViewCmd {
     #[arg(long, value_name = "FPS", default_value_t = 60.0)]
     target_fps: f64,
     /// Present frames until the view has converged (or N were shown), save --screenshot, exit.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     frames: Option<u64>,
     /// PNG written by --frames and by F12 (default for F12: strahl-<time>.png).
     #[arg(long, value_name = "PNG")]
@@ -303,7 +303,7 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
         target_fps: v.target_fps,
         frames: v.frames,
         screenshot: v.screenshot,
-        title: format!("strahl - {}", v.scene.display()),
+        scene: v.scene.clone(),
         hud: v.hud,
         path: v.path.as_deref().map(|p| strahl::app::PathPlay::load(p, v.path_seconds)).transpose()?,
         report: v.report,

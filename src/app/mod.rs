@@ -46,7 +46,8 @@ pub struct ViewOptions {
     pub frames: Option<u64>,
     /// Where `--frames` saves, and where F12 saves (else a timestamped name).
     pub screenshot: Option<PathBuf>,
-    pub title: String,
+    /// The scene file as given: the window's title names it, and so does the report.
+    pub scene: PathBuf,
     /// Start with the HUD and help shown (F1 toggles).
     pub hud: bool,
     /// `--path`: play this camera path in real time instead of flying, then exit.
@@ -125,22 +126,6 @@ pub fn quality_preset(full: Quality, aa: u32, index: usize) -> WindowPreset {
     }
 }
 
-/// A flying speed that suits the scene's size: a tenth of its bounded extent per second.
-fn initial_speed(scene: &Scene, camera: &Camera) -> f64 {
-    let bounds = scene.prim_bounds();
-    let (mut lo, mut hi) = (glam::Vec3::splat(f32::MAX), glam::Vec3::splat(f32::MIN));
-    for b in &bounds {
-        lo = lo.min(b.min);
-        hi = hi.max(b.max);
-    }
-    let extent = if bounds.is_empty() { 0.0 } else { (hi - lo).length() as f64 };
-    if extent.is_finite() && extent > 1e-6 {
-        (extent / 10.0).clamp(1e-3, 1e5)
-    } else {
-        camera.direction.length().max(1.0) * 2.0
-    }
-}
-
 /// Opens the window on `desc` and runs until it is closed (or `--frames` or the path is done).
 pub fn run(desc: &SceneDesc, options: ViewOptions) -> Result<(), CliError> {
     run_watched(desc, None, options)
@@ -157,7 +142,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     // F2 may switch to the `reference` preset, which traces in f64, at any time.
     scene.prepare_precise(desc);
     let camera = Camera::from_desc(&desc.camera);
-    let speed = initial_speed(&scene, &camera);
+    let speed = crate::fly::initial_speed(&scene);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
     let playback = options.path.as_ref().map(|p| Playback::new(p.path.clone(), p.seconds));
     let (Some(playback), Some(report), Some(play)) =
@@ -171,7 +156,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     let scene = Scene::build(desc, origin, options.accel);
     crate::render::precise::prepare(&scene, desc, options.quality.precision);
     let cx = ReportContext {
-        scene: &options.title,
+        scene: &options.scene.display().to_string(),
         path: &play.file,
         width: options.width,
         height: options.height,

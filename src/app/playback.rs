@@ -156,7 +156,7 @@ impl Playback {
 
 /// What the report says about the run besides the measurements.
 pub struct ReportContext<'a> {
-    /// The scene, as the window title names it.
+    /// The scene file, as given on the command line.
     pub scene: &'a str,
     pub path: &'a Path,
     pub width: u32,

@@ -17,7 +17,7 @@ use winit::window::{CursorGrabMode, Window, WindowId};
 use crate::app::blit::Blitter;
 use crate::app::font::Canvas;
 use crate::app::gamepad::Gamepads;
-use crate::app::hud::{draw_error, draw_help, draw_hud, FrameTimes, HudInfo};
+use crate::app::hud::{draw_error, draw_hud_and_help, FrameTimes, HudInfo};
 use crate::app::keys::{apply_key, Command};
 use crate::app::playback::Playback;
 use crate::app::render_thread::{Frame, Progress, ReloadStatus, RenderThread, View, Watch};
@@ -43,7 +43,7 @@ pub fn run(
     playback: Option<Playback>,
     options: ViewOptions,
 ) -> Result<Option<Playback>, CliError> {
-    let event_loop = EventLoop::<FrameReady>::with_user_event().build().map_err(|e| no_display(&e.to_string()))?;
+    let event_loop = EventLoop::<FrameReady>::with_user_event().build().map_err(|e| no_display(&winit_message(&e)))?;
     let proxy = event_loop.create_proxy();
     let render = RenderThread::spawn(scene, watch, options.threads, options.target_fps, move || {
         let _ = proxy.send_event(FrameReady);
@@ -185,7 +185,7 @@ impl App {
         self.fly = step(&self.fly, &self.input, dt);
         if let Some(playback) = &mut self.playback {
             let (camera, ended) = playback.camera(now, &self.scene_camera);
-            self.fly = FlyState::new(camera, self.fly.speed);
+            self.fly = self.fly.moved_to(camera);
             // Keep ticking along the path; once it ends, one more present saves and exits.
             active = !ended;
             if ended {
@@ -249,8 +249,14 @@ impl App {
         self.blitter.blit(&frame.pixels, frame.width, frame.height, &mut buffer, w, h);
         let now = Instant::now();
         if fresh {
-            if let Some(prev) = self.last_present.replace(now) {
-                self.times.push(now - prev);
+            // Only gaps between moving frames measure the frame rate: a still view presents
+            // rarely, and the gap from its last frame to the first moving one is idle time.
+            if frame.progress == Progress::Moving {
+                if let Some(prev) = self.last_present.replace(now) {
+                    self.times.push(now - prev);
+                }
+            } else {
+                self.last_present = None;
             }
             self.presented += 1;
             if let (Some(playback), Some(view)) = (&mut self.playback, frame.view) {
@@ -260,15 +266,11 @@ impl App {
         }
         if self.hud {
             let (avg, p95) = self.times.summary();
-            let state = match frame.progress {
-                Progress::Moving => "moving".to_string(),
-                p if p.is_converged() => "converged".to_string(),
-                Progress::Refining { pass, total } => format!("AA {pass}/{total}"),
-            };
             let secs = frame.render_time.as_secs_f64();
             let info = HudInfo {
                 frame_avg: avg,
                 frame_p95: p95,
+                render_time: frame.render_time,
                 scale: frame.scale,
                 internal: (frame.width, frame.height),
                 rays_per_s: if secs > 0.0 { frame.stats.total_rays() as f64 / secs } else { 0.0 },
@@ -276,11 +278,10 @@ impl App {
                 speed: self.fly.speed,
                 quality: quality_preset(self.options.quality, self.options.aa, self.preset).name,
                 precision: quality_preset(self.options.quality, self.options.aa, self.preset).quality.precision,
-                state: &state,
+                progress: frame.progress,
             };
             let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };
-            draw_hud(&mut canvas, &info);
-            draw_help(&mut canvas);
+            draw_hud_and_help(&mut canvas, &info);
         }
         let status = self.render.reload_status();
         if status.generation != self.reload.generation {
@@ -324,6 +325,24 @@ impl App {
     }
 }
 
+/// A winit error without the `os error at SOURCE.rs:LINE: ` that its OS errors start with:
+/// winit's own source path means nothing to the user, and the error carries nothing else.
+fn winit_message(e: &dyn std::fmt::Display) -> String {
+    let text = e.to_string();
+    let Some(rest) = text.strip_prefix("os error at ") else {
+        return text;
+    };
+    // `rest` is `FILE:LINE: message`; the first `:DIGITS: ` ends the location.
+    let bytes = rest.as_bytes();
+    for (i, _) in rest.match_indices(':') {
+        let digits = bytes[i + 1..].iter().take_while(|b| b.is_ascii_digit()).count();
+        if digits > 0 && rest[i + 1 + digits..].starts_with(": ") {
+            return rest[i + 3 + digits..].to_string();
+        }
+    }
+    text
+}
+
 /// The presented 0RGB words as RGB bytes, exactly what the window shows.
 fn save_screenshot(buffer: &[u32], w: u32, h: u32) -> Vec<u8> {
     let mut rgb = Vec::with_capacity(w as usize * h as usize * 3);
@@ -339,11 +358,11 @@ impl ApplicationHandler<FrameReady> for App {
             return;
         }
         let attrs = Window::default_attributes()
-            .with_title(self.options.title.clone())
+            .with_title(format!("strahl - {}", self.options.scene.display()))
             .with_inner_size(PhysicalSize::new(self.options.width, self.options.height));
         let window = match event_loop.create_window(attrs) {
             Ok(w) => Rc::new(w),
-            Err(e) => return self.fail(event_loop, no_display(&e.to_string())),
+            Err(e) => return self.fail(event_loop, no_display(&winit_message(&e))),
         };
         let surface = Context::new(window.clone()).and_then(|cx| Surface::new(&cx, window.clone()));
         match surface {
@@ -415,5 +434,19 @@ impl ApplicationHandler<FrameReady> for App {
     fn exiting(&mut self, _event_loop: &ActiveEventLoop) {
         // Drop the surface before the window it draws into.
         self.win = None;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::winit_message;
+
+    /// A failed X connection printed `os error at /root/.cargo/registry/.../winit-0.30/src/...`.
+    #[test]
+    fn winit_errors_lose_winit_source_paths() {
+        let e = "os error at /home/u/.cargo/registry/src/index/winit-0.30.13/src/platform_impl/linux/mod.rs:788: failed to open display: :12";
+        assert_eq!(winit_message(&e), "failed to open display: :12");
+        assert_eq!(winit_message(&"EventLoop can't be recreated"), "EventLoop can't be recreated");
+        assert_eq!(winit_message(&"os error at odd"), "os error at odd");
     }
 }

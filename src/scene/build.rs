@@ -374,6 +374,21 @@ impl Scene {
         }
     }
 
+    /// The bounded primitives' box in world space, `None` without any. Render space is in the
+    /// camera's unit of length; whatever moves through the scene in world units (the fly
+    /// camera) must measure it here.
+    pub fn world_bounds(&self) -> Option<(DVec3, DVec3)> {
+        let mut b = Aabb::EMPTY;
+        for p in self.prim_bounds() {
+            b.grow(&p);
+        }
+        if self.prims.is_empty() {
+            return None;
+        }
+        let world = self.frame.world_from_render();
+        Some((world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3())))
+    }
+
     pub fn prim_bounds(&self) -> Vec<Aabb> {
         self.prims
             .iter()

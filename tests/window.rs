@@ -291,7 +291,7 @@ fn bad_view_arguments_exit_2_before_a_window() {
     bad_view_args(&[seed, "--path", malformed.to_str().unwrap()], "bad.path:2:");
 
     let nowhere = dir.join("no-such-dir").join("r.json");
-    bad_view_args(&[seed, "--path", orbit, "--report", nowhere.to_str().unwrap()], "cannot write there");
+    bad_view_args(&[seed, "--path", orbit, "--report", nowhere.to_str().unwrap()], "does not exist");
     bad_view_args(&[seed, "--path", orbit, "--report", dir.to_str().unwrap()], "is a folder");
     bad_view_args(&[seed, "--report", "r.json"], "--path");
     bad_view_args(&[seed, "--path", orbit, "--path-seconds", "0"], "--path-seconds");

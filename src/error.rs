@@ -123,14 +123,25 @@ impl fmt::Display for LocatedError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.message)?;
         if !self.source_line.is_empty() {
-            // Tabs keep their width so the caret lines up under the column.
-            let pad: String = self
-                .source_line
-                .chars()
-                .take(self.col.saturating_sub(1) as usize)
-                .map(|c| if c == '\t' { '\t' } else { ' ' })
-                .collect();
-            write!(f, "\n  {}\n  {}^", self.source_line, pad)?;
+            // Tabs keep their width so the caret lines up under the column; other invisible
+            // characters are shown as `<U+FEFF>`, and the padding under them is as wide.
+            let (mut shown, mut pad) = (String::new(), String::new());
+            for (i, c) in self.source_line.chars().enumerate() {
+                let before_col = i + 1 < self.col as usize;
+                if c == '\t' || !is_invisible(c) {
+                    shown.push(c);
+                    if before_col {
+                        pad.push(if c == '\t' { '\t' } else { ' ' });
+                    }
+                } else {
+                    let code = format!("<U+{:04X}>", c as u32);
+                    if before_col {
+                        pad.push_str(&" ".repeat(code.len()));
+                    }
+                    shown.push_str(&code);
+                }
+            }
+            write!(f, "\n  {shown}\n  {pad}^")?;
         }
         Ok(())
     }
@@ -172,6 +183,13 @@ mod tests {
         assert_eq!(quote_char('\u{7}'), "U+0007");
         assert_eq!(quote_char('\u{2009}'), "U+2009");
         assert_eq!(visible("a\u{200b}b c"), "a<U+200B>b c");
+    }
+
+    #[test]
+    fn invisible_character_in_the_quoted_line_is_shown_and_the_caret_stays_under_the_column() {
+        let e = LocatedError::at_offset("s.pov", "a\u{feff}b c", 6, "unknown keyword `c`");
+        assert_eq!(e.col, 5);
+        assert_eq!(e.to_string(), "s.pov:1:5: unknown keyword `c`\n  a<U+FEFF>b c\n             ^");
     }
 
     #[test]

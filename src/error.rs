@@ -42,6 +42,76 @@ impl LocatedError {
     }
 }
 
+/// Decodes a text file a user wrote (scene, include, camera path) the way POV-Ray reads them: a
+/// UTF-8 byte-order mark at the start is dropped (Windows editors write one); a file that is not
+/// valid UTF-8 is read as Latin-1 (ISO-8859-1), one character per byte, which is what POV-Ray's
+/// byte-wise reader and `charset sys` amount to on Western systems. Either way columns in
+/// messages count characters as an editor in that encoding shows them.
+pub fn decode_user_text(bytes: Vec<u8>) -> String {
+    const BOM: &[u8] = "\u{feff}".as_bytes();
+    let bytes = match bytes.strip_prefix(BOM) {
+        Some(rest) => rest.to_vec(),
+        None => bytes,
+    };
+    match String::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => e.into_bytes().iter().map(|&b| char::from(b)).collect(),
+    }
+}
+
+/// A character as a message quotes it: visible ones in backticks (`` `@` ``), invisible ones
+/// (controls, spaces other than the plain one, zero-width and format characters) by code point,
+/// `U+FEFF`, since quoting them would show nothing.
+pub fn quote_char(c: char) -> String {
+    if is_invisible(c) {
+        match invisible_name(c) {
+            Some(name) => format!("U+{:04X} ({name})", c as u32),
+            None => format!("U+{:04X}", c as u32),
+        }
+    } else {
+        format!("`{c}`")
+    }
+}
+
+/// `text` with each invisible character written as `<U+FEFF>`, for quoting words and strings.
+pub fn visible(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if is_invisible(c) {
+            out.push_str(&format!("<U+{:04X}>", c as u32));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Characters a terminal shows as nothing or as a plain blank, so a message must name them.
+fn is_invisible(c: char) -> bool {
+    (c.is_control() || c.is_whitespace() || is_format_char(c)) && c != ' '
+}
+
+/// Zero-width and other format characters (Unicode category Cf and the fillers), which
+/// `char` has no predicate for.
+fn is_format_char(c: char) -> bool {
+    matches!(c as u32,
+        0xAD | 0x34F | 0x61C | 0x115F | 0x1160 | 0x17B4 | 0x17B5 | 0x180B..=0x180E
+        | 0x200B..=0x200F | 0x202A..=0x202E | 0x2060..=0x206F | 0x3164 | 0xFE00..=0xFE0F
+        | 0xFEFF | 0xFFA0 | 0xFFF0..=0xFFFB | 0x1D173..=0x1D17A | 0xE0000..=0xE0FFF)
+}
+
+/// What the invisible characters people paste by accident are called.
+fn invisible_name(c: char) -> Option<&'static str> {
+    Some(match c {
+        '\u{feff}' => "byte-order mark / zero-width no-break space",
+        '\u{a0}' => "no-break space",
+        '\u{200b}' => "zero-width space",
+        '\u{ad}' => "soft hyphen",
+        '\t' => "tab",
+        _ => return None,
+    })
+}
+
 fn floor_char_boundary(text: &str, mut i: usize) -> usize {
     while i > 0 && !text.is_char_boundary(i) {
         i -= 1;
@@ -53,14 +123,25 @@ impl fmt::Display for LocatedError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}:{}:{}: {}", self.file, self.line, self.col, self.message)?;
         if !self.source_line.is_empty() {
-            // Tabs keep their width so the caret lines up under the column.
-            let pad: String = self
-                .source_line
-                .chars()
-                .take(self.col.saturating_sub(1) as usize)
-                .map(|c| if c == '\t' { '\t' } else { ' ' })
-                .collect();
-            write!(f, "\n  {}\n  {}^", self.source_line, pad)?;
+            // Tabs keep their width so the caret lines up under the column; other invisible
+            // characters are shown as `<U+FEFF>`, and the padding under them is as wide.
+            let (mut shown, mut pad) = (String::new(), String::new());
+            for (i, c) in self.source_line.chars().enumerate() {
+                let before_col = i + 1 < self.col as usize;
+                if c == '\t' || !is_invisible(c) {
+                    shown.push(c);
+                    if before_col {
+                        pad.push(if c == '\t' { '\t' } else { ' ' });
+                    }
+                } else {
+                    let code = format!("<U+{:04X}>", c as u32);
+                    if before_col {
+                        pad.push_str(&" ".repeat(code.len()));
+                    }
+                    shown.push_str(&code);
+                }
+            }
+            write!(f, "\n  {shown}\n  {pad}^")?;
         }
         Ok(())
     }
@@ -78,6 +159,37 @@ mod tests {
         let e = LocatedError::at_offset("s.pov", text, 11, "unknown keyword `locaton`");
         assert_eq!((e.line, e.col), (2, 3));
         assert_eq!(e.to_string(), "s.pov:2:3: unknown keyword `locaton`\n    locaton <0,0,0>\n    ^");
+    }
+
+    #[test]
+    fn utf8_byte_order_mark_is_dropped() {
+        assert_eq!(decode_user_text(b"\xef\xbb\xbfcamera".to_vec()), "camera");
+        // Only at the start: a mark in the middle is a character like any other.
+        assert_eq!(decode_user_text(b"a\xef\xbb\xbf".to_vec()), "a\u{feff}");
+    }
+
+    #[test]
+    fn non_utf8_file_is_read_as_latin1() {
+        assert_eq!(decode_user_text(b"// caf\xe9\nx".to_vec()), "// caf\u{e9}\nx");
+        assert_eq!(decode_user_text("// café".as_bytes().to_vec()), "// café");
+    }
+
+    #[test]
+    fn invisible_characters_are_quoted_by_code_point() {
+        assert_eq!(quote_char('@'), "`@`");
+        assert_eq!(quote_char('é'), "`é`");
+        assert_eq!(quote_char('\u{feff}'), "U+FEFF (byte-order mark / zero-width no-break space)");
+        assert_eq!(quote_char('\u{a0}'), "U+00A0 (no-break space)");
+        assert_eq!(quote_char('\u{7}'), "U+0007");
+        assert_eq!(quote_char('\u{2009}'), "U+2009");
+        assert_eq!(visible("a\u{200b}b c"), "a<U+200B>b c");
+    }
+
+    #[test]
+    fn invisible_character_in_the_quoted_line_is_shown_and_the_caret_stays_under_the_column() {
+        let e = LocatedError::at_offset("s.pov", "a\u{feff}b c", 6, "unknown keyword `c`");
+        assert_eq!(e.col, 5);
+        assert_eq!(e.to_string(), "s.pov:1:5: unknown keyword `c`\n  a<U+FEFF>b c\n             ^");
     }
 
     #[test]

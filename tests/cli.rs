@@ -330,4 +330,52 @@ fn help_wraps_to_the_terminal_width() {
     let help = String::from_utf8_lossy(&out.stdout);
     let widest = help.lines().map(|l| l.chars().count()).max().unwrap_or(0);
     assert!(widest <= 72, "help is {widest} columns wide:\n{help}");
+
+#[test]
+fn render_prints_debug_text_and_scale_0_warning_once() {
+    let dir = scratch("debug_text");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let scene = dir.join("s.pov");
+    std::fs::write(&scene, "#debug \"dbg-out\\n\"\nsphere { 0, 1 scale 0 pigment { rgb 1 } }\n")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let png = dir.join("out.png").display().to_string();
+    let out = ok(&["render", &scene.display().to_string(), "-W", "8", "-H", "6", "-o", &png]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("dbg-out\n"), "{err}");
+    assert_eq!(err.matches("Scale by 0.0").count(), 1, "{err}");
+}
+
+#[test]
+fn render_of_an_empty_scene_warns_no_objects_in_scene() {
+    let dir = scratch("empty_scene");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let scene = dir.join("empty.pov");
+    std::fs::write(&scene, "camera { location <0, 0, -5> look_at 0 }\n").unwrap_or_else(|e| panic!("{e}"));
+    let png = dir.join("out.png");
+    let out = ok(&["render", &scene.display().to_string(), "-W", "8", "-H", "6", "-o", &png.display().to_string()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("empty.pov:1:1: No objects in scene."), "{err}");
+    assert!(png.exists(), "it still renders, as POV-Ray does");
+}
+
+#[test]
+fn path_key_with_look_at_equal_to_location_is_a_located_error() {
+    let dir = scratch("path_look_at");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let file = dir.join("same.path");
+    std::fs::write(&file, "key 0 location <0,1,-5> look_at <0,0,0>\nkey 1 location <1,1,1> look_at <1,1,1>\n")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("out");
+    let err = fails(&[
+        "capture",
+        &seed(),
+        "--path",
+        &file.display().to_string(),
+        "--frames",
+        "2",
+        "-o",
+        &out.display().to_string(),
+    ]);
+    assert!(err.contains("same.path:2:32: camera look_at is the same point as its location"), "{err}");
+    assert!(!out.exists());
 }

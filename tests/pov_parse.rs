@@ -5,7 +5,10 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
 use strahl::error::LocatedError;
-use strahl::pov::{load_scene, load_scene_with_options, load_scene_with_warnings, IncludePath, ParseOptions};
+use strahl::pov::{
+    load_scene, load_scene_with_messages, load_scene_with_options, load_scene_with_warnings, IncludePath, Message,
+    ParseOptions,
+};
 use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc};
 
 fn repo() -> PathBuf {
@@ -315,16 +318,138 @@ fn include_search_order_prefers_the_scene_folder() {
 }
 
 #[test]
-fn error_unreadable_and_not_utf8() {
+fn error_unreadable_file() {
     let d = dir("e_bytes");
     let e = load_scene(&d.join("missing.pov"), &IncludePath::default()).unwrap_err();
     assert_eq!((e.line, e.col), (1, 1));
     assert!(e.message.starts_with("cannot read file"), "{}", e.message);
-    let p = d.join("bad.pov");
-    std::fs::write(&p, b"sphere { 0, 1 }\n// caf\xff\n").unwrap();
+}
+
+// ---- files POV-Ray reads: byte-order marks, Latin-1, invisible characters -------------------
+
+#[test]
+fn utf8_byte_order_mark_is_accepted() {
+    let d = dir("bom");
+    let bom = "\u{feff}";
+    write(&d, "r.inc", &format!("{bom}#declare R = 2;"));
+    let s = write(&d, "s.pov", &format!("{bom}#include \"r.inc\"\nsphere {{ 0, R }}"));
+    let scene = load_scene(&s, &IncludePath::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(scene.objects[0].shape, ShapeDesc::Sphere { center: DVec3::ZERO, radius: 2.0 });
+    // Columns after the mark count as an editor shows them: the mark is not a character.
+    let e = load_text("bom_col", &format!("{bom}spher {{ 0, 1 }}")).unwrap_err();
+    assert_eq!((e.line, e.col), (1, 1), "{e}");
+    assert!(e.message.starts_with("unknown keyword `spher`"), "{}", e.message);
+}
+
+#[test]
+fn latin1_byte_in_a_comment_is_read() {
+    let d = dir("latin1_comment");
+    let p = d.join("s.pov");
+    std::fs::write(&p, b"// caf\xe9 cr\xe8me\nsphere { 0, 1 }\n").unwrap();
+    let scene = load_scene(&p, &IncludePath::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(scene.objects.len(), 1);
+    // Each Latin-1 byte is one column, so errors after it stay where the editor shows them.
+    std::fs::write(&p, b"/* \xe9\xe9 */ spher { 0, 1 }\n").unwrap();
     let e = load_scene(&p, &IncludePath::default()).unwrap_err();
-    assert_eq!((e.line, e.col), (2, 7));
-    assert_eq!(e.message, "file is not valid UTF-8 (byte 0xff)");
+    assert_eq!((e.line, e.col), (1, 10), "{e}");
+}
+
+#[test]
+fn latin1_byte_in_a_string_is_read() {
+    let d = dir("latin1_string");
+    let p = d.join("s.pov");
+    std::fs::write(&p, b"#warning \"caf\xe9\"\nsphere { 0, 1 }\n").unwrap();
+    let (_, w) = load_scene_with_warnings(&p, &IncludePath::default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!(w[0].message, "caf\u{e9}");
+}
+
+#[test]
+fn stray_byte_order_mark_in_the_middle_is_named_u_feff() {
+    let (line, col, m) = err("stray_bom", "sphere { 0, 1 }\nbox {\u{feff} 0, 1 }\n");
+    assert_eq!((line, col), (2, 6));
+    assert_eq!(m, "unexpected character U+FEFF (byte-order mark / zero-width no-break space)");
+    let (line, col, m) = err("stray_nbsp", "// \u{e9}\u{e9}\nsphere {\u{a0}0, 1 }\n");
+    assert_eq!((line, col), (2, 9));
+    assert_eq!(m, "unexpected character U+00A0 (no-break space)");
+    // A visible character is still quoted as itself.
+    let (_, _, m) = err("stray_visible", "sphere { 0, 1 } \u{e9}");
+    assert_eq!(m, "unexpected character `\u{e9}`");
+}
+
+// ---- misspelt keywords are blamed, not the value after them ---------------------------------
+
+#[test]
+fn misspelt_keyword_is_reported_at_the_keyword_not_its_value() {
+    for (text, col, word, block) in [
+        ("sphere { 0, 1 finish { phongg 1 } }", 24, "phongg", "finish"),
+        ("sphere { 0, 1 finish { phong 1 phong_sze 20 } }", 32, "phong_sze", "finish"),
+        ("sphere { 0, 1 pigment { colr <1, 0, 0> } }", 25, "colr", "pigment"),
+        ("#include \"colors.inc\"\nsphere { 0, 1 pigment { colr Red } }", 25, "colr", "pigment"),
+        ("sphere { 0, 1 normal { bumpz 0.5 } }", 24, "bumpz", "normal"),
+        ("sphere { 0, 1 interior { iorr 1.5 } }", 26, "iorr", "interior"),
+        ("sphere { 0, 1 texture { pigmnt { rgb 1 } } }", 25, "pigmnt", "texture"),
+        ("light_source { <0, 4, -3> colr 1 }", 27, "colr", "light_source"),
+        ("camera { locaton <0, 2, -5> }", 10, "locaton", "camera"),
+        ("global_settings { assumed_gama 1 }", 19, "assumed_gama", "global_settings"),
+        ("sphere { 0, 1 scal 2 }", 15, "scal", "sphere"),
+    ] {
+        let (line, c, m) = err("misspelt", text);
+        let line_of_text = text.lines().count() as u32;
+        assert_eq!((line, c), (line_of_text, col), "{text}: {m}");
+        assert!(m.starts_with(&format!("unknown keyword `{word}` in {block}")), "{text}: {m}");
+    }
+}
+
+#[test]
+fn declared_name_followed_by_a_misspelt_keyword_blames_the_keyword() {
+    let (line, col, m) =
+        err("declared_then_typo", "#declare F_Shiny = finish { phong 1 }\nsphere { 0, 1 finish { F_Shiny phongg 1 } }");
+    assert_eq!((line, col), (2, 32), "{m}");
+    assert!(m.starts_with("unknown keyword `phongg` in finish"), "{m}");
+    // A declared name followed by a keyword still loads.
+    let s = load_text(
+        "declared_ok",
+        "#declare F_Shiny = finish { phong 1 }\nsphere { 0, 1 finish { F_Shiny phong_size 9 } }",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.objects[0].texture.finish.phong, 1.0);
+}
+
+// ---- what a scene prints: #debug, warnings ------------------------------------------------
+
+#[test]
+fn debug_prints_its_string() {
+    let d = dir("debug");
+    let p = write(&d, "s.pov", "#debug \"radius \"\n#debug concat(str(2, 0, 0), \"\\n\")\nsphere { 0, 2 }");
+    let (_, messages) = load_scene_with_messages(&p, &IncludePath::default(), &ParseOptions::default()).unwrap();
+    assert_eq!(messages, vec![Message::Debug("radius ".into()), Message::Debug("2\n".into())]);
+    // Printed as POV-Ray's debug stream prints it: the text as written, nothing added.
+    let printed: String = messages.iter().map(|m| m.to_string()).collect();
+    assert_eq!(printed, "radius 2\n");
+}
+
+#[test]
+fn empty_scene_warns_no_objects_in_scene() {
+    let d = dir("empty");
+    let p = write(&d, "s.pov", "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, 0> color rgb 1 }\n");
+    let (scene, w) = load_scene_with_warnings(&p, &IncludePath::default()).unwrap();
+    assert!(scene.objects.is_empty());
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!(w[0].message, "No objects in scene.");
+    assert!(w[0].to_string().starts_with(&format!("{}:1:1: No objects in scene.", p.display())), "{}", w[0]);
+    let p = write(&d, "t.pov", "plane { y, 0 }");
+    assert!(load_scene_with_warnings(&p, &IncludePath::default()).unwrap().1.is_empty());
+}
+
+#[test]
+fn scale_0_warns_once() {
+    let d = dir("scale0_once");
+    let (s, w) = load_scene_with_warnings(&write(&d, "s.pov", "sphere { 0, 1 scale 0 }"), &std_include()).unwrap();
+    assert_eq!(s.objects[0].transform.matrix, DMat4::IDENTITY);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!((w[0].line, w[0].col), (1, 15));
+    assert_eq!(w[0].message, "Illegal Value: Scale by 0.0 (x, y, z). Changed to 1.0.");
 }
 
 #[test]

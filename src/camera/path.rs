@@ -88,9 +88,9 @@ impl CameraPath {
     /// Reads and parses a path file.
     pub fn load(path: &FsPath) -> Result<CameraPath, LocatedError> {
         let name = path.display().to_string();
-        let text =
-            std::fs::read_to_string(path).map_err(|e| LocatedError::whole_file(&name, format!("cannot read: {e}")))?;
-        Self::parse(&name, &text)
+        let bytes = std::fs::read(path).map_err(|e| LocatedError::whole_file(&name, format!("cannot read: {e}")))?;
+        // A byte-order mark or a Latin-1 comment is read as in scene files.
+        Self::parse(&name, &crate::error::decode_user_text(bytes))
     }
 
     pub fn keys(&self) -> &[Key] {

@@ -13,7 +13,7 @@
 use glam::DVec3;
 
 use crate::camera::path::{CameraPath, Key, Spline};
-use crate::error::LocatedError;
+use crate::error::{visible, LocatedError};
 
 /// A word of a line and its byte offset in the whole file.
 #[derive(Clone, Copy, Debug)]
@@ -78,8 +78,8 @@ impl<'a> Parser<'a> {
         let w = self.expect_word(c, what)?;
         match w.text.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            Ok(_) => Err(self.err(w.offset, format!("{what} must be a finite number, found `{}`", w.text))),
-            Err(_) => Err(self.err(w.offset, format!("bad number `{}` (expected {what})", w.text))),
+            Ok(_) => Err(self.err(w.offset, format!("{what} must be a finite number, found `{}`", visible(w.text)))),
+            Err(_) => Err(self.err(w.offset, format!("bad number `{}` (expected {what})", visible(w.text)))),
         }
     }
 
@@ -88,7 +88,7 @@ impl<'a> Parser<'a> {
         if w.text == p {
             Ok(())
         } else {
-            Err(self.err(w.offset, format!("expected `{p}`, found `{}`", w.text)))
+            Err(self.err(w.offset, format!("expected `{p}`, found `{}`", visible(w.text))))
         }
     }
 
@@ -108,17 +108,25 @@ impl<'a> Parser<'a> {
         match w.text {
             "true" | "on" | "yes" => Ok(true),
             "false" | "off" | "no" => Ok(false),
-            other => Err(self.err(w.offset, format!("expected `true` or `false` after `{what}`, found `{other}`"))),
+            other => {
+                Err(self
+                    .err(w.offset, format!("expected `true` or `false` after `{what}`, found `{}`", visible(other))))
+            }
         }
     }
 
     fn key(&self, c: &mut Cursor<'a>, keyword: Word<'a>) -> Result<Key, LocatedError> {
         let time = self.number(c, "key time")?;
         let (mut location, mut look_at, mut angle) = (None, None, None);
+        // Where the `look_at` vector starts, for the error when it is the location.
+        let mut look_at_offset = c.end;
         while let Some(w) = c.next() {
             let seen = match w.text {
                 "location" => location.replace(self.vector(c, "location")?).is_some(),
-                "look_at" => look_at.replace(self.vector(c, "look_at")?).is_some(),
+                "look_at" => {
+                    look_at_offset = c.words.get(c.pos).map_or(c.end, |v| v.offset);
+                    look_at.replace(self.vector(c, "look_at")?).is_some()
+                }
                 "angle" => {
                     let a = self.number(c, "angle")?;
                     if !(a > 0.0 && a < 180.0) {
@@ -127,8 +135,10 @@ impl<'a> Parser<'a> {
                     angle.replace(a).is_some()
                 }
                 other => {
-                    return Err(self
-                        .err(w.offset, format!("unknown key field `{other}` (supported: location, look_at, angle)")))
+                    return Err(self.err(
+                        w.offset,
+                        format!("unknown key field `{}` (supported: location, look_at, angle)", visible(other)),
+                    ))
                 }
             };
             if seen {
@@ -136,12 +146,13 @@ impl<'a> Parser<'a> {
             }
         }
         let missing = |what: &str| self.err(keyword.offset, format!("key has no `{what}`"));
-        Ok(Key {
-            time,
-            location: location.ok_or_else(|| missing("location"))?,
-            look_at: look_at.ok_or_else(|| missing("look_at"))?,
-            angle,
-        })
+        let location = location.ok_or_else(|| missing("location"))?;
+        let look_at = look_at.ok_or_else(|| missing("look_at"))?;
+        if look_at == location {
+            // The camera would have no direction; a scene's camera is refused the same way.
+            return Err(self.err(look_at_offset, "camera look_at is the same point as its location"));
+        }
+        Ok(Key { time, location, look_at, angle })
     }
 }
 
@@ -184,9 +195,10 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
                     "centripetal" => Spline::Centripetal,
                     "uniform" => Spline::Uniform,
                     other => {
-                        return Err(
-                            p.err(w.offset, format!("unknown spline `{other}` (supported: centripetal, uniform)"))
-                        )
+                        return Err(p.err(
+                            w.offset,
+                            format!("unknown spline `{}` (supported: centripetal, uniform)", visible(other)),
+                        ))
                     }
                 };
                 if settings.spline.replace(s).is_some() {
@@ -206,12 +218,12 @@ pub(crate) fn parse(file: &str, text: &str) -> Result<CameraPath, LocatedError> 
             other => {
                 return Err(p.err(
                     first.offset,
-                    format!("unknown keyword `{other}` (supported: key, spline, constant_speed, closed)"),
+                    format!("unknown keyword `{}` (supported: key, spline, constant_speed, closed)", visible(other)),
                 ))
             }
         }
         if let Some(extra) = c.next() {
-            return Err(p.err(extra.offset, format!("unexpected `{}` at end of statement", extra.text)));
+            return Err(p.err(extra.offset, format!("unexpected `{}` at end of statement", visible(extra.text))));
         }
     }
     validate(&p, &keys, &settings)?;
@@ -312,6 +324,22 @@ mod tests {
             assert_eq!((e.line, e.col), (1, col), "{text}");
             assert!(e.message.contains("finite"), "{}", e.message);
         }
+    }
+
+    #[test]
+    fn key_with_look_at_equal_to_location_is_a_located_error() {
+        let e = err("key 0 location <0,1,-5> look_at <0,0,0>\nkey 1 location <1,2,3>  look_at <1, 2, 3>\n");
+        assert_eq!((e.line, e.col), (2, 33));
+        assert_eq!(e.message, "camera look_at is the same point as its location");
+    }
+
+    #[test]
+    fn invisible_characters_in_quoted_words_are_named() {
+        let e = err(
+            "key 0 location <0,0,0> look_at <1,1,1>\nkey 1 location <1,0,0> look_at <1,1,1>\n\u{200b}closed true\n",
+        );
+        assert_eq!((e.line, e.col), (3, 1));
+        assert!(e.message.starts_with("unknown keyword `<U+200B>closed`"), "{}", e.message);
     }
 
     #[test]

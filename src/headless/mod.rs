@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::error::LocatedError;
-use crate::pov::{load_scene_with_options_and_warnings, IncludePath, ParseOptions};
+use crate::pov::{load_scene_with_messages, IncludePath, ParseOptions};
 use crate::scene::desc::SceneDesc;
 
 /// An error for the user, with the process exit code it maps to.
@@ -70,7 +70,8 @@ pub fn load(path: &Path, user_dirs: &[PathBuf]) -> Result<(SceneDesc, Duration),
 }
 
 /// Parses a scene for an image of `width`×`height`, which `image_width`/`image_height` report,
-/// printing the parser's warnings (POV-Ray's "Scale by 0.0 changed to 1.0") to stderr.
+/// printing what the scene printed (`#debug` text, warnings such as POV-Ray's "Scale by 0.0
+/// changed to 1.0") to stderr.
 pub fn load_sized(
     path: &Path,
     user_dirs: &[PathBuf],
@@ -79,9 +80,9 @@ pub fn load_sized(
 ) -> Result<(SceneDesc, Duration), CliError> {
     let start = Instant::now();
     let options = ParseOptions { image_width: width, image_height: height };
-    let (desc, warnings) = load_scene_with_options_and_warnings(path, &include_path(user_dirs), &options)?;
-    for w in warnings {
-        eprintln!("warning: {w}");
+    let (desc, messages) = load_scene_with_messages(path, &include_path(user_dirs), &options)?;
+    for m in messages {
+        eprint!("{m}");
     }
     Ok((desc, start.elapsed()))
 }

@@ -2,6 +2,7 @@
 //! identifiers (the parser knows which words are keywords in which block).
 
 use super::source::{Diag, FileId, PResult, Span};
+use crate::error::{quote_char, visible};
 
 /// The directives strahl understands; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
@@ -36,7 +37,7 @@ impl Token {
         match &self.kind {
             TokenKind::Number(v) => format!("number {v}"),
             TokenKind::Ident(s) => format!("`{s}`"),
-            TokenKind::Str(s) => format!("string \"{s}\""),
+            TokenKind::Str(s) => format!("string \"{}\"", visible(s)),
             TokenKind::Directive(d) => format!("`#{d}`"),
             TokenKind::Punct(c) => format!("`{c}`"),
             TokenKind::Op2(op) => format!("`{op}`"),
@@ -115,7 +116,10 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             tokens.push(Token { kind: TokenKind::Punct(c as char), span: span(start, i) });
         } else {
             let ch = text[i..].chars().next().unwrap_or('?');
-            return Err(Diag::new(span(start, start + ch.len_utf8()), format!("unexpected character `{ch}`")));
+            return Err(Diag::new(
+                span(start, start + ch.len_utf8()),
+                format!("unexpected character {}", quote_char(ch)),
+            ));
         }
     }
     tokens.push(Token { kind: TokenKind::Eof, span: span(bytes.len(), bytes.len()) });
@@ -283,5 +287,18 @@ mod tests {
         assert!(lex(0, "\"abc").unwrap_err().message.contains("never closed"));
         assert_eq!(lex(0, "a @").unwrap_err().message, "unexpected character `@`");
         assert!(lex(0, "1e+").is_err());
+    }
+
+    #[test]
+    fn stray_invisible_character_is_named_by_code_point() {
+        let e = lex(0, "a\u{feff}b").unwrap_err();
+        assert_eq!(e.message, "unexpected character U+FEFF (byte-order mark / zero-width no-break space)");
+        assert_eq!((e.span.start, e.span.end), (1, 4));
+        assert_eq!(lex(0, "a\u{a0}b").unwrap_err().message, "unexpected character U+00A0 (no-break space)");
+        assert_eq!(lex(0, "\u{1b}").unwrap_err().message, "unexpected character U+001B");
+        assert_eq!(
+            Token { kind: TokenKind::Str("a\u{200b}".into()), span: Span::default() }.describe(),
+            "string \"a<U+200B>\""
+        );
     }
 }

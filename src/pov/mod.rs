@@ -9,12 +9,16 @@ mod lower;
 pub mod parser;
 pub mod source;
 
+use std::fmt;
 use std::path::{Path, PathBuf};
 
-use crate::error::LocatedError;
+use crate::error::{decode_user_text, visible, LocatedError};
 use crate::scene::desc::{SceneDesc, SourceRef};
 use ast::Stmt;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
+
+/// The warning for a scene without objects, in POV-Ray 3.7's words.
+pub const NO_OBJECTS: &str = "No objects in scene.";
 
 /// How deep `#include` may nest (POV-Ray's own limit is similar); deeper is surely a runaway.
 pub const MAX_INCLUDE_DEPTH: usize = 32;
@@ -70,6 +74,44 @@ pub fn load_scene_with_options_and_warnings(
     include: &IncludePath,
     options: &ParseOptions,
 ) -> Result<(SceneDesc, Vec<LocatedError>), LocatedError> {
+    let (scene, messages) = load_scene_with_messages(path, include, options)?;
+    let warnings = messages
+        .into_iter()
+        .filter_map(|m| match m {
+            Message::Warning(w) => Some(w),
+            Message::Debug(_) => None,
+        })
+        .collect();
+    Ok((scene, warnings))
+}
+
+/// What a scene prints while it loads, in the order it printed it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Message {
+    /// `#debug` text: POV-Ray's debug stream, printed exactly as written (the scene writes its
+    /// own newlines).
+    Debug(String),
+    /// `#warning`, POV-Ray's warnings ("Scale by 0.0", "No objects in scene"), located.
+    Warning(LocatedError),
+}
+
+impl fmt::Display for Message {
+    /// How the CLI prints it to stderr: debug text as is, a warning on lines of its own.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Message::Debug(text) => f.write_str(text),
+            Message::Warning(w) => writeln!(f, "warning: {w}"),
+        }
+    }
+}
+
+/// `load_scene_with_options`, also returning what the scene printed: `#debug` text and
+/// warnings, in order.
+pub fn load_scene_with_messages(
+    path: &Path,
+    include: &IncludePath,
+    options: &ParseOptions,
+) -> Result<(SceneDesc, Vec<Message>), LocatedError> {
     let mut loader = Loader { map: SourceMap::default(), include, stack: Vec::new(), options: options.clone() };
     let result = loader.load_main(path);
     result.map_err(|d| loader.map.locate(&d))
@@ -84,35 +126,38 @@ struct Loader<'a> {
 }
 
 impl Loader<'_> {
-    fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<LocatedError>)> {
-        let (file, stmts) = self.read_and_parse(path, path.display().to_string())?;
+    fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<Message>)> {
+        let display = path.display().to_string();
+        let (file, stmts) = self.read_and_parse(path, display.clone())?;
         self.stack.push((canonical(path), file));
         let options = self.options.clone();
-        let (scene, warnings) = lower::Lowerer::new(self, &options).finish(&stmts)?;
-        let warnings = warnings.iter().map(|d| self.map.locate(d)).collect();
-        Ok((scene, warnings))
+        let (scene, output) = lower::Lowerer::new(self, &options).finish(&stmts)?;
+        let mut messages: Vec<Message> = output
+            .into_iter()
+            .map(|o| match o {
+                lower::Output::Debug(text) => Message::Debug(text),
+                lower::Output::Warning(d) => Message::Warning(self.map.locate(&d)),
+            })
+            .collect();
+        if scene.objects.is_empty() {
+            // POV-Ray 3.7 warns too, then renders the background: an empty image is rarely meant.
+            messages.push(Message::Warning(LocatedError::whole_file(&display, NO_OBJECTS)));
+        }
+        Ok((scene, messages))
     }
 
-    /// Reads a file into the source map and parses it. Unreadable and non-UTF-8 files still get
-    /// an entry, so their error is located like any other.
+    /// Reads a file into the source map and parses it. An unreadable file still gets an entry,
+    /// so its error is located like any other. The text is decoded by `decode_user_text`: a
+    /// byte-order mark is dropped and a file that is not UTF-8 is read as Latin-1.
     fn read_and_parse(&mut self, path: &Path, display: String) -> PResult<(FileId, Vec<Stmt>)> {
-        let bytes = std::fs::read(path);
-        let (text, problem) = match bytes {
-            Err(e) => (String::new(), Some((0, format!("cannot read file: {e}")))),
-            Ok(b) if b.len() >= u32::MAX as usize => (String::new(), Some((0, "file is too large".to_string()))),
-            Ok(b) => match String::from_utf8(b) {
-                Ok(t) => (t, None),
-                Err(e) => {
-                    let at = e.utf8_error().valid_up_to();
-                    let bad = e.as_bytes()[at];
-                    let prefix = String::from_utf8_lossy(&e.as_bytes()[..at]).into_owned();
-                    (prefix, Some((at, format!("file is not valid UTF-8 (byte 0x{bad:02x})"))))
-                }
-            },
+        let (text, problem) = match std::fs::read(path) {
+            Err(e) => (String::new(), Some(format!("cannot read file: {e}"))),
+            Ok(b) if b.len() >= u32::MAX as usize => (String::new(), Some("file is too large".to_string())),
+            Ok(b) => (decode_user_text(b), None),
         };
         let id = self.map.add(SourceFile { display, path: path.to_path_buf(), text });
-        if let Some((at, message)) = problem {
-            return Err(Diag::new(Span::new(id, at, at), message));
+        if let Some(message) = problem {
+            return Err(Diag::new(Span::new(id, 0, 0), message));
         }
         let text = self.map.file(id).map(|f| f.text.as_str()).unwrap_or("");
         let tokens = lexer::lex(id, text)?;
@@ -134,7 +179,8 @@ impl lower::Files for Loader<'_> {
             return Err(Diag::new(
                 path_span,
                 format!(
-                    "include file \"{name}\" not found (searched the scene's folder{}{})",
+                    "include file \"{}\" not found (searched the scene's folder{}{})",
+                    visible(name),
                     if searched.is_empty() { "" } else { ", " },
                     searched.join(", ")
                 ),

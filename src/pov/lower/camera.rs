@@ -59,7 +59,7 @@ impl Lowerer<'_> {
             if parallel(right, cam.sky) {
                 // POV-Ray 3.7 warns and keeps the given `right` (checked by rendering: looking
                 // straight down with the default sky, +x is right and +z is up).
-                self.warnings.push(Diag::new(
+                self.warn(Diag::new(
                     target_span,
                     "Camera location to look_at direction and sky direction should be \
                      different. Using default/supplied right vector instead.",

@@ -195,13 +195,19 @@ impl Lowerer<'_> {
             // to -z (checked with a POV-Ray 3.7 render; see tests/pov_parse.rs).
             TransformKind::Rotate => rotation_x(v.x).then(rotation_y(v.y)).then(rotation_z(v.z)).into(),
             TransformKind::Scale => {
+                // POV-Ray's behaviour: keep each axis scaled by 0 unscaled, and warn, once for
+                // the whole `scale` (not once per axis: `scale 0` is one mistake).
                 let mut s = v;
-                for i in 0..3 {
+                let mut zero_axes = Vec::new();
+                for (i, axis) in ["x", "y", "z"].into_iter().enumerate() {
                     if s[i] == 0.0 {
-                        // POV-Ray's behaviour: warn and keep the axis unscaled.
-                        self.warnings.push(Diag::new(t.span, "Illegal Value: Scale by 0.0. Changed to 1.0."));
                         s[i] = 1.0;
+                        zero_axes.push(axis);
                     }
+                }
+                if !zero_axes.is_empty() {
+                    let axes = zero_axes.join(", ");
+                    self.warn(Diag::new(t.span, format!("Illegal Value: Scale by 0.0 ({axes}). Changed to 1.0.")));
                 }
                 DMat4::from_scale(s)
             }

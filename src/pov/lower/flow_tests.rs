@@ -3,7 +3,8 @@
 
 use glam::{DMat4, DVec3};
 
-use super::tests::lower;
+use super::tests::{lower, lower_with_output};
+use super::Output;
 use crate::scene::desc::{Color, PigmentPattern, ShapeDesc};
 
 /// The float `expr` evaluates to, read back through a sphere radius offset.
@@ -213,4 +214,16 @@ fn messages() {
     assert_eq!(w.len(), 1);
     assert_eq!(w[0].message, "w=1.50");
     assert_eq!(lower("#if (1) #error \"stop\" #end").unwrap_err(), "#error: stop");
+}
+
+#[test]
+fn debug_text_is_output_in_order_with_warnings() {
+    let (_, out) =
+        lower_with_output("#debug \"a=\"\n#debug concat(str(2, 0, 0), \"\\n\")\n#warning \"w\"\n#debug \"end\"")
+            .unwrap();
+    assert_eq!(out.len(), 4, "{out:?}");
+    assert_eq!(out[0], Output::Debug("a=".into()));
+    assert_eq!(out[1], Output::Debug("2\n".into()));
+    assert!(matches!(&out[2], Output::Warning(d) if d.message == "w"), "{:?}", out[2]);
+    assert_eq!(out[3], Output::Debug("end".into()));
 }

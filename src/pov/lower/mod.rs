@@ -33,6 +33,14 @@ enum Flow {
     Break(Span),
 }
 
+/// What a scene prints while it is lowered: `#debug` text (POV-Ray's debug stream, exactly as
+/// written, newlines included) and located warnings.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Output {
+    Debug(String),
+    Warning(Diag),
+}
+
 /// What lowering needs from the loader: included files' syntax trees, and positions for
 /// `ObjectDesc::source`.
 pub trait Files {
@@ -51,7 +59,8 @@ pub struct Lowerer<'f> {
     version: f64,
     /// `#declare`d names (index 0) and one map of `#local` names per open file.
     scopes: Vec<HashMap<String, Value>>,
-    pub warnings: Vec<Diag>,
+    /// `#debug` text and warnings, in the order the scene produced them.
+    output: Vec<Output>,
     options: ParseOptions,
     /// The children gathered so far by each open `union`/`merge`, innermost last.
     csg_stack: Vec<Vec<Part>>,
@@ -66,20 +75,25 @@ impl<'f> Lowerer<'f> {
             scene: SceneDesc::default(),
             version: 3.7,
             scopes: vec![HashMap::new(), HashMap::new()],
-            warnings: Vec::new(),
+            output: Vec::new(),
             options: options.clone(),
             csg_stack: Vec::new(),
             loop_iterations: 0,
         }
     }
 
-    /// Lowers the main file's statements and returns the finished scene.
-    pub fn finish(mut self, stmts: &[Stmt]) -> PResult<(SceneDesc, Vec<Diag>)> {
+    /// Lowers the main file's statements and returns the finished scene with what it printed.
+    pub fn finish(mut self, stmts: &[Stmt]) -> PResult<(SceneDesc, Vec<Output>)> {
         if let Flow::Break(span) = self.stmts(stmts)? {
             return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
         }
         self.scene.version = self.version;
-        Ok((self.scene, self.warnings))
+        Ok((self.scene, self.output))
+    }
+
+    /// Records a warning (POV-Ray's "Scale by 0.0", `#warning`, ...) for the caller to print.
+    fn warn(&mut self, diag: Diag) {
+        self.output.push(Output::Warning(diag));
     }
 
     fn lookup(&self, name: &str) -> Option<&Value> {
@@ -226,10 +240,13 @@ impl<'f> Lowerer<'f> {
             }
             Stmt::Break { span } => return Ok(Flow::Break(*span)),
             Stmt::Message { kind, text, span } => match kind {
-                MessageKind::Debug => {}
+                MessageKind::Debug => {
+                    let text = self.string(text)?;
+                    self.output.push(Output::Debug(text));
+                }
                 MessageKind::Warning => {
                     let text = self.string(text)?;
-                    self.warnings.push(Diag::new(*span, text));
+                    self.warn(Diag::new(*span, text));
                 }
                 MessageKind::Error => {
                     let text = self.string(text)?;

@@ -88,7 +88,7 @@ impl Lowerer<'_> {
         }
         if parts.is_empty() {
             let word = if merge { "merge" } else { "union" };
-            self.warnings.push(Diag::new(span, format!("`{word}` has no objects")));
+            self.warn(Diag::new(span, format!("`{word}` has no objects")));
         }
         Ok(Group { parts, csg: true })
     }

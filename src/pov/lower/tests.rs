@@ -2,7 +2,7 @@
 
 use glam::{DMat4, DVec3};
 
-use super::{Files, Lowerer};
+use super::{Files, Lowerer, Output};
 use crate::pov::ast::Stmt;
 use crate::pov::lexer::lex;
 use crate::pov::parser::parse;
@@ -22,7 +22,21 @@ impl Files for NoFiles {
     }
 }
 
+/// Lowers `text`, returning the scene and its warnings.
 pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
+    let (scene, output) = lower_with_output(text)?;
+    let warnings = output
+        .into_iter()
+        .filter_map(|o| match o {
+            Output::Warning(d) => Some(d),
+            Output::Debug(_) => None,
+        })
+        .collect();
+    Ok((scene, warnings))
+}
+
+/// Lowers `text`, returning the scene and everything it printed (`#debug` text too).
+pub(super) fn lower_with_output(text: &str) -> Result<(SceneDesc, Vec<Output>), String> {
     let tokens = lex(0, text).map_err(|d| d.message)?;
     let stmts = parse(&tokens, text).map_err(|d| d.message)?;
     let mut files = NoFiles;
@@ -101,6 +115,16 @@ fn scale_by_zero_warns_and_keeps_the_axis() {
     let (s, w) = lower("sphere { 0, 1 scale <2, 0, 1> }").unwrap();
     assert_eq!(s.objects[0].transform.matrix, DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0)));
     assert_eq!(w.len(), 1);
+}
+
+#[test]
+fn scale_0_warns_once_not_once_per_axis() {
+    let (s, w) = lower("sphere { 0, 1 scale 0 }").unwrap();
+    assert_eq!(s.objects[0].transform.matrix, DMat4::IDENTITY);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!(w[0].message, "Illegal Value: Scale by 0.0 (x, y, z). Changed to 1.0.");
+    let (_, w) = lower("sphere { 0, 1 scale <2, 0, 1> }").unwrap();
+    assert_eq!(w[0].message, "Illegal Value: Scale by 0.0 (y). Changed to 1.0.");
 }
 
 #[test]

@@ -23,7 +23,7 @@ const BLOCK_ENDS: &[&str] = &["end", "else", "elseif", "case", "range"];
 
 /// Parses one file's tokens (`text` is only used to quote positions in messages).
 pub fn parse(tokens: &[Token], text: &str) -> PResult<Vec<Stmt>> {
-    let mut p = Parser { tokens, pos: 0, depth: 0, text, in_csg: false };
+    let mut p = Parser { tokens, pos: 0, depth: 0, text, in_csg: false, bare_name: None };
     let stmts = p.stmts(false)?;
     Ok(stmts)
 }
@@ -35,6 +35,10 @@ pub(crate) struct Parser<'a> {
     text: &'a str,
     /// True while reading the children of a `union`/`merge` (modifiers end the list).
     in_csg: bool,
+    /// The token index of a lone word just read as a declared name where a keyword could also
+    /// stand (`finish { F_Shiny ...`, a light's bare colour): `unknown_in` checks whether it was
+    /// a misspelt keyword instead (`finish { phongg 1 }`).
+    bare_name: Option<usize>,
 }
 
 impl<'a> Parser<'a> {
@@ -126,9 +130,40 @@ impl<'a> Parser<'a> {
         matches!(self.peek().kind, TokenKind::Punct('}') | TokenKind::Eof)
     }
 
+    /// Parses the value at the cursor with `value`, remembering it in `bare_name` when it is
+    /// one lone word (which may be a misspelt keyword rather than a declared name).
+    fn maybe_bare_name<T>(&mut self, value: impl FnOnce(&mut Self) -> PResult<T>) -> PResult<T> {
+        let start = self.pos;
+        let v = value(self)?;
+        let lone_word = self.pos == start + 1 && matches!(self.tokens[start].kind, TokenKind::Ident(_));
+        self.bare_name = lone_word.then_some(start);
+        Ok(v)
+    }
+
+    /// Whether the word at token `at`, read as a declared name, was rather meant as one of the
+    /// `expected` keywords: the token after it cannot follow a name there (checked by the
+    /// caller), and it is a value (`phongg 1`) or the word is a near miss of a keyword (`colr
+    /// Red`). `F_Shiny phongg 1` still blames `phongg`.
+    fn misread_keyword(&self, at: usize, expected: &[&str]) -> Option<&'a Token> {
+        let word_token = &self.tokens[at];
+        let TokenKind::Ident(word) = &word_token.kind else { return None };
+        let followed_by_value =
+            !matches!(self.peek().kind, TokenKind::Ident(_) | TokenKind::Punct('}') | TokenKind::Eof);
+        let near_miss = expected.iter().any(|k| is_near_miss(word, k));
+        (followed_by_value || near_miss).then_some(word_token)
+    }
+
     /// The error for a word a block does not accept.
     fn unknown_in(&self, context: &str, expected: &[&str]) -> Diag {
-        let t = self.peek();
+        if let Some(at) = self.bare_name.filter(|&at| at + 1 == self.pos) {
+            if let Some(word) = self.misread_keyword(at, expected) {
+                return self.unknown_token(word, context, expected);
+            }
+        }
+        self.unknown_token(self.peek(), context, expected)
+    }
+
+    fn unknown_token(&self, t: &Token, context: &str, expected: &[&str]) -> Diag {
         let list = expected.join(", ");
         let message = match &t.kind {
             TokenKind::Ident(word) if is_pov_keyword(word) => {
@@ -418,6 +453,25 @@ impl<'a> Parser<'a> {
         self.eat_punct(';');
         Ok(Stmt::Declare { name, local, value, span: start.to(name_span) })
     }
+}
+
+/// Whether `word` is one or two edits (insert, delete, replace a character) away from keyword
+/// `keyword`, and not so short that anything is: `phongg`, `colr`, `Color` for `phong`, `color`.
+fn is_near_miss(word: &str, keyword: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (word.chars().collect(), keyword.chars().collect());
+    // Levenshtein distance, one row at a time.
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.iter().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cost = if ca == cb { prev } else { prev + 1 };
+            prev = row[j + 1];
+            row[j + 1] = cost.min(row[j] + 1).min(prev + 1);
+        }
+    }
+    let distance = row[b.len()];
+    distance <= 2 && 2 * distance < b.len()
 }
 
 #[cfg(test)]

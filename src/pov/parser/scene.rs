@@ -136,7 +136,7 @@ impl Parser<'_> {
                     && self.starts_expr(&LIGHT[6..])
                     && !self.peek_ident().is_some_and(super::is_pov_keyword) =>
                 {
-                    color = Some(self.color()?)
+                    color = Some(self.maybe_bare_name(Self::color)?)
                 }
                 _ => return Err(self.unknown_in("light_source", LIGHT)),
             }

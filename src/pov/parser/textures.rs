@@ -53,7 +53,7 @@ impl Parser<'_> {
                 if super::is_pov_keyword(&w) || super::RESERVED.contains(&w.as_str()) {
                     return Ok(None);
                 }
-                Ok(Some(self.expr()?))
+                Ok(Some(self.maybe_bare_name(Self::expr)?))
             }
             _ => Ok(None),
         }

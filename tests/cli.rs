@@ -330,6 +330,7 @@ fn help_wraps_to_the_terminal_width() {
     let help = String::from_utf8_lossy(&out.stdout);
     let widest = help.lines().map(|l| l.chars().count()).max().unwrap_or(0);
     assert!(widest <= 72, "help is {widest} columns wide:\n{help}");
+}
 
 #[test]
 fn render_prints_debug_text_and_scale_0_warning_once() {

@@ -569,3 +569,21 @@ fn run_share(c: &ScalingCmd) -> Result<(), CliError> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slow_cells_are_predicted_before_they_run() {
+        // Brute force with no cell of its own yet: the BVH cell took 2 s making 25 tests per
+        // ray, brute force makes about n + 1 = 1000 (plus the floor): 40 times the work.
+        let p = predict_slow(AccelKind::None, 999, None, 2.0, 25.0);
+        assert_eq!(p, Some(80.0));
+        // From its own last cell, linearly in N: 1.5 s at 1000 objects is 15 s at 10 000.
+        assert_eq!(predict_slow(AccelKind::None, 10_000, Some((1000, 1.5)), 2.0, 25.0), Some(15.0));
+        assert_eq!(predict_slow(AccelKind::Grid, 10_000, Some((1000, 0.25)), 2.0, 25.0), Some(2.5));
+        // The grid's first cell has nothing to go by; --slow-max bounds it.
+        assert_eq!(predict_slow(AccelKind::Grid, 1000, None, 2.0, 25.0), None);
+    }
+}

@@ -308,6 +308,7 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
     if args.repeats < 3 {
         return Err(CliError::user("--repeats must be at least 3 (the median of fewer is noise)"));
     }
+    check_output_folder(&args.output)?;
     check_output_folder(&args.output.join("errors"))?;
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.width, args.height)?;

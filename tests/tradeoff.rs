@@ -108,6 +108,27 @@ fn tradeoff_bad_arguments_exit_2_and_write_nothing() {
 }
 
 #[test]
+fn tradeoff_output_folder_is_checked_before_rendering() {
+    // A folder under a regular file can never be created; the run used to render the whole
+    // sweep (22 s at 1280×720) and only then fail to create it.
+    let dir = scratch("blocked");
+    std::fs::write(&dir, b"a file").unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("reports").display().to_string();
+    // Checked even before the scene is read: a missing scene is not what it reports.
+    let e = fails(&["tradeoff", "no/such/scene.pov", "-o", &out]);
+    assert!(e.contains(&dir.display().to_string()) && e.contains("not a folder"), "{e}");
+    let run = strahl(&["tradeoff", seed(), "-W", "1280", "-H", "720", "-o", &out]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("not a folder") && run.stdout.is_empty(), "{stderr}");
+    assert_eq!(std::fs::read(&dir).unwrap_or_default(), b"a file");
+    // A folder that can be made is checked without being made: a bad scene leaves nothing.
+    let fresh = scratch("fresh");
+    fails(&["tradeoff", "no/such/scene.pov", "-o", &fresh.join("a").join("b").display().to_string()]);
+    assert!(!fresh.exists(), "{} was created", fresh.display());
+}
+
+#[test]
 fn render_presets_and_res_scale() {
     let dir = scratch("presets");
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));

@@ -6,24 +6,26 @@
 //! warm-up), then `repeats` timed frames into pre-allocated images, median; nothing is encoded or
 //! allocated inside the timed part, and the settings take turns so machine noise spreads evenly. The
 //! reports (table, CSV, Markdown, SVG plot with the Pareto front) live in `tradeoff::report` and
-//! `tradeoff::svg`; everything is computed before the output folder is touched, so a bad
-//! argument or scene leaves nothing behind.
+//! `tradeoff::svg`. The output folder is checked first (before the scene is even parsed) but
+//! created only once everything is computed, so a bad argument or scene leaves nothing behind
+//! and a bad `-o` costs no rendering. On a terminal a progress bar shows each phase (scoring,
+//! then timing, with an ETA weighted by what each setting cost to score).
 
 mod report;
 mod svg;
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-pub use report::{csv, mark_front, markdown, pareto_front, table, Context, Row};
+pub use report::{csv, mark_front, markdown, pareto_front, table, Context, Row, Timing, FRONT_RULE};
 pub use svg::plot;
 
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
-use crate::headless::bench::{cpu_model, frame_times};
+use crate::headless::bench::{cpu_model, percentile};
 use crate::headless::capture::frame_t;
-use crate::headless::{load, metrics, output, with_threads, CliError};
+use crate::headless::progress::Progress;
+use crate::headless::{load_sized, metrics, output, with_threads, CliError};
 use crate::render::image::Image;
 use crate::render::precise::Precision;
 use crate::render::preset::Preset;
@@ -139,32 +141,49 @@ impl Frame {
     }
 }
 
-/// Each setting's median frame time over `repeats` frames per camera, averaged over cameras.
-/// The settings take turns frame by frame, so load that comes and goes on a shared machine
-/// falls on all of them alike rather than on whichever ran at the time. The caller renders
-/// every setting once before (`score`), which is the warm-up.
+/// Each setting's frame time over `repeats` frames per camera: the median and the quartiles
+/// (`Timing`), each averaged over cameras. The settings take turns frame by frame, so load that
+/// comes and goes on a shared machine falls on all of them alike rather than on whichever ran
+/// at the time. The caller renders every setting once before (`score`), which is the warm-up.
+/// `done(repeat, setting)` is called after each setting's frames of a round, outside the timed
+/// part (for a progress bar).
 pub fn time_settings(
     scene: &Scene,
     cameras: &[Camera],
     settings: &[Setting],
     repeats: u32,
     frame: &mut Frame,
-) -> Vec<f64> {
+    mut done: impl FnMut(u32, usize),
+) -> Vec<Timing> {
     let (w, h) = (frame.image.width, frame.image.height);
     let render_settings: Vec<RenderSettings> = settings.iter().map(|s| s.render_settings(w, h)).collect();
     // times[setting][camera][repeat], allocated before the first timed frame.
     let mut times = vec![vec![Vec::with_capacity(repeats as usize); cameras.len()]; settings.len()];
-    for _ in 0..repeats {
+    for r in 0..repeats {
         for (i, (s, rs)) in settings.iter().zip(&render_settings).enumerate() {
             for (c, camera) in cameras.iter().enumerate() {
                 let start = Instant::now();
                 render_scaled(scene, camera, rs, s.res_scale, &mut frame.low, &mut frame.image);
                 times[i][c].push(start.elapsed().as_secs_f64() * 1e3);
             }
+            done(r, i);
         }
     }
     let n = cameras.len().max(1) as f64;
-    times.iter().map(|per_camera| per_camera.iter().map(|t| frame_times(t).median_ms).sum::<f64>() / n).collect()
+    times
+        .iter()
+        .map(|per_camera| {
+            let mut t = Timing { lo: 0.0, median: 0.0, hi: 0.0 };
+            for camera in per_camera {
+                let mut sorted = camera.clone();
+                sorted.sort_by(f64::total_cmp);
+                t.lo += percentile(&sorted, 25.0) / n;
+                t.median += percentile(&sorted, 50.0) / n;
+                t.hi += percentile(&sorted, 75.0) / n;
+            }
+            t
+        })
+        .collect()
 }
 
 /// |a − b| per channel times `ERROR_GAIN`, clipped: black where a frame matches the reference.
@@ -197,6 +216,13 @@ fn run_sweep(scene: &Scene, cameras: &[Camera], args: &TradeoffArgs) -> Results 
     let reference = Setting::preset(Preset::Reference);
     let ref_settings = reference.render_settings(args.width, args.height);
     let mut frame = Frame::new(args.width, args.height);
+    let settings = sweep();
+    // Scoring: the reference, then each setting once per camera. Costs differ a hundredfold
+    // and are not known yet, so this bar shows the time so far rather than a guess.
+    let n_cam = cameras.len() as u64;
+    let scored = n_cam * (1 + settings.len() as u64);
+    let scoring = Progress::new(scored, "frames scored", false).without_eta();
+    scoring.update_weighted(0, 0.0, "reference");
     let mut refs: Vec<Vec<u8>> = cameras
         .iter()
         .map(|c| {
@@ -204,23 +230,38 @@ fn run_sweep(scene: &Scene, cameras: &[Camera], args: &TradeoffArgs) -> Results 
             frame.image.to_rgb8(scene.srgb)
         })
         .collect();
-    let settings = sweep();
-    // Progress on a terminal only, so logs and pipes get just the table.
-    let progress = std::io::stderr().is_terminal();
-    if progress {
-        eprint!("scoring {} settings, then timing them {} times each ...", settings.len(), args.repeats);
-    }
-    let (mut rows, mut error_maps) = (Vec::new(), Vec::new());
-    for s in &settings {
+    let (mut rows, mut error_maps, mut cost) = (Vec::new(), Vec::new(), Vec::new());
+    for (i, s) in settings.iter().enumerate() {
+        let done = n_cam * (1 + i as u64);
+        scoring.update_weighted(done, done as f64 / scored as f64, &s.name);
+        let start = Instant::now();
         let (m, first) = score(scene, cameras, &refs, s, &mut frame);
+        cost.push(start.elapsed().as_secs_f64());
         error_maps.push((s.slug(), error_map(&first, &refs[0])));
         rows.push(Row::new(s, scene.max_trace_level, m));
     }
-    for (row, ms) in rows.iter_mut().zip(time_settings(scene, cameras, &settings, args.repeats, &mut frame)) {
-        row.ms = ms;
-    }
-    if progress {
-        eprint!("\r{:<72}\r", "");
+    scoring.update(scored);
+    scoring.finish();
+    // Timing: every round costs what scoring each setting did, so the ETA weights by that.
+    let timing = Progress::new(n_cam * settings.len() as u64 * args.repeats as u64, "frames timed", false);
+    let round: f64 = cost.iter().sum::<f64>().max(1e-9);
+    let (mut frames, mut work) = (0, 0.0);
+    timing.update_weighted(0, 0.0, &settings[0].name);
+    let times = time_settings(scene, cameras, &settings, args.repeats, &mut frame, |r, i| {
+        frames += n_cam;
+        work += cost[i];
+        // Name what runs next: the following setting, or the first one of the next round.
+        let (r, i) = if i + 1 < settings.len() { (r, i + 1) } else { (r + 1, 0) };
+        let note = if r < args.repeats {
+            format!("round {}/{}: {}", r + 1, args.repeats, settings[i].name)
+        } else {
+            String::new()
+        };
+        timing.update_weighted(frames, work / (round * args.repeats as f64), &note);
+    });
+    timing.finish();
+    for (row, t) in rows.iter_mut().zip(times) {
+        row.set_timing(t);
     }
     mark_front(&mut rows);
     Results { rows, reference: refs.swap_remove(0), error_maps }
@@ -228,6 +269,34 @@ fn run_sweep(scene: &Scene, cameras: &[Camera], args: &TradeoffArgs) -> Results 
 
 fn create_dir(dir: &Path) -> Result<(), CliError> {
     std::fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
+}
+
+/// Fails unless `dir` can be made and written: its nearest existing ancestor must be a folder
+/// this process can create a file in. Creates nothing (the probe file is removed at once), so
+/// the folder appears only when the reports are written.
+fn check_output_folder(dir: &Path) -> Result<(), CliError> {
+    let mut existing = dir;
+    while std::fs::metadata(existing).is_err() {
+        existing = match existing.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        if existing == Path::new(".") {
+            break;
+        }
+    }
+    if !existing.is_dir() {
+        return Err(CliError::user(format!(
+            "{}: exists and is not a folder, so {} cannot be created",
+            existing.display(),
+            dir.display()
+        )));
+    }
+    let probe = existing.join(format!(".strahl-probe.{}.tmp", std::process::id()));
+    std::fs::File::create(&probe)
+        .map_err(|e| CliError::user(format!("{}: cannot write in this folder: {e}", existing.display())))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
 }
 
 /// `strahl tradeoff SCENE ...`: checks every argument and loads everything before rendering,
@@ -239,11 +308,10 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
     if args.repeats < 3 {
         return Err(CliError::user("--repeats must be at least 3 (the median of fewer is noise)"));
     }
-    if args.output.exists() && !args.output.is_dir() {
-        return Err(CliError::user(format!("{}: exists and is not a folder", args.output.display())));
-    }
+    check_output_folder(&args.output)?;
+    check_output_folder(&args.output.join("errors"))?;
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
-    let (desc, _) = load(&args.scene, &args.include)?;
+    let (desc, _) = load_sized(&args.scene, &args.include, args.width, args.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     // The reference preset and the precision knob trace in f64.
     scene.prepare_precise(&desc);

@@ -2,12 +2,16 @@
 //! POV-Ray writer so that POV-Ray 3.7 can render exactly the same scene (`strahl gen`).
 //!
 //! Positions, sizes and colours come from a hash of (object index, field), never from a random
-//! generator, so `spheres(n)` is the same scene on every machine and every run. The objects fill
+//! generator, so `generate(kind, n, ..)` is the same scene on every machine and every run. The objects fill
 //! a cube whose edge grows with n^(1/3), so the object density (and the depth complexity a ray
 //! sees) stays about the same as n grows and frame time measures the accelerator, not the scene.
 //!
 //! Coordinates are rounded to 1e-4 before they are stored, so the POV file stays short and every
 //! number in it reads back to the same f64 (`write_pov` prints the shortest round-trip form).
+//!
+//! The camera fits the image it is rendered at: its `right` vector is the image's aspect long,
+//! and `write_generated` writes it as `right <…>*image_width/image_height`, POV-Ray's own idiom,
+//! so a generated file is not stretched at POV-Ray's default 640×480 or at 1280×720.
 
 use std::fmt::Write as _;
 
@@ -38,6 +42,14 @@ impl Kind {
             Kind::Boxes => "boxes",
             Kind::Triangles => "triangles",
             Kind::Mixed => "mixed",
+        }
+    }
+
+    /// What `n` objects of this kind are called in a sentence: `10000 spheres`.
+    pub fn plural(self) -> &'static str {
+        match self {
+            Kind::Mixed => "mixed objects",
+            k => k.name(),
         }
     }
 
@@ -121,9 +133,17 @@ fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
     }
 }
 
+/// Length of the camera's `direction` for a unit-long `right`: 60° across a 16:9 image. It stays
+/// the same at every aspect, so the vertical field of view does (36°) and the horizontal one is
+/// the image's (60° at 16:9, 47° at 4:3), as with POV-Ray's `right x*image_width/image_height`.
+fn direction_length() -> f64 {
+    0.5 * (16.0 / 9.0) / 30f64.to_radians().tan()
+}
+
 /// A scene of `n` objects of `kind` above a checkered floor, lit by two lights, seen by a camera
-/// (16:9, 60°) that frames the whole cloud from the front and above.
-pub fn generate(kind: Kind, n: usize) -> SceneDesc {
+/// that frames the whole cloud from the front and above, for an image of `width`×`height`
+/// (its `right` vector is `width / height` long, so nothing is stretched).
+pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
     let edge = extent(n);
     let mut objects = Vec::with_capacity(n + 1);
     objects.push(object(
@@ -151,8 +171,11 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
     // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
     let look_at = DVec3::new(0.0, 0.5 * edge, 0.0);
     let location = qv(DVec3::new(0.3 * edge, 0.85 * edge + 2.0, -2.0 * edge - 4.0));
-    let like = Camera { location, direction: DVec3::Z, right: DVec3::X * (16.0 / 9.0), up: DVec3::Y };
-    let cam = Camera::looking_at(location, look_at, Some(60.0), &like);
+    let like = Camera { location, direction: DVec3::Z * direction_length(), right: DVec3::X, up: DVec3::Y };
+    let cam = Camera::looking_at(location, look_at, None, &like);
+    // `right` is unit-long here; scaled as the parser evaluates `<r>*image_width/image_height`,
+    // so the written file reads back to exactly this vector.
+    let right = cam.right * width as f64 / height as f64;
     let (lx, ly) = (edge + 5.0, 2.0 * edge + 10.0);
     SceneDesc {
         // `write_pov` starts the file with `#version`.
@@ -160,7 +183,7 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
         camera: CameraDesc {
             location: cam.location,
             direction: cam.direction,
-            right: cam.right,
+            right,
             up: cam.up,
             ..CameraDesc::default()
         },
@@ -179,26 +202,26 @@ pub fn generate(kind: Kind, n: usize) -> SceneDesc {
     }
 }
 
-pub fn spheres(n: usize) -> SceneDesc {
-    generate(Kind::Spheres, n)
+/// `generate(kind, n, w, h)` as POV-Ray 3.7 scene text for any image size: the camera's right
+/// vector is written as `right <r>*image_width/image_height`, so `image_width` and
+/// `image_height` (strahl's `-W`/`-H`, POV-Ray's `+W`/`+H`) decide the aspect when it is read.
+pub fn write_generated(kind: Kind, n: usize) -> Result<String, String> {
+    // At 1×1, `right` is the unit-long r itself (r * 1 / 1 is exact).
+    let desc = generate(kind, n, 1, 1);
+    let r = desc.camera.right;
+    write(&desc, &format!("<{}, {}, {}>*image_width/image_height", r.x, r.y, r.z))
 }
 
-pub fn boxes(n: usize) -> SceneDesc {
-    generate(Kind::Boxes, n)
-}
-
-pub fn triangles(n: usize) -> SceneDesc {
-    generate(Kind::Triangles, n)
-}
-
-pub fn mixed(n: usize) -> SceneDesc {
-    generate(Kind::Mixed, n)
-}
-
-/// Writes `desc` as POV-Ray 3.7 scene text. Only what the generators produce is supported:
-/// untransformed spheres, boxes, triangles and planes with solid or checker pigments; anything
-/// else is an error naming what it found.
+/// Writes `desc` as POV-Ray 3.7 scene text, camera vectors as they are. Only what the
+/// generators produce is supported: untransformed spheres, boxes, triangles and planes with
+/// solid or checker pigments; anything else is an error naming what it found.
 pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
+    let r = desc.camera.right;
+    write(desc, &format!("<{}, {}, {}>", r.x, r.y, r.z))
+}
+
+/// `write_pov` with the camera's `right` written as the expression `right`.
+fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
     let mut o = String::with_capacity(128 * desc.objects.len() + 1024);
     let v = |p: DVec3| format!("<{}, {}, {}>", p.x, p.y, p.z);
     let rgb = |c: &Color| {
@@ -227,10 +250,9 @@ pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
     }
     let _ = writeln!(
         o,
-        "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n}}",
+        "camera {{\n  location {}\n  direction {}\n  right {right}\n  up {}\n}}",
         v(c.location),
         v(c.direction),
-        v(c.right),
         v(c.up)
     );
     let _ = writeln!(o, "background {{ color {} }}", rgb(&desc.background)?);
@@ -309,13 +331,13 @@ mod tests {
     #[test]
     fn deterministic_and_sized() {
         for kind in Kind::ALL {
-            let a = generate(kind, 300);
-            assert_eq!(a, generate(kind, 300), "{kind:?}");
+            let a = generate(kind, 300, 640, 480);
+            assert_eq!(a, generate(kind, 300, 640, 480), "{kind:?}");
             // The floor plus n objects.
             assert_eq!(a.objects.len(), 301);
             assert_eq!(a.lights.len(), 2);
         }
-        assert_eq!(generate(Kind::Spheres, 0).objects.len(), 1);
+        assert_eq!(generate(Kind::Spheres, 0, 640, 480).objects.len(), 1);
     }
 
     #[test]
@@ -329,14 +351,14 @@ mod tests {
                 })
                 .fold(0.0, f64::max)
         };
-        let (small, big) = (max_x(&spheres(1000)), max_x(&spheres(8000)));
+        let (small, big) = (max_x(&generate(Kind::Spheres, 1000, 4, 3)), max_x(&generate(Kind::Spheres, 8000, 4, 3)));
         assert!((big / small - 2.0).abs() < 0.1, "{small} {big}");
         assert!(small <= extent(1000) / 2.0 + 1e-9);
     }
 
     #[test]
     fn some_reflect_and_kinds_mix() {
-        let d = mixed(900);
+        let d = generate(Kind::Mixed, 900, 4, 3);
         let reflective = d.objects.iter().filter(|o| o.texture.finish.reflection != DVec3::ZERO).count();
         assert!((30..=90).contains(&reflective), "{reflective}");
         for k in ["sphere", "box", "triangle"] {
@@ -346,8 +368,22 @@ mod tests {
 
     #[test]
     fn write_pov_rejects_what_it_cannot_write() {
-        let mut d = spheres(2);
+        let mut d = generate(Kind::Spheres, 2, 4, 3);
         d.objects[1].shape = ShapeDesc::Polygon { points: vec![] };
         assert!(write_pov(&d).unwrap_err().contains("polygon"));
+    }
+
+    #[test]
+    fn generated_camera_is_not_stretched_at_any_aspect() {
+        // The image-plane vectors are in the aspect of the image: 4:3 at POV-Ray's default
+        // 640×480 (the 16:9 `right` once written stretched every default render), 16:9 at 1280×720.
+        for (w, h) in [(640, 480), (1280, 720), (480, 640)] {
+            let c = generate(Kind::Boxes, 10, w, h).camera;
+            let aspect = c.right.length() / c.up.length();
+            assert!((aspect - w as f64 / h as f64).abs() < 1e-12, "{w}x{h}: {aspect}");
+            assert!(c.right.dot(c.up).abs() < 1e-12 && c.right.dot(c.direction).abs() < 1e-9);
+        }
+        let text = write_generated(Kind::Boxes, 10).unwrap_or_else(|e| panic!("{e}"));
+        assert!(text.contains("*image_width/image_height\n"), "{text}");
     }
 }

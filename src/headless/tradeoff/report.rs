@@ -18,7 +18,11 @@ pub struct Row {
     /// `None`: as the scene's textures ask.
     pub max_octaves: Option<u32>,
     pub precision: Precision,
+    /// Median frame time, and the lower and upper quartile of the repeats around it (see
+    /// `Timing`).
     pub ms: f64,
+    pub ms_lo: f64,
+    pub ms_hi: f64,
     pub psnr_db: f64,
     pub ssim: f64,
     pub max_abs: u8,
@@ -37,6 +41,8 @@ impl Row {
             max_octaves: s.quality.max_octaves,
             precision: s.quality.precision,
             ms: m.ms,
+            ms_lo: m.ms,
+            ms_hi: m.ms,
             psnr_db: m.psnr_db,
             ssim: m.ssim,
             max_abs: m.max_abs,
@@ -48,26 +54,85 @@ impl Row {
     pub fn error(&self) -> f64 {
         (1.0 - self.ssim).max(0.0)
     }
+
+    /// The frame time as measured.
+    pub fn timing(&self) -> Timing {
+        Timing { lo: self.ms_lo, median: self.ms, hi: self.ms_hi }
+    }
+
+    /// Sets the frame time from a measurement.
+    pub fn set_timing(&mut self, t: Timing) {
+        (self.ms_lo, self.ms, self.ms_hi) = (t.lo, t.median, t.hi);
+    }
 }
 
-/// Indices of the points no other point dominates, minimising both coordinates, in order of
-/// increasing x. A point is dominated when another is no worse in both and better in one, so
-/// equal points are all kept. Points with a NaN coordinate are never on the front.
-pub fn pareto_front(points: &[(f64, f64)]) -> Vec<usize> {
-    let dominates = |a: (f64, f64), b: (f64, f64)| a.0 <= b.0 && a.1 <= b.1 && (a.0 < b.0 || a.1 < b.1);
-    let mut front: Vec<usize> = (0..points.len())
-        .filter(|&i| {
-            let p = points[i];
-            !p.0.is_nan() && !p.1.is_nan() && !points.iter().any(|&q| dominates(q, p))
-        })
-        .collect();
-    front.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0).then(points[a].1.total_cmp(&points[b].1)));
+/// A frame time as measured: the median of the repeats and the spread around it, from the lower
+/// to the upper quartile (nearest rank; with 3 repeats that is their min and max). Two times
+/// whose spreads overlap cannot be told apart on this machine: they tie.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    pub lo: f64,
+    pub median: f64,
+    pub hi: f64,
+}
+
+impl Timing {
+    /// A time without spread (a single measurement, or a synthetic one).
+    pub fn exact(ms: f64) -> Timing {
+        Timing { lo: ms, median: ms, hi: ms }
+    }
+
+    fn is_nan(&self) -> bool {
+        self.lo.is_nan() || self.median.is_nan() || self.hi.is_nan()
+    }
+}
+
+/// The rule behind the ★, for the Markdown report.
+pub const FRONT_RULE: &str = "★ marks the Pareto front of (ms, 1 − SSIM), with timing noise allowed for: a \
+     setting's time is the spread of its repeats from the lower to the upper quartile (with 3 repeats, \
+     their min and max; averaged over cameras), and two times tie when their spreads overlap. A setting \
+     is off the front when another is at least as close to the reference and clearly faster (the spreads \
+     do not overlap), or closer and not clearly slower. Settings with the same error whose times tie, \
+     directly or through a chain of ties, count as one point and get one mark, so settings that render \
+     the same image are always marked alike.";
+
+/// Indices of the points on the Pareto front of (time, error), both minimised, in order of
+/// increasing median time, by the rule in `FRONT_RULE`: points of equal error whose spreads
+/// overlap (through chains too) are merged into one point spanning their spreads, and a merged
+/// point is dominated by one that is no worse in error, not clearly slower, and either closer
+/// or clearly faster. With exact times this is the ordinary Pareto front (equal points are all
+/// kept). Points with a NaN coordinate are never on the front.
+pub fn pareto_front(points: &[(Timing, f64)]) -> Vec<usize> {
+    // (error, lo, hi, members) per merged point.
+    let mut groups: Vec<(f64, f64, f64, Vec<usize>)> = Vec::new();
+    let mut order: Vec<usize> = (0..points.len()).filter(|&i| !points[i].0.is_nan() && !points[i].1.is_nan()).collect();
+    order.sort_by(|&a, &b| points[a].1.total_cmp(&points[b].1).then(points[a].0.lo.total_cmp(&points[b].0.lo)));
+    for i in order {
+        let (t, e) = points[i];
+        // Sorted by error, then start of spread: a point joins the last group when it has the
+        // same error and its spread starts before that group's ends.
+        match groups.last_mut() {
+            Some(g) if g.0 == e && t.lo <= g.2 => {
+                g.2 = g.2.max(t.hi);
+                g.3.push(i);
+            }
+            _ => groups.push((e, t.lo, t.hi, vec![i])),
+        }
+    }
+    let dominates = |k: &(f64, f64, f64, Vec<usize>), l: &(f64, f64, f64, Vec<usize>)| {
+        let not_slower = k.1 <= l.2;
+        let clearly_faster = k.2 < l.1;
+        k.0 <= l.0 && not_slower && (k.0 < l.0 || clearly_faster)
+    };
+    let mut front: Vec<usize> =
+        groups.iter().filter(|g| !groups.iter().any(|k| dominates(k, g))).flat_map(|g| g.3.iter().copied()).collect();
+    front.sort_by(|&a, &b| points[a].0.median.total_cmp(&points[b].0.median).then(points[a].1.total_cmp(&points[b].1)));
     front
 }
 
 /// Sets `front` on the rows on the Pareto front of (ms, 1 − SSIM).
 pub fn mark_front(rows: &mut [Row]) {
-    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.ms, r.error())).collect();
+    let points: Vec<(Timing, f64)> = rows.iter().map(|r| (r.timing(), r.error())).collect();
     let front = pareto_front(&points);
     for (i, r) in rows.iter_mut().enumerate() {
         r.front = front.contains(&i);
@@ -113,16 +178,17 @@ fn octaves_text(o: Option<u32>) -> String {
 }
 
 pub const CSV_HEADER: &str =
-    "setting,res_scale,aa,max_trace_level,shadows,max_octaves,precision,ms,speedup,psnr_db,ssim,one_minus_ssim,max_abs_err,front";
+    "setting,res_scale,aa,max_trace_level,shadows,max_octaves,precision,ms,ms_lo,ms_hi,speedup,psnr_db,ssim,one_minus_ssim,max_abs_err,front";
 
 /// One line per row under `CSV_HEADER`. Numbers are plain decimals (`inf` for a PSNR of an
-/// exact match); `max_octaves` is `scene` where the scene's own counts apply.
+/// exact match); `max_octaves` is `scene` where the scene's own counts apply; `ms_lo` and
+/// `ms_hi` are the spread of the repeats the front allows for (`Timing`).
 pub fn csv(rows: &[Row]) -> String {
     let mut o = format!("{CSV_HEADER}\n");
     for r in rows {
         let _ = writeln!(
             o,
-            "{},{},{},{},{},{},{},{:.3},{:.3},{},{:.6},{:.6},{},{}",
+            "{},{},{},{},{},{},{},{:.3},{:.3},{:.3},{:.3},{},{:.6},{:.6},{},{}",
             r.name,
             r.res_scale,
             r.aa,
@@ -131,6 +197,8 @@ pub fn csv(rows: &[Row]) -> String {
             octaves_text(r.max_octaves),
             r.precision,
             r.ms,
+            r.ms_lo,
+            r.ms_hi,
             speedup(rows, r),
             psnr_text(r.psnr_db),
             r.ssim,
@@ -151,17 +219,19 @@ pub fn markdown(rows: &[Row], ctx: &Context, svg_name: &str) -> String {
         "Errors are against `--preset reference` (4×4 aa in f64, everything else as the scene asks): PSNR over \
          all cameras' pixels, SSIM (8×8 blocks of luma) averaged over cameras, and the largest 8-bit \
          error of any channel in any frame. Each row moves one knob from `full`, except the presets. \
-         ★ marks the Pareto front of (ms, 1 − SSIM): no other setting is both faster and closer. \
          Regenerate with `strahl tradeoff`.\n\n",
     );
-    o.push_str("| setting | ms | speedup | PSNR dB | SSIM | 1 − SSIM | max abs err | front |\n");
-    o.push_str("|---|--:|--:|--:|--:|--:|--:|:-:|\n");
+    let _ = writeln!(o, "{FRONT_RULE}\n");
+    o.push_str("| setting | ms | spread | speedup | PSNR dB | SSIM | 1 − SSIM | max abs err | front |\n");
+    o.push_str("|---|--:|--:|--:|--:|--:|--:|--:|:-:|\n");
     for r in rows {
         let _ = writeln!(
             o,
-            "| `--{}` | {:.2} | {:.2}× | {} | {:.4} | {:.5} | {} | {} |",
+            "| `--{}` | {:.2} | {:.2}–{:.2} | {:.2}× | {} | {:.4} | {:.5} | {} | {} |",
             r.name,
             r.ms,
+            r.ms_lo,
+            r.ms_hi,
             speedup(rows, r),
             psnr_text(r.psnr_db).replace("inf", "∞"),
             r.ssim,
@@ -180,15 +250,16 @@ pub fn table(rows: &[Row], ctx: &Context) -> String {
     let width = rows.iter().map(|r| r.name.len()).max().unwrap_or(0).max(7);
     let _ = writeln!(
         o,
-        "{:<width$}  {:>9}  {:>7}  {:>7}  {:>7}  {:>8}  {:>7}  front",
-        "setting", "ms", "speedup", "PSNR dB", "SSIM", "1-SSIM", "max err"
+        "{:<width$}  {:>9}  {:>15}  {:>7}  {:>7}  {:>7}  {:>8}  {:>7}  front",
+        "setting", "ms", "spread", "speedup", "PSNR dB", "SSIM", "1-SSIM", "max err"
     );
     for r in rows {
         let _ = writeln!(
             o,
-            "{:<width$}  {:>9.2}  {:>6.2}x  {:>7}  {:>7.4}  {:>8.5}  {:>7}  {}",
+            "{:<width$}  {:>9.2}  {:>15}  {:>6.2}x  {:>7}  {:>7.4}  {:>8.5}  {:>7}  {}",
             r.name,
             r.ms,
+            format!("{:.2}-{:.2}", r.ms_lo, r.ms_hi),
             speedup(rows, r),
             psnr_text(r.psnr_db),
             r.ssim,
@@ -217,6 +288,8 @@ pub(super) mod tests {
                 max_octaves: None,
                 precision: Precision::F32,
                 ms,
+                ms_lo: ms,
+                ms_hi: ms,
                 psnr_db: if ssim >= 1.0 { f64::INFINITY } else { 20.0 + 20.0 * ssim },
                 ssim,
                 max_abs: ((1.0 - ssim) * 255.0) as u8,
@@ -227,22 +300,81 @@ pub(super) mod tests {
         rows
     }
 
+    /// Points with exact times.
+    fn exact(points: &[(f64, f64)]) -> Vec<(Timing, f64)> {
+        points.iter().map(|&(ms, e)| (Timing::exact(ms), e)).collect()
+    }
+
+    /// A point whose repeats spread from `lo` to `hi` around `median`.
+    fn spread(lo: f64, median: f64, hi: f64, error: f64) -> (Timing, f64) {
+        (Timing { lo, median, hi }, error)
+    }
+
     #[test]
     fn pareto_front_drops_dominated_points() {
         // (ms, error): c is dominated by b (slower and worse); d by a (same ms, worse error).
-        let p = [(10.0, 0.5), (20.0, 0.1), (30.0, 0.2), (10.0, 0.6), (40.0, 0.0)];
+        let p = exact(&[(10.0, 0.5), (20.0, 0.1), (30.0, 0.2), (10.0, 0.6), (40.0, 0.0)]);
         assert_eq!(pareto_front(&p), vec![0, 1, 4]);
+    }
+
+    #[test]
+    fn pareto_ties_within_spread_are_marked_alike() {
+        // `res-scale 0.5` and `preset fast` render the same image; their medians differ by
+        // 0.06 ms of noise inside each other's spread. Whichever comes out faster, both get
+        // the same mark (on the front: nothing is clearly faster and as close).
+        let slower = |a: f64, b: f64| {
+            vec![
+                spread(1.40, 1.50, 1.62, 0.19),
+                spread(2.52, 2.60 + a, 2.70, 0.10),
+                spread(2.55, 2.60 + b, 2.75, 0.10),
+                spread(6.00, 6.20, 6.50, 0.064),
+            ]
+        };
+        for p in [slower(0.0, 0.06), slower(0.06, 0.0)] {
+            assert_eq!(pareto_front(&p), if p[1].0.median < p[2].0.median { [0, 1, 2, 3] } else { [0, 2, 1, 3] });
+        }
+        // Exact times would have split them: the 0.06 ms faster one alone on the front.
+        let p = exact(&[(2.60, 0.10), (2.66, 0.10)]);
+        assert_eq!(pareto_front(&p), vec![0]);
+        // A chain of ties at one error is one point: a ties b, b ties c, a and c do not overlap;
+        // all three share a mark, here off the front because d is as close and clearly faster
+        // than all of them, and on it once d is gone.
+        let mut p = vec![
+            spread(2.0, 2.05, 2.1, 0.1),
+            spread(2.08, 2.12, 2.16, 0.1),
+            spread(2.14, 2.2, 2.3, 0.1),
+            spread(1.0, 1.1, 1.2, 0.1),
+        ];
+        assert_eq!(pareto_front(&p), vec![3]);
+        p.pop();
+        assert_eq!(pareto_front(&p), vec![0, 1, 2]);
+        // Clearly faster at the same error still dominates (a over b; c is closer but clearly
+        // slower than a, so both stay); so does closer within the spread.
+        let p = vec![spread(2.0, 2.1, 2.2, 0.1), spread(2.3, 2.4, 2.5, 0.1), spread(2.25, 2.35, 2.45, 0.05)];
+        assert_eq!(pareto_front(&p), vec![0, 2]);
+        let p = vec![spread(2.0, 2.1, 2.2, 0.1), spread(2.15, 2.25, 2.35, 0.1), spread(2.1, 2.3, 2.4, 0.05)];
+        assert_eq!(pareto_front(&p), vec![2], "the closer one ties both in time");
+    }
+
+    #[test]
+    fn mark_front_uses_the_spread_of_each_row() {
+        let mut r = rows(&[("res-scale 0.5", 2.60, 0.9), ("preset fast", 2.66, 0.9)]);
+        assert!(r[0].front && !r[1].front, "exact times: the faster one only");
+        r[0].set_timing(Timing { lo: 2.5, median: 2.6, hi: 2.7 });
+        r[1].set_timing(Timing { lo: 2.55, median: 2.66, hi: 2.8 });
+        mark_front(&mut r);
+        assert!(r[0].front && r[1].front);
     }
 
     #[test]
     fn pareto_front_keeps_ties_and_skips_nan() {
         // Two identical points: neither dominates the other, so both stay.
-        let p = [(5.0, 0.3), (5.0, 0.3), (1.0, f64::NAN), (9.0, 0.1), (9.0, 0.3)];
+        let p = exact(&[(5.0, 0.3), (5.0, 0.3), (1.0, f64::NAN), (9.0, 0.1), (9.0, 0.3), (f64::NAN, 0.0)]);
         assert_eq!(pareto_front(&p), vec![0, 1, 3]);
         assert!(pareto_front(&[]).is_empty());
-        assert_eq!(pareto_front(&[(1.0, 1.0)]), vec![0]);
+        assert_eq!(pareto_front(&exact(&[(1.0, 1.0)])), vec![0]);
         // Equal x: only the lower y survives; equal y: only the lower x.
-        assert_eq!(pareto_front(&[(2.0, 1.0), (2.0, 0.5), (3.0, 0.5)]), vec![1]);
+        assert_eq!(pareto_front(&exact(&[(2.0, 1.0), (2.0, 0.5), (3.0, 0.5)])), vec![1]);
     }
 
     #[test]
@@ -283,7 +415,8 @@ pub(super) mod tests {
         };
         let md = markdown(&rows, &ctx, "plot.svg");
         assert_eq!(md.lines().filter(|l| l.starts_with("| `--")).count(), 3);
-        assert!(md.contains("| `--preset full` | 10.00 | 1.00× |"), "{md}");
+        assert!(md.contains("| `--preset full` | 10.00 | 10.00–10.00 | 1.00× |"), "{md}");
+        assert!(md.contains(FRONT_RULE), "the md says how ties are marked");
         assert!(md.contains("](plot.svg)"));
         // max-depth 1 is faster but worse than full; full is dominated by nothing; all on the front.
         assert!(rows.iter().all(|r| r.front));

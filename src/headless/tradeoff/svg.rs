@@ -108,6 +108,39 @@ fn labels(o: &mut String, rows: &[Row], x: &LogAxis, y: &LogAxis) {
     }
 }
 
+/// Font size of the title line.
+const TITLE_SIZE: f64 = 15.0;
+
+/// The title, `Speed against error: SCENE at WxH, CAMERAS`, cut to what fits between the left
+/// margin and the right edge: scene and path names can be any length, so the long ones lose
+/// their middle (`elide`), the camera text keeping up to half the room.
+fn title(ctx: &Context) -> String {
+    let fits = ((WIDTH - LEFT - 10.0) / (CHAR * TITLE_SIZE / 12.0)) as usize;
+    let (lead, size) = ("Speed against error: ", format!(" at {}x{}, ", ctx.width, ctx.height));
+    let room = fits.saturating_sub(lead.len() + size.len());
+    let (scene, cameras) = (ctx.scene.chars().count(), ctx.cameras.chars().count());
+    let for_cameras = cameras.min((room / 2).max(room.saturating_sub(scene)));
+    format!("{lead}{}{size}{}", elide(&ctx.scene, room - for_cameras), elide(&ctx.cameras, for_cameras))
+}
+
+/// `text` in at most `max` characters: a long one loses its middle to a `…`, keeping about a
+/// third from the start and the rest from the end, more if the file name (after the last `/`)
+/// needs it, so a path keeps where it starts and what it names.
+fn elide(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_string();
+    }
+    let keep = max.saturating_sub(1);
+    let file = text.rfind('/').map_or(0, |i| text[i..].chars().count());
+    let tail = (keep - keep / 3).max(file).min(keep);
+    let head = keep - tail;
+    let mut out: String = text.chars().take(head).collect();
+    out.push('…');
+    out.extend(text.chars().skip(n - tail));
+    out
+}
+
 fn escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
@@ -122,14 +155,7 @@ pub fn plot(rows: &[Row], ctx: &Context) -> String {
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
     );
     let _ = writeln!(o, r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#);
-    let _ = writeln!(
-        o,
-        r#"<text x="{LEFT}" y="24" font-size="15">Speed against error: {} at {}x{}, {}</text>"#,
-        escape(&ctx.scene),
-        ctx.width,
-        ctx.height,
-        escape(&ctx.cameras)
-    );
+    let _ = writeln!(o, r#"<text x="{LEFT}" y="24" font-size="{TITLE_SIZE}">{}</text>"#, escape(&title(ctx)));
     for (v, label) in x.ticks() {
         let px = x.map(v);
         let _ = writeln!(o, r##"<line x1="{px:.1}" y1="{TOP}" x2="{px:.1}" y2="{BOTTOM}" stroke="#e4e4e4"/>"##);
@@ -259,6 +285,31 @@ mod tests {
         let svg = plot(&rows(&[("preset reference", 100.0, 1.0)]), &ctx());
         well_formed(&svg).unwrap_or_else(|e| panic!("{e}"));
         assert!(!svg.contains("NaN") && !svg.contains("inf"), "{svg}");
+    }
+
+    #[test]
+    fn svg_title_of_a_long_scene_path_stays_inside_the_width() {
+        let deep = format!("/home/someone/{}/scenes/very_long_scene_name.pov", "nested/folder".repeat(20));
+        let along = format!("9 cameras along /srv/{}/orbit.path", "x".repeat(150));
+        let rows = rows(&[("preset full", 10.0, 0.95)]);
+        for (scene, cameras) in [(deep.as_str(), "the scene camera"), ("s.pov", along.as_str()), (&deep, &along)] {
+            let ctx = Context { scene: scene.into(), cameras: cameras.into(), ..ctx() };
+            let svg = plot(&rows, &ctx);
+            well_formed(&svg).unwrap_or_else(|e| panic!("{e}"));
+            let line = svg.lines().find(|l| l.contains("Speed against error")).unwrap_or_default();
+            let text = line.split('>').nth(1).unwrap_or("").split('<').next().unwrap_or("");
+            let text = text.replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
+            let width = text.chars().count() as f64 * CHAR * TITLE_SIZE / 12.0;
+            assert!(LEFT + width <= WIDTH, "{width} px from {LEFT} overflows {WIDTH}: {text}");
+            // What tells the runs apart stays: the size and the ends of the names.
+            assert!(text.contains(" at 64x48, "), "{text}");
+            let file = scene.rsplit('/').next().unwrap_or_default();
+            assert!(text.contains(file) && text.contains(&cameras[cameras.len() - 10..]), "{text}");
+        }
+        // Short names are left whole.
+        assert_eq!(title(&ctx()), "Speed against error: a<b>.pov at 64x48, the scene camera");
+        assert_eq!(elide("abcdefghij", 4), "a…ij");
+        assert_eq!(elide("abc", 3), "abc");
     }
 
     #[test]

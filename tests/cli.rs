@@ -219,6 +219,7 @@ fn threads_above_cap_is_rejected_before_work() {
         vec!["capture", &scene, "--path", &path, "--frames", "2", "-o", &out, "--threads", "10000"],
         vec!["tradeoff", &scene, "-o", &out, "--threads", "100000"],
         vec!["view", &scene, "--threads", "100000"],
+        vec!["scaling", "--threads", "100000"],
     ] {
         let err = fails(&args);
         assert!(err.contains("too many") && err.contains("cores"), "{args:?}: {err}");

@@ -163,10 +163,6 @@ pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
     output::write_atomic(&dir.join("manifest.json"), manifest.to_json().to_pretty().as_bytes())
 }
 
-fn create_dir(dir: &Path) -> Result<(), CliError> {
-    std::fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
-}
-
 /// A file that `capture` writes into its folder: a frame, the manifest, or a temporary of either.
 fn is_capture_file(name: &str) -> bool {
     let name = name
@@ -193,27 +189,14 @@ enum OutputPlan {
 /// there and nothing else.
 fn plan_output(dir: &Path, this: &Manifest, force: bool) -> Result<OutputPlan, CliError> {
     let shown = dir.display();
+    output::check_folder_writable("-o", dir)?;
     if !dir.exists() {
-        // The nearest folder that exists must accept the new one.
-        let mut parent = dir.parent();
-        while let Some(p) = parent.filter(|p| !p.as_os_str().is_empty() && !p.exists()) {
-            parent = p.parent();
-        }
-        let parent = parent.filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-        if !parent.is_dir() {
-            return Err(CliError::user(format!("-o {shown}: {} is not a folder", parent.display())));
-        }
-        output::check_writable("-o", &parent.join("strahl-capture-probe"))?;
         return Ok(OutputPlan::Create);
-    }
-    if !dir.is_dir() {
-        return Err(CliError::user(format!("-o {shown}: is a file, not a folder")));
     }
     let listing = std::fs::read_dir(dir).map_err(|e| CliError::user(format!("-o {shown}: cannot read folder: {e}")))?;
     let mut names: Vec<String> =
         listing.filter_map(|e| e.ok()).map(|e| e.file_name().to_string_lossy().into_owned()).collect();
     names.sort();
-    output::check_writable("-o", &dir.join("manifest.json"))?;
     if names.is_empty() || Manifest::read(dir).is_ok_and(|m| m.same_header(this)) {
         return Ok(OutputPlan::Use);
     }
@@ -234,7 +217,7 @@ fn plan_output(dir: &Path, this: &Manifest, force: bool) -> Result<OutputPlan, C
 
 fn apply_output_plan(dir: &Path, plan: OutputPlan) -> Result<(), CliError> {
     match plan {
-        OutputPlan::Create => create_dir(dir),
+        OutputPlan::Create => output::create_dir(dir),
         OutputPlan::Use => Ok(()),
         OutputPlan::Clear(files) => files.iter().try_for_each(|f| {
             std::fs::remove_file(f).map_err(|e| CliError::user(format!("{}: cannot delete: {e}", f.display())))
@@ -316,7 +299,7 @@ pub fn run_merge(dirs: &[PathBuf], out: &Path) -> Result<(), CliError> {
             copies.push((src, out.join(&f.file)));
         }
     }
-    create_dir(out)?;
+    output::create_dir(out)?;
     for (src, dst) in copies {
         let same = matches!((src.canonicalize(), dst.canonicalize()), (Ok(a), Ok(b)) if a == b);
         if !same {

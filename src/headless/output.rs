@@ -36,6 +36,36 @@ pub fn check_writable(what: &str, path: &Path) -> Result<(), CliError> {
     }
 }
 
+/// Checks, before any work and without creating anything, that folder `dir` can hold new files:
+/// it is a folder that accepts a file, or it is missing and its nearest existing ancestor is.
+pub fn check_folder_writable(what: &str, dir: &Path) -> Result<(), CliError> {
+    let mut existing = dir;
+    while !existing.as_os_str().is_empty() && fs::metadata(existing).is_err() {
+        existing = existing.parent().unwrap_or(Path::new(""));
+    }
+    let existing = if existing.as_os_str().is_empty() { Path::new(".") } else { existing };
+    if !existing.is_dir() {
+        return Err(CliError::user(format!(
+            "{what} {}: {} is not a folder, so no folder can be made there",
+            dir.display(),
+            existing.display()
+        )));
+    }
+    let probe = existing.join(format!(".strahl-probe.{}.tmp", std::process::id()));
+    match fs::OpenOptions::new().write(true).create_new(true).open(&probe) {
+        Ok(_) => {
+            let _ = fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => Err(CliError::user(format!("{what} {}: cannot write in {}: {e}", dir.display(), existing.display()))),
+    }
+}
+
+/// Creates `dir` and its missing parents.
+pub fn create_dir(dir: &Path) -> Result<(), CliError> {
+    fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
+}
+
 /// `check_writable` for an image: strahl writes PNG only, so any other extension (`x.jpg`) is an
 /// error rather than PNG bytes under a misleading name.
 pub fn check_png_path(what: &str, path: &Path) -> Result<(), CliError> {

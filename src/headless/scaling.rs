@@ -79,8 +79,8 @@ pub struct ScalingCmd {
     /// Untimed frames first.
     #[arg(long, value_name = "K", default_value_t = 1)]
     warmup: u32,
-    /// Worker threads (0 = one per core).
-    #[arg(long, default_value_t = 0)]
+    /// Worker threads (0 = one per core; at most 4 per core).
+    #[arg(long, default_value_t = 0, value_parser = crate::headless::parse_threads)]
     threads: usize,
     /// Grid and brute force are timed only up to this many objects (brute force is O(N) per ray).
     #[arg(long, value_name = "N", default_value_t = 10_000)]

@@ -267,38 +267,6 @@ fn run_sweep(scene: &Scene, cameras: &[Camera], args: &TradeoffArgs) -> Results 
     Results { rows, reference: refs.swap_remove(0), error_maps }
 }
 
-fn create_dir(dir: &Path) -> Result<(), CliError> {
-    std::fs::create_dir_all(dir).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", dir.display())))
-}
-
-/// Fails unless `dir` can be made and written: its nearest existing ancestor must be a folder
-/// this process can create a file in. Creates nothing (the probe file is removed at once), so
-/// the folder appears only when the reports are written.
-fn check_output_folder(dir: &Path) -> Result<(), CliError> {
-    let mut existing = dir;
-    while std::fs::metadata(existing).is_err() {
-        existing = match existing.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p,
-            _ => Path::new("."),
-        };
-        if existing == Path::new(".") {
-            break;
-        }
-    }
-    if !existing.is_dir() {
-        return Err(CliError::user(format!(
-            "{}: exists and is not a folder, so {} cannot be created",
-            existing.display(),
-            dir.display()
-        )));
-    }
-    let probe = existing.join(format!(".strahl-probe.{}.tmp", std::process::id()));
-    std::fs::File::create(&probe)
-        .map_err(|e| CliError::user(format!("{}: cannot write in this folder: {e}", existing.display())))?;
-    let _ = std::fs::remove_file(&probe);
-    Ok(())
-}
-
 /// `strahl tradeoff SCENE ...`: checks every argument and loads everything before rendering,
 /// and renders everything before writing, so an error leaves no folder or half a report.
 pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
@@ -308,8 +276,8 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
     if args.repeats < 3 {
         return Err(CliError::user("--repeats must be at least 3 (the median of fewer is noise)"));
     }
-    check_output_folder(&args.output)?;
-    check_output_folder(&args.output.join("errors"))?;
+    output::check_folder_writable("-o", &args.output)?;
+    output::check_folder_writable("-o", &args.output.join("errors"))?;
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
     let (desc, _) = load_sized(&args.scene, &args.include, args.width, args.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
@@ -337,7 +305,7 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
         cpu: cpu_model(),
     };
     let errors = args.output.join("errors");
-    create_dir(&errors)?;
+    output::create_dir(&errors)?;
     output::write_atomic(&args.output.join("tradeoff.csv"), csv(&results.rows).as_bytes())?;
     output::write_atomic(
         &args.output.join("tradeoff.md"),

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, Instant};
 
 use strahl::headless::json::Json;
@@ -26,7 +27,15 @@ struct Xvfb {
 
 impl Xvfb {
     fn start() -> Option<Xvfb> {
-        for n in 90..200 {
+        // Tests run in parallel threads: each display number is tried by one thread only, or two
+        // tests could both take the socket that one server made, and the first to finish would
+        // kill the other's server (`X connection to :115 broken`).
+        static NEXT: AtomicU32 = AtomicU32::new(90);
+        loop {
+            let n = NEXT.fetch_add(1, Ordering::Relaxed);
+            if n >= 400 {
+                break;
+            }
             let socket = format!("/tmp/.X11-unix/X{n}");
             let lock = format!("/tmp/.X{n}-lock");
             if Path::new(&socket).exists() || Path::new(&lock).exists() {

@@ -14,7 +14,7 @@
 mod report;
 mod svg;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 pub use report::{csv, mark_front, markdown, pareto_front, table, Context, Row, Timing, FRONT_RULE};

@@ -133,10 +133,26 @@ impl Lowerer<'_> {
             "atan2" => Value::Float(f(0)?.atan2(f(1)?)),
             "abs" => Value::Float(f(0)?.abs()),
             "exp" => Value::Float(f(0)?.exp()),
-            "log" => Value::Float(f(0)?.ln()),
+            // POV-Ray's `log` is base 10; `ln` is the natural logarithm.
+            "log" => Value::Float(f(0)?.log10()),
+            "ln" => Value::Float(f(0)?.ln()),
+            "atan" => Value::Float(f(0)?.atan()),
+            "sinh" => Value::Float(f(0)?.sinh()),
+            "cosh" => Value::Float(f(0)?.cosh()),
+            "tanh" => Value::Float(f(0)?.tanh()),
+            "asinh" => Value::Float(f(0)?.asinh()),
+            "acosh" => Value::Float(f(0)?.acosh()),
+            "atanh" => Value::Float(f(0)?.atanh()),
             "floor" => Value::Float(f(0)?.floor()),
             "ceil" => Value::Float(f(0)?.ceil()),
             "int" => Value::Float(f(0)?.trunc()),
+            "div" => {
+                let d = f(1)?;
+                if d == 0.0 {
+                    return Err(Diag::new(args[1].span, "division by zero"));
+                }
+                Value::Float((f(0)? / d).trunc())
+            }
             "mod" => {
                 let d = f(1)?;
                 if d == 0.0 {
@@ -147,8 +163,26 @@ impl Lowerer<'_> {
             "radians" => Value::Float(f(0)?.to_radians()),
             "degrees" => Value::Float(f(0)?.to_degrees()),
             "pow" => Value::Float(f(0)?.powf(f(1)?)),
-            "min" => Value::Float(f(0)?.min(f(1)?)),
-            "max" => Value::Float(f(0)?.max(f(1)?)),
+            "min" | "max" => {
+                let mut acc = f(0)?;
+                for i in 1..args.len() {
+                    let x = f(i)?;
+                    acc = if name == "min" { acc.min(x) } else { acc.max(x) };
+                }
+                Value::Float(acc)
+            }
+            // select(A, B, C[, D]): B where A < 0, C where A = 0 (or A ≥ 0 with three), D where A > 0.
+            "select" => {
+                let a = f(0)?;
+                let pick = match args.len() {
+                    3 if a < 0.0 => 1,
+                    3 => 2,
+                    _ if a < 0.0 => 1,
+                    _ if a == 0.0 => 2,
+                    _ => 3,
+                };
+                self.eval(&args[pick])?
+            }
             "vlength" => Value::Float(v(0)?.length()),
             "vdot" => Value::Float(v(0)?.dot(v(1)?)),
             "vcross" => {

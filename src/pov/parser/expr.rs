@@ -6,31 +6,42 @@ use crate::pov::ast::{BinOp, Builtin, ColorItem, ColorKey, Expr, ExprKind};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
 
-/// Built-in functions and how many arguments each takes.
-pub const FUNCTIONS: &[(&str, usize)] = &[
-    ("sqrt", 1),
-    ("sin", 1),
-    ("cos", 1),
-    ("tan", 1),
-    ("asin", 1),
-    ("acos", 1),
-    ("atan2", 2),
-    ("abs", 1),
-    ("exp", 1),
-    ("log", 1),
-    ("floor", 1),
-    ("ceil", 1),
-    ("int", 1),
-    ("mod", 2),
-    ("radians", 1),
-    ("degrees", 1),
-    ("pow", 2),
-    ("min", 2),
-    ("max", 2),
-    ("vlength", 1),
-    ("vnormalize", 1),
-    ("vcross", 2),
-    ("vdot", 2),
+/// Built-in functions and how many arguments each takes (least, most), as in POV-Ray 3.7's
+/// reference: `min` and `max` take two or more, `select` three or four.
+pub const FUNCTIONS: &[(&str, (usize, usize))] = &[
+    ("sqrt", (1, 1)),
+    ("sin", (1, 1)),
+    ("cos", (1, 1)),
+    ("tan", (1, 1)),
+    ("asin", (1, 1)),
+    ("acos", (1, 1)),
+    ("atan", (1, 1)),
+    ("atan2", (2, 2)),
+    ("sinh", (1, 1)),
+    ("cosh", (1, 1)),
+    ("tanh", (1, 1)),
+    ("asinh", (1, 1)),
+    ("acosh", (1, 1)),
+    ("atanh", (1, 1)),
+    ("abs", (1, 1)),
+    ("exp", (1, 1)),
+    ("log", (1, 1)),
+    ("ln", (1, 1)),
+    ("floor", (1, 1)),
+    ("ceil", (1, 1)),
+    ("int", (1, 1)),
+    ("div", (2, 2)),
+    ("mod", (2, 2)),
+    ("radians", (1, 1)),
+    ("degrees", (1, 1)),
+    ("pow", (2, 2)),
+    ("min", (2, usize::MAX)),
+    ("max", (2, usize::MAX)),
+    ("select", (3, 4)),
+    ("vlength", (1, 1)),
+    ("vnormalize", (1, 1)),
+    ("vcross", (2, 2)),
+    ("vdot", (2, 2)),
 ];
 
 /// Values the renderer provides (`image_width`, `clock`, ...).
@@ -326,7 +337,7 @@ impl Parser<'_> {
             self.leave();
             return c;
         }
-        if let Some(&(_, arity)) = FUNCTIONS.iter().find(|(name, _)| *name == word) {
+        if let Some(&(_, (least, most))) = FUNCTIONS.iter().find(|(name, _)| *name == word) {
             self.bump();
             self.expect_punct('(', &format!("after `{word}`"))?;
             self.enter(span)?;
@@ -336,8 +347,13 @@ impl Parser<'_> {
             }
             let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
             self.leave();
-            if args.len() != arity {
-                return Err(Diag::new(span, format!("`{word}` takes {arity} argument(s), found {}", args.len())));
+            if !(least..=most).contains(&args.len()) {
+                let takes = match (least, most) {
+                    (l, m) if l == m => format!("{l}"),
+                    (l, usize::MAX) => format!("{l} or more"),
+                    (l, m) => format!("{l} to {m}"),
+                };
+                return Err(Diag::new(span, format!("`{word}` takes {takes} argument(s), found {}", args.len())));
             }
             return Ok(Expr { kind: ExprKind::Call(word.to_string(), args), span: span.to(close) });
         }

@@ -124,27 +124,26 @@ fn capture_rejects_malformed_ranges() {
     assert!(!dir.exists());
 }
 
+/// Writes `text` as a camera path file and runs a capture on it that must fail; returns the
+/// error, having checked that the output folder was not created.
+fn capture_with_bad_path(test: &str, file_name: &str, text: &str) -> String {
+    let dir = scratch(test);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let file = dir.join(file_name);
+    std::fs::write(&file, text).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("out");
+    let (file, out_arg) = (file.display().to_string(), out.display().to_string());
+    let err = fails(&["capture", &seed(), "--path", &file, "--frames", "2", "-o", &out_arg]);
+    assert!(!out.exists());
+    err
+}
+
 #[test]
 fn capture_reports_path_errors_with_location() {
-    let dir = scratch("bad_path");
-    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
-    let file = dir.join("bad.path");
-    std::fs::write(&file, "key 0 location <0,0,0> look_at <1,1,1>\nkey 1 location <0,nan,0> look_at <1,1,1>\n")
-        .unwrap_or_else(|e| panic!("{e}"));
-    let out = dir.join("out");
-    let err = fails(&[
-        "capture",
-        &seed(),
-        "--path",
-        &file.display().to_string(),
-        "--frames",
-        "2",
-        "-o",
-        &out.display().to_string(),
-    ]);
+    let text = "key 0 location <0,0,0> look_at <1,1,1>\nkey 1 location <0,nan,0> look_at <1,1,1>\n";
+    let err = capture_with_bad_path("bad_path", "bad.path", text);
     assert!(err.contains("bad.path:2:19: location y must be a finite number"), "{err}");
     assert!(err.contains("^"), "a caret under the column: {err}");
-    assert!(!out.exists());
 }
 
 #[test]
@@ -362,22 +361,7 @@ fn render_of_an_empty_scene_warns_no_objects_in_scene() {
 
 #[test]
 fn path_key_with_look_at_equal_to_location_is_a_located_error() {
-    let dir = scratch("path_look_at");
-    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
-    let file = dir.join("same.path");
-    std::fs::write(&file, "key 0 location <0,1,-5> look_at <0,0,0>\nkey 1 location <1,1,1> look_at <1,1,1>\n")
-        .unwrap_or_else(|e| panic!("{e}"));
-    let out = dir.join("out");
-    let err = fails(&[
-        "capture",
-        &seed(),
-        "--path",
-        &file.display().to_string(),
-        "--frames",
-        "2",
-        "-o",
-        &out.display().to_string(),
-    ]);
+    let text = "key 0 location <0,1,-5> look_at <0,0,0>\nkey 1 location <1,1,1> look_at <1,1,1>\n";
+    let err = capture_with_bad_path("path_look_at", "same.path", text);
     assert!(err.contains("same.path:2:32: camera look_at is the same point as its location"), "{err}");
-    assert!(!out.exists());
 }

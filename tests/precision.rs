@@ -310,6 +310,9 @@ fn cli_precision_flag() {
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("precision f64") && text.contains("packets: off"), "{text}");
     let cap = png("capture");
+    // A capture refuses a folder holding another capture (this one from an earlier run, maybe of
+    // a checkout elsewhere), so start from none.
+    let _ = std::fs::remove_dir_all(&cap);
     let orbit = root().join("scenes/seed.orbit.path").display().to_string();
     let mut args = vec!["capture", &seed, "--path", &orbit, "--frames", "2", "-q", "-o", &cap, "--precision", "f64"];
     args.extend_from_slice(&size);

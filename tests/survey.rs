@@ -36,3 +36,26 @@ fn povray_sample_survey_never_drops_below_its_floor() {
     assert!(rendered >= FLOOR, "{rendered} of {total} sample scenes render, below the floor of {FLOOR}");
     assert!(!stdout.contains("crashed"), "a sample scene crashed strahl:\n{stdout}");
 }
+
+/// Include files strahl does not bundle come from POV-Ray's installed include folder, with no
+/// `-L` (they were "not found" before). `finish.inc` and `consts.inc` parse today.
+#[test]
+#[ignore = "needs Debian's povray-includes (/usr/share/povray-3.7/include): .ci/run runs it with --ignored"]
+fn povray_include_files_are_found_without_dash_l() {
+    let includes = Path::new("/usr/share/povray-3.7/include");
+    assert!(includes.join("finish.inc").is_file(), "install Debian's povray-includes to run this test");
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("survey-includes");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let scene = dir.join("s.pov");
+    let text = "#include \"finish.inc\"\n#include \"consts.inc\"\ncamera { location <0, 0, -4> look_at 0 }\n\
+                light_source { <5, 5, -5> rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } finish { Shiny } }\n";
+    std::fs::write(&scene, text).unwrap_or_else(|e| panic!("{e}"));
+    let png = dir.join("s.png");
+    let out = Command::new(env!("CARGO_BIN_EXE_strahl"))
+        .args(["render", scene.to_str().unwrap_or_default(), "-W", "16", "-H", "12", "-q", "-o"])
+        .arg(&png)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot run strahl: {e}"));
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(png.is_file());
+}

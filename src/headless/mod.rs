@@ -9,6 +9,7 @@ pub mod json;
 pub mod manifest;
 pub mod metrics;
 pub mod output;
+pub mod povray_ini;
 pub mod progress;
 pub mod render;
 pub mod report;
@@ -56,11 +57,13 @@ pub fn project_include_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("include")
 }
 
-/// The include path in POV-Ray's order: `-L` dirs, then the project's library. (The including
-/// file's own folder is searched first by the parser.)
+/// The include path: `-L` dirs, then the project's library, then POV-Ray's own include folders
+/// where it is installed (see `povray_ini` for why those come last). The including file's own
+/// folder is searched first by the parser.
 pub fn include_path(user_dirs: &[PathBuf]) -> IncludePath {
     let mut dirs = user_dirs.to_vec();
     dirs.push(project_include_dir());
+    dirs.extend(povray_ini::povray_include_dirs());
     IncludePath { dirs }
 }
 

@@ -173,6 +173,7 @@ impl<'f> Lowerer<'f> {
                     DeclValue::Finish(f) => Value::Finish(self.finish_block(f)?),
                     DeclValue::Texture(t) => Value::Texture(Box::new(self.texture(t)?)),
                     DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
+                    DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
                     DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
                 };
                 let scope = if *local { self.scopes.len() - 1 } else { 0 };

@@ -445,6 +445,7 @@ impl<'a> Parser<'a> {
             Some("finish") => DeclValue::Finish(self.finish()?),
             Some("texture") => DeclValue::Texture(self.texture()?),
             Some("interior") => DeclValue::Interior(self.interior()?),
+            Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
             Some(word) if scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }

@@ -59,6 +59,12 @@ pub enum Stmt {
     Break {
         span: Span,
     },
+    /// `#default { pigment {..} finish {..} ... }`: changes the texture objects placed from here
+    /// on start from.
+    Default {
+        items: Vec<DefaultItem>,
+        span: Span,
+    },
     Camera {
         items: Vec<CameraItem>,
         span: Span,
@@ -73,6 +79,15 @@ pub enum Stmt {
         span: Span,
     },
     Object(Object),
+}
+
+/// One block of `#default { ... }`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DefaultItem {
+    Texture(Texture),
+    Pigment(Pigment),
+    Normal(Normal),
+    Finish(Finish),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

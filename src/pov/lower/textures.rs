@@ -67,26 +67,15 @@ impl Lowerer<'_> {
         Ok(())
     }
 
+    /// A pigment block: it starts from the default pigment (POV-Ray: `pigment { scale 2 }`
+    /// after `#default { pigment { Red } }` is red), or from the declared pigment it names.
     pub(super) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
-        let mut pattern = Pattern::Solid(Color::BLACK);
-        let mut map: Option<(Vec<ColorMapEntry>, Span)> = None;
-        let mut turb = TurbState::from(None);
-        let mut transform = Transform::default();
+        let (mut pattern, mut map, mut turb, mut transform) = pigment_state(self.default_texture.pigment.clone());
         for item in &p.items {
             match item {
                 PigmentItem::Base(e) => {
                     if let Some(Value::Pigment(base)) = self.declared(e)? {
-                        let base = (**base).clone();
-                        pattern = match base.pattern {
-                            PigmentPattern::Solid(c) => Pattern::Solid(c),
-                            PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
-                            PigmentPattern::Wood(m) => {
-                                map = Some((m, e.span));
-                                Pattern::Wood
-                            }
-                        };
-                        turb = TurbState::from(base.turbulence);
-                        transform = base.transform;
+                        (pattern, map, turb, transform) = pigment_state((**base).clone());
                     } else {
                         pattern = Pattern::Solid(self.eval(e)?.as_color(e.span).map_err(|_| {
                             Diag::new(e.span, "expected a declared pigment or a color at the start of `pigment`")
@@ -107,7 +96,7 @@ impl Lowerer<'_> {
                     pattern = Pattern::Checker(a, b);
                 }
                 PigmentItem::Wood(_) => pattern = Pattern::Wood,
-                PigmentItem::ColorMap(m) => map = Some((self.color_map(m)?, m.span)),
+                PigmentItem::ColorMap(m) => map = Some((self.color_map(m)?, Some(m.span))),
                 PigmentItem::Turb(t) => self.turb(t, &mut turb)?,
                 PigmentItem::Transform(t) => transform = transform.then(&self.transform(t)?),
             }
@@ -115,11 +104,11 @@ impl Lowerer<'_> {
         let pattern = match (pattern, map) {
             (Pattern::Wood, Some((m, _))) => PigmentPattern::Wood(m),
             (Pattern::Wood, None) => PigmentPattern::Wood(default_wood_map()),
-            (_, Some((_, span))) => {
+            (_, Some((_, Some(span)))) => {
                 return Err(Diag::new(span, "color_map needs a pattern that uses it (supported: wood)"))
             }
-            (Pattern::Solid(c), None) => PigmentPattern::Solid(c),
-            (Pattern::Checker(a, b), None) => PigmentPattern::Checker(a, b),
+            (Pattern::Solid(c), _) => PigmentPattern::Solid(c),
+            (Pattern::Checker(a, b), _) => PigmentPattern::Checker(a, b),
         };
         Ok(PigmentDesc { pattern, turbulence: turb.finish(), transform })
     }
@@ -147,9 +136,10 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn normal(&mut self, n: &Normal) -> PResult<NormalDesc> {
-        let mut pattern = None;
-        let mut turb = TurbState::from(None);
-        let mut transform = Transform::default();
+        let start = self.default_texture.normal.clone();
+        let mut pattern = start.as_ref().map(|n| n.pattern.clone());
+        let mut turb = TurbState::from(start.as_ref().and_then(|n| n.turbulence));
+        let mut transform = start.map_or_else(Transform::default, |n| n.transform);
         for item in &n.items {
             match item {
                 NormalItem::Base(e) => match self.declared(e)? {
@@ -183,7 +173,7 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {
-        let mut out = FinishDesc::default();
+        let mut out = self.default_texture.finish;
         for item in &f.items {
             match item {
                 FinishItem::Base(e) => match self.declared(e)? {
@@ -218,7 +208,7 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
-        let mut out = TextureDesc::default();
+        let mut out = self.default_texture.clone();
         for item in &t.items {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
@@ -281,6 +271,21 @@ fn default_wood_map() -> Vec<ColorMapEntry> {
         .into_iter()
         .map(|(value, color)| ColorMapEntry { value, color })
         .collect()
+}
+
+/// The state `pigment` edits, from a pigment it starts from: pattern, map (with no span: a
+/// map that came with it is not an error when the pattern changes), turbulence, transform.
+fn pigment_state(p: PigmentDesc) -> (Pattern, Option<(Vec<ColorMapEntry>, Option<Span>)>, TurbState, Transform) {
+    let mut map = None;
+    let pattern = match p.pattern {
+        PigmentPattern::Solid(c) => Pattern::Solid(c),
+        PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
+        PigmentPattern::Wood(m) => {
+            map = Some((m, None));
+            Pattern::Wood
+        }
+    };
+    (pattern, map, TurbState::from(p.turbulence), p.transform)
 }
 
 /// POV-Ray reads a colour map in written order, not sorted: a value at or above the last

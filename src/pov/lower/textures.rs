@@ -23,6 +23,10 @@ enum Pattern {
     Wood,
 }
 
+/// A pigment's colour map while its block is read, with the `color_map` written in the block
+/// (none for a map that came with the pigment it started from).
+type MapState = Option<(Vec<ColorMapEntry>, Option<Span>)>;
+
 /// Turbulence being built: `octaves` etc. may come before `turbulence`.
 struct TurbState {
     value: Turbulence,
@@ -275,7 +279,7 @@ fn default_wood_map() -> Vec<ColorMapEntry> {
 
 /// The state `pigment` edits, from a pigment it starts from: pattern, map (with no span: a
 /// map that came with it is not an error when the pattern changes), turbulence, transform.
-fn pigment_state(p: PigmentDesc) -> (Pattern, Option<(Vec<ColorMapEntry>, Option<Span>)>, TurbState, Transform) {
+fn pigment_state(p: PigmentDesc) -> (Pattern, MapState, TurbState, Transform) {
     let mut map = None;
     let pattern = match p.pattern {
         PigmentPattern::Solid(c) => Pattern::Solid(c),

@@ -59,6 +59,12 @@ pub enum Stmt {
     Break {
         span: Span,
     },
+    /// `#default { pigment {..} finish {..} ... }`: changes the texture objects placed from here
+    /// on start from.
+    Default {
+        items: Vec<DefaultItem>,
+        span: Span,
+    },
     Camera {
         items: Vec<CameraItem>,
         span: Span,
@@ -73,6 +79,15 @@ pub enum Stmt {
         span: Span,
     },
     Object(Object),
+}
+
+/// One block of `#default { ... }`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DefaultItem {
+    Texture(Texture),
+    Pigment(Pigment),
+    Normal(Normal),
+    Finish(Finish),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,6 +135,7 @@ pub enum DeclValue {
     Finish(Finish),
     Texture(Texture),
     Interior(Interior),
+    ColorMap(ColorMap),
     Object(Object),
 }
 
@@ -264,10 +280,26 @@ pub enum TurbKind {
     Lambda,
 }
 
+/// One `[value color]` point of a colour map. POV-Ray's older band `[a, b color C1 color C2]`
+/// is read as the two points it stands for, `(a, C1)` and `(b, C2)`, both spanning the bracket.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MapEntry {
     pub value: Expr,
     pub color: Expr,
+    pub span: Span,
+}
+
+/// What a `color_map { ... }` block holds: its own entries, or the name of a declared map.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ColorMapBody {
+    Entries(Vec<MapEntry>),
+    Named(Expr),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColorMap {
+    pub body: ColorMapBody,
+    /// The `color_map` keyword.
     pub span: Span,
 }
 
@@ -280,7 +312,7 @@ pub enum PigmentItem {
     /// `checker C1 C2`; colours optional.
     Checker(Vec<Expr>, Span),
     Wood(Span),
-    ColorMap(Vec<MapEntry>, Span),
+    ColorMap(ColorMap),
     Turb(Turb),
     Transform(TransformItem),
 }

@@ -7,7 +7,7 @@ use crate::error::{quote_char, visible};
 /// The directives strahl understands; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
     "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while", "switch", "case",
-    "range", "break", "end", "debug", "warning", "error",
+    "range", "break", "end", "debug", "warning", "error", "default",
 ];
 
 #[derive(Clone, Debug, PartialEq)]
@@ -103,7 +103,8 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                     format!(
                         "`#{name}` is not supported (supported directives: #version, #include, \
                          #declare, #local, #ifdef, #ifndef, #if, #elseif, #else, #while, \
-                         #switch, #case, #range, #break, #end, #debug, #warning, #error)"
+                         #switch, #case, #range, #break, #end, #debug, #warning, #error, \
+                         #default)"
                     ),
                 ));
             }

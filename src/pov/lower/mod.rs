@@ -11,10 +11,10 @@ pub mod value;
 
 use std::collections::HashMap;
 
-use crate::pov::ast::{ClauseTest, DeclValue, GlobalItem, MessageKind, Stmt, StrExpr};
+use crate::pov::ast::{ClauseTest, DeclValue, DefaultItem, GlobalItem, MessageKind, Stmt, StrExpr};
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::ParseOptions;
-use crate::scene::desc::{LightDesc, SceneDesc, SourceRef};
+use crate::scene::desc::{LightDesc, SceneDesc, SourceRef, TextureDesc};
 use value::{truthy, Part, Value, EPSILON};
 
 /// Total `#while` iterations allowed in one scene: far beyond real scenes (a 100³ grid of
@@ -66,6 +66,9 @@ pub struct Lowerer<'f> {
     csg_stack: Vec<Vec<Part>>,
     /// `#while` iterations so far, against `MAX_LOOP_ITERATIONS`.
     loop_iterations: u64,
+    /// The texture `#default` last set (POV-Ray's own until then): where every texture, pigment,
+    /// finish and normal block starts, and what objects without one get when placed.
+    default_texture: TextureDesc,
 }
 
 impl<'f> Lowerer<'f> {
@@ -79,6 +82,7 @@ impl<'f> Lowerer<'f> {
             options: options.clone(),
             csg_stack: Vec::new(),
             loop_iterations: 0,
+            default_texture: TextureDesc::default(),
         }
     }
 
@@ -173,6 +177,7 @@ impl<'f> Lowerer<'f> {
                     DeclValue::Finish(f) => Value::Finish(self.finish_block(f)?),
                     DeclValue::Texture(t) => Value::Texture(Box::new(self.texture(t)?)),
                     DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
+                    DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
                     DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
                 };
                 let scope = if *local { self.scopes.len() - 1 } else { 0 };
@@ -239,6 +244,16 @@ impl<'f> Lowerer<'f> {
                 }
             }
             Stmt::Break { span } => return Ok(Flow::Break(*span)),
+            Stmt::Default { items, .. } => {
+                for item in items {
+                    match item {
+                        DefaultItem::Texture(t) => self.default_texture = self.texture(t)?,
+                        DefaultItem::Pigment(p) => self.default_texture.pigment = self.pigment(p)?,
+                        DefaultItem::Normal(n) => self.default_texture.normal = Some(self.normal(n)?),
+                        DefaultItem::Finish(f) => self.default_texture.finish = self.finish_block(f)?,
+                    }
+                }
+            }
             Stmt::Message { kind, text, span } => match kind {
                 MessageKind::Debug => {
                     let text = self.string(text)?;
@@ -307,7 +322,18 @@ impl<'f> Lowerer<'f> {
                 }
                 match self.csg_stack.last_mut() {
                     Some(children) => children.extend(group.parts),
-                    None => self.scene.objects.extend(group.parts.into_iter().map(|p| p.desc)),
+                    None => {
+                        // POV-Ray gives an object without a texture the default in effect where
+                        // it is placed, not moved by the object's transforms (checked by rendering
+                        // a declared sphere placed after a `#default`, and a scaled plane).
+                        for part in group.parts {
+                            let mut desc = part.desc;
+                            if !part.textured {
+                                desc.texture = self.default_texture.clone();
+                            }
+                            self.scene.objects.push(desc);
+                        }
+                    }
                 }
             }
         }

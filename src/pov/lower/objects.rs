@@ -9,6 +9,7 @@ use super::textures::transform_texture;
 use super::value::{Group, Part, Value};
 use super::{Flow, Lowerer};
 use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
+use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{InteriorDesc, ObjectDesc, ShapeDesc, TextureDesc, Transform};
 
@@ -51,12 +52,18 @@ impl Lowerer<'_> {
     /// A single shape's modifiers, in written order. A transform moves the object and the
     /// patterns already attached to it.
     fn modifiers(&mut self, part: &mut Part, modifiers: &[Modifier]) -> PResult<()> {
-        let obj = &mut part.desc;
         for m in modifiers {
+            let surface = matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_));
+            if surface && !part.textured {
+                // The first of these starts the object's texture from the default in effect.
+                part.desc.texture = self.default_texture.clone();
+            }
+            let obj = &mut part.desc;
             match m {
                 Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
                 Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
                 Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
+                Modifier::Texture(t) if part.textured => return Err(Diag::new(t.span, LAYERED)),
                 Modifier::Texture(t) => obj.texture = self.texture(t)?,
                 Modifier::Interior(i) => {
                     obj.interior = self.interior(i)?;
@@ -69,7 +76,7 @@ impl Lowerer<'_> {
                 }
                 Modifier::NoShadow => obj.no_shadow = true,
             }
-            if matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_) | Modifier::Texture(_)) {
+            if surface || matches!(m, Modifier::Texture(_)) {
                 part.textured = true;
             }
         }
@@ -100,9 +107,19 @@ impl Lowerer<'_> {
         let mut interior = None;
         for m in modifiers {
             match m {
-                Modifier::Pigment(p) => texture.get_or_insert_with(Default::default).pigment = self.pigment(p)?,
-                Modifier::Normal(n) => texture.get_or_insert_with(Default::default).normal = Some(self.normal(n)?),
-                Modifier::Finish(f) => texture.get_or_insert_with(Default::default).finish = self.finish_block(f)?,
+                Modifier::Pigment(p) => {
+                    let pigment = self.pigment(p)?;
+                    texture.get_or_insert_with(|| self.default_texture.clone()).pigment = pigment;
+                }
+                Modifier::Normal(n) => {
+                    let normal = self.normal(n)?;
+                    texture.get_or_insert_with(|| self.default_texture.clone()).normal = Some(normal);
+                }
+                Modifier::Finish(f) => {
+                    let finish = self.finish_block(f)?;
+                    texture.get_or_insert_with(|| self.default_texture.clone()).finish = finish;
+                }
+                Modifier::Texture(t) if texture.is_some() => return Err(Diag::new(t.span, LAYERED)),
                 Modifier::Texture(t) => texture = Some(self.texture(t)?),
                 Modifier::Interior(i) => interior = Some(self.interior(i)?),
                 Modifier::Transform(t) => {

@@ -164,7 +164,7 @@ fn camera_errors() {
 #[test]
 fn pigment_copies_then_modifies() {
     let (s, _) = lower(
-        "#declare P = pigment { wood color_map { [0.9 rgb 1] [0.1 rgb 0] } turbulence 0.1 scale 2 }\n\
+        "#declare P = pigment { wood color_map { [0.1 rgb 0] [0.9 rgb 1] } turbulence 0.1 scale 2 }\n\
          sphere { 0, 1 pigment { P octaves 4 translate x } }",
     )
     .unwrap();
@@ -189,4 +189,104 @@ fn pigment_copies_then_modifies() {
         }
         other => panic!("{other:?}"),
     }
+}
+
+/// The wood map of the first object of `text`, as (value, r, g, b) rows.
+fn wood_map(text: &str) -> Vec<(f64, f64, f64, f64)> {
+    let (s, _) = lower(text).unwrap();
+    match &s.objects[0].texture.pigment.pattern {
+        crate::scene::desc::PigmentPattern::Wood(m) => {
+            m.iter().map(|e| (e.value, e.color.rgb.x, e.color.rgb.y, e.color.rgb.z)).collect()
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+fn assert_near(got: &[(f64, f64, f64, f64)], want: &[(f64, f64, f64, f64)]) {
+    let close = |a: &(f64, f64, f64, f64), b: &(f64, f64, f64, f64)| {
+        [a.0 - b.0, a.1 - b.1, a.2 - b.2, a.3 - b.3].iter().all(|d| d.abs() < 1e-12)
+    };
+    assert!(got.len() == want.len() && got.iter().zip(want).all(|(a, b)| close(a, b)), "{got:?} != {want:?}");
+}
+
+fn wood_with(map: &str) -> String {
+    format!("#declare R = rgb <1, 0, 0>;\n#declare B = rgb <0, 0, 1>;\nsphere {{ 0, 1 pigment {{ wood color_map {{ {map} }} }} }}")
+}
+
+#[test]
+fn color_map_band_entries_become_two_points() {
+    // POV-Ray 3.7 renders `[a, b color C1 color C2]` as C1 at a blending to C2 at b, comma
+    // optional, mixable with `[v C]` entries; `colour` works too.
+    let m = wood_map(&wood_with("[0.0, 0.5 color R color B] [0.5 1.0 colour rgb 1 colour rgb 0] [1 R]"));
+    assert_eq!(
+        m,
+        vec![
+            (0.0, 1.0, 0.0, 0.0),
+            (0.5, 0.0, 0.0, 1.0),
+            (0.5, 1.0, 1.0, 1.0),
+            (1.0, 0.0, 0.0, 0.0),
+            (1.0, 1.0, 0.0, 0.0)
+        ]
+    );
+    // Colour keywords and a filter inside a band's colours, as woodmaps.inc writes them.
+    let (s, _) = lower(
+        "sphere { 0, 1 pigment { wood color_map { [0, 0.1 color red 0.8 green 0.6 blue 0.2 filter 0.5 \
+         color rgbt <0.5, 0.3, 0.2, 0.25>] } } }",
+    )
+    .unwrap();
+    let crate::scene::desc::PigmentPattern::Wood(m) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert_eq!((m[0].color.filter, m[1].color.transmit, m[1].value), (0.5, 0.25, 0.1));
+}
+
+#[test]
+fn color_map_band_errors_are_located() {
+    // POV-Ray: "Expected 'color', colour identifier found instead".
+    let e = lower(&wood_with("[0 0.5 color R B]")).unwrap_err();
+    assert!(e.contains("expected `color` and the second colour"), "{e}");
+    let e = lower(&wood_with("[0 0.5 color R color B")).unwrap_err();
+    assert!(e.contains("to close the color_map entry"), "{e}");
+    let e = lower(&wood_with("[0 R color R color B]")).unwrap_err();
+    assert!(e.contains("expected a float, found a color"), "{e}");
+}
+
+#[test]
+fn color_map_reads_entries_in_written_order_like_povray() {
+    // Already in order: unchanged.
+    assert_eq!(wood_map(&wood_with("[0.2 R] [0.7 B]")), vec![(0.2, 1.0, 0.0, 0.0), (0.7, 0.0, 0.0, 1.0)]);
+    // `[0 R][0.8 B][0.3 G]` renders R→B up to 0.3, then G (POV-Ray 3.7, gradient x).
+    let m = wood_map(&wood_with("[0 R] [0.8 B] [0.3 rgb <0, 1, 0>]"));
+    assert_near(&m, &[(0.0, 1.0, 0.0, 0.0), (0.3, 0.625, 0.0, 0.375), (0.3, 0.0, 1.0, 0.0)]);
+    // Overlapping bands: the second one's blend starts at its own 0.4, read from 0.6 on (the
+    // render through POV-Ray and strahl agrees to 74 dB).
+    let m = wood_map(&wood_with("[0 0.6 color R color B] [0.4 1 color rgb 1 color rgb 0]"));
+    let g = 2.0 / 3.0;
+    assert_near(&m, &[(0.0, 1.0, 0.0, 0.0), (0.6, 0.0, 0.0, 1.0), (0.6, g, g, g), (1.0, 0.0, 0.0, 0.0)]);
+    // Descending: below 0.1 the first colour, from 0.1 on the last.
+    assert_eq!(wood_map(&wood_with("[0.9 R] [0.1 B]")), vec![(0.1, 1.0, 0.0, 0.0), (0.1, 0.0, 0.0, 1.0)]);
+    // Values outside 0–1 are accepted, as POV-Ray does.
+    assert_eq!(wood_map(&wood_with("[-0.5 R] [1.5 B]")), vec![(-0.5, 1.0, 0.0, 0.0), (1.5, 0.0, 0.0, 1.0)]);
+}
+
+#[test]
+fn declared_color_map_is_used_by_name() {
+    let m = wood_map(
+        "#declare M = color_map { [0.0, 0.5 color rgb 1 color rgb 0] }\n\
+         #declare N = colour_map { M }\n\
+         sphere { 0, 1 pigment { wood colour_map { N } } }",
+    );
+    assert_eq!(m, vec![(0.0, 1.0, 1.0, 1.0), (0.5, 0.0, 0.0, 0.0)]);
+    // A declared wood pigment takes a new map by name (woods.inc's `P_WoodGrain1A color_map { M }`).
+    let m = wood_map(
+        "#declare P = pigment { wood scale 2 }\n#declare M = color_map { [0 rgb 1] [1 rgb 0] }\n\
+         sphere { 0, 1 pigment { P color_map { M } } }",
+    );
+    assert_eq!(m, vec![(0.0, 1.0, 1.0, 1.0), (1.0, 0.0, 0.0, 0.0)]);
+    let e = lower("#declare P = pigment { wood }\nsphere { 0, 1 pigment { wood color_map { P } } }").unwrap_err();
+    assert!(e.contains("expected a declared color_map, found a pigment"), "{e}");
+    let e = lower("sphere { 0, 1 pigment { wood color_map { M } } }").unwrap_err();
+    assert!(e.contains("undefined identifier `M`"), "{e}");
+    // POV-Ray refuses entries after a map's name ("Must have at least one color in color map").
+    let e = lower("#declare M = color_map { [0 rgb 1] }\nsphere { 0, 1 pigment { wood color_map { M [1 rgb 0] } } }")
+        .unwrap_err();
+    assert!(e.contains("expected `}` to close `color_map`"), "{e}");
 }

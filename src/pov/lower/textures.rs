@@ -4,8 +4,8 @@
 use super::value::Value;
 use super::Lowerer;
 use crate::pov::ast::{
-    Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem, Pigment, PigmentItem,
-    Texture, TextureItem, Turb, TurbKind,
+    ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
+    Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
@@ -22,6 +22,10 @@ enum Pattern {
     Checker(Color, Color),
     Wood,
 }
+
+/// A pigment's colour map while its block is read, with the `color_map` written in the block
+/// (none for a map that came with the pigment it started from).
+type MapState = Option<(Vec<ColorMapEntry>, Option<Span>)>;
 
 /// Turbulence being built: `octaves` etc. may come before `turbulence`.
 struct TurbState {
@@ -67,26 +71,15 @@ impl Lowerer<'_> {
         Ok(())
     }
 
+    /// A pigment block: it starts from the default pigment (POV-Ray: `pigment { scale 2 }`
+    /// after `#default { pigment { Red } }` is red), or from the declared pigment it names.
     pub(super) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
-        let mut pattern = Pattern::Solid(Color::BLACK);
-        let mut map: Option<(Vec<ColorMapEntry>, Span)> = None;
-        let mut turb = TurbState::from(None);
-        let mut transform = Transform::default();
+        let (mut pattern, mut map, mut turb, mut transform) = pigment_state(self.default_texture.pigment.clone());
         for item in &p.items {
             match item {
                 PigmentItem::Base(e) => {
                     if let Some(Value::Pigment(base)) = self.declared(e)? {
-                        let base = (**base).clone();
-                        pattern = match base.pattern {
-                            PigmentPattern::Solid(c) => Pattern::Solid(c),
-                            PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
-                            PigmentPattern::Wood(m) => {
-                                map = Some((m, e.span));
-                                Pattern::Wood
-                            }
-                        };
-                        turb = TurbState::from(base.turbulence);
-                        transform = base.transform;
+                        (pattern, map, turb, transform) = pigment_state((**base).clone());
                     } else {
                         pattern = Pattern::Solid(self.eval(e)?.as_color(e.span).map_err(|_| {
                             Diag::new(e.span, "expected a declared pigment or a color at the start of `pigment`")
@@ -107,19 +100,7 @@ impl Lowerer<'_> {
                     pattern = Pattern::Checker(a, b);
                 }
                 PigmentItem::Wood(_) => pattern = Pattern::Wood,
-                PigmentItem::ColorMap(entries, span) => {
-                    let mut out = Vec::with_capacity(entries.len());
-                    for entry in entries {
-                        let value = self.float(&entry.value)?;
-                        if !(0.0..=1.0).contains(&value) {
-                            return Err(Diag::new(entry.value.span, "color_map values must be between 0 and 1"));
-                        }
-                        out.push(ColorMapEntry { value, color: self.color(&entry.color)? });
-                    }
-                    // Stable: entries with equal values keep their written order (a hard edge).
-                    out.sort_by(|a, b| a.value.total_cmp(&b.value));
-                    map = Some((out, *span));
-                }
+                PigmentItem::ColorMap(m) => map = Some((self.color_map(m)?, Some(m.span))),
                 PigmentItem::Turb(t) => self.turb(t, &mut turb)?,
                 PigmentItem::Transform(t) => transform = transform.then(&self.transform(t)?),
             }
@@ -127,19 +108,42 @@ impl Lowerer<'_> {
         let pattern = match (pattern, map) {
             (Pattern::Wood, Some((m, _))) => PigmentPattern::Wood(m),
             (Pattern::Wood, None) => PigmentPattern::Wood(default_wood_map()),
-            (_, Some((_, span))) => {
+            (_, Some((_, Some(span)))) => {
                 return Err(Diag::new(span, "color_map needs a pattern that uses it (supported: wood)"))
             }
-            (Pattern::Solid(c), None) => PigmentPattern::Solid(c),
-            (Pattern::Checker(a, b), None) => PigmentPattern::Checker(a, b),
+            (Pattern::Solid(c), _) => PigmentPattern::Solid(c),
+            (Pattern::Checker(a, b), _) => PigmentPattern::Checker(a, b),
         };
         Ok(PigmentDesc { pattern, turbulence: turb.finish(), transform })
     }
 
+    /// A colour map's entries in the sorted form the renderer reads (see `sorted_map`), or a
+    /// copy of the declared map it names.
+    pub(super) fn color_map(&mut self, m: &ColorMap) -> PResult<Vec<ColorMapEntry>> {
+        let entries = match &m.body {
+            ColorMapBody::Named(e) => {
+                return match self.declared(e)? {
+                    Some(Value::ColorMap(map)) => Ok(map.clone()),
+                    Some(other) => {
+                        Err(Diag::new(e.span, format!("expected a declared color_map, found {}", other.kind_name())))
+                    }
+                    None => Err(Diag::new(e.span, "expected the name of a declared color_map or `[` entries")),
+                };
+            }
+            ColorMapBody::Entries(entries) => entries,
+        };
+        let mut out = Vec::with_capacity(entries.len());
+        for entry in entries {
+            out.push(ColorMapEntry { value: self.float(&entry.value)?, color: self.color(&entry.color)? });
+        }
+        Ok(sorted_map(&out))
+    }
+
     pub(super) fn normal(&mut self, n: &Normal) -> PResult<NormalDesc> {
-        let mut pattern = None;
-        let mut turb = TurbState::from(None);
-        let mut transform = Transform::default();
+        let start = self.default_texture.normal.clone();
+        let mut pattern = start.as_ref().map(|n| n.pattern.clone());
+        let mut turb = TurbState::from(start.as_ref().and_then(|n| n.turbulence));
+        let mut transform = start.map_or_else(Transform::default, |n| n.transform);
         for item in &n.items {
             match item {
                 NormalItem::Base(e) => match self.declared(e)? {
@@ -173,7 +177,7 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {
-        let mut out = FinishDesc::default();
+        let mut out = self.default_texture.finish;
         for item in &f.items {
             match item {
                 FinishItem::Base(e) => match self.declared(e)? {
@@ -208,7 +212,7 @@ impl Lowerer<'_> {
     }
 
     pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
-        let mut out = TextureDesc::default();
+        let mut out = self.default_texture.clone();
         for item in &t.items {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
@@ -271,6 +275,79 @@ fn default_wood_map() -> Vec<ColorMapEntry> {
         .into_iter()
         .map(|(value, color)| ColorMapEntry { value, color })
         .collect()
+}
+
+/// The state `pigment` edits, from a pigment it starts from: pattern, map (with no span: a
+/// map that came with it is not an error when the pattern changes), turbulence, transform.
+fn pigment_state(p: PigmentDesc) -> (Pattern, MapState, TurbState, Transform) {
+    let mut map = None;
+    let pattern = match p.pattern {
+        PigmentPattern::Solid(c) => Pattern::Solid(c),
+        PigmentPattern::Checker(a, b) => Pattern::Checker(a, b),
+        PigmentPattern::Wood(m) => {
+            map = Some((m, None));
+            Pattern::Wood
+        }
+    };
+    (pattern, map, TurbState::from(p.turbulence), p.transform)
+}
+
+/// POV-Ray reads a colour map in written order, not sorted: a value at or above the last
+/// entry's gets the last colour; any other value blends the pair that ends at the first entry
+/// at or above it (so an entry below an earlier one only starts the next pair, and values
+/// outside 0–1 are fine). Measured by rendering `gradient x` maps with `ambient 1 diffuse 0`:
+/// `[0 R][0.8 B][0.3 G]` is R→B up to 0.3, then G. This returns sorted entries that give the
+/// same colours under the renderer's lookup (which assumes sorted entries); entries already in
+/// order come back unchanged.
+pub(super) fn sorted_map(entries: &[ColorMapEntry]) -> Vec<ColorMapEntry> {
+    let Some((&first, &last)) = entries.first().zip(entries.last()) else { return Vec::new() };
+    let mut out = vec![first];
+    let mut top = first.value;
+    for pair in entries.windows(2) {
+        let (a, b) = (pair[0], pair[1]);
+        if b.value <= top {
+            continue;
+        }
+        // This pair is what values in (top, b] read.
+        let start = ColorMapEntry { value: top, color: blend(a, b, top) };
+        if out.last() != Some(&start) {
+            out.push(start);
+        }
+        out.push(b);
+        top = b.value;
+    }
+    if last.value < top {
+        let below = ColorMapEntry { value: last.value, color: sorted_lookup(&out, last.value) };
+        out.retain(|e| e.value < last.value);
+        out.extend([below, last]);
+    } else if out.last() != Some(&last) {
+        // Ends at the top value with another colour: a hard step there.
+        out.push(last);
+    }
+    out
+}
+
+/// The colour `a`→`b` gives at `v`.
+fn blend(a: ColorMapEntry, b: ColorMapEntry, v: f64) -> Color {
+    if v <= a.value {
+        return a.color;
+    }
+    let t = (v - a.value) / (b.value - a.value);
+    let mix = |x: f64, y: f64| x + (y - x) * t;
+    Color {
+        rgb: a.color.rgb + (b.color.rgb - a.color.rgb) * t,
+        filter: mix(a.color.filter, b.color.filter),
+        transmit: mix(a.color.transmit, b.color.transmit),
+    }
+}
+
+/// The colour of sorted entries at `v`, as the renderer reads them.
+fn sorted_lookup(entries: &[ColorMapEntry], v: f64) -> Color {
+    match entries.iter().position(|e| v <= e.value) {
+        Some(0) => entries[0].color,
+        Some(i) => blend(entries[i - 1], entries[i], v),
+        None => entries[entries.len() - 1].color,
+    }
 }
 
 /// Carries a texture's patterns along with a transform applied after them.

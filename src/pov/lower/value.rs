@@ -6,7 +6,9 @@ use glam::DVec3;
 
 use crate::pov::ast::BinOp;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{Color, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc};
+use crate::scene::desc::{
+    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
+};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
@@ -19,6 +21,8 @@ pub enum Value {
     Finish(FinishDesc),
     Texture(Box<TextureDesc>),
     Interior(InteriorDesc),
+    /// A declared `color_map`, already in the sorted form the renderer reads.
+    ColorMap(Vec<ColorMapEntry>),
     Object(Box<Group>),
 }
 
@@ -56,6 +60,7 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Texture(_) => "a texture",
             Value::Interior(_) => "an interior",
+            Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
         }
     }

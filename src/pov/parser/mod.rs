@@ -9,7 +9,7 @@ mod keywords;
 mod scene;
 mod textures;
 
-use super::ast::{ClauseTest, DeclValue, Expr, MessageKind, Stmt, StrExpr, SwitchClause};
+use super::ast::{ClauseTest, DeclValue, DefaultItem, Expr, MessageKind, Stmt, StrExpr, SwitchClause};
 use super::lexer::{Token, TokenKind};
 use super::source::{Diag, PResult, Span};
 pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
@@ -17,6 +17,10 @@ pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
 /// Deepest nesting of blocks, parentheses and vectors; deeper input is rejected so that hostile
 /// files cannot overflow the stack of this recursive-descent parser.
 pub const MAX_DEPTH: usize = 128;
+
+/// Why a second texture on one object (or in one declaration) is refused.
+pub(crate) const LAYERED: &str =
+    "layered textures (a `texture` over another one) are not supported yet; use one `texture`";
 
 /// Directives that end a nested statement list.
 const BLOCK_ENDS: &[&str] = &["end", "else", "elseif", "case", "range"];
@@ -319,6 +323,7 @@ impl<'a> Parser<'a> {
                 Ok(Stmt::While { cond, body, span: start })
             }
             "switch" => self.switch(start),
+            "default" => self.default(start),
             "break" => Ok(Stmt::Break { span: start }),
             "debug" | "warning" | "error" => {
                 let kind = match name {
@@ -423,6 +428,37 @@ impl<'a> Parser<'a> {
         Ok(Stmt::Switch { value, clauses, span: start })
     }
 
+    /// `#default { texture {..} pigment {..} normal {..} finish {..} }`, in any number and order.
+    fn default(&mut self, start: Span) -> PResult<Stmt> {
+        const ITEMS: &[&str] = &["texture", "pigment", "normal", "finish"];
+        self.open_block("#default", start)?;
+        let mut items = Vec::new();
+        while !self.at_block_end() {
+            items.push(match self.peek_ident() {
+                Some("texture") => {
+                    let t = self.texture()?;
+                    self.refuse_layer()?;
+                    DefaultItem::Texture(t)
+                }
+                Some("pigment") => DefaultItem::Pigment(self.pigment()?),
+                Some("normal") => DefaultItem::Normal(self.normal()?),
+                Some("finish") => DefaultItem::Finish(self.finish()?),
+                _ => return Err(self.unknown_in("#default", ITEMS)),
+            });
+        }
+        let end = self.close_block("#default", start)?;
+        Ok(Stmt::Default { items, span: start.to(end) })
+    }
+
+    /// After a `texture { }` that a second one could layer over: POV-Ray would composite them
+    /// (`texture {A} texture {B}`); strahl refuses rather than drop a layer.
+    pub(super) fn refuse_layer(&self) -> PResult<()> {
+        match self.peek_ident() {
+            Some("texture") => Err(Diag::new(self.peek().span, LAYERED)),
+            _ => Ok(()),
+        }
+    }
+
     fn declare(&mut self, local: bool, start: Span) -> PResult<Stmt> {
         let t = self.bump();
         let name = match &t.kind {
@@ -443,8 +479,13 @@ impl<'a> Parser<'a> {
             Some("pigment") => DeclValue::Pigment(self.pigment()?),
             Some("normal") => DeclValue::Normal(self.normal()?),
             Some("finish") => DeclValue::Finish(self.finish()?),
-            Some("texture") => DeclValue::Texture(self.texture()?),
+            Some("texture") => {
+                let t = self.texture()?;
+                self.refuse_layer()?;
+                DeclValue::Texture(t)
+            }
             Some("interior") => DeclValue::Interior(self.interior()?),
+            Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
             Some(word) if scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }

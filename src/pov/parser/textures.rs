@@ -3,8 +3,8 @@
 use super::expr::color_key;
 use super::Parser;
 use crate::pov::ast::{
-    Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal, NormalItem, Pigment, PigmentItem, Texture,
-    TextureItem, Turb, TurbKind,
+    ColorMap, ColorMapBody, Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal, NormalItem,
+    Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
@@ -93,7 +93,7 @@ impl Parser<'_> {
                     PigmentItem::Checker(colors, span)
                 }
                 Some("wood") => PigmentItem::Wood(self.bump().span),
-                Some("color_map" | "colour_map") => self.color_map()?,
+                Some("color_map" | "colour_map") => PigmentItem::ColorMap(self.color_map()?),
                 Some(w) if turb_kind(w).is_some() => {
                     PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
@@ -106,23 +106,53 @@ impl Parser<'_> {
         Ok(Pigment { items, span: kw.to(end) })
     }
 
-    fn color_map(&mut self) -> PResult<PigmentItem> {
+    /// `color_map { [v C] ... }`, `color_map { [a, b color C1 color C2] ... }` (POV-Ray's older
+    /// band form, which may be mixed with the first) or `color_map { Name }`.
+    pub(super) fn color_map(&mut self) -> PResult<ColorMap> {
         let kw = self.bump().span;
         self.open_block("color_map", kw)?;
+        if matches!(self.peek().kind, TokenKind::Ident(_)) {
+            let name = self.expr()?;
+            self.close_block("color_map", kw)?;
+            return Ok(ColorMap { body: ColorMapBody::Named(name), span: kw });
+        }
         let mut entries = Vec::new();
         while !self.at_block_end() {
             let open = self.expect_punct('[', "to start a color_map entry")?;
             let value = self.expr()?;
             self.eat_punct(',');
-            let color = self.color()?;
+            let explicit = self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour"));
+            let first = self.color()?;
+            if explicit || !self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour")) {
+                let close = self.expect_punct(']', "to close the color_map entry")?;
+                entries.push(MapEntry { value, color: first, span: open.to(close) });
+                continue;
+            }
+            // `[a, b color C1 color C2]`: `first` was the band's end, `b`.
+            let from = self.color()?;
+            let to = self.band_color()?;
             let close = self.expect_punct(']', "to close the color_map entry")?;
-            entries.push(MapEntry { value, color, span: open.to(close) });
+            let span = open.to(close);
+            entries.push(MapEntry { value, color: from, span });
+            entries.push(MapEntry { value: first, color: to, span });
         }
         self.close_block("color_map", kw)?;
         if entries.is_empty() {
             return Err(Diag::new(kw, "color_map needs at least one entry"));
         }
-        Ok(PigmentItem::ColorMap(entries, kw))
+        Ok(ColorMap { body: ColorMapBody::Entries(entries), span: kw })
+    }
+
+    /// The second colour of a band, which POV-Ray requires to start with `color`/`colour`.
+    fn band_color(&mut self) -> PResult<crate::pov::ast::Expr> {
+        if !self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour")) {
+            let t = self.peek();
+            return Err(Diag::new(
+                t.span,
+                format!("expected `color` and the second colour of `[a, b color C1 color C2]`, found {}", t.describe()),
+            ));
+        }
+        self.color()
     }
 
     pub(super) fn normal(&mut self) -> PResult<Normal> {

@@ -190,7 +190,15 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
             let texture = random_texture(r, &transform);
             let ior = if r.pick(3) == 0 { r.f(0.8, 2.4) } else { 1.0 };
             let source = SourceRef { file: "generated".into(), line: i as u32 + 1, col: 1 };
-            ObjectDesc { shape, transform, texture, interior: InteriorDesc { ior }, no_shadow: r.pick(5) == 0, source }
+            ObjectDesc {
+                shape,
+                transform,
+                texture,
+                interior: InteriorDesc { ior },
+                no_shadow: r.pick(5) == 0,
+                hollow: false,
+                source,
+            }
         })
         .collect();
     let mut desc = SceneDesc { camera, lights, objects, ..SceneDesc::default() };

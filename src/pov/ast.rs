@@ -418,6 +418,8 @@ pub enum Modifier {
     Interior(Interior),
     Transform(TransformItem),
     NoShadow,
+    /// `hollow [on|off]`: kept for media (not modelled yet); changes nothing else in POV-Ray.
+    Hollow(Option<Expr>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -266,6 +266,9 @@ pub struct ObjectDesc {
     pub interior: InteriorDesc,
     /// `no_shadow`: the object is visible but casts no shadow (shadow rays ignore it).
     pub no_shadow: bool,
+    /// `hollow`: the inside may hold media. Kept as written; nothing that strahl renders yet
+    /// depends on it (in POV-Ray only media and fog inside objects do).
+    pub hollow: bool,
     pub source: SourceRef,
 }
 

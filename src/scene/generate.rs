@@ -109,6 +109,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
         texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
         interior: Default::default(),
         no_shadow: false,
+        hollow: false,
         source: SourceRef { file: "scene::generate".into(), line: index as u32, col: 0 },
     }
 }

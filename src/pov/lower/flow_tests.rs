@@ -246,3 +246,19 @@ fn log_is_base_10_and_min_max_take_any_number_of_arguments() {
     let err = lower("#declare R = max(1);").unwrap_err();
     assert!(err.contains("`max` takes 2 or more argument(s), found 1"), "{err}");
 }
+
+#[test]
+fn hollow_is_accepted_and_kept_for_media() {
+    let (s, _) = lower(
+        "sphere { 0, 1 hollow }\nsphere { 0, 1 hollow off }\nsphere { 0, 1 hollow 1 }\nsphere { 0, 1 }\n\
+         union { sphere { 0, 1 } sphere { x, 1 } hollow on }\nplane { y, 0 hollow pigment { rgb 1 } }",
+    )
+    .unwrap();
+    let hollow: Vec<bool> = s.objects.iter().map(|o| o.hollow).collect();
+    assert_eq!(hollow, [true, false, true, false, true, true, true]);
+    // Nothing else about the object changes: hollow only matters to media, which strahl lacks.
+    let (a, _) = lower("sphere { 0, 1 pigment { rgb 1 } }").unwrap();
+    let (b, _) = lower("sphere { 0, 1 hollow pigment { rgb 1 } }").unwrap();
+    assert_eq!(a.objects[0].texture, b.objects[0].texture);
+    assert_eq!(a.objects[0].shape, b.objects[0].shape);
+}

@@ -24,6 +24,7 @@ impl Lowerer<'_> {
                         texture: TextureDesc::default(),
                         interior: InteriorDesc::default(),
                         no_shadow: false,
+                        hollow: false,
                         source: self.files.source_ref(o.span),
                     },
                     textured: false,
@@ -75,6 +76,7 @@ impl Lowerer<'_> {
                     transform_texture(&mut obj.texture, &t);
                 }
                 Modifier::NoShadow => obj.no_shadow = true,
+                Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
             }
             if surface || matches!(m, Modifier::Texture(_)) {
                 part.textured = true;
@@ -102,6 +104,11 @@ impl Lowerer<'_> {
 
     /// A union's modifiers: transforms and `no_shadow` apply to every child; the union's own
     /// texture and interior go, at the end, to the children that have none, as in POV-Ray.
+    /// `hollow` alone is on; with a value, on unless it is 0.
+    fn hollow(&self, on: Option<&Expr>) -> PResult<bool> {
+        on.map_or(Ok(true), |e| Ok(self.float(e)? != 0.0))
+    }
+
     fn csg_modifiers(&mut self, group: &mut Group, modifiers: &[Modifier]) -> PResult<()> {
         let mut texture: Option<TextureDesc> = None;
         let mut interior = None;
@@ -135,6 +142,13 @@ impl Lowerer<'_> {
                 Modifier::NoShadow => {
                     for part in &mut group.parts {
                         part.desc.no_shadow = true;
+                    }
+                }
+                // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
+                Modifier::Hollow(on) => {
+                    let hollow = self.hollow(on.as_ref())?;
+                    for part in &mut group.parts {
+                        part.desc.hollow = hollow;
                     }
                 }
             }

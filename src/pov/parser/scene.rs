@@ -5,6 +5,7 @@ use super::{Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
 };
+use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
 
 const TOP_LEVEL: &[&str] = &[
@@ -29,7 +30,7 @@ const LIGHT: &[&str] =
 const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
 /// What may follow an object's arguments.
 pub const MODIFIERS: &[&str] =
-    &["pigment", "normal", "finish", "texture", "interior", "rotate", "scale", "translate", "no_shadow"];
+    &["pigment", "normal", "finish", "texture", "interior", "rotate", "scale", "translate", "no_shadow", "hollow"];
 
 pub fn is_object_keyword(word: &str) -> bool {
     shape_kind(word).is_some() || matches!(word, "object" | "union" | "merge")
@@ -223,6 +224,19 @@ impl Parser<'_> {
                 Some("no_shadow") => {
                     self.bump();
                     Modifier::NoShadow
+                }
+                Some("hollow") => {
+                    self.bump();
+                    // `hollow` alone means on; a boolean may follow (`hollow off`, `hollow 0`).
+                    let starts_value = match &self.peek().kind {
+                        TokenKind::Number(_) => true,
+                        TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
+                        TokenKind::Ident(w) => {
+                            matches!(w.as_str(), "on" | "off" | "true" | "false" | "yes" | "no")
+                        }
+                        _ => false,
+                    };
+                    Modifier::Hollow(if starts_value { Some(self.expr()?) } else { None })
                 }
                 Some(w) if matches!(kind, ObjectKind::Csg { .. }) && is_object_keyword(w) => {
                     return Err(Diag::new(

@@ -787,3 +787,32 @@ fn layered_textures_are_refused_at_the_second_texture() {
     .unwrap();
     assert_eq!(solid(&s, 0), DVec3::ONE);
 }
+
+#[test]
+fn declared_camera_is_used_by_name_and_may_be_moved() {
+    let declared = "#declare C = camera { location <0, 1, -5> look_at 0 angle 50 }\n\
+                    #declare D = camera { C translate x }\ncamera { D rotate y*10 }\n";
+    let inline = "camera { location <0, 1, -5> look_at 0 angle 50 translate x rotate y*10 }\n";
+    let a = load_text("declared_camera_a", declared).unwrap_or_else(|e| panic!("{e}"));
+    let b = load_text("declared_camera_b", inline).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(a.camera, b.camera);
+    assert!((a.camera.location - DVec3::new(1.0, 1.0, -5.0)).length() > 0.5, "the transforms moved it");
+}
+
+#[test]
+fn declared_camera_errors_are_located() {
+    // POV-Ray 3.7 accepts only transforms after a declared camera's name (checked by parsing).
+    let (line, col, m) = err(
+        "declared_camera_location",
+        "#declare C = camera { location <0, 1, -5> look_at 0 }\ncamera { C location <0, 3, -5> }\n",
+    );
+    assert_eq!((line, col), (2, 12), "{m}");
+    assert!(m.contains("`location` cannot follow a declared camera"), "{m}");
+    let (line, col, m) = err("declared_camera_float", "#declare S = 1;\ncamera { S }\n");
+    assert_eq!((line, col), (2, 10), "{m}");
+    assert!(m.contains("`S` is a float, not a camera"), "{m}");
+    // A misspelt first item is still reported as such, not as an undeclared camera.
+    let (line, col, m) = err("declared_camera_typo", "camera { locaton <0, 2, -5> }\n");
+    assert_eq!((line, col), (1, 10), "{m}");
+    assert!(m.contains("unknown keyword `locaton` in camera"), "{m}");
+}

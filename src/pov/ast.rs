@@ -137,6 +137,7 @@ pub enum DeclValue {
     Interior(Interior),
     ColorMap(ColorMap),
     Object(Object),
+    Camera(Vec<CameraItem>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -240,6 +241,8 @@ pub struct TransformItem {
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraItem {
+    /// `camera { C ... }`: start from declared camera `C` (only as the first item).
+    Declared(String, Span),
     Location(Expr),
     LookAt(Expr),
     Angle(Expr),

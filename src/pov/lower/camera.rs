@@ -3,19 +3,43 @@
 //! `location` the same as after it, and `angle` before or after `look_at` the same (checked
 //! with renders), so the written order of these items does not matter.
 
+use glam::DVec3;
+
+use super::value::Value;
 use super::Lowerer;
 use crate::pov::ast::CameraItem;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::CameraDesc;
+use crate::scene::desc::{CameraDesc, Transform};
+
+/// A camera as its items leave it, before `look_at`, `angle` and the transforms are resolved:
+/// what `#declare C = camera {...}` stores, so `camera { C ... }` continues from it as POV-Ray
+/// continues from a copy of the declared camera.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CameraState {
+    cam: CameraDesc,
+    angle: Option<f64>,
+    look_at: Option<(DVec3, Span)>,
+    transforms: Vec<Transform>,
+}
 
 impl Lowerer<'_> {
     pub(super) fn camera(&mut self, items: &[CameraItem], span: Span) -> PResult<CameraDesc> {
-        let mut cam = CameraDesc::default();
-        let mut angle = None;
-        let mut look_at = None;
-        let mut transforms = Vec::new();
+        let state = self.camera_state(items)?;
+        self.resolve_camera(state, span)
+    }
+
+    /// Applies `items` in order, starting from a declared camera when the first item names one.
+    pub(super) fn camera_state(&mut self, items: &[CameraItem]) -> PResult<CameraState> {
+        let mut state = CameraState::default();
         for item in items {
+            let CameraState { cam, angle, look_at, transforms } = &mut state;
             match item {
+                CameraItem::Declared(name, name_span) => match self.lookup_or_err(name, *name_span)? {
+                    Value::Camera(declared) => state = (**declared).clone(),
+                    other => {
+                        return Err(Diag::new(*name_span, format!("`{name}` is {}, not a camera", other.kind_name())))
+                    }
+                },
                 CameraItem::Location(e) => cam.location = self.vec3(e)?,
                 CameraItem::Direction(e) => cam.direction = self.vec3(e)?,
                 CameraItem::Right(e) => cam.right = self.vec3(e)?,
@@ -26,12 +50,18 @@ impl Lowerer<'_> {
                     if !(a > 0.0 && a < 180.0) {
                         return Err(Diag::new(e.span, "camera angle must be between 0 and 180 degrees"));
                     }
-                    angle = Some(a);
+                    *angle = Some(a);
                 }
-                CameraItem::LookAt(e) => look_at = Some((self.vec3(e)?, e.span)),
+                CameraItem::LookAt(e) => *look_at = Some((self.vec3(e)?, e.span)),
                 CameraItem::Transform(t) => transforms.push(self.transform(t)?),
             }
         }
+        Ok(state)
+    }
+
+    /// The camera `state` describes: `angle`, then `look_at`, then the transforms.
+    fn resolve_camera(&mut self, state: CameraState, span: Span) -> PResult<CameraDesc> {
+        let CameraState { mut cam, angle, look_at, transforms } = state;
         for (v, name) in [(cam.direction, "direction"), (cam.right, "right"), (cam.up, "up")] {
             if v.length() == 0.0 {
                 return Err(Diag::new(span, format!("camera {name} vector has zero length")));

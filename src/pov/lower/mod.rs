@@ -179,6 +179,7 @@ impl<'f> Lowerer<'f> {
                     DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
                     DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
                     DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
+                    DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
                 };
                 let scope = if *local { self.scopes.len() - 1 } else { 0 };
                 if !*local {

@@ -4,6 +4,7 @@
 
 use glam::DVec3;
 
+use super::camera::CameraState;
 use crate::pov::ast::BinOp;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
@@ -24,6 +25,8 @@ pub enum Value {
     /// A declared `color_map`, already in the sorted form the renderer reads.
     ColorMap(Vec<ColorMapEntry>),
     Object(Box<Group>),
+    /// A declared `camera`, before its `look_at` and transforms are resolved.
+    Camera(Box<CameraState>),
 }
 
 /// POV-Ray's epsilon for `=`, `!=` and truth (`#if (1e-11)` is false in POV-Ray 3.7).
@@ -62,6 +65,7 @@ impl Value {
             Value::Interior(_) => "an interior",
             Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
+            Value::Camera(_) => "a camera",
         }
     }
 

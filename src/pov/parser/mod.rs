@@ -486,6 +486,7 @@ impl<'a> Parser<'a> {
             }
             Some("interior") => DeclValue::Interior(self.interior()?),
             Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
+            Some("camera") => DeclValue::Camera(self.camera_items()?.0),
             Some(word) if scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }

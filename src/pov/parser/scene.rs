@@ -1,12 +1,12 @@
 //! Top-level items: camera, light_source, background, global_settings and objects with their
 //! modifiers.
 
-use super::{Parser, UNSUPPORTED_SHAPES};
+use super::{is_pov_keyword, Parser, RESERVED, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
 };
 use crate::pov::lexer::TokenKind;
-use crate::pov::source::{Diag, PResult};
+use crate::pov::source::{Diag, PResult, Span};
 
 const TOP_LEVEL: &[&str] = &[
     "camera",
@@ -81,11 +81,38 @@ impl Parser<'_> {
     }
 
     fn camera(&mut self) -> PResult<Stmt> {
+        let (items, span) = self.camera_items()?;
+        Ok(Stmt::Camera { items, span })
+    }
+
+    /// `camera { [Declared] items }`, for a camera statement or a declaration; returns the items
+    /// and the keyword's span.
+    pub(super) fn camera_items(&mut self) -> PResult<(Vec<CameraItem>, Span)> {
         let kw = self.bump().span;
         self.open_block("camera", kw)?;
         let mut items = Vec::new();
+        // POV-Ray lets a declared camera's name stand first, to start from a copy of it. A word
+        // followed by a value (`locaton <0, 2, -5>`) is a misspelt item instead, reported below.
+        let next_is_item_or_end =
+            matches!(self.tokens.get(self.pos + 1).map(|t| &t.kind), Some(TokenKind::Punct('}') | TokenKind::Ident(_)));
+        if let Some(name) = self
+            .peek_ident()
+            .filter(|w| next_is_item_or_end && !CAMERA.contains(w) && !is_pov_keyword(w) && !RESERVED.contains(w))
+        {
+            items.push(CameraItem::Declared(name.to_string(), self.bump().span));
+        }
+        let declared = !items.is_empty();
         while !self.at_block_end() {
             let item = match self.peek_ident() {
+                // POV-Ray 3.7 accepts only transforms after a declared camera (checked by parsing).
+                Some(word) if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "translate") => {
+                    return Err(Diag::new(
+                        self.peek().span,
+                        format!(
+                            "`{word}` cannot follow a declared camera: only rotate and translate may (as in POV-Ray)"
+                        ),
+                    ));
+                }
                 Some("perspective") => {
                     // The default (and only) projection strahl supports.
                     self.bump();
@@ -110,7 +137,7 @@ impl Parser<'_> {
             items.push(item);
         }
         self.close_block("camera", kw)?;
-        Ok(Stmt::Camera { items, span: kw })
+        Ok((items, kw))
     }
 
     fn light(&mut self) -> PResult<Light> {

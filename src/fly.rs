@@ -4,7 +4,6 @@
 use glam::{DVec2, DVec3};
 
 use crate::camera::{Basis, Camera};
-use crate::scene::build::Scene;
 
 /// What the user is asking for right now, independent of any windowing library.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -173,13 +172,13 @@ pub fn step(state: &FlyState, input: &InputState, dt: f64) -> FlyState {
     s
 }
 
-/// The default flying speed for `scene`: crosses its bounded objects' diagonal in
-/// [`CROSSING_SECONDS`], measured in world units because the camera flies in world units (render
-/// space is in the camera's unit of length, so its bounds would give every scale the same
-/// speed). A scene of planes alone crosses the camera's unit (its distance to `look_at`) instead.
-pub fn initial_speed(scene: &Scene) -> f64 {
-    let extent = scene.world_bounds().map_or(0.0, |(lo, hi)| (hi - lo).length());
-    let unit = scene.frame.unit;
+/// The default flying speed: crosses the diagonal of the scene's bounded objects (`world_bounds`,
+/// `Scene::world_bounds`) in [`CROSSING_SECONDS`]. Both are in world units because the camera
+/// flies in world units (render space is in the camera's unit of length, so its bounds would
+/// give every scale the same speed). A scene of planes alone crosses `unit`, the camera's
+/// distance to `look_at`, instead.
+pub fn initial_speed(world_bounds: Option<(DVec3, DVec3)>, unit: f64) -> f64 {
+    let extent = world_bounds.map_or(0.0, |(lo, hi)| (hi - lo).length());
     let length = if extent.is_finite() && extent > 0.0 { extent } else { unit };
     length / CROSSING_SECONDS
 }

@@ -42,7 +42,8 @@ fn default_fly_speed_crosses_the_scene_in_seconds_at_any_scale() {
         let (lo, hi) = scene.world_bounds().expect("the seed scene has bounded objects");
         let extent = (hi - lo).length();
         extents.push(extent);
-        let fly = FlyState::new(Camera::from_desc(&scaled.camera), initial_speed(&scene));
+        let fly =
+            FlyState::new(Camera::from_desc(&scaled.camera), initial_speed(scene.world_bounds(), scene.frame.unit));
         let seconds = seconds_to_fly(fly, extent);
         assert!((2.0..=10.0).contains(&seconds), "×{scale}: {seconds} s to cross {extent} units");
     }

@@ -142,7 +142,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     // F2 may switch to the `reference` preset, which traces in f64, at any time.
     scene.prepare_precise(desc);
     let camera = Camera::from_desc(&desc.camera);
-    let speed = crate::fly::initial_speed(&scene);
+    let speed = crate::fly::initial_speed(scene.world_bounds(), scene.frame.unit);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
     let playback = options.path.as_ref().map(|p| Playback::new(p.path.clone(), p.seconds));
     let (Some(playback), Some(report), Some(play)) =

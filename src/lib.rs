@@ -15,3 +15,4 @@ pub mod pov;
 pub mod render;
 pub mod scene;
 pub mod shading;
+pub mod text;

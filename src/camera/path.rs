@@ -90,7 +90,7 @@ impl CameraPath {
         let name = path.display().to_string();
         let bytes = std::fs::read(path).map_err(|e| LocatedError::whole_file(&name, format!("cannot read: {e}")))?;
         // A byte-order mark or a Latin-1 comment is read as in scene files.
-        Self::parse(&name, &crate::error::decode_user_text(bytes))
+        Self::parse(&name, &crate::text::decode_user_text(bytes))
     }
 
     pub fn keys(&self) -> &[Key] {

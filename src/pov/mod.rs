@@ -12,8 +12,9 @@ pub mod source;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use crate::error::{decode_user_text, visible, LocatedError};
+use crate::error::{visible, LocatedError};
 use crate::scene::desc::{SceneDesc, SourceRef};
+use crate::text::decode_user_text;
 use ast::Stmt;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
 

@@ -1,83 +1,19 @@
-//! Syntax tree of a scene file: what was written, with a span on every node. Identifiers are not
-//! resolved and expressions are not evaluated here; `lower` does both, in file order.
+//! Syntax tree of one scene item: what was written, with a span on every node. Declared names
+//! are resolved as they are read (`ExprKind::Value`); `lower` evaluates the rest.
+
+use std::rc::Rc;
 
 use super::source::Span;
+use super::value::Value;
 
-/// A top-level statement.
+/// An item of the scene as the parser hands it to `lower`; directives never get here, the
+/// token stream runs them (`parser::directives`).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Stmt {
-    Version {
-        value: Expr,
-        span: Span,
-    },
-    /// `#include "file"`; `path_span` locates the string.
-    Include {
-        path: String,
-        span: Span,
-        path_span: Span,
-    },
-    Declare {
-        name: String,
-        local: bool,
-        value: DeclValue,
-        span: Span,
-    },
-    /// `#ifdef (Name) ... [#else ...] #end` (`negate` for `#ifndef`).
-    IfDef {
-        name: String,
-        negate: bool,
-        body: Vec<Stmt>,
-        otherwise: Vec<Stmt>,
-        span: Span,
-    },
-    /// `#if (c) ... #elseif (c) ... #else ... #end`: the first branch whose condition holds.
-    If {
-        branches: Vec<(Expr, Vec<Stmt>)>,
-        otherwise: Option<Vec<Stmt>>,
-        span: Span,
-    },
-    /// `#while (c) ... #end`.
-    While {
-        cond: Expr,
-        body: Vec<Stmt>,
-        span: Span,
-    },
-    /// `#switch (v) #case (a) ... #range (lo, hi) ... #else ... #end`: runs from the first
-    /// matching clause onward until a `#break`, as POV-Ray does (clauses fall through).
-    Switch {
-        value: Expr,
-        clauses: Vec<SwitchClause>,
-        span: Span,
-    },
-    /// `#debug`, `#warning` or `#error` with its message.
-    Message {
-        kind: MessageKind,
-        text: StrExpr,
-        span: Span,
-    },
-    /// `#break`: leaves the innermost `#switch` or `#while`.
-    Break {
-        span: Span,
-    },
-    /// `#default { pigment {..} finish {..} ... }`: changes the texture objects placed from here
-    /// on start from.
-    Default {
-        items: Vec<DefaultItem>,
-        span: Span,
-    },
-    Camera {
-        items: Vec<CameraItem>,
-        span: Span,
-    },
+    Camera { items: Vec<CameraItem>, span: Span },
     Light(Light),
-    Background {
-        color: Expr,
-        span: Span,
-    },
-    GlobalSettings {
-        items: Vec<GlobalItem>,
-        span: Span,
-    },
+    Background { color: Expr, span: Span },
+    GlobalSettings { items: Vec<GlobalItem>, span: Span },
     Object(Object),
 }
 
@@ -88,42 +24,6 @@ pub enum DefaultItem {
     Pigment(Pigment),
     Normal(Normal),
     Finish(Finish),
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MessageKind {
-    /// Printed by POV-Ray to its debug stream; strahl ignores it.
-    Debug,
-    /// Becomes a warning.
-    Warning,
-    /// Stops loading with a located error.
-    Error,
-}
-
-/// A string expression, only as far as messages need: literals, `concat(...)`, `str(f, w, p)`.
-#[derive(Clone, Debug, PartialEq)]
-pub enum StrExpr {
-    Lit(String),
-    Concat(Vec<StrExpr>),
-    /// `str(value, width, precision)`.
-    Str(Box<Expr>, Box<Expr>, Box<Expr>),
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub enum ClauseTest {
-    /// `#case (v)`: equal within POV-Ray's epsilon.
-    Case(Expr),
-    /// `#range (lo, hi)`: inclusive.
-    Range(Expr, Expr),
-    /// `#else`: always matches.
-    Else,
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct SwitchClause {
-    pub test: ClauseTest,
-    pub body: Vec<Stmt>,
-    pub span: Span,
 }
 
 /// The right-hand side of `#declare Name = ...`.
@@ -182,7 +82,12 @@ pub enum ExprKind {
     Number(f64),
     /// A built-in vector constant (`x`, `y`, `z`).
     Vector3([f64; 3]),
+    /// A name that was not declared where it was read: an error if it is evaluated (the
+    /// parser may still find that it was a misspelt keyword instead).
     Ident(String),
+    /// A declared name, resolved where it was read (as POV-Ray does: a macro's locals are gone
+    /// by the time the object it built is lowered).
+    Value(Rc<Value>),
     /// `<a, b, ...>` with 2 to 5 components.
     Vector(Vec<Expr>),
     Neg(Box<Expr>),
@@ -242,7 +147,7 @@ pub struct TransformItem {
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraItem {
     /// `camera { C ... }`: start from declared camera `C` (only as the first item).
-    Declared(String, Span),
+    Declared(Expr),
     Location(Expr),
     LookAt(Expr),
     Angle(Expr),

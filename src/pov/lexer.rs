@@ -1,27 +1,58 @@
 //! Lexer: scene text → tokens with byte spans. Comments and whitespace vanish here; keywords stay
 //! identifiers (the parser knows which words are keywords in which block).
 
+use std::rc::Rc;
+
 use super::source::{Diag, FileId, PResult, Span};
 use crate::error::{quote_char, visible};
 
-/// The directives strahl understands; any other `#word` is rejected by name.
+/// POV-Ray 3.7's directives; any other `#word` is rejected by name.
 pub const DIRECTIVES: &[&str] = &[
-    "version", "include", "declare", "local", "ifdef", "ifndef", "if", "elseif", "else", "while", "switch", "case",
-    "range", "break", "end", "debug", "warning", "error", "default",
+    "version",
+    "include",
+    "declare",
+    "local",
+    "undef",
+    "ifdef",
+    "ifndef",
+    "if",
+    "elseif",
+    "else",
+    "while",
+    "for",
+    "switch",
+    "case",
+    "range",
+    "break",
+    "end",
+    "macro",
+    "debug",
+    "warning",
+    "error",
+    "render",
+    "statistics",
+    "default",
+    "fopen",
+    "fclose",
+    "read",
+    "write",
 ];
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum TokenKind {
     Number(f64),
-    /// Identifiers and keywords alike.
-    Ident(String),
-    Str(String),
+    /// Identifiers and keywords alike (shared text: tokens are copied as macros expand).
+    Ident(Rc<str>),
+    Str(Rc<str>),
     /// `#name`, without the `#`.
-    Directive(String),
+    Directive(&'static str),
     /// One of `{ } < > ( ) [ ] , ; + - * / = ! & | ? : .`.
     Punct(char),
     /// A two-character operator: `<=`, `>=` or `!=`.
     Op2(&'static str),
+    /// The end of an include or a macro body, as the parser's stream reports it (never made
+    /// by the lexer): the frame is closed when the parser reads past it.
+    FrameEnd,
     Eof,
 }
 
@@ -41,6 +72,7 @@ impl Token {
             TokenKind::Directive(d) => format!("`#{d}`"),
             TokenKind::Punct(c) => format!("`{c}`"),
             TokenKind::Op2(op) => format!("`{op}`"),
+            TokenKind::FrameEnd => "the end of the macro or included file".to_string(),
             TokenKind::Eof => "end of file".to_string(),
         }
     }
@@ -77,12 +109,12 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
                 i += 1;
             }
-            tokens.push(Token { kind: TokenKind::Ident(text[start..i].to_string()), span: span(start, i) });
+            tokens.push(Token { kind: TokenKind::Ident(Rc::from(&text[start..i])), span: span(start, i) });
         } else if c == b'"' {
             let (s, end) = lex_string(text, i)
                 .ok_or_else(|| Diag::new(span(start, start + 1), "string is never closed with `\"`"))?;
             i = end;
-            tokens.push(Token { kind: TokenKind::Str(s), span: span(start, end) });
+            tokens.push(Token { kind: TokenKind::Str(Rc::from(s)), span: span(start, end) });
         } else if c == b'#' {
             i += 1;
             // POV-Ray allows blanks between `#` and the directive name.
@@ -97,18 +129,13 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             if name.is_empty() {
                 return Err(Diag::new(span(start, start + 1), "expected a directive name after `#`"));
             }
-            if !DIRECTIVES.contains(&name) {
+            let Some(&name) = DIRECTIVES.iter().find(|&&d| d == name) else {
                 return Err(Diag::new(
                     span(start, i),
-                    format!(
-                        "`#{name}` is not supported (supported directives: #version, #include, \
-                         #declare, #local, #ifdef, #ifndef, #if, #elseif, #else, #while, \
-                         #switch, #case, #range, #break, #end, #debug, #warning, #error, \
-                         #default)"
-                    ),
+                    format!("`#{name}` is not a POV-Ray directive (directives: #{})", DIRECTIVES.join(", #")),
                 ));
-            }
-            tokens.push(Token { kind: TokenKind::Directive(name.to_string()), span: span(start, i) });
+            };
+            tokens.push(Token { kind: TokenKind::Directive(name), span: span(start, i) });
         } else if let Some(op) = OPS2.iter().find(|op| bytes[i..].starts_with(op.as_bytes())) {
             i += 2;
             tokens.push(Token { kind: TokenKind::Op2(op), span: span(start, i) });
@@ -276,8 +303,8 @@ mod tests {
 
     #[test]
     fn unsupported_directive_is_named() {
-        let e = lex(0, "\n #macro Foo()").unwrap_err();
-        assert!(e.message.starts_with("`#macro` is not supported"), "{}", e.message);
+        let e = lex(0, "\n #macros Foo()").unwrap_err();
+        assert!(e.message.starts_with("`#macros` is not a POV-Ray directive"), "{}", e.message);
         assert_eq!(e.span.start, 2);
     }
 

@@ -8,6 +8,7 @@ pub mod lexer;
 mod lower;
 pub mod parser;
 pub mod source;
+pub mod value;
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -15,8 +16,9 @@ use std::path::{Path, PathBuf};
 use crate::error::{visible, LocatedError};
 use crate::scene::desc::{SceneDesc, SourceRef};
 use crate::text::decode_user_text;
-use ast::Stmt;
+use lexer::Token;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
+use std::rc::Rc;
 
 /// The warning for a scene without objects, in POV-Ray 3.7's words.
 pub const NO_OBJECTS: &str = "No objects in scene.";
@@ -129,10 +131,14 @@ struct Loader<'a> {
 impl Loader<'_> {
     fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<Message>)> {
         let display = path.display().to_string();
-        let (file, stmts) = self.read_and_parse(path, display.clone())?;
+        let (file, tokens) = self.read_and_lex(path, display.clone(), None)?;
         self.stack.push((canonical(path), file));
         let options = self.options.clone();
-        let (scene, output) = lower::Lowerer::new(self, &options).finish(&stmts)?;
+        let mut low = lower::Lowerer::new(self, &options);
+        let (result, expansions) = parser::run(&mut low, tokens);
+        let (scene, output) = low.finish();
+        self.map.expansions = expansions;
+        result?;
         let mut messages: Vec<Message> = output
             .into_iter()
             .map(|o| match o {
@@ -147,22 +153,27 @@ impl Loader<'_> {
         Ok((scene, messages))
     }
 
-    /// Reads a file into the source map and parses it. An unreadable file still gets an entry,
+    /// Reads a file into the source map and lexes it. An unreadable file still gets an entry,
     /// so its error is located like any other. The text is decoded by `decode_user_text`: a
     /// byte-order mark is dropped and a file that is not UTF-8 is read as Latin-1.
-    fn read_and_parse(&mut self, path: &Path, display: String) -> PResult<(FileId, Vec<Stmt>)> {
+    fn read_and_lex(
+        &mut self,
+        path: &Path,
+        display: String,
+        included_from: Option<Span>,
+    ) -> PResult<(FileId, Rc<[Token]>)> {
         let (text, problem) = match std::fs::read(path) {
             Err(e) => (String::new(), Some(format!("cannot read file: {e}"))),
             Ok(b) if b.len() >= u32::MAX as usize => (String::new(), Some("file is too large".to_string())),
             Ok(b) => (decode_user_text(b), None),
         };
-        let id = self.map.add(SourceFile { display, path: path.to_path_buf(), text });
+        let id = self.map.add(SourceFile { display, path: path.to_path_buf(), text, included_from });
         if let Some(message) = problem {
             return Err(Diag::new(Span::new(id, 0, 0), message));
         }
         let text = self.map.file(id).map(|f| f.text.as_str()).unwrap_or("");
         let tokens = lexer::lex(id, text)?;
-        Ok((id, parser::parse(&tokens, text)?))
+        Ok((id, Rc::from(tokens)))
     }
 
     /// The including file's folder first, then the include path in order.
@@ -174,7 +185,7 @@ impl Loader<'_> {
 }
 
 impl lower::Files for Loader<'_> {
-    fn enter_include(&mut self, name: &str, directive: Span, path_span: Span) -> PResult<(FileId, Vec<Stmt>)> {
+    fn enter_include(&mut self, name: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)> {
         let Some(found) = self.resolve(name) else {
             let searched: Vec<String> = self.include.dirs.iter().map(|d| d.display().to_string()).collect();
             return Err(Diag::new(
@@ -196,13 +207,17 @@ impl lower::Files for Loader<'_> {
         if self.stack.len() > MAX_INCLUDE_DEPTH {
             return Err(Diag::new(directive, format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels")));
         }
-        let (id, stmts) = self.read_and_parse(&found, found.display().to_string())?;
+        let (id, tokens) = self.read_and_lex(&found, found.display().to_string(), Some(directive))?;
         self.stack.push((key, id));
-        Ok((id, stmts))
+        Ok((id, tokens))
     }
 
     fn leave_include(&mut self) {
         self.stack.pop();
+    }
+
+    fn file_exists(&self, name: &str) -> bool {
+        self.resolve(name).is_some()
     }
 
     fn source_ref(&self, span: Span) -> SourceRef {

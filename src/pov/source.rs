@@ -8,24 +8,38 @@ use crate::error::LocatedError;
 /// Index of a file in the `SourceMap`.
 pub type FileId = u32;
 
-/// A byte range in one source file.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+/// A byte range in one source file, and the macro expansion its token came through (0: none;
+/// else an index + 1 into `SourceMap::expansions`), so errors can print the chain of calls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Span {
     pub file: FileId,
     pub start: u32,
     pub end: u32,
+    pub expansion: u32,
 }
 
 impl Span {
     pub fn new(file: FileId, start: usize, end: usize) -> Span {
         // Files over 4 GiB are rejected when read, so offsets always fit.
-        Span { file, start: start as u32, end: end as u32 }
+        Span { file, start: start as u32, end: end as u32, expansion: 0 }
     }
 
     /// The span covering both `self` and `other` (same file).
     pub fn to(self, other: Span) -> Span {
-        Span { file: self.file, start: self.start.min(other.start), end: self.end.max(other.end) }
+        if other.file != self.file || other.expansion != self.expansion {
+            return self;
+        }
+        Span { start: self.start.min(other.start), end: self.end.max(other.end), ..self }
     }
+}
+
+/// One macro call: which macro, where it was defined, and where it was called (whose own
+/// `expansion` leads further out).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Expansion {
+    pub name: String,
+    pub defined: Span,
+    pub called: Span,
 }
 
 /// A problem found before we know how the file is displayed; turned into a `LocatedError` by
@@ -34,11 +48,26 @@ impl Span {
 pub struct Diag {
     pub span: Span,
     pub message: String,
+    /// Other places the message refers to ("declared here").
+    pub notes: Vec<(Span, String)>,
+    /// A feature POV-Ray has and strahl does not model yet (rather than a mistake in the
+    /// scene): a declaration that needs it is kept as unmodelled instead of failing.
+    pub unmodelled: bool,
 }
 
 impl Diag {
     pub fn new(span: Span, message: impl Into<String>) -> Diag {
-        Diag { span, message: message.into() }
+        Diag { span, message: message.into(), notes: Vec::new(), unmodelled: false }
+    }
+
+    /// An error naming a POV-Ray feature strahl does not model yet.
+    pub fn unmodelled(span: Span, message: impl Into<String>) -> Diag {
+        Diag { unmodelled: true, ..Diag::new(span, message) }
+    }
+
+    pub fn with_note(mut self, span: Span, note: impl Into<String>) -> Diag {
+        self.notes.push((span, note.into()));
+        self
     }
 }
 
@@ -52,13 +81,21 @@ pub struct SourceFile {
     pub display: String,
     pub path: PathBuf,
     pub text: String,
+    /// The `#include` directive that read this file (none for the scene itself).
+    pub included_from: Option<Span>,
 }
 
 /// All files read while loading one scene.
 #[derive(Clone, Debug, Default)]
 pub struct SourceMap {
     pub files: Vec<SourceFile>,
+    /// Macro calls that tokens came through; see `Span::expansion`.
+    pub expansions: Vec<Expansion>,
 }
+
+/// How many lines of "in macro ... called from ..." an error prints at most; deeper chains
+/// (recursion) are summarised.
+const MAX_CHAIN_LINES: usize = 12;
 
 impl SourceMap {
     pub fn add(&mut self, file: SourceFile) -> FileId {
@@ -72,14 +109,75 @@ impl SourceMap {
 
     /// Line and column (1-based) of the start of `span`.
     pub fn line_col(&self, span: Span) -> (u32, u32) {
-        let e = self.locate(&Diag::new(span, ""));
-        (e.line, e.col)
+        match self.file(span.file) {
+            Some(f) => {
+                let e = LocatedError::at_offset(&f.display, &f.text, span.start as usize, "");
+                (e.line, e.col)
+            }
+            None => (1, 1),
+        }
     }
 
+    /// The error with its position, followed by the macro calls and includes that led there,
+    /// innermost first, as a compiler prints an instantiation stack.
     pub fn locate(&self, diag: &Diag) -> LocatedError {
-        match self.file(diag.span.file) {
-            Some(f) => LocatedError::at_offset(&f.display, &f.text, diag.span.start as usize, &diag.message),
-            None => LocatedError::whole_file("<unknown>", &diag.message),
+        let mut message = diag.message.clone();
+        for (span, note) in &diag.notes {
+            message.push_str(&format!("\n  note: {note}: {}", self.position(*span)));
         }
+        for line in self.chain(diag.span) {
+            message.push_str("\n  ");
+            message.push_str(&line);
+        }
+        match self.file(diag.span.file) {
+            Some(f) => LocatedError::at_offset(&f.display, &f.text, diag.span.start as usize, &message),
+            None => LocatedError::whole_file("<unknown>", &message),
+        }
+    }
+
+    /// "file:line:col" of a span's start.
+    pub fn position(&self, span: Span) -> String {
+        let (line, col) = self.line_col(Span { expansion: 0, ..span });
+        let file = self.file(span.file).map_or("<unknown>", |f| f.display.as_str());
+        format!("{file}:{line}:{col}")
+    }
+
+    /// The macro calls and includes that `span` was reached through, innermost first.
+    pub fn chain(&self, span: Span) -> Vec<String> {
+        let mut lines = Vec::new();
+        let mut at = span;
+        let mut skipped = 0usize;
+        loop {
+            if at.expansion == 0 {
+                // Includes of the file the outermost call stands in.
+                let mut file = at.file;
+                let mut hops = 0;
+                while let Some(from) = self.file(file).and_then(|f| f.included_from) {
+                    lines.push(format!("in a file included from {}", self.position(from)));
+                    file = from.file;
+                    hops += 1;
+                    if hops > 64 {
+                        break;
+                    }
+                }
+                break;
+            }
+            let Some(e) = self.expansions.get(at.expansion as usize - 1) else { break };
+            if lines.len() < MAX_CHAIN_LINES {
+                lines.push(format!(
+                    "in macro `{}` (defined at {}), called from {}",
+                    e.name,
+                    self.position(e.defined),
+                    self.position(e.called)
+                ));
+            } else {
+                skipped += 1;
+            }
+            at = e.called;
+        }
+        if skipped > 0 {
+            lines.insert(MAX_CHAIN_LINES, format!("... and {skipped} more macro calls"));
+        }
+        lines
     }
 }

@@ -3,24 +3,11 @@
 //! `location` the same as after it, and `angle` before or after `look_at` the same (checked
 //! with renders), so the written order of these items does not matter.
 
-use glam::DVec3;
-
-use super::value::Value;
 use super::Lowerer;
 use crate::pov::ast::CameraItem;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{CameraDesc, Transform};
-
-/// A camera as its items leave it, before `look_at`, `angle` and the transforms are resolved:
-/// what `#declare C = camera {...}` stores, so `camera { C ... }` continues from it as POV-Ray
-/// continues from a copy of the declared camera.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct CameraState {
-    cam: CameraDesc,
-    angle: Option<f64>,
-    look_at: Option<(DVec3, Span)>,
-    transforms: Vec<Transform>,
-}
+use crate::pov::value::{CameraState, Value};
+use crate::scene::desc::CameraDesc;
 
 impl Lowerer<'_> {
     pub(super) fn camera(&mut self, items: &[CameraItem], span: Span) -> PResult<CameraDesc> {
@@ -34,11 +21,9 @@ impl Lowerer<'_> {
         for item in items {
             let CameraState { cam, angle, look_at, transforms } = &mut state;
             match item {
-                CameraItem::Declared(name, name_span) => match self.lookup_or_err(name, *name_span)? {
-                    Value::Camera(declared) => state = (**declared).clone(),
-                    other => {
-                        return Err(Diag::new(*name_span, format!("`{name}` is {}, not a camera", other.kind_name())))
-                    }
+                CameraItem::Declared(e) => match self.eval(e)? {
+                    Value::Camera(declared) => state = *declared,
+                    other => return Err(other.wrong_kind(e.span, "a camera")),
                 },
                 CameraItem::Location(e) => cam.location = self.vec3(e)?,
                 CameraItem::Direction(e) => cam.direction = self.vec3(e)?,

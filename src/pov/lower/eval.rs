@@ -2,19 +2,20 @@
 
 use glam::{DMat4, DVec3};
 
-use super::value::{binary, color_from, negate, truthy, Value};
 use super::Lowerer;
 use crate::pov::ast::{Builtin, ColorKey, Expr, ExprKind, TransformItem, TransformKind};
 use crate::pov::source::{Diag, PResult};
+use crate::pov::value::{binary, color_from, negate, truthy, Value};
 use crate::scene::desc::{Color, Transform};
 
 impl Lowerer<'_> {
-    pub(super) fn eval(&self, e: &Expr) -> PResult<Value> {
+    pub(crate) fn eval(&self, e: &Expr) -> PResult<Value> {
         match &e.kind {
             ExprKind::Number(v) => Ok(Value::Float(*v)),
             ExprKind::Vector3(v) => Ok(Value::Vector(v.to_vec())),
             ExprKind::Version => Ok(Value::Float(self.version)),
-            ExprKind::Ident(name) => self.lookup_or_err(name, e.span).cloned(),
+            ExprKind::Ident(name) => Err(Diag::new(e.span, format!("undefined identifier `{name}`"))),
+            ExprKind::Value(v) => Ok((**v).clone()),
             ExprKind::Vector(parts) => {
                 let mut out = Vec::with_capacity(parts.len());
                 for p in parts {
@@ -196,7 +197,10 @@ impl Lowerer<'_> {
                 }
                 Value::Vector(a.normalize().to_array().to_vec())
             }
-            _ => return Err(Diag::new(e.span, format!("unknown function `{name}`"))),
+            _ => match self.other_function(name, args, e) {
+                Some(result) => result?,
+                None => return Err(Diag::new(e.span, format!("unknown function `{name}`"))),
+            },
         };
         let finite = match &out {
             Value::Float(x) => x.is_finite(),
@@ -209,7 +213,7 @@ impl Lowerer<'_> {
         Ok(out)
     }
 
-    pub(super) fn float(&self, e: &Expr) -> PResult<f64> {
+    pub(crate) fn float(&self, e: &Expr) -> PResult<f64> {
         self.eval(e)?.as_float(e.span)
     }
 
@@ -227,7 +231,7 @@ impl Lowerer<'_> {
         let matrix = match t.kind {
             // glam's rotation matrices turn the same way as POV-Ray's: `rotate y*90` takes +x
             // to -z (checked with a POV-Ray 3.7 render; see tests/pov_parse.rs).
-            TransformKind::Rotate => rotation_x(v.x).then(rotation_y(v.y)).then(rotation_z(v.z)).into(),
+            TransformKind::Rotate => rotation(v),
             TransformKind::Scale => {
                 // POV-Ray's behaviour: keep each axis scaled by 0 unscaled, and warn, once for
                 // the whole `scale` (not once per axis: `scale 0` is one mistake).
@@ -249,6 +253,11 @@ impl Lowerer<'_> {
         };
         Ok(Transform { matrix, inverse: matrix.inverse() })
     }
+}
+
+/// `rotate v`: degrees about x, then y, then z.
+pub(super) fn rotation(v: DVec3) -> DMat4 {
+    rotation_x(v.x).then(rotation_y(v.y)).then(rotation_z(v.z)).into()
 }
 
 /// Sine and cosine of an angle in degrees, exact for multiples of 90° (so `rotate y*90` maps a

@@ -128,8 +128,11 @@ fn break_leaves_a_while_and_nowhere_else() {
 #[test]
 fn unmatched_directives_are_named() {
     assert_eq!(lower("#else").unwrap_err(), "`#else` without a matching `#if`");
-    assert!(lower("#if (1) sphere { 0, 1 }").unwrap_err().contains("expected `#end`"));
-    assert!(lower("#while (1) #case (2) #end").unwrap_err().contains("`#case` is not allowed in `#while`"));
+    assert_eq!(
+        lower("#if (1) sphere { 0, 1 }").unwrap_err(),
+        "`#if` is not closed by `#end` before the end of the scene file"
+    );
+    assert_eq!(lower("#while (1) #case (2) #end").unwrap_err(), "`#case` without a matching `#switch`");
     assert!(lower("#if 1 #end").unwrap_err().contains("expected `(` after `#if`"));
 }
 

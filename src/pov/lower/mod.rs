@@ -1,37 +1,32 @@
-//! Lowering: syntax tree → `SceneDesc`. Evaluates expressions, resolves `#declare`/`#local`
-//! names in file order, follows `#include` (through `Files`), and composes transforms the way
-//! POV-Ray does. Split by topic: `eval` (expressions, colours, transforms), `camera`,
-//! `textures`, `objects`.
+//! Lowering: scene items → `SceneDesc`, one at a time as the parser reads them. Holds the symbol
+//! table the directives write (scopes for files and macro calls), evaluates expressions, and
+//! composes transforms the way POV-Ray does. Split by topic: `eval` (expressions, colours,
+//! transforms), `camera`, `textures`, `objects`.
 
 mod camera;
 mod eval;
+mod functions;
 mod objects;
 mod textures;
-pub mod value;
 
 use std::collections::HashMap;
+use std::rc::Rc;
 
-use crate::pov::ast::{ClauseTest, DeclValue, DefaultItem, GlobalItem, MessageKind, Stmt, StrExpr};
+use crate::pov::ast::{DeclValue, DefaultItem, GlobalItem, Stmt};
+use crate::pov::lexer::Token;
 use crate::pov::source::{Diag, FileId, PResult, Span};
+use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
 use crate::scene::desc::{LightDesc, SceneDesc, SourceRef, TextureDesc};
-use value::{truthy, Part, Value, EPSILON};
 
-/// Total `#while` iterations allowed in one scene: far beyond real scenes (a 100³ grid of
-/// spheres is a million), small enough that a loop that never ends fails in seconds.
+/// Total loop iterations (`#while`, `#for`) allowed in one scene: far beyond real scenes (a
+/// 100³ grid of spheres is a million), small enough that a loop that never ends fails in
+/// seconds.
 pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
 
 /// Objects allowed in the scene, and children in one union: an `ObjectDesc` is about 1 KiB, so
 /// this bounds memory near 2 GiB even for a union that doubles itself in a loop.
 pub const MAX_OBJECTS: usize = 2_000_000;
-
-/// How a statement list ended: normally, or at a `#break` that the enclosing `#switch` or
-/// `#while` must honour.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Flow {
-    Normal,
-    Break(Span),
-}
 
 /// What a scene prints while it is lowered: `#debug` text (POV-Ray's debug stream, exactly as
 /// written, newlines included) and located warnings.
@@ -41,34 +36,57 @@ pub enum Output {
     Warning(Diag),
 }
 
-/// What lowering needs from the loader: included files' syntax trees, and positions for
+/// `#debug` (and `#render`, `#statistics`), `#warning`, `#error`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MessageKind {
+    Debug,
+    Warning,
+    Error,
+}
+
+/// What lowering needs from the loader: included files' tokens, and positions for
 /// `ObjectDesc::source`.
 pub trait Files {
-    /// Resolves, reads and parses `#include "path"`; errors (not found, cycle, too deep) are
+    /// Resolves, reads and lexes `#include "path"`; errors (not found, cycle, too deep) are
     /// located at `path_span`/`directive`.
-    fn enter_include(&mut self, path: &str, directive: Span, path_span: Span) -> PResult<(FileId, Vec<Stmt>)>;
-    /// Called when the include entered last has been lowered.
+    fn enter_include(&mut self, path: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)>;
+    /// Called when the include entered last has been run.
     fn leave_include(&mut self);
     fn source_ref(&self, span: Span) -> SourceRef;
+    /// `file_exists(name)`: whether `#include` would find it.
+    fn file_exists(&self, name: &str) -> bool;
+}
+
+/// One level of the symbol table: the scene's globals, a file's `#local`s, a macro call.
+#[derive(Debug, Default)]
+struct Scope {
+    vars: HashMap<Rc<str>, Value>,
+    /// A macro call's parameters (empty for other scopes).
+    params: Vec<Rc<str>>,
+    /// Parameters the macro assigned, to write back to by-reference arguments.
+    written: Vec<Rc<str>>,
 }
 
 pub struct Lowerer<'f> {
-    files: &'f mut dyn Files,
+    pub(crate) files: &'f mut dyn Files,
     scene: SceneDesc,
     /// The language version in effect (`#version`); read by the `version` keyword.
     version: f64,
-    /// `#declare`d names (index 0) and one map of `#local` names per open file.
-    scopes: Vec<HashMap<String, Value>>,
+    /// Global names (index 0), the scene file's `#local`s (1), then one scope per open include
+    /// or macro call. Names are looked up innermost first, as POV-Ray does.
+    scopes: Vec<Scope>,
     /// `#debug` text and warnings, in the order the scene produced them.
     output: Vec<Output>,
     options: ParseOptions,
     /// The children gathered so far by each open `union`/`merge`, innermost last.
     csg_stack: Vec<Vec<Part>>,
-    /// `#while` iterations so far, against `MAX_LOOP_ITERATIONS`.
+    /// Loop iterations so far, against `MAX_LOOP_ITERATIONS`.
     loop_iterations: u64,
     /// The texture `#default` last set (POV-Ray's own until then): where every texture, pigment,
     /// finish and normal block starts, and what objects without one get when placed.
     default_texture: TextureDesc,
+    /// `seed()`'s streams for `rand()`.
+    random: functions::RandomStreams,
 }
 
 impl<'f> Lowerer<'f> {
@@ -77,22 +95,20 @@ impl<'f> Lowerer<'f> {
             files,
             scene: SceneDesc::default(),
             version: 3.7,
-            scopes: vec![HashMap::new(), HashMap::new()],
+            scopes: vec![Scope::default(), Scope::default()],
             output: Vec::new(),
             options: options.clone(),
             csg_stack: Vec::new(),
             loop_iterations: 0,
             default_texture: TextureDesc::default(),
+            random: Default::default(),
         }
     }
 
-    /// Lowers the main file's statements and returns the finished scene with what it printed.
-    pub fn finish(mut self, stmts: &[Stmt]) -> PResult<(SceneDesc, Vec<Output>)> {
-        if let Flow::Break(span) = self.stmts(stmts)? {
-            return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
-        }
+    /// The finished scene with what it printed.
+    pub fn finish(mut self) -> (SceneDesc, Vec<Output>) {
         self.scene.version = self.version;
-        Ok((self.scene, self.output))
+        (self.scene, self.output)
     }
 
     /// Records a warning (POV-Ray's "Scale by 0.0", `#warning`, ...) for the caller to print.
@@ -100,43 +116,154 @@ impl<'f> Lowerer<'f> {
         self.output.push(Output::Warning(diag));
     }
 
-    fn lookup(&self, name: &str) -> Option<&Value> {
-        self.scopes.iter().rev().find_map(|s| s.get(name))
+    pub(crate) fn source_ref(&self, span: Span) -> SourceRef {
+        self.files.source_ref(span)
     }
 
-    fn lookup_or_err(&self, name: &str, span: Span) -> PResult<&Value> {
-        self.lookup(name).ok_or_else(|| Diag::new(span, format!("undefined identifier `{name}`")))
+    // ---- the symbol table, for the directives ------------------------------------------
+
+    pub(crate) fn lookup(&self, name: &str) -> Option<&Value> {
+        self.scopes.iter().rev().find_map(|s| s.vars.get(name))
     }
 
-    fn stmts(&mut self, stmts: &[Stmt]) -> PResult<Flow> {
-        for s in stmts {
-            if let Flow::Break(span) = self.stmt(s)? {
-                return Ok(Flow::Break(span));
+    pub(crate) fn set_version(&mut self, v: f64) {
+        self.version = v;
+        self.scene.version_directive = true;
+    }
+
+    /// `#undef Name`: the innermost declaration goes.
+    pub(crate) fn undef(&mut self, name: &str) {
+        if let Some(s) = self.scopes.iter_mut().rev().find(|s| s.vars.contains_key(name)) {
+            s.vars.remove(name);
+        }
+    }
+
+    /// Counts one loop iteration; false once there were too many.
+    pub(crate) fn count_iteration(&mut self) -> bool {
+        self.loop_iterations += 1;
+        self.loop_iterations <= MAX_LOOP_ITERATIONS
+    }
+
+    /// `#declare` (global, or a macro's parameter of that name) or `#local` (innermost scope)
+    /// of `name`, or of one element of it with `index`.
+    pub(crate) fn assign(&mut self, name: &str, local: bool, index: &[usize], value: Value, span: Span) -> PResult<()> {
+        let innermost = self.scopes.len() - 1;
+        let holder = self.scopes.iter().rposition(|s| s.vars.contains_key(name));
+        let param_scope = holder.filter(|&i| self.scopes[i].params.iter().any(|p| &**p == name));
+        let scope = if local {
+            innermost
+        } else if let Some(i) = param_scope {
+            i
+        } else if index.is_empty() {
+            // `#declare` replaces the global value; a same-named local would shadow it.
+            for s in &mut self.scopes[1..] {
+                if !s.params.iter().any(|p| &**p == name) {
+                    s.vars.remove(name);
+                }
+            }
+            0
+        } else {
+            holder.unwrap_or(0)
+        };
+        if param_scope == Some(scope) || self.scopes[scope].params.iter().any(|p| &**p == name) {
+            let s = &mut self.scopes[scope];
+            if !s.written.iter().any(|p| &**p == name) {
+                s.written.push(Rc::from(name));
             }
         }
-        Ok(Flow::Normal)
+        if index.is_empty() {
+            self.scopes[scope].vars.insert(Rc::from(name), value);
+            return Ok(());
+        }
+        let array = match self.scopes[scope].vars.get_mut(name) {
+            Some(Value::Array(a)) => a,
+            Some(other) => return Err(Diag::new(span, format!("`{name}` is {}, not an array", other.kind_name()))),
+            None => return Err(Diag::new(span, format!("undefined array `{name}`"))),
+        };
+        let at = array.offset(index).map_err(|m| Diag::new(span, m))?;
+        Rc::make_mut(array).items[at] = Some(value);
+        Ok(())
     }
 
-    /// The text of a message's string expression.
-    fn string(&self, e: &StrExpr) -> PResult<String> {
-        Ok(match e {
-            StrExpr::Lit(s) => s.clone(),
-            StrExpr::Concat(parts) => {
-                let mut out = String::new();
-                for p in parts {
-                    out.push_str(&self.string(p)?);
-                }
-                out
+    /// `#macro`: macros are global, as in POV-Ray.
+    pub(crate) fn define_macro(&mut self, name: &str, m: Value) {
+        self.scopes[0].vars.insert(Rc::from(name), m);
+    }
+
+    /// A scope for an include file's `#local`s.
+    pub(crate) fn push_scope(&mut self) {
+        self.scopes.push(Scope::default());
+    }
+
+    pub(crate) fn pop_scope(&mut self) {
+        if self.scopes.len() > 2 {
+            self.scopes.pop();
+        }
+    }
+
+    /// A macro call's scope, its parameters bound to `args`.
+    pub(crate) fn push_macro_scope(&mut self, args: Vec<(Rc<str>, Value)>, params: Vec<Rc<str>>) {
+        self.scopes.push(Scope { vars: args.into_iter().collect(), params, written: Vec::new() });
+    }
+
+    /// Closes a macro call's scope; returns the parameters it assigned, with their values.
+    pub(crate) fn pop_macro_scope(&mut self) -> Vec<(Rc<str>, Value)> {
+        if self.scopes.len() <= 2 {
+            return Vec::new();
+        }
+        let mut s = self.scopes.pop().unwrap_or_default();
+        s.written.iter().filter_map(|p| s.vars.remove(p).map(|v| (p.clone(), v))).collect()
+    }
+
+    /// A by-reference argument's new value, into the caller's variable (innermost scope that
+    /// has it; a new global when the caller had none).
+    pub(crate) fn write_back(&mut self, target: &str, value: Value) {
+        let scope = self.scopes.iter().rposition(|s| s.vars.contains_key(target)).unwrap_or(0);
+        if self.scopes[scope].params.iter().any(|p| &**p == target) {
+            let s = &mut self.scopes[scope];
+            if !s.written.iter().any(|p| &**p == target) {
+                s.written.push(Rc::from(target));
             }
-            StrExpr::Str(value, width, precision) => {
-                let v = self.float(value)?;
-                let w = self.float(width)?.clamp(0.0, 64.0) as usize;
-                // POV-Ray: a negative precision means its default of 6 digits.
-                let p = self.float(precision)?;
-                let p = if p < 0.0 { 6 } else { p.min(16.0) as usize };
-                format!("{v:w$.p$}")
-            }
+        }
+        self.scopes[scope].vars.insert(Rc::from(target), value);
+    }
+
+    /// The value of a declaration's right-hand side.
+    pub(crate) fn declaration(&mut self, value: &DeclValue) -> PResult<Value> {
+        Ok(match value {
+            DeclValue::Expr(e) => self.eval(e)?,
+            DeclValue::Pigment(p) => Value::Pigment(Box::new(self.pigment(p)?)),
+            DeclValue::Normal(n) => Value::Normal(Box::new(self.normal(n)?)),
+            DeclValue::Finish(f) => Value::Finish(self.finish_block(f)?),
+            DeclValue::Texture(t) => Value::Texture(Box::new(self.texture(t)?)),
+            DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
+            DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
+            DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
+            DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
         })
+    }
+
+    /// `#default { ... }`: where later texture blocks and untextured objects start.
+    pub(crate) fn set_default(&mut self, items: &[DefaultItem]) -> PResult<()> {
+        for item in items {
+            match item {
+                DefaultItem::Texture(t) => self.default_texture = self.texture(t)?,
+                DefaultItem::Pigment(p) => self.default_texture.pigment = self.pigment(p)?,
+                DefaultItem::Normal(n) => self.default_texture.normal = Some(self.normal(n)?),
+                DefaultItem::Finish(f) => self.default_texture.finish = self.finish_block(f)?,
+            }
+        }
+        Ok(())
+    }
+
+    /// `#debug` text goes to the debug stream, `#warning` becomes a warning, `#error` stops.
+    pub(crate) fn message(&mut self, kind: MessageKind, text: String, span: Span) -> PResult<()> {
+        match kind {
+            MessageKind::Debug => self.output.push(Output::Debug(text)),
+            MessageKind::Warning => self.warn(Diag::new(span, text)),
+            MessageKind::Error => return Err(Diag::new(span, format!("#error: {text}"))),
+        }
+        Ok(())
     }
 
     /// Rejects scene-level statements inside a `union`.
@@ -148,127 +275,9 @@ impl<'f> Lowerer<'f> {
         }
     }
 
-    fn stmt(&mut self, stmt: &Stmt) -> PResult<Flow> {
+    /// Adds one scene item.
+    pub(crate) fn stmt(&mut self, stmt: &Stmt) -> PResult<()> {
         match stmt {
-            Stmt::Version { value, .. } => {
-                let v = self.eval(value)?.as_float(value.span)?;
-                if !(1.0..=3.8).contains(&v) {
-                    return Err(Diag::new(value.span, format!("unsupported #version {v} (expected 1.0 to 3.8)")));
-                }
-                self.version = v;
-                self.scene.version_directive = true;
-            }
-            Stmt::Include { path, span, path_span } => {
-                let (_, stmts) = self.files.enter_include(path, *span, *path_span)?;
-                self.scopes.push(HashMap::new());
-                let result = self.stmts(&stmts);
-                self.scopes.pop();
-                self.files.leave_include();
-                if let Flow::Break(span) = result? {
-                    // POV-Ray does not let `#break` leave the file it is written in.
-                    return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
-                }
-            }
-            Stmt::Declare { name, local, value, .. } => {
-                let v = match value {
-                    DeclValue::Expr(e) => self.eval(e)?,
-                    DeclValue::Pigment(p) => Value::Pigment(Box::new(self.pigment(p)?)),
-                    DeclValue::Normal(n) => Value::Normal(Box::new(self.normal(n)?)),
-                    DeclValue::Finish(f) => Value::Finish(self.finish_block(f)?),
-                    DeclValue::Texture(t) => Value::Texture(Box::new(self.texture(t)?)),
-                    DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
-                    DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
-                    DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
-                    DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
-                };
-                let scope = if *local { self.scopes.len() - 1 } else { 0 };
-                if !*local {
-                    // `#declare` replaces the global value; a same-named local would shadow it.
-                    for s in &mut self.scopes[1..] {
-                        s.remove(name);
-                    }
-                }
-                self.scopes[scope].insert(name.clone(), v);
-            }
-            Stmt::IfDef { name, negate, body, otherwise, .. } => {
-                let taken = if self.lookup(name).is_some() != *negate { body } else { otherwise };
-                return self.stmts(taken);
-            }
-            Stmt::If { branches, otherwise, .. } => {
-                for (cond, body) in branches {
-                    if truthy(self.float(cond)?) {
-                        return self.stmts(body);
-                    }
-                }
-                if let Some(body) = otherwise {
-                    return self.stmts(body);
-                }
-            }
-            Stmt::While { cond, body, span } => {
-                while truthy(self.float(cond)?) {
-                    self.loop_iterations += 1;
-                    if self.loop_iterations > MAX_LOOP_ITERATIONS {
-                        return Err(Diag::new(
-                            *span,
-                            format!(
-                                "`#while` loops ran more than {MAX_LOOP_ITERATIONS} iterations in \
-                                 total; is the condition ever false?"
-                            ),
-                        ));
-                    }
-                    if let Flow::Break(_) = self.stmts(body)? {
-                        break;
-                    }
-                }
-            }
-            Stmt::Switch { value, clauses, .. } => {
-                let v = self.float(value)?;
-                let mut matched = None;
-                for (i, clause) in clauses.iter().enumerate() {
-                    let hit = match &clause.test {
-                        ClauseTest::Case(e) => (self.float(e)? - v).abs() < EPSILON,
-                        ClauseTest::Range(lo, hi) => (self.float(lo)?..=self.float(hi)?).contains(&v),
-                        ClauseTest::Else => true,
-                    };
-                    if hit {
-                        matched = Some(i);
-                        break;
-                    }
-                }
-                // Clauses fall through into the next one until a `#break` (POV-Ray 3.7).
-                if let Some(first) = matched {
-                    for clause in &clauses[first..] {
-                        if let Flow::Break(_) = self.stmts(&clause.body)? {
-                            break;
-                        }
-                    }
-                }
-            }
-            Stmt::Break { span } => return Ok(Flow::Break(*span)),
-            Stmt::Default { items, .. } => {
-                for item in items {
-                    match item {
-                        DefaultItem::Texture(t) => self.default_texture = self.texture(t)?,
-                        DefaultItem::Pigment(p) => self.default_texture.pigment = self.pigment(p)?,
-                        DefaultItem::Normal(n) => self.default_texture.normal = Some(self.normal(n)?),
-                        DefaultItem::Finish(f) => self.default_texture.finish = self.finish_block(f)?,
-                    }
-                }
-            }
-            Stmt::Message { kind, text, span } => match kind {
-                MessageKind::Debug => {
-                    let text = self.string(text)?;
-                    self.output.push(Output::Debug(text));
-                }
-                MessageKind::Warning => {
-                    let text = self.string(text)?;
-                    self.warn(Diag::new(*span, text));
-                }
-                MessageKind::Error => {
-                    let text = self.string(text)?;
-                    return Err(Diag::new(*span, format!("#error: {text}")));
-                }
-            },
             Stmt::Camera { items, span } => {
                 self.not_in_csg("camera", *span)?;
                 self.scene.camera = self.camera(items, *span)?
@@ -338,11 +347,11 @@ impl<'f> Lowerer<'f> {
                 }
             }
         }
-        Ok(Flow::Normal)
+        Ok(())
     }
 }
 
 #[cfg(test)]
 mod flow_tests;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -6,11 +6,11 @@
 use glam::DVec3;
 
 use super::textures::transform_texture;
-use super::value::{Group, Part, Value};
-use super::{Flow, Lowerer};
+use super::Lowerer;
 use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
 use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::{Group, Part, Value};
 use crate::scene::desc::{InteriorDesc, ObjectDesc, ShapeDesc, TextureDesc, Transform};
 
 impl Lowerer<'_> {
@@ -33,10 +33,8 @@ impl Lowerer<'_> {
                 csg: false,
             },
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
-                (ExprKind::Ident(_), Value::Object(group)) => *group,
-                (_, other) => {
-                    return Err(Diag::new(e.span, format!("expected a declared object, found {}", other.kind_name())))
-                }
+                (ExprKind::Value(_), Value::Object(group)) => *group,
+                (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
             ObjectKind::Csg { children, merge } => self.csg(children, *merge, o.span)?,
         };
@@ -90,11 +88,9 @@ impl Lowerer<'_> {
     /// overlapping children, visible only through transparent ones) lowers like `union`.
     fn csg(&mut self, children: &[Stmt], merge: bool, span: Span) -> PResult<Group> {
         self.csg_stack.push(Vec::new());
-        let flow = self.stmts(children);
+        let result = children.iter().try_for_each(|c| self.stmt(c));
         let parts = self.csg_stack.pop().unwrap_or_default();
-        if let Flow::Break(span) = flow? {
-            return Err(Diag::new(span, "`#break` outside `#switch` or `#while`"));
-        }
+        result?;
         if parts.is_empty() {
             let word = if merge { "merge" } else { "union" };
             self.warn(Diag::new(span, format!("`{word}` has no objects")));

@@ -2,28 +2,32 @@
 
 use glam::{DMat4, DVec3};
 
+use std::rc::Rc;
+
 use super::{Files, Lowerer, Output};
-use crate::pov::ast::Stmt;
-use crate::pov::lexer::lex;
-use crate::pov::parser::parse;
+use crate::pov::lexer::{lex, Token};
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::scene::desc::{Color, SceneDesc, SourceRef};
 
 /// No includes: these tests lower one string.
-struct NoFiles;
+struct NoFiles(String);
 
 impl Files for NoFiles {
-    fn enter_include(&mut self, _: &str, _: Span, path_span: Span) -> PResult<(FileId, Vec<Stmt>)> {
+    fn enter_include(&mut self, _: &str, _: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)> {
         Err(Diag::new(path_span, "no includes in unit tests"))
     }
     fn leave_include(&mut self) {}
-    fn source_ref(&self, _: Span) -> SourceRef {
-        SourceRef::default()
+    fn file_exists(&self, _: &str) -> bool {
+        false
+    }
+    fn source_ref(&self, span: Span) -> SourceRef {
+        let e = crate::error::LocatedError::at_offset("test", &self.0, span.start as usize, "");
+        SourceRef { file: String::new(), line: e.line, col: e.col }
     }
 }
 
 /// Lowers `text`, returning the scene and its warnings.
-pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
+pub(crate) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
     let (scene, output) = lower_with_output(text)?;
     let warnings = output
         .into_iter()
@@ -36,11 +40,13 @@ pub(super) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
 }
 
 /// Lowers `text`, returning the scene and everything it printed (`#debug` text too).
-pub(super) fn lower_with_output(text: &str) -> Result<(SceneDesc, Vec<Output>), String> {
+pub(crate) fn lower_with_output(text: &str) -> Result<(SceneDesc, Vec<Output>), String> {
     let tokens = lex(0, text).map_err(|d| d.message)?;
-    let stmts = parse(&tokens, text).map_err(|d| d.message)?;
-    let mut files = NoFiles;
-    Lowerer::new(&mut files, &crate::pov::ParseOptions::default()).finish(&stmts).map_err(|d| d.message)
+    let mut files = NoFiles(text.to_string());
+    let mut low = Lowerer::new(&mut files, &crate::pov::ParseOptions::default());
+    let (result, _) = crate::pov::parser::run(&mut low, Rc::from(tokens));
+    result.map_err(|d| d.message)?;
+    Ok(low.finish())
 }
 
 /// The colour of the first light, written as `light_source { 0 color <expr> }`.

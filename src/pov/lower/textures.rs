@@ -1,13 +1,13 @@
 //! Surface blocks → `PigmentDesc`, `NormalDesc`, `FinishDesc`, `TextureDesc`, `InteriorDesc`.
 //! A block that starts with a declared name copies it, then applies the rest in written order.
 
-use super::value::Value;
 use super::Lowerer;
 use crate::pov::ast::{
     ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
     Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
 };
 use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::Value;
 use crate::scene::desc::{
     Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern,
     TextureDesc, Transform, Turbulence,
@@ -45,9 +45,13 @@ impl TurbState {
 
 impl Lowerer<'_> {
     /// A leading name in a block: the declared value, or an error naming what it is.
-    fn declared<'v>(&'v self, e: &Expr) -> PResult<Option<&'v Value>> {
+    fn declared<'v>(&'v self, e: &'v Expr) -> PResult<Option<&'v Value>> {
         match &e.kind {
-            ExprKind::Ident(name) => self.lookup_or_err(name, e.span).map(Some),
+            ExprKind::Value(v) => match &**v {
+                Value::Unmodelled(u) => Err(u.used_at(e.span)),
+                v => Ok(Some(v)),
+            },
+            ExprKind::Ident(name) => Err(Diag::new(e.span, format!("undefined identifier `{name}`"))),
             _ => Ok(None),
         }
     }
@@ -124,9 +128,7 @@ impl Lowerer<'_> {
             ColorMapBody::Named(e) => {
                 return match self.declared(e)? {
                     Some(Value::ColorMap(map)) => Ok(map.clone()),
-                    Some(other) => {
-                        Err(Diag::new(e.span, format!("expected a declared color_map, found {}", other.kind_name())))
-                    }
+                    Some(other) => Err(other.wrong_kind(e.span, "a declared color_map")),
                     None => Err(Diag::new(e.span, "expected the name of a declared color_map or `[` entries")),
                 };
             }
@@ -153,12 +155,7 @@ impl Lowerer<'_> {
                         turb = TurbState::from(base.turbulence);
                         transform = base.transform;
                     }
-                    Some(other) => {
-                        return Err(Diag::new(
-                            e.span,
-                            format!("expected a declared normal, found {}", other.kind_name()),
-                        ))
-                    }
+                    Some(other) => return Err(other.wrong_kind(e.span, "a declared normal")),
                     None => return Err(Diag::new(e.span, "expected a declared normal or a normal pattern")),
                 },
                 NormalItem::Bumps(amount, _) => {
@@ -182,12 +179,7 @@ impl Lowerer<'_> {
             match item {
                 FinishItem::Base(e) => match self.declared(e)? {
                     Some(Value::Finish(base)) => out = *base,
-                    Some(other) => {
-                        return Err(Diag::new(
-                            e.span,
-                            format!("expected a declared finish, found {}", other.kind_name()),
-                        ))
-                    }
+                    Some(other) => return Err(other.wrong_kind(e.span, "a declared finish")),
                     None => return Err(Diag::new(e.span, "expected a declared finish")),
                 },
                 FinishItem::Set(key, e) => match key {
@@ -217,12 +209,7 @@ impl Lowerer<'_> {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
                     Some(Value::Texture(base)) => out = (**base).clone(),
-                    Some(other) => {
-                        return Err(Diag::new(
-                            e.span,
-                            format!("expected a declared texture, found {}", other.kind_name()),
-                        ))
-                    }
+                    Some(other) => return Err(other.wrong_kind(e.span, "a declared texture")),
                     None => return Err(Diag::new(e.span, "expected a declared texture")),
                 },
                 TextureItem::Pigment(p) => out.pigment = self.pigment(p)?,
@@ -243,12 +230,7 @@ impl Lowerer<'_> {
             match item {
                 InteriorItem::Base(e) => match self.declared(e)? {
                     Some(Value::Interior(base)) => out = *base,
-                    Some(other) => {
-                        return Err(Diag::new(
-                            e.span,
-                            format!("expected a declared interior, found {}", other.kind_name()),
-                        ))
-                    }
+                    Some(other) => return Err(other.wrong_kind(e.span, "a declared interior")),
                     None => return Err(Diag::new(e.span, "expected a declared interior")),
                 },
                 InteriorItem::Ior(e) => {

@@ -1,10 +1,13 @@
 //! Expressions (`+ - * /`, unary signs, vectors, built-in functions and constants) and colours
 //! written with keywords (`color rgb <..> filter F`).
 
+use std::rc::Rc;
+
 use super::Parser;
 use crate::pov::ast::{BinOp, Builtin, ColorItem, ColorKey, Expr, ExprKind};
-use crate::pov::lexer::TokenKind;
-use crate::pov::source::{Diag, PResult};
+use crate::pov::lexer::{Token, TokenKind};
+use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::Value;
 
 /// Built-in functions and how many arguments each takes (least, most), as in POV-Ray 3.7's
 /// reference: `min` and `max` take two or more, `select` three or four.
@@ -42,7 +45,34 @@ pub const FUNCTIONS: &[(&str, (usize, usize))] = &[
     ("vnormalize", (1, 1)),
     ("vcross", (2, 2)),
     ("vdot", (2, 2)),
+    ("vrotate", (2, 2)),
+    ("vaxis_rotate", (3, 3)),
+    ("vturbulence", (4, 4)),
+    ("rand", (1, 1)),
+    ("seed", (1, 1)),
+    ("strcmp", (2, 2)),
+    ("strlen", (1, 1)),
+    ("val", (1, 1)),
+    ("asc", (1, 1)),
+    ("concat", (1, usize::MAX)),
+    ("str", (3, 3)),
+    ("vstr", (5, 5)),
+    ("chr", (1, 1)),
+    ("substr", (3, 3)),
+    ("strupr", (1, 1)),
+    ("strlwr", (1, 1)),
+    ("file_exists", (1, 1)),
+    ("dimensions", (1, 1)),
+    ("dimension_size", (2, 2)),
+    ("bitwise_and", (2, usize::MAX)),
+    ("bitwise_or", (2, usize::MAX)),
+    ("bitwise_xor", (2, usize::MAX)),
+    ("datetime", (1, 2)),
+    ("now", (0, 0)),
 ];
+
+/// Functions whose argument is an identifier that is read as written, not evaluated.
+const NAME_ARGUMENT: &[&str] = &["dimensions", "dimension_size"];
 
 /// Values the renderer provides (`image_width`, `clock`, ...).
 pub fn builtin(word: &str) -> Option<Builtin> {
@@ -87,20 +117,30 @@ pub fn color_key(word: &str) -> Option<ColorKey> {
     })
 }
 
-impl Parser<'_> {
+impl Parser<'_, '_> {
     /// A colour in any form (`color` keyword optional), or any other expression.
     pub(super) fn color(&mut self) -> PResult<Expr> {
+        self.color_with(Self::expr)
+    }
+
+    /// A colour with keywords, or an expression where comparisons are allowed (a macro's
+    /// argument).
+    pub(super) fn full_color(&mut self) -> PResult<Expr> {
+        self.color_with(Self::full_expr)
+    }
+
+    fn color_with(&mut self, base: fn(&mut Self) -> PResult<Expr>) -> PResult<Expr> {
         let start = self.peek().span;
-        let explicit = matches!(self.peek_ident(), Some("color" | "colour"));
+        let explicit = matches!(self.peek_ident().as_deref(), Some("color" | "colour"));
         if explicit {
             self.bump();
         }
         let mut items = Vec::new();
-        if self.peek_ident().and_then(color_key).is_none() {
-            let value = self.expr()?;
+        if self.peek_ident().as_deref().and_then(color_key).is_none() {
+            let value = base(self)?;
             items.push(ColorItem { key: ColorKey::Base, span: value.span, value });
         }
-        while let Some(key) = self.peek_ident().and_then(color_key) {
+        while let Some(key) = self.more_ident().as_deref().and_then(color_key) {
             let key_span = self.bump().span;
             let value = self.expr()?;
             items.push(ColorItem { key, span: key_span.to(value.span), value });
@@ -114,12 +154,29 @@ impl Parser<'_> {
 
     /// True when the next token can start an expression or colour; identifiers in `stop` (the
     /// keywords of the enclosing block) cannot.
-    pub(super) fn starts_expr(&self, stop: &[&str]) -> bool {
+    pub(super) fn starts_expr(&mut self, stop: &[&str]) -> bool {
         match &self.peek().kind {
-            TokenKind::Number(_) => true,
+            TokenKind::Number(_) | TokenKind::Str(_) => true,
             TokenKind::Punct(c) => matches!(c, '<' | '(' | '-' | '+' | '!'),
-            TokenKind::Ident(w) => !stop.contains(&w.as_str()),
+            TokenKind::Ident(w) => !stop.contains(&&**w),
             _ => false,
+        }
+    }
+
+    /// The next token where it may continue what was just read (an operator, a component):
+    /// a directive there ends the expression instead of running first, so that `#declare A = 1`
+    /// stores `A` before a following `#if (A)` reads it, even without the `;`.
+    fn peek_more(&mut self) -> Token {
+        if matches!(self.cur.kind, TokenKind::Directive(_)) {
+            return Token { kind: TokenKind::Eof, span: self.cur.span };
+        }
+        self.peek()
+    }
+
+    pub(super) fn more_ident(&mut self) -> Option<Rc<str>> {
+        match self.peek_more().kind {
+            TokenKind::Ident(w) => Some(w),
+            _ => None,
         }
     }
 
@@ -128,7 +185,7 @@ impl Parser<'_> {
     /// (`#declare A = 1 < 2;` is an error there too), so `expr` does not parse them.
     pub(super) fn full_expr(&mut self) -> PResult<Expr> {
         let cond = self.logical()?;
-        if !self.is_punct('?') {
+        if self.peek_more().kind != TokenKind::Punct('?') {
             return Ok(cond);
         }
         let q = self.bump().span;
@@ -171,7 +228,7 @@ impl Parser<'_> {
     ) -> PResult<Expr> {
         let mut lhs = operand(self)?;
         let mut chained = 0;
-        while let Some(op) = op_of(&self.peek().kind) {
+        while let Some(op) = op_of(&self.peek_more().kind) {
             let op_span = self.bump().span;
             if let Err(e) = self.enter(op_span) {
                 self.depth -= chained;
@@ -191,7 +248,7 @@ impl Parser<'_> {
         // recursively, so it counts as a level of nesting too.
         let mut chained = 0;
         loop {
-            let op = match self.peek().kind {
+            let op = match self.peek_more().kind {
                 TokenKind::Punct('+') => BinOp::Add,
                 TokenKind::Punct('-') => BinOp::Sub,
                 _ => {
@@ -211,7 +268,7 @@ impl Parser<'_> {
         let mut lhs = self.unary()?;
         let mut chained = 0;
         loop {
-            let op = match self.peek().kind {
+            let op = match self.peek_more().kind {
                 TokenKind::Punct('*') => BinOp::Mul,
                 TokenKind::Punct('/') => BinOp::Div,
                 _ => {
@@ -249,7 +306,7 @@ impl Parser<'_> {
                 let mut e = self.primary()?;
                 // `V.x`: component access binds tighter than any operator.
                 let mut chained = 0;
-                while self.is_punct('.') {
+                while self.peek_more().kind == TokenKind::Punct('.') {
                     let dot = self.bump().span;
                     if let Err(err) = self.enter(dot) {
                         self.depth -= chained;
@@ -258,7 +315,7 @@ impl Parser<'_> {
                     chained += 1;
                     let t = self.bump();
                     let index = match &t.kind {
-                        crate::pov::lexer::TokenKind::Ident(w) => member_index(w),
+                        TokenKind::Ident(w) => member_index(w),
                         _ => None,
                     };
                     let Some(index) = index else {
@@ -287,6 +344,10 @@ impl Parser<'_> {
                 self.bump();
                 Ok(Expr { kind: ExprKind::Number(*v), span: t.span })
             }
+            TokenKind::Str(text) => {
+                self.bump();
+                Ok(Expr { kind: ExprKind::Value(Rc::new(Value::Str(text.clone()))), span: t.span })
+            }
             TokenKind::Punct('(') => {
                 self.bump();
                 self.enter(t.span)?;
@@ -311,11 +372,12 @@ impl Parser<'_> {
                 Ok(Expr { kind: ExprKind::Vector(parts), span })
             }
             TokenKind::Ident(word) => self.word(word, t.span),
+            TokenKind::Eof if self.pending.is_some() => Err(Diag::new(t.span, "")),
             _ => Err(Diag::new(t.span, format!("expected an expression, found {}", t.describe()))),
         }
     }
 
-    fn word(&mut self, word: &str, span: crate::pov::source::Span) -> PResult<Expr> {
+    fn word(&mut self, word: &str, span: Span) -> PResult<Expr> {
         let constant = match word {
             "x" => Some(ExprKind::Vector3([1.0, 0.0, 0.0])),
             "y" => Some(ExprKind::Vector3([0.0, 1.0, 0.0])),
@@ -331,6 +393,13 @@ impl Parser<'_> {
             self.bump();
             return Ok(Expr { kind, span });
         }
+        if word == "defined" {
+            self.bump();
+            self.expect_punct('(', "after `defined`")?;
+            let defined = self.defined_name("defined")?;
+            let close = self.expect_punct(')', "to close `defined(`")?;
+            return Ok(Expr { kind: ExprKind::Number(if defined { 1.0 } else { 0.0 }), span: span.to(close) });
+        }
         if matches!(word, "color" | "colour") || color_key(word).is_some() {
             self.enter(span)?;
             let c = self.color();
@@ -341,9 +410,12 @@ impl Parser<'_> {
             self.bump();
             self.expect_punct('(', &format!("after `{word}`"))?;
             self.enter(span)?;
-            let mut args = vec![self.expr()?];
-            while self.eat_punct(',') {
-                args.push(self.expr()?);
+            let mut args = Vec::new();
+            if !self.is_punct(')') {
+                args.push(self.function_argument(word, args.len())?);
+                while self.eat_punct(',') {
+                    args.push(self.function_argument(word, args.len())?);
+                }
             }
             let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
             self.leave();
@@ -361,9 +433,39 @@ impl Parser<'_> {
             return Err(Diag::new(span, format!("expected an expression, found `{word}`")));
         }
         if super::is_pov_keyword(word) {
-            return Err(Diag::new(span, format!("`{word}` is not supported in an expression")));
+            return Err(Diag::unmodelled(span, format!("`{word}` is not supported in an expression")));
         }
+        self.declared_name(word, span)
+    }
+
+    /// A declared name's value, read now (an array element with its `[i]...`); an undeclared
+    /// name stays a name, an error only if it is evaluated.
+    pub(super) fn declared_name(&mut self, word: &str, span: Span) -> PResult<Expr> {
+        let Some(value) = self.low.lookup(word).cloned() else {
+            self.bump();
+            return Ok(Expr { kind: ExprKind::Ident(word.to_string()), span });
+        };
         self.bump();
-        Ok(Expr { kind: ExprKind::Ident(word.to_string()), span })
+        let Value::Array(array) = &value else {
+            return Ok(Expr { kind: ExprKind::Value(Rc::new(value)), span });
+        };
+        if self.peek_more().kind != TokenKind::Punct('[') {
+            return Ok(Expr { kind: ExprKind::Value(Rc::new(value)), span });
+        }
+        let index = self.indices()?;
+        let at = array.offset(&index).map_err(|m| Diag::new(span, format!("`{word}`: {m}")))?;
+        match &array.items[at] {
+            Some(v) => Ok(Expr { kind: ExprKind::Value(Rc::new(v.clone())), span }),
+            None => Err(Diag::new(span, format!("element {index:?} of array `{word}` has no value yet"))),
+        }
+    }
+
+    /// One argument of a built-in function: an expression, or for `dimension_size(A, n)` the
+    /// array itself, and for `defined`-style checks the name as written.
+    fn function_argument(&mut self, function: &str, index: usize) -> PResult<Expr> {
+        if index == 0 && NAME_ARGUMENT.contains(&function) {
+            return self.expr();
+        }
+        self.full_expr()
     }
 }

@@ -1,6 +1,8 @@
 //! Top-level items: camera, light_source, background, global_settings and objects with their
 //! modifiers.
 
+use std::rc::Rc;
+
 use super::{is_pov_keyword, Parser, RESERVED, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
@@ -58,10 +60,10 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
     }
 }
 
-impl Parser<'_> {
+impl Parser<'_, '_> {
     /// One top-level item (not a directive).
     pub(super) fn item(&mut self) -> PResult<Stmt> {
-        match self.peek_ident() {
+        match self.peek_ident().as_deref() {
             Some("camera") => self.camera(),
             Some("light_source") => self.light().map(Stmt::Light),
             Some("background") => {
@@ -74,7 +76,7 @@ impl Parser<'_> {
             Some("global_settings") => self.global_settings(),
             Some(w) if is_object_keyword(w) => self.object().map(Stmt::Object),
             Some(w) if UNSUPPORTED_SHAPES.contains(&w) => {
-                Err(Diag::new(self.peek().span, format!("`{w}` is not supported (supported: {SHAPES})")))
+                Err(Diag::unmodelled(self.peek().span, format!("`{w}` is not supported (supported: {SHAPES})")))
             }
             _ => Err(self.unknown_in("the scene", TOP_LEVEL)),
         }
@@ -93,17 +95,23 @@ impl Parser<'_> {
         let mut items = Vec::new();
         // POV-Ray lets a declared camera's name stand first, to start from a copy of it. A word
         // followed by a value (`locaton <0, 2, -5>`) is a misspelt item instead, reported below.
-        let next_is_item_or_end =
-            matches!(self.tokens.get(self.pos + 1).map(|t| &t.kind), Some(TokenKind::Punct('}') | TokenKind::Ident(_)));
-        if let Some(name) = self
-            .peek_ident()
-            .filter(|w| next_is_item_or_end && !CAMERA.contains(w) && !is_pov_keyword(w) && !RESERVED.contains(w))
+        if let Some(name) =
+            self.peek_ident().filter(|w| !CAMERA.contains(&&**w) && !is_pov_keyword(w) && !RESERVED.contains(&&**w))
         {
-            items.push(CameraItem::Declared(name.to_string(), self.bump().span));
+            let span = self.peek().span;
+            match self.low.lookup(&name) {
+                Some(crate::pov::value::Value::Camera(_)) => {
+                    items.push(CameraItem::Declared(self.declared_name(&name, span)?));
+                }
+                Some(other) => {
+                    return Err(Diag::new(span, format!("`{name}` is {}, not a camera", other.kind_name())));
+                }
+                None => {}
+            }
         }
         let declared = !items.is_empty();
         while !self.at_block_end() {
-            let item = match self.peek_ident() {
+            let item = match self.peek_ident().as_deref() {
                 // POV-Ray 3.7 accepts only transforms after a declared camera (checked by parsing).
                 Some(word) if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "translate") => {
                     return Err(Diag::new(
@@ -152,7 +160,7 @@ impl Parser<'_> {
         let mut transforms = Vec::new();
         let mut shadowless = false;
         while !self.at_block_end() {
-            match self.peek_ident() {
+            match self.peek_ident().as_deref() {
                 Some("rotate" | "scale" | "translate") => transforms.push(self.transform_item()?),
                 Some("shadowless") => {
                     self.bump();
@@ -162,7 +170,7 @@ impl Parser<'_> {
                 // A bare colour (`light_source { <0,4,-3>, White }`), as POV-Ray accepts.
                 _ if color.is_none()
                     && self.starts_expr(&LIGHT[6..])
-                    && !self.peek_ident().is_some_and(super::is_pov_keyword) =>
+                    && !self.peek_ident().is_some_and(|w| super::is_pov_keyword(&w)) =>
                 {
                     color = Some(self.maybe_bare_name(Self::color)?)
                 }
@@ -178,7 +186,7 @@ impl Parser<'_> {
         self.open_block("global_settings", kw)?;
         let mut items = Vec::new();
         while !self.at_block_end() {
-            let item = match self.peek_ident() {
+            let item = match self.peek_ident().as_deref() {
                 Some("assumed_gamma") => {
                     self.bump();
                     GlobalItem::AssumedGamma(self.expr()?)
@@ -202,9 +210,9 @@ impl Parser<'_> {
     /// `rotate V`, `scale V` or `translate V`.
     pub(super) fn transform_item(&mut self) -> PResult<TransformItem> {
         let t = self.bump();
-        let kind = match self.text.get(t.span.start as usize..t.span.end as usize) {
-            Some("rotate") => TransformKind::Rotate,
-            Some("scale") => TransformKind::Scale,
+        let kind = match &t.kind {
+            TokenKind::Ident(w) if &**w == "rotate" => TransformKind::Rotate,
+            TokenKind::Ident(w) if &**w == "scale" => TransformKind::Scale,
             _ => TransformKind::Translate,
         };
         let value = self.expr()?;
@@ -213,10 +221,11 @@ impl Parser<'_> {
 
     /// A shape or `object { ... }` with its modifiers.
     pub(super) fn object(&mut self) -> PResult<Object> {
-        let word = self.peek_ident().unwrap_or("");
+        let word = self.peek_ident().unwrap_or_else(|| Rc::from(""));
+        let word: &str = &word;
         let kw = self.peek().span;
         if UNSUPPORTED_SHAPES.contains(&word) {
-            return Err(Diag::new(kw, format!("`{word}` is not supported (supported: {SHAPES})")));
+            return Err(Diag::unmodelled(kw, format!("`{word}` is not supported (supported: {SHAPES})")));
         }
         let word = word.to_string();
         self.bump();
@@ -225,7 +234,7 @@ impl Parser<'_> {
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
             None if word == "union" || word == "merge" => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
-                let children = self.stmts(false);
+                let children = self.children();
                 self.in_csg = outer;
                 ObjectKind::Csg { merge: word == "merge", children: children? }
             }
@@ -241,7 +250,7 @@ impl Parser<'_> {
         };
         let mut modifiers = Vec::new();
         while !self.at_block_end() {
-            let m = match self.peek_ident() {
+            let m = match self.peek_ident().as_deref() {
                 Some("pigment") => Modifier::Pigment(self.pigment()?),
                 Some("normal") => Modifier::Normal(self.normal()?),
                 Some("finish") => Modifier::Finish(self.finish()?),
@@ -259,7 +268,7 @@ impl Parser<'_> {
                         TokenKind::Number(_) => true,
                         TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
                         TokenKind::Ident(w) => {
-                            matches!(w.as_str(), "on" | "off" | "true" | "false" | "yes" | "no")
+                            matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no")
                         }
                         _ => false,
                     };
@@ -302,10 +311,10 @@ impl Parser<'_> {
             }
             args.push(self.expr()?);
             loop {
-                let save = self.pos;
+                // A comma before a modifier is taken too (POV-Ray's parser reads one token
+                // ahead, not two).
                 self.eat_punct(',');
                 if !self.starts_expr(MODIFIERS) {
-                    self.pos = save;
                     break;
                 }
                 args.push(self.expr()?);

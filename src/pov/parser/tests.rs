@@ -1,27 +1,19 @@
-//! Parser unit tests: grammar shapes and syntax errors (evaluation is tested in `lower`).
+//! Parser unit tests: grammar and syntax errors, read through the lowered scene (the parser
+//! hands each item to `lower` as it reads it).
 
-use super::parse;
-use crate::pov::ast::{ExprKind, ObjectKind, ShapeKind, Stmt};
-use crate::pov::lexer::lex;
+use glam::DVec3;
 
-fn parse_str(text: &str) -> Result<Vec<Stmt>, String> {
-    let tokens = lex(0, text).map_err(|d| d.message)?;
-    parse(&tokens, text).map_err(|d| d.message)
+use crate::pov::lower::tests::lower;
+use crate::scene::desc::{SceneDesc, ShapeDesc};
+
+fn parse_str(text: &str) -> Result<SceneDesc, String> {
+    lower(text).map(|(scene, _)| scene)
 }
 
 #[test]
 fn sphere_with_optional_commas() {
     let s = parse_str("sphere { <0,1,2> 3 }").unwrap();
-    match &s[0] {
-        Stmt::Object(o) => match &o.kind {
-            ObjectKind::Shape(ShapeKind::Sphere, args) => {
-                assert!(matches!(args[0].kind, ExprKind::Vector(_)));
-                assert_eq!(args[1].kind, ExprKind::Number(3.0));
-            }
-            other => panic!("{other:?}"),
-        },
-        other => panic!("{other:?}"),
-    }
+    assert_eq!(s.objects[0].shape, ShapeDesc::Sphere { center: DVec3::new(0.0, 1.0, 2.0), radius: 3.0 });
 }
 
 #[test]
@@ -73,15 +65,12 @@ fn union_objects_come_before_modifiers() {
 
 #[test]
 fn conditions_need_parentheses_and_allow_comparisons() {
-    let s = parse_str("#if (A <= 2 & !B) #elseif (1) #else #end").unwrap();
-    match &s[0] {
-        Stmt::If { branches, otherwise, .. } => {
-            assert_eq!(branches.len(), 2);
-            assert!(matches!(branches[0].0.kind, ExprKind::Binary(crate::pov::ast::BinOp::And, _, _)));
-            assert_eq!(otherwise.as_deref(), Some(&[][..]));
-        }
-        other => panic!("{other:?}"),
-    }
+    let s = parse_str(
+        "#declare A = 1; #declare B = 0;\n#if (A <= 2 & !B) sphere { 0, 1 } #elseif (1) sphere { 0, 2 } #else sphere { 0, 3 } #end",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 1);
+    assert_eq!(s.objects[0].shape, ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.0 });
     // Outside parentheses `<` opens a vector, as in POV-Ray.
     assert!(parse_str("#declare A = 1 < 2;").is_err());
     assert!(parse_str("#declare V = <1, (2 > 1), 3>;").is_ok());
@@ -89,8 +78,9 @@ fn conditions_need_parentheses_and_allow_comparisons() {
 
 #[test]
 fn deep_directive_nesting_is_capped() {
+    // Open directive blocks are data, not recursion: 200 of them only lack their `#end`s.
     let text = "#if (1) ".repeat(200);
-    assert!(parse_str(&text).unwrap_err().contains("nesting deeper"));
+    assert_eq!(parse_str(&text).unwrap_err(), "`#if` is not closed by `#end` before the end of the scene file");
     let text = format!("#declare A = (1{});", " < 1".repeat(500));
     assert!(parse_str(&text).unwrap_err().contains("nesting deeper"));
 }

@@ -44,13 +44,13 @@ fn turb_kind(word: &str) -> Option<TurbKind> {
     })
 }
 
-impl Parser<'_> {
+impl Parser<'_, '_> {
     /// A leading declared name (`pigment { DMFWood4 scale 2 }`), if the block starts with one.
     fn base(&mut self, keywords: &[&str]) -> PResult<Option<crate::pov::ast::Expr>> {
         match &self.peek().kind {
-            TokenKind::Ident(w) if !keywords.contains(&w.as_str()) && color_key(w).is_none() => {
+            TokenKind::Ident(w) if !keywords.contains(&&**w) && color_key(w).is_none() => {
                 let w = w.clone();
-                if super::is_pov_keyword(&w) || super::RESERVED.contains(&w.as_str()) {
+                if super::is_pov_keyword(&w) || super::RESERVED.contains(&&*w) {
                     return Ok(None);
                 }
                 Ok(Some(self.maybe_bare_name(Self::expr)?))
@@ -72,7 +72,7 @@ impl Parser<'_> {
             items.push(PigmentItem::Base(b));
         }
         while !self.at_block_end() {
-            let item = match self.peek_ident() {
+            let item = match self.peek_ident().as_deref() {
                 Some(w) if matches!(w, "color" | "colour") || color_key(w).is_some() => {
                     PigmentItem::Color(self.color()?)
                 }
@@ -80,12 +80,10 @@ impl Parser<'_> {
                     let span = self.bump().span;
                     let mut colors = Vec::new();
                     while colors.len() < 2 {
-                        let save = self.pos;
                         if !colors.is_empty() {
                             self.eat_punct(',');
                         }
                         if !self.starts_expr(&PIGMENT[6..]) {
-                            self.pos = save;
                             break;
                         }
                         colors.push(self.color()?);
@@ -121,9 +119,9 @@ impl Parser<'_> {
             let open = self.expect_punct('[', "to start a color_map entry")?;
             let value = self.expr()?;
             self.eat_punct(',');
-            let explicit = self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour"));
+            let explicit = matches!(self.peek_ident().as_deref(), Some("color" | "colour"));
             let first = self.color()?;
-            if explicit || !self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour")) {
+            if explicit || !matches!(self.peek_ident().as_deref(), Some("color" | "colour")) {
                 let close = self.expect_punct(']', "to close the color_map entry")?;
                 entries.push(MapEntry { value, color: first, span: open.to(close) });
                 continue;
@@ -145,7 +143,7 @@ impl Parser<'_> {
 
     /// The second colour of a band, which POV-Ray requires to start with `color`/`colour`.
     fn band_color(&mut self) -> PResult<crate::pov::ast::Expr> {
-        if !self.peek_ident().is_some_and(|w| matches!(w, "color" | "colour")) {
+        if !matches!(self.peek_ident().as_deref(), Some("color" | "colour")) {
             let t = self.peek();
             return Err(Diag::new(
                 t.span,
@@ -163,7 +161,7 @@ impl Parser<'_> {
             items.push(NormalItem::Base(b));
         }
         while !self.at_block_end() {
-            let item = match self.peek_ident() {
+            let item = match self.peek_ident().as_deref() {
                 Some("bumps") => {
                     let span = self.bump().span;
                     let amount = if self.starts_expr(NORMAL) { Some(self.expr()?) } else { None };
@@ -189,7 +187,7 @@ impl Parser<'_> {
             items.push(FinishItem::Base(b));
         }
         while !self.at_block_end() {
-            let key = match self.peek_ident() {
+            let key = match self.peek_ident().as_deref() {
                 Some("ambient") => FinishKey::Ambient,
                 Some("diffuse") => FinishKey::Diffuse,
                 Some("brilliance") => FinishKey::Brilliance,
@@ -227,7 +225,7 @@ impl Parser<'_> {
             items.push(TextureItem::Base(b));
         }
         while !self.at_block_end() {
-            let item = match self.peek_ident() {
+            let item = match self.peek_ident().as_deref() {
                 Some("pigment") => TextureItem::Pigment(self.pigment()?),
                 Some("normal") => TextureItem::Normal(self.normal()?),
                 Some("finish") => TextureItem::Finish(self.finish()?),
@@ -248,7 +246,7 @@ impl Parser<'_> {
             items.push(InteriorItem::Base(b));
         }
         while !self.at_block_end() {
-            match self.peek_ident() {
+            match self.peek_ident().as_deref() {
                 Some("ior") => {
                     self.bump();
                     items.push(InteriorItem::Ior(self.expr()?));

@@ -2,13 +2,17 @@
 //! promotes to every component of a vector or colour, a short vector pads with zeros, and
 //! arithmetic with a colour works on all five components (red, green, blue, filter, transmit).
 
+use std::ops::Range;
+use std::rc::Rc;
+
 use glam::DVec3;
 
-use super::camera::CameraState;
 use crate::pov::ast::BinOp;
+use crate::pov::lexer::Token;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
-    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
+    CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
+    Transform,
 };
 
 #[derive(Clone, Debug, PartialEq)]
@@ -27,6 +31,74 @@ pub enum Value {
     Object(Box<Group>),
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
+    Str(Rc<str>),
+    Array(Rc<Array>),
+    Macro(Rc<Macro>),
+    /// A declaration whose syntax was read but which needs a feature strahl does not model
+    /// yet: using it is the error, not declaring it (include files declare far more than a
+    /// scene uses).
+    Unmodelled(Rc<Unmodelled>),
+}
+
+/// A camera as its items leave it, before `look_at`, `angle` and the transforms are resolved:
+/// what `#declare C = camera {...}` stores, so `camera { C ... }` continues from it as POV-Ray
+/// continues from a copy of the declared camera.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CameraState {
+    pub(crate) cam: CameraDesc,
+    pub(crate) angle: Option<f64>,
+    pub(crate) look_at: Option<(DVec3, Span)>,
+    pub(crate) transforms: Vec<Transform>,
+}
+
+/// `array[d1][d2]...`: up to five dimensions, elements unset until declared.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Array {
+    pub dims: Vec<usize>,
+    pub items: Vec<Option<Value>>,
+}
+
+/// Most dimensions an array may have, as in POV-Ray 3.7.
+pub const MAX_ARRAY_DIMENSIONS: usize = 5;
+
+/// Most elements in one array: 16 M unset elements are 0.5 GiB, beyond any real scene.
+pub const MAX_ARRAY_ELEMENTS: usize = 16 << 20;
+
+impl Array {
+    /// The flat index of `index`, or why it is out of range.
+    pub fn offset(&self, index: &[usize]) -> Result<usize, String> {
+        if index.len() != self.dims.len() {
+            return Err(format!("array has {} dimension(s), indexed with {}", self.dims.len(), index.len()));
+        }
+        let mut at = 0;
+        for (i, (&k, &n)) in index.iter().zip(&self.dims).enumerate() {
+            if k >= n {
+                return Err(format!("array index {k} out of range 0..{} in dimension {}", n.saturating_sub(1), i + 1));
+            }
+            at = at * n + k;
+        }
+        Ok(at)
+    }
+}
+
+/// `#macro Name(P1, optional P2) ... #end`: the body stays tokens until a call expands it.
+#[derive(Debug, PartialEq)]
+pub struct Macro {
+    pub name: Rc<str>,
+    pub params: Vec<(Rc<str>, bool)>,
+    /// The tokens of the file the macro is written in, and the body's range in them.
+    pub tokens: Rc<[Token]>,
+    pub body: Range<usize>,
+    /// The macro's name in its `#macro` directive.
+    pub defined: Span,
+}
+
+#[derive(Debug, PartialEq)]
+pub struct Unmodelled {
+    /// Why strahl cannot model it, as the parser said it ("`granite` is not supported ...").
+    pub why: String,
+    /// Where the unmodelled feature is written.
+    pub at: Span,
 }
 
 /// POV-Ray's epsilon for `=`, `!=` and truth (`#if (1e-11)` is false in POV-Ray 3.7).
@@ -66,13 +138,26 @@ impl Value {
             Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",
+            Value::Str(_) => "a string",
+            Value::Array(_) => "an array",
+            Value::Macro(_) => "a macro",
+            Value::Unmodelled(_) => "a declaration strahl does not model yet",
+        }
+    }
+
+    /// "expected a float, found a pigment"; using an unmodelled declaration says why it is one.
+    pub fn wrong_kind(&self, span: Span, expected: &str) -> Diag {
+        match self {
+            Value::Unmodelled(u) => u.used_at(span),
+            other => Diag::new(span, format!("expected {expected}, found {}", other.kind_name())),
         }
     }
 
     pub fn as_float(&self, span: Span) -> PResult<f64> {
         match self {
             Value::Float(v) => Ok(*v),
-            other => Err(Diag::new(span, format!("expected a float, found {}", other.kind_name()))),
+
+            other => Err(other.wrong_kind(span, "a float")),
         }
     }
 
@@ -93,7 +178,7 @@ impl Value {
                     c.len()
                 ),
             )),
-            other => Err(Diag::new(span, format!("expected a vector, found {}", other.kind_name()))),
+            other => Err(other.wrong_kind(span, "a vector")),
         }
     }
 
@@ -102,7 +187,7 @@ impl Value {
         match self {
             Value::Color(c) => Ok(*c),
             Value::Float(_) | Value::Vector(_) => Ok(color_from(&self.components(5))),
-            other => Err(Diag::new(span, format!("expected a color, found {}", other.kind_name()))),
+            other => Err(other.wrong_kind(span, "a color")),
         }
     }
 
@@ -123,6 +208,14 @@ impl Value {
             Value::Color(_) => Some(5),
             _ => None,
         }
+    }
+}
+
+impl Unmodelled {
+    /// The error for using it at `span`.
+    pub fn used_at(&self, span: Span) -> Diag {
+        Diag::new(span, format!("this declaration cannot be used: {}", self.why))
+            .with_note(self.at, "declared with it here")
     }
 }
 

@@ -541,7 +541,7 @@ fn arbitrary_bytes_never_panic() {
 fn image_size_reaches_the_scene() {
     let d = dir("image_size");
     let p = write(&d, "scene.pov", "camera { right x*image_width/image_height look_at z }");
-    let options = ParseOptions { image_width: 800, image_height: 400 };
+    let options = ParseOptions { image_width: 800, image_height: 400, ..Default::default() };
     let s = load_scene_with_options(&p, &std_include(), &options).unwrap();
     assert!(close(s.camera.right, DVec3::new(2.0, 0.0, 0.0)));
     // `load_scene` parses for POV-Ray's default 640×480.

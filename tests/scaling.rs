@@ -41,7 +41,7 @@ fn gen_output_parses_to_the_generated_scene() {
             .unwrap_or_else(|e| panic!("{e}"));
         // Read at two image sizes: the camera follows `image_width`/`image_height`.
         for (w, h) in [(640, 480), (1280, 720)] {
-            let options = ParseOptions { image_width: w, image_height: h };
+            let options = ParseOptions { image_width: w, image_height: h, ..Default::default() };
             let read = load_scene_with_options(&path, &IncludePath { dirs: vec![] }, &options)
                 .unwrap_or_else(|e| panic!("{e}"));
             // Numbers are written in shortest round-trip form, so "within print precision" is exact.
@@ -74,7 +74,7 @@ fn gen_camera_is_not_stretched_at_the_default_640x480() {
     let path = scratch("cli_aspect.pov");
     assert!(strahl(&["gen", "spheres", "20", "-o", &path.display().to_string()]).status.success());
     for (w, h) in [(640, 480), (1280, 720), (300, 300)] {
-        let options = ParseOptions { image_width: w, image_height: h };
+        let options = ParseOptions { image_width: w, image_height: h, ..Default::default() };
         let c = load_scene_with_options(&path, &IncludePath { dirs: vec![] }, &options)
             .unwrap_or_else(|e| panic!("{e}"))
             .camera;

@@ -57,13 +57,13 @@ pub fn project_include_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join("include")
 }
 
-/// The include path: `-L` dirs, then the project's library, then POV-Ray's own include folders
-/// where it is installed (see `povray_ini` for why those come last). The including file's own
-/// folder is searched first by the parser.
+/// The include path in POV-Ray's order: `-L` dirs, then POV-Ray's own include folders where it
+/// is installed, then the project's bundled copies (the fallback on a machine without
+/// POV-Ray). The including file's own folder is searched first by the parser.
 pub fn include_path(user_dirs: &[PathBuf]) -> IncludePath {
     let mut dirs = user_dirs.to_vec();
-    dirs.push(project_include_dir());
     dirs.extend(povray_ini::povray_include_dirs());
+    dirs.push(project_include_dir());
     IncludePath { dirs }
 }
 
@@ -82,7 +82,7 @@ pub fn load_sized(
     height: u32,
 ) -> Result<(SceneDesc, Duration), CliError> {
     let start = Instant::now();
-    let options = ParseOptions { image_width: width, image_height: height };
+    let options = ParseOptions { image_width: width, image_height: height, ..Default::default() };
     let (desc, messages) = load_scene_with_messages(path, &include_path(user_dirs), &options)?;
     for m in messages {
         eprint!("{m}");

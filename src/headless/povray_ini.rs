@@ -1,9 +1,8 @@
 //! Where POV-Ray itself finds include files: the `Library_Path` entries of the user's and the
 //! system's `povray.ini`, else the folder Debian's `povray-includes` installs.
 //!
-//! These come after strahl's bundled `scenes/include`, not before as in POV-Ray: POV-Ray's own
-//! `colors.inc` runs a `#macro`, which strahl cannot run yet, and the bundled copy declares the
-//! same colours. Files strahl does not bundle (`shapes.inc`, `metals.inc`, ...) are found there.
+//! These come before strahl's bundled `scenes/include`, which is only the fallback on a machine
+//! without POV-Ray's include files.
 
 use std::path::{Path, PathBuf};
 

@@ -38,6 +38,7 @@ pub enum DeclValue {
     ColorMap(ColorMap),
     Object(Object),
     Camera(Vec<CameraItem>),
+    Light(Light),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -69,6 +70,7 @@ pub enum Builtin {
     FinalClock,
     InitialFrame,
     FinalFrame,
+    ClockOn,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -313,6 +315,8 @@ pub enum ObjectKind {
     Shape(ShapeKind, Vec<Expr>),
     /// `object { Name ... }`.
     Ref(Expr),
+    /// `object { sphere { ... } ... }`: an object written inside `object`.
+    Inner(Box<Object>),
     /// `union { ... }` or `merge { ... }`: child objects and the directives that make them.
     Csg { merge: bool, children: Vec<Stmt> },
 }

@@ -117,8 +117,8 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             tokens.push(Token { kind: TokenKind::Str(Rc::from(s)), span: span(start, end) });
         } else if c == b'#' {
             i += 1;
-            // POV-Ray allows blanks between `#` and the directive name.
-            while i < bytes.len() && (bytes[i] == b' ' || bytes[i] == b'\t') {
+            // POV-Ray allows blanks, even line breaks, between `#` and the directive name.
+            while i < bytes.len() && bytes[i].is_ascii_whitespace() {
                 i += 1;
             }
             let name_start = i;
@@ -127,7 +127,9 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             }
             let name = &text[name_start..i];
             if name.is_empty() {
-                return Err(Diag::new(span(start, start + 1), "expected a directive name after `#`"));
+                // A `#` with no directive after it is ignored by POV-Ray 3.7 (checked by
+                // rendering `look_at <0,2,0>#` before a `}`); so it is here.
+                continue;
             }
             let Some(&name) = DIRECTIVES.iter().find(|&&d| d == name) else {
                 return Err(Diag::new(

@@ -27,23 +27,75 @@ pub const NO_OBJECTS: &str = "No objects in scene.";
 pub const MAX_INCLUDE_DEPTH: usize = 32;
 
 /// Where `#include` looks, in POV-Ray's order: the including scene's folder, then each `-L` dir,
-/// then the project's `scenes/include`.
+/// then POV-Ray's own include folders, then the project's bundled `scenes/include`.
 #[derive(Clone, Debug, Default)]
 pub struct IncludePath {
     pub dirs: Vec<PathBuf>,
 }
 
 /// What the scene can read about the render it is parsed for (`image_width`, `clock`, ...).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ParseOptions {
     pub image_width: u32,
     pub image_height: u32,
+    pub clock: Clock,
+}
+
+/// POV-Ray's animation values for the frame being parsed (`+KI +KF +KFI +KFF`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Clock {
+    pub clock: f64,
+    pub clock_delta: f64,
+    pub frame_number: u32,
+    pub initial_clock: f64,
+    pub final_clock: f64,
+    pub initial_frame: u32,
+    pub final_frame: u32,
+    /// Whether an animation is being rendered (`clock_on`).
+    pub on: bool,
+}
+
+impl Default for Clock {
+    /// A still image, as POV-Ray parses it: clock 0, frame 0, clock_delta 0, not animated.
+    fn default() -> Self {
+        Clock {
+            clock: 0.0,
+            clock_delta: 0.0,
+            frame_number: 0,
+            initial_clock: 0.0,
+            final_clock: 0.0,
+            initial_frame: 0,
+            final_frame: 0,
+            on: false,
+        }
+    }
+}
+
+impl Clock {
+    /// Frame `index` (0-based) of `frames` with the clock running from `from` to `to`, as POV-Ray
+    /// numbers an animation: frames 1..=frames, the clock at `from` on the first and `to` on
+    /// the last.
+    pub fn frame(from: f64, to: f64, index: u32, frames: u32) -> Clock {
+        let steps = frames.saturating_sub(1).max(1);
+        let delta = (to - from) / f64::from(steps);
+        let clock = if frames <= 1 { from } else { from + delta * f64::from(index) };
+        Clock {
+            clock,
+            clock_delta: delta,
+            frame_number: index + 1,
+            initial_clock: from,
+            final_clock: to,
+            initial_frame: 1,
+            final_frame: frames,
+            on: true,
+        }
+    }
 }
 
 impl Default for ParseOptions {
-    /// POV-Ray's default image size, 640×480.
+    /// POV-Ray's default image size, 640×480, and a still image.
     fn default() -> Self {
-        ParseOptions { image_width: 640, image_height: 480 }
+        ParseOptions { image_width: 640, image_height: 480, clock: Clock::default() }
     }
 }
 

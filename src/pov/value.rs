@@ -11,8 +11,8 @@ use crate::pov::ast::BinOp;
 use crate::pov::lexer::Token;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
-    CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, ObjectDesc, PigmentDesc, TextureDesc,
-    Transform,
+    CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc, ObjectDesc, PigmentDesc,
+    TextureDesc, Transform,
 };
 
 #[derive(Clone, Debug, PartialEq)]
@@ -31,6 +31,7 @@ pub enum Value {
     Object(Box<Group>),
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
+    Light(Box<LightDesc>),
     Str(Rc<str>),
     Array(Rc<Array>),
     Macro(Rc<Macro>),
@@ -138,6 +139,7 @@ impl Value {
             Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",
+            Value::Light(_) => "a light_source",
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Macro(_) => "a macro",
@@ -211,11 +213,23 @@ impl Value {
     }
 }
 
+/// How an error about using an unmodelled declaration begins.
+const UNUSABLE: &str = "this declaration cannot be used: ";
+
 impl Unmodelled {
-    /// The error for using it at `span`.
+    /// The error for using it at `span` (itself unmodelled: a declaration that uses this one
+    /// is kept as unmodelled in turn).
     pub fn used_at(&self, span: Span) -> Diag {
-        Diag::new(span, format!("this declaration cannot be used: {}", self.why))
-            .with_note(self.at, "declared with it here")
+        Diag::unmodelled(span, format!("{UNUSABLE}{}", self.why)).with_note(self.at, "declared with it here")
+    }
+
+    /// The unmodelled value a declaration becomes when reading it failed with `e`: a use of
+    /// another unmodelled declaration passes that one's reason and place on.
+    pub fn from_error(e: Diag) -> Unmodelled {
+        match (e.message.strip_prefix(UNUSABLE), e.notes.first()) {
+            (Some(why), Some(&(at, _))) => Unmodelled { why: why.to_string(), at },
+            _ => Unmodelled { why: e.message, at: e.span },
+        }
     }
 }
 
@@ -262,6 +276,8 @@ pub fn binary(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PR
     let span = a_span.to(b_span);
     let (wa, wb) = match (a.width(), b.width()) {
         (Some(wa), Some(wb)) => (wa, wb),
+        (None, _) if matches!(a, Value::Unmodelled(_)) => return Err(a.wrong_kind(a_span, "")),
+        (_, None) if matches!(b, Value::Unmodelled(_)) => return Err(b.wrong_kind(b_span, "")),
         (None, _) => return Err(Diag::new(a_span, format!("cannot do arithmetic on {}", a.kind_name()))),
         (_, None) => return Err(Diag::new(b_span, format!("cannot do arithmetic on {}", b.kind_name()))),
     };

@@ -100,18 +100,20 @@ impl Lowerer<'_> {
         })
     }
 
-    /// Values POV-Ray's renderer provides; a still image is frame 0 at clock 0.
+    /// Values POV-Ray's renderer provides (`ParseOptions::clock`; a still image is frame 0 at
+    /// clock 0).
     fn builtin(&self, b: Builtin) -> f64 {
         match b {
             Builtin::ImageWidth => f64::from(self.options.image_width),
             Builtin::ImageHeight => f64::from(self.options.image_height),
-            Builtin::Clock
-            | Builtin::ClockDelta
-            | Builtin::FrameNumber
-            | Builtin::InitialClock
-            | Builtin::FinalClock
-            | Builtin::InitialFrame
-            | Builtin::FinalFrame => 0.0,
+            Builtin::Clock => self.options.clock.clock,
+            Builtin::ClockDelta => self.options.clock.clock_delta,
+            Builtin::FrameNumber => f64::from(self.options.clock.frame_number),
+            Builtin::InitialClock => self.options.clock.initial_clock,
+            Builtin::FinalClock => self.options.clock.final_clock,
+            Builtin::InitialFrame => f64::from(self.options.clock.initial_frame),
+            Builtin::FinalFrame => f64::from(self.options.clock.final_frame),
+            Builtin::ClockOn => f64::from(u8::from(self.options.clock.on)),
         }
     }
 

@@ -240,7 +240,24 @@ impl<'f> Lowerer<'f> {
             DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
             DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
             DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
+            DeclValue::Light(l) => Value::Light(Box::new(self.light(l)?)),
         })
+    }
+
+    /// A `light_source`; its position may be a declared light, which it continues from.
+    fn light(&mut self, l: &crate::pov::ast::Light) -> PResult<LightDesc> {
+        let mut light = match self.eval(&l.position)? {
+            Value::Light(base) => *base,
+            v => LightDesc { position: v.as_vec3(l.position.span)?, color: glam::DVec3::ONE, shadowless: false },
+        };
+        if let Some(c) = &l.color {
+            light.color = self.color(c)?.rgb;
+        }
+        light.shadowless |= l.shadowless;
+        for t in &l.transforms {
+            light.position = self.transform(t)?.matrix.transform_point3(light.position);
+        }
+        Ok(light)
     }
 
     /// `#default { ... }`: where later texture blocks and untextured objects start.
@@ -284,15 +301,8 @@ impl<'f> Lowerer<'f> {
             }
             Stmt::Light(l) => {
                 self.not_in_csg("light_source", l.span)?;
-                let mut position = self.vec3(&l.position)?;
-                let color = match &l.color {
-                    Some(c) => self.color(c)?.rgb,
-                    None => glam::DVec3::ONE,
-                };
-                for t in &l.transforms {
-                    position = self.transform(t)?.matrix.transform_point3(position);
-                }
-                self.scene.lights.push(LightDesc { position, color, shadowless: l.shadowless });
+                let light = self.light(l)?;
+                self.scene.lights.push(light);
             }
             Stmt::Background { color, span } => {
                 self.not_in_csg("background", *span)?;

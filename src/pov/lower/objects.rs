@@ -32,6 +32,7 @@ impl Lowerer<'_> {
                 }],
                 csg: false,
             },
+            ObjectKind::Inner(inner) => self.object(inner)?,
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
                 (ExprKind::Value(_), Value::Object(group)) => *group,
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),

@@ -159,6 +159,12 @@ impl Parser<'_, '_> {
         Ok(())
     }
 
+    /// Whether punctuation `c` comes next, without running a directive there first (what
+    /// follows a declaration's value must wait until it is stored).
+    fn next_is(&mut self, c: char) -> bool {
+        !matches!(self.cur.kind, TokenKind::Directive(_)) && self.is_punct(c)
+    }
+
     fn open(&mut self, kind: CondKind, span: Span) {
         self.conds.push(Cond { kind, span, frame: self.stream.frame_id() });
     }
@@ -241,7 +247,7 @@ impl Parser<'_, '_> {
     /// `[i][j]...` after an array's name (none: empty).
     pub(super) fn indices(&mut self) -> PResult<Vec<usize>> {
         let mut out = Vec::new();
-        while self.is_punct('[') {
+        while self.next_is('[') {
             let open = self.bump().span;
             let e = self.full_expr()?;
             let v = self.low.float(&e)?;
@@ -482,10 +488,13 @@ impl Parser<'_, '_> {
     /// `#declare Name = value` / `#local`, also `#declare Name[i] = value` for an element.
     fn declare(&mut self, local: bool, start: Span) -> PResult<()> {
         let directive = if local { "#local" } else { "#declare" };
-        let mut deprecated = false;
+        // `#declare deprecated [once] "message" Name = ...`: POV-Ray warns where the name is
+        // used; strahl does not track uses and only reads the words.
         if matches!(&self.cur.kind, TokenKind::Ident(w) if &**w == "deprecated") {
             self.take_raw();
-            deprecated = true;
+            if matches!(&self.cur.kind, TokenKind::Ident(w) if &**w == "once") {
+                self.take_raw();
+            }
             if let TokenKind::Str(_) = &self.cur.kind {
                 self.take_raw();
             }
@@ -494,10 +503,9 @@ impl Parser<'_, '_> {
         if RESERVED.contains(&&*name) || is_pov_keyword(&name) {
             return Err(Diag::new(name_span, format!("cannot declare `{name}`: it is a keyword")));
         }
-        let _ = deprecated;
         let indices = self.indices()?;
         self.expect_punct('=', &format!("after `{directive} {name}`"))?;
-        let value = self.declared_value(name_span)?;
+        let value = self.declared_value()?;
         self.low.assign(&name, local, &indices, value, start.to(name_span))?;
         self.eat_raw_semicolon();
         Ok(())
@@ -506,44 +514,79 @@ impl Parser<'_, '_> {
     /// The value after `#declare Name =`. A value that needs a feature strahl does not model
     /// yet becomes `Value::Unmodelled` once the rest of its syntax is skipped, so that include
     /// files declaring more than a scene uses still load.
-    pub(super) fn declared_value(&mut self, name_span: Span) -> PResult<Value> {
+    pub(super) fn declared_value(&mut self) -> PResult<Value> {
         let (braces, depth, in_csg) = (self.braces, self.depth, self.in_csg);
-        match self.declared_value_inner() {
-            Ok(v) => Ok(v),
+        let decl = match self.declared_syntax() {
+            Ok(Declared::Value(v)) => return Ok(v),
+            Ok(Declared::Syntax(decl)) => decl,
             Err(e) if e.unmodelled && self.pending.is_none() => {
                 self.depth = depth;
                 self.in_csg = in_csg;
                 self.skip_declaration(braces);
-                let _ = name_span;
-                Ok(Value::Unmodelled(Rc::new(Unmodelled { why: e.message, at: e.span })))
+                return Ok(Value::Unmodelled(Rc::new(Unmodelled::from_error(e))));
             }
-            Err(e) => Err(e),
+            Err(e) => return Err(e),
+        };
+        // Read in full: only its value may need what strahl does not model.
+        match self.low.declaration(&decl) {
+            Err(e) if e.unmodelled => Ok(Value::Unmodelled(Rc::new(Unmodelled::from_error(e)))),
+            other => other,
         }
     }
 
     /// Skips the rest of a declaration: its open blocks, or to the `;` or directive that ends
-    /// it when no block is open.
+    /// it when no block is open. Further `texture { }` layers belong to it too.
     fn skip_declaration(&mut self, braces: usize) {
-        let opened_before = self.braces > braces;
+        // Whether a block of the declaration was open or has been skipped: what follows at
+        // the declaration's level is then the next statement (or another texture layer).
+        let mut had_block = self.braces > braces;
+        // `(` minus `)` taken at the declaration's level (`function(x, y) { }`).
+        let mut parens = 0usize;
         loop {
             match &self.cur.kind {
-                TokenKind::Eof | TokenKind::FrameEnd => return,
-                TokenKind::Punct('}') if self.braces == braces + 1 => {
-                    self.take_raw();
-                    if opened_before || self.braces == braces {
-                        return;
+                TokenKind::Eof => return,
+                // The declaration may go on after the macro that wrote part of it.
+                TokenKind::FrameEnd => {
+                    if let Some((kind, id)) = self.stream.pop() {
+                        if self.frame_ended(kind, id).is_err() {
+                            return;
+                        }
                     }
+                    self.advance_raw();
                 }
-                TokenKind::Punct(';') | TokenKind::Directive(_) if self.braces == braces => return,
-                TokenKind::Punct('}') if self.braces == braces => return,
+                _ if self.braces > braces => {
+                    self.take_raw();
+                }
+                TokenKind::Punct('(') => {
+                    parens += 1;
+                    self.take_raw();
+                }
+                TokenKind::Punct(')') if parens > 0 => {
+                    parens -= 1;
+                    self.take_raw();
+                }
+                TokenKind::Punct(',') if parens > 0 => {
+                    self.take_raw();
+                }
+                TokenKind::Punct('}' | ';' | ',' | ')') | TokenKind::Directive(_) => return,
+                TokenKind::Ident(w) if &**w == "texture" => {
+                    self.take_raw();
+                    had_block = false;
+                }
+                _ if had_block => return,
+                TokenKind::Punct('{') => {
+                    self.take_raw();
+                    had_block = true;
+                }
                 _ => {
+                    // A word or value before the block it opens (`cone {`, `function(x) {`).
                     self.take_raw();
                 }
             }
         }
     }
 
-    fn declared_value_inner(&mut self) -> PResult<Value> {
+    fn declared_syntax(&mut self) -> PResult<Declared> {
         let decl = match self.peek_ident().as_deref() {
             Some("pigment") => DeclValue::Pigment(self.pigment()?),
             Some("normal") => DeclValue::Normal(self.normal()?),
@@ -556,7 +599,8 @@ impl Parser<'_, '_> {
             Some("interior") => DeclValue::Interior(self.interior()?),
             Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
             Some("camera") => DeclValue::Camera(self.camera_items()?.0),
-            Some("array") => return self.array(),
+            Some("light_source") => DeclValue::Light(self.light()?),
+            Some("array") => return self.array().map(Declared::Value),
             Some(word) if super::scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }
@@ -566,7 +610,7 @@ impl Parser<'_, '_> {
             }
             _ => DeclValue::Expr(self.color()?),
         };
-        self.low.declaration(&decl)
+        Ok(Declared::Syntax(decl))
     }
 
     /// `array[d1][d2]... [{ v, v, ... }]`, nested braces per dimension.
@@ -584,15 +628,15 @@ impl Parser<'_, '_> {
             ));
         }
         let mut array = Array { dims: dims.clone(), items: vec![None; total] };
-        if self.is_punct('{') {
+        if self.next_is('{') {
             let mut at = 0;
-            self.array_items(&mut array, 0, &mut at, kw)?;
+            self.array_items(&mut array, 0, &mut at)?;
         }
         Ok(Value::Array(Rc::new(array)))
     }
 
     /// The `{ ... }` of dimension `dim`, filling `array.items` from `*at`.
-    fn array_items(&mut self, array: &mut Array, dim: usize, at: &mut usize, kw: Span) -> PResult<()> {
+    fn array_items(&mut self, array: &mut Array, dim: usize, at: &mut usize) -> PResult<()> {
         let open = self.expect_punct('{', "to start the array's elements")?;
         self.enter(open)?;
         let n = array.dims[dim];
@@ -605,16 +649,15 @@ impl Parser<'_, '_> {
                 ));
             }
             if dim + 1 < array.dims.len() {
-                self.array_items(array, dim + 1, at, kw)?;
+                self.array_items(array, dim + 1, at)?;
             } else {
-                let v = self.declared_value(kw)?;
+                let v = self.declared_value()?;
                 array.items[*at] = Some(v);
                 *at += 1;
             }
             count += 1;
-            if !self.eat_punct(',') {
-                break;
-            }
+            // Commas between elements may be left out, as POV-Ray allows.
+            self.eat_punct(',');
         }
         let close = self.close_block("array", open)?;
         if count < n {
@@ -630,7 +673,7 @@ impl Parser<'_, '_> {
     }
 
     /// `#default { texture {..} pigment {..} normal {..} finish {..} }`, in any number and order.
-    fn default(&mut self, start: Span) -> PResult<()> {
+    pub(super) fn default(&mut self, start: Span) -> PResult<()> {
         const ITEMS: &[&str] = &["texture", "pigment", "normal", "finish"];
         self.open_block("#default", start)?;
         let mut items = Vec::new();
@@ -652,6 +695,32 @@ impl Parser<'_, '_> {
         self.close_block("#default", start)?;
         self.low.set_default(&items)
     }
+}
+
+/// Whether `word` starts a block value (a texture item, an object, an array) rather than an
+/// expression.
+pub(super) fn starts_declared_block(word: &str) -> bool {
+    matches!(
+        word,
+        "pigment"
+            | "normal"
+            | "finish"
+            | "texture"
+            | "interior"
+            | "color_map"
+            | "colour_map"
+            | "camera"
+            | "array"
+            | "light_source"
+    ) || super::scene::is_object_keyword(word)
+        || UNSUPPORTED_SHAPES.contains(&word)
+        || DECLARABLE_UNMODELLED.contains(&word)
+}
+
+/// A declaration's right-hand side as read: syntax to lower, or (an array) its value.
+enum Declared {
+    Syntax(DeclValue),
+    Value(Value),
 }
 
 /// Values POV-Ray can declare that strahl does not model yet: their declarations are kept as

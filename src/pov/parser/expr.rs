@@ -86,6 +86,7 @@ pub fn builtin(word: &str) -> Option<Builtin> {
         "final_clock" => Builtin::FinalClock,
         "initial_frame" => Builtin::InitialFrame,
         "final_frame" => Builtin::FinalFrame,
+        "clock_on" => Builtin::ClockOn,
         _ => return None,
     })
 }
@@ -360,7 +361,13 @@ impl Parser<'_, '_> {
                 self.bump();
                 self.enter(t.span)?;
                 let mut parts = vec![self.expr()?];
-                while self.eat_punct(',') {
+                // Commas between components may be left out, as POV-Ray allows
+                // (`translate < -1 0 0 >` in its woods.inc).
+                while self.eat_punct(',') || (parts.len() < 5 && self.starts_expr(&[])) {
+                    if self.is_punct('>') {
+                        // A trailing comma (`rgb <0.2, 0.1, 0.5,>`), which POV-Ray accepts.
+                        break;
+                    }
                     parts.push(self.expr()?);
                 }
                 let close = self.expect_punct('>', "to close the vector")?;

@@ -99,13 +99,8 @@ impl Parser<'_, '_> {
                 }
                 break;
             }
-            if i > 0 {
-                if self.cur.kind != TokenKind::Punct(',') {
-                    return Err(Diag::new(
-                        self.cur.span,
-                        format!("expected `,` between the arguments of `{}`, found {}", m.name, self.cur.describe()),
-                    ));
-                }
+            if i > 0 && self.cur.kind == TokenKind::Punct(',') {
+                // POV-Ray lets the comma between arguments be left out (shapes.pov does).
                 self.take_raw();
                 self.expand();
             }
@@ -131,8 +126,7 @@ impl Parser<'_, '_> {
                     by_ref.push((param.clone(), target));
                 }
                 None => {
-                    let e = self.argument()?;
-                    let v = self.low.eval(&e)?;
+                    let v = self.argument()?;
                     by_value.push((param.clone(), v));
                 }
             }
@@ -157,9 +151,16 @@ impl Parser<'_, '_> {
         Ok(())
     }
 
-    /// One argument: any expression, a colour with keywords, or a block value.
-    fn argument(&mut self) -> PResult<crate::pov::ast::Expr> {
-        self.full_color()
+    /// One argument: any expression, a colour with keywords, or what a declaration may hold
+    /// (`pigment { }`, an object, another macro's object).
+    fn argument(&mut self) -> PResult<Value> {
+        match self.peek_ident() {
+            Some(w) if super::directives::starts_declared_block(&w) => self.declared_value(),
+            _ => {
+                let e = self.full_color()?;
+                self.low.eval(&e)
+            }
+        }
     }
 
     /// Closes the innermost call: its scope goes, and its by-reference parameters that the

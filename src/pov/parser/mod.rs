@@ -321,7 +321,7 @@ impl Parser<'_, '_> {
     fn unknown_token(&self, t: &Token, context: &str, expected: &[&str]) -> Diag {
         let list = expected.join(", ");
         let message = match &t.kind {
-            TokenKind::Ident(word) if is_pov_keyword(word) => {
+            TokenKind::Ident(word) if is_pov_keyword(word) || RESERVED.contains(&&**word) => {
                 return Diag::unmodelled(t.span, format!("`{word}` is not supported in {context} (supported: {list})"));
             }
             TokenKind::Ident(word) => {
@@ -346,6 +346,11 @@ impl Parser<'_, '_> {
                 TokenKind::Punct(';') => {
                     // A stray `;` after an object or declaration, as POV-Ray tolerates.
                     self.bump();
+                }
+                // `default { }` without its `#`, which POV-Ray still reads (whiltile.pov).
+                TokenKind::Ident(w) if &*w == "default" => {
+                    let start = self.bump().span;
+                    self.default(start)?;
                 }
                 _ => {
                     let stmt = self.item()?;

@@ -103,6 +103,7 @@ impl Parser<'_, '_> {
                 Some(crate::pov::value::Value::Camera(_)) => {
                     items.push(CameraItem::Declared(self.declared_name(&name, span)?));
                 }
+                Some(crate::pov::value::Value::Unmodelled(u)) => return Err(u.used_at(span)),
                 Some(other) => {
                     return Err(Diag::new(span, format!("`{name}` is {}, not a camera", other.kind_name())));
                 }
@@ -148,7 +149,7 @@ impl Parser<'_, '_> {
         Ok((items, kw))
     }
 
-    fn light(&mut self) -> PResult<Light> {
+    pub(super) fn light(&mut self) -> PResult<Light> {
         let kw = self.bump().span;
         self.open_block("light_source", kw)?;
         if self.at_block_end() {
@@ -237,6 +238,10 @@ impl Parser<'_, '_> {
                 let children = self.children();
                 self.in_csg = outer;
                 ObjectKind::Csg { merge: word == "merge", children: children? }
+            }
+            None if self.peek_ident().is_some_and(|w| is_object_keyword(&w) || UNSUPPORTED_SHAPES.contains(&&*w)) => {
+                // `object { sphere { ... } modifiers }`, as a macro that makes an object is used.
+                ObjectKind::Inner(Box::new(self.object()?))
             }
             None => {
                 if !self.starts_expr(MODIFIERS) {

@@ -83,6 +83,12 @@ impl Parser<'_, '_> {
                         if !colors.is_empty() {
                             self.eat_punct(',');
                         }
+                        if self.peek_ident().as_deref() == Some("pigment") {
+                            return Err(Diag::unmodelled(
+                                self.peek().span,
+                                "a pattern of pigments (`checker pigment {..} pigment {..}`) is not supported yet",
+                            ));
+                        }
                         if !self.starts_expr(&PIGMENT[6..]) {
                             break;
                         }
@@ -204,6 +210,17 @@ impl Parser<'_, '_> {
                 self.enter(kw_span)?;
                 self.bump();
                 let c = self.color()?;
+                if !self.is_punct('}') {
+                    let t = self.peek();
+                    return Err(Diag::unmodelled(
+                        t.span,
+                        format!(
+                            "{} in `reflection {{ }}` is not supported yet (variable, fresnel or metallic \
+                             reflection); only `reflection {{ C }}` is",
+                            t.describe()
+                        ),
+                    ));
+                }
                 self.close_block("reflection", kw_span)?;
                 c
             } else if matches!(key, FinishKey::Ambient | FinishKey::Reflection) {

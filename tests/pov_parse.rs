@@ -235,9 +235,6 @@ fn error_unsupported_keywords() {
     let (l, c, m) = err("e_torus", "\n torus { 1, 0.5 }");
     assert_eq!((l, c), (2, 2));
     assert_eq!(m, "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)");
-    let (l, c, m) = err("e_fopen", "#declare A = 1;\n#fopen F \"x.txt\" read");
-    assert_eq!((l, c), (2, 1));
-    assert!(m.starts_with("`#fopen` is not supported yet"), "{m}");
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
     let (_, _, m) = err("e_spot", "light_source { 0 color rgb 1 spotlight }");

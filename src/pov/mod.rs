@@ -272,6 +272,23 @@ impl lower::Files for Loader<'_> {
         self.resolve(name).is_some()
     }
 
+    fn data_path(&self, name: &str, write: bool) -> Result<PathBuf, String> {
+        if !write {
+            return self.resolve(name).ok_or_else(|| format!("file \"{}\" not found", visible(name)));
+        }
+        let relative = Path::new(name);
+        let inside = relative.components().all(|c| matches!(c, std::path::Component::Normal(_)));
+        if !inside {
+            return Err(format!(
+                "#fopen writes only inside the scene's folder, not \"{}\" (give a plain relative name)",
+                visible(name)
+            ));
+        }
+        let scene = self.stack.first().and_then(|(_, id)| self.map.file(*id)).map(|f| f.path.clone());
+        let folder = scene.as_deref().and_then(Path::parent).map(Path::to_path_buf).unwrap_or_default();
+        Ok(folder.join(relative))
+    }
+
     fn source_ref(&self, span: Span) -> SourceRef {
         let (line, col) = self.map.line_col(span);
         let file = self.map.file(span.file).map(|f| f.display.clone()).unwrap_or_default();

@@ -5,6 +5,7 @@
 
 mod camera;
 mod eval;
+mod fileio;
 mod functions;
 mod objects;
 mod textures;
@@ -18,6 +19,7 @@ use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
 use crate::scene::desc::{LightDesc, SceneDesc, SourceRef, TextureDesc};
+pub(crate) use fileio::Mode as FileMode;
 
 /// Total loop iterations (`#while`, `#for`) allowed in one scene: far beyond real scenes (a
 /// 100³ grid of spheres is a million), small enough that a loop that never ends fails in
@@ -55,6 +57,9 @@ pub trait Files {
     fn source_ref(&self, span: Span) -> SourceRef;
     /// `file_exists(name)`: whether `#include` would find it.
     fn file_exists(&self, name: &str) -> bool;
+    /// Where `#fopen` reads `name` (found as `#include` finds files) or writes it (inside the
+    /// scene's folder only); why not, as a message.
+    fn data_path(&self, name: &str, write: bool) -> Result<std::path::PathBuf, String>;
 }
 
 /// One level of the symbol table: the scene's globals, a file's `#local`s, a macro call.
@@ -87,6 +92,8 @@ pub struct Lowerer<'f> {
     default_texture: TextureDesc,
     /// `seed()`'s streams for `rand()`.
     random: functions::RandomStreams,
+    /// Files `#fopen` opened.
+    open_files: fileio::OpenFiles,
 }
 
 impl<'f> Lowerer<'f> {
@@ -102,11 +109,16 @@ impl<'f> Lowerer<'f> {
             loop_iterations: 0,
             default_texture: TextureDesc::default(),
             random: Default::default(),
+            open_files: Default::default(),
         }
     }
 
-    /// The finished scene with what it printed.
+    /// The finished scene with what it printed. Files the scene left open are saved (an
+    /// error saving one is a warning: the scene itself is complete).
     pub fn finish(mut self) -> (SceneDesc, Vec<Output>) {
+        if let Err(m) = self.close_all_files() {
+            self.output.push(Output::Warning(Diag::new(Span::default(), m)));
+        }
         self.scene.version = self.version;
         (self.scene, self.output)
     }

@@ -20,6 +20,9 @@ impl Files for NoFiles {
     fn file_exists(&self, _: &str) -> bool {
         false
     }
+    fn data_path(&self, _: &str, _: bool) -> Result<std::path::PathBuf, String> {
+        Err("no files in unit tests".into())
+    }
     fn source_ref(&self, span: Span) -> SourceRef {
         let e = crate::error::LocatedError::at_offset("test", &self.0, span.start as usize, "");
         SourceRef { file: String::new(), line: e.line, col: e.col }

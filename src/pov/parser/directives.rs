@@ -8,7 +8,7 @@ use super::stream::{FrameKind, Mark};
 use super::{is_pov_keyword, Parser, LAYERED, RESERVED, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{DeclValue, DefaultItem};
 use crate::pov::lexer::TokenKind;
-use crate::pov::lower::{MessageKind, MAX_LOOP_ITERATIONS};
+use crate::pov::lower::{FileMode, MessageKind, MAX_LOOP_ITERATIONS};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{truthy, Array, Unmodelled, Value, EPSILON, MAX_ARRAY_DIMENSIONS, MAX_ARRAY_ELEMENTS};
 
@@ -149,12 +149,54 @@ impl Parser<'_, '_> {
                 self.low.message(kind, text, start)?;
             }
             "default" => self.default(start)?,
-            _ => {
-                return Err(Diag::unmodelled(
-                    start,
-                    format!("`#{name}` is not supported yet (file input and output are not modelled)"),
-                ))
+            "fopen" => {
+                let (handle, _) = self.raw_name("#fopen")?;
+                let (file, _) = self.string_arg("fopen")?;
+                let mode = match &self.cur.kind {
+                    TokenKind::Ident(w) if &**w == "read" => FileMode::Read,
+                    TokenKind::Ident(w) if &**w == "write" => FileMode::Write,
+                    TokenKind::Ident(w) if &**w == "append" => FileMode::Append,
+                    _ => {
+                        return Err(Diag::new(
+                            self.cur.span,
+                            format!(
+                                "expected `read`, `write` or `append` after the file name, found {}",
+                                self.cur.describe()
+                            ),
+                        ))
+                    }
+                };
+                self.take_raw();
+                self.low.fopen(&handle, &file, mode, start)?;
             }
+            "fclose" => {
+                let (handle, _) = self.raw_name("#fclose")?;
+                self.low.fclose(&handle, start)?;
+            }
+            "read" => {
+                self.expect_punct('(', "after `#read`")?;
+                let (handle, _) = self.raw_name("#read (")?;
+                let mut targets = Vec::new();
+                while self.cur.kind == TokenKind::Punct(',') {
+                    self.take_raw();
+                    targets.push(self.raw_name("a comma in `#read`")?.0);
+                }
+                self.expect_raw(')', "to close `#read (...)`")?;
+                self.low.read_values(&handle, &targets, start)?;
+            }
+            "write" => {
+                self.expect_punct('(', "after `#write`")?;
+                let (handle, _) = self.raw_name("#write (")?;
+                let mut values = Vec::new();
+                while self.is_punct(',') {
+                    self.bump();
+                    let e = self.full_expr()?;
+                    values.push(self.low.eval(&e)?);
+                }
+                self.expect_raw(')', "to close `#write (...)`")?;
+                self.low.write_values(&handle, &values, start)?;
+            }
+            _ => return Err(Diag::new(start, format!("`#{name}` is not allowed here"))),
         }
         Ok(())
     }
@@ -547,12 +589,10 @@ impl Parser<'_, '_> {
                 TokenKind::Eof => return,
                 // The declaration may go on after the macro that wrote part of it.
                 TokenKind::FrameEnd => {
-                    if let Some((kind, id)) = self.stream.pop() {
-                        if self.frame_ended(kind, id).is_err() {
-                            return;
-                        }
+                    self.close_frame();
+                    if self.pending.is_some() {
+                        return;
                     }
-                    self.advance_raw();
                 }
                 _ if self.braces > braces => {
                     self.take_raw();

@@ -168,10 +168,15 @@ impl Parser<'_, '_> {
     /// a directive there ends the expression instead of running first, so that `#declare A = 1`
     /// stores `A` before a following `#if (A)` reads it, even without the `;`.
     fn peek_more(&mut self) -> Token {
-        if matches!(self.cur.kind, TokenKind::Directive(_)) {
-            return Token { kind: TokenKind::Eof, span: self.cur.span };
+        loop {
+            match self.cur.kind {
+                TokenKind::Directive(_) => return Token { kind: TokenKind::Eof, span: self.cur.span },
+                // The expression may go on after the macro that wrote its start; a directive
+                // there still waits.
+                TokenKind::FrameEnd => self.close_frame(),
+                _ => return self.peek(),
+            }
         }
-        self.peek()
     }
 
     pub(super) fn more_ident(&mut self) -> Option<Rc<str>> {
@@ -453,6 +458,12 @@ impl Parser<'_, '_> {
             return Ok(Expr { kind: ExprKind::Ident(word.to_string()), span });
         };
         self.bump();
+        if let Value::Unmodelled(u) = &value {
+            if self.peek_more().kind == TokenKind::Punct('(') {
+                // A user function (`#declare f = function {...}`) called.
+                return Err(u.used_at(span));
+            }
+        }
         let Value::Array(array) = &value else {
             return Ok(Expr { kind: ExprKind::Value(Rc::new(value)), span });
         };

@@ -141,10 +141,10 @@ impl Parser<'_, '_> {
     fn expand(&mut self) {
         while !self.ready {
             let result = match &self.cur.kind {
-                TokenKind::FrameEnd => match self.stream.pop() {
-                    Some((kind, id)) => self.frame_ended(kind, id).map(|()| self.advance_raw()),
-                    None => Ok(()),
-                },
+                TokenKind::FrameEnd => {
+                    self.close_frame();
+                    Ok(())
+                }
                 TokenKind::Directive(d) => {
                     let d = *d;
                     self.directive(d)
@@ -167,6 +167,18 @@ impl Parser<'_, '_> {
             if let Err(e) = result {
                 self.fail(e);
             }
+        }
+    }
+
+    /// At `FrameEnd`: closes the frame (its scope, its include) and reads on in the one below.
+    fn close_frame(&mut self) {
+        if let Some((kind, id)) = self.stream.pop() {
+            match self.frame_ended(kind, id) {
+                Ok(()) => self.advance_raw(),
+                Err(e) => self.fail(e),
+            }
+        } else {
+            self.ready = true;
         }
     }
 

@@ -1,0 +1,294 @@
+//! The scene language as POV-Ray runs it: macros, loops, arrays, strings, file I/O, directives
+//! inside blocks and expressions, lazy declarations and error chains. Each scene is written to a
+//! fresh folder and loaded through the library, as `strahl render` loads it.
+
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use strahl::error::LocatedError;
+use strahl::pov::{load_scene_with_messages, IncludePath, Message, ParseOptions};
+use strahl::scene::desc::{SceneDesc, ShapeDesc};
+
+fn dir(test: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("language").join(test);
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Loads `text` as `scene.pov` in a fresh folder (with `files` beside it): the scene and the
+/// `#debug` text it printed.
+fn load_with(test: &str, text: &str, files: &[(&str, &str)]) -> Result<(SceneDesc, String), LocatedError> {
+    let d = dir(test);
+    for (name, body) in files {
+        std::fs::write(d.join(name), body).unwrap();
+    }
+    let path = d.join("scene.pov");
+    std::fs::write(&path, text).unwrap();
+    let (scene, messages) = load_scene_with_messages(&path, &IncludePath::default(), &ParseOptions::default())?;
+    let debug = messages
+        .iter()
+        .filter_map(|m| match m {
+            Message::Debug(t) => Some(t.as_str()),
+            Message::Warning(_) => None,
+        })
+        .collect();
+    Ok((scene, debug))
+}
+
+fn load(test: &str, text: &str) -> Result<(SceneDesc, String), LocatedError> {
+    load_with(test, text, &[])
+}
+
+fn debug(test: &str, text: &str) -> String {
+    load(test, &format!("{text}\nsphere {{ 0, 1 }}")).unwrap_or_else(|e| panic!("{test}: {e}")).1
+}
+
+fn error(test: &str, text: &str) -> LocatedError {
+    match load(test, text) {
+        Ok(_) => panic!("{test}: the scene loaded"),
+        Err(e) => e,
+    }
+}
+
+fn spheres(scene: &SceneDesc) -> Vec<(DVec3, f64)> {
+    scene
+        .objects
+        .iter()
+        .filter_map(|o| match o.shape {
+            ShapeDesc::Sphere { center, radius } => Some((center, radius)),
+            _ => None,
+        })
+        .collect()
+}
+
+#[test]
+fn macros_expand_to_objects_expressions_and_block_items() {
+    let (s, _) = load(
+        "macro_kinds",
+        "#macro Ball(P, R) sphere { P, R } #end\n\
+         #macro Sq(X) (X * X) #end\n\
+         #macro Red() rgb <1, 0, 0> #end\n\
+         Ball(<1, 0, 0>, Sq(3))\n\
+         union { Ball(0, 1) Ball(y, 2) pigment { Red() } }\n\
+         sphere { 0, 1 + Sq(2) }",
+    )
+    .unwrap();
+    let radii: Vec<f64> = spheres(&s).iter().map(|&(_, r)| r).collect();
+    assert_eq!(radii, vec![9.0, 1.0, 2.0, 5.0]);
+}
+
+#[test]
+fn macro_parameters_by_reference_optional_and_local() {
+    let out = debug(
+        "macro_params",
+        "#macro Inc(V) #declare V = V + 1; #end\n\
+         #macro Opt(A, optional B) #ifdef (B) #debug \"with B\\n\" #else #debug \"no B\\n\" #end #end\n\
+         #macro Loc() #local T = 5; #debug concat(\"T=\", str(T, 0, 0), \"\\n\") #end\n\
+         #declare N = 1; Inc(N) Inc(N)\n\
+         #declare M = 1; Inc(M + 0)\n\
+         Opt(1) Opt(1, 2) Loc()\n\
+         #ifndef (T) #debug \"T gone\\n\" #end\n\
+         #debug concat(\"N=\", str(N, 0, 0), \" M=\", str(M, 0, 0), \"\\n\")",
+    );
+    assert_eq!(out, "no B\nwith B\nT=5\nT gone\nN=3 M=1\n");
+}
+
+#[test]
+fn recursion_runs_and_runaway_recursion_is_a_located_error() {
+    let out = debug(
+        "macro_recursion",
+        "#macro Fact(K) #if (K <= 1) 1 #else K * Fact(K - 1) #end #end\n\
+         #debug concat(str(Fact(6), 0, 0), \"\\n\")",
+    );
+    assert_eq!(out, "720\n");
+    let e = error("macro_runaway", "#macro R(N) R(N + 1) #end\nR(0)");
+    assert_eq!((e.line, e.col), (1, 13), "{e}");
+    assert!(e.message.starts_with("macro calls nested deeper than"), "{e}");
+    assert!(e.message.contains("in macro `R` (defined at "), "{e}");
+    assert!(e.message.contains("and 988 more macro calls"), "{e}");
+}
+
+#[test]
+fn errors_inside_macros_name_the_chain_of_calls_and_includes() {
+    let d = "#macro Bad(X) sphere { X, -1 } #end\n#macro Outer() Bad(0) #end\n";
+    let e = match load_with("macro_chain", "#include \"lib.inc\"\nOuter()\n", &[("lib.inc", d)]) {
+        Ok(_) => panic!("loaded"),
+        Err(e) => e,
+    };
+    assert!(e.file.ends_with("lib.inc"), "{e}");
+    assert_eq!((e.line, e.col), (1, 27), "{e}");
+    let lines: Vec<&str> = e.message.lines().collect();
+    assert_eq!(lines[0], "sphere radius must be positive", "{e}");
+    assert!(lines[1].contains("in macro `Bad` (defined at ") && lines[1].ends_with("lib.inc:2:16"), "{e}");
+    assert!(lines[2].contains("in macro `Outer`") && lines[2].ends_with("scene.pov:2:1"), "{e}");
+}
+
+#[test]
+fn loops_for_while_switch_and_break() {
+    let out = debug(
+        "loops",
+        "#for (I, 1, 3) #debug str(I, 0, 0) #end #debug \"|\"\n\
+         #for (I, 3, 1, -1) #debug str(I, 0, 0) #end #debug \"|\"\n\
+         #for (I, 0, 1, 0.5) #debug str(I, 0, 1) #debug \" \" #end #debug \"|\"\n\
+         #declare J = 0; #while (1) #declare J = J + 1; #if (J > 4) #break #end #end #debug str(J, 0, 0) #debug \"|\"\n\
+         #for (K, 0, 3) #switch (K) #case (0) #debug \"a\" #case (1) #debug \"b\" #break #range (2, 5) #debug \"c\" #else #debug \"d\" #end #end",
+    );
+    // The same output as POV-Ray 3.7 (a clause runs on into the next until `#break`).
+    assert_eq!(out, "123|321|0.0 0.5 1.0 |5|abbcdcd");
+}
+
+#[test]
+fn directives_stand_anywhere_a_token_may() {
+    let (s, _) = load(
+        "directives_inside",
+        "#declare Big = 1;\n\
+         sphere { <0, #if (Big) 5 #else 1 #end, 0>, #declare R = 2; R }\n\
+         union { #for (I, 1, 3) sphere { x * I, 0.5 } #end }\n\
+         camera { location <0, 0, -5> #if (Big) look_at 0 #end }",
+    )
+    .unwrap();
+    assert_eq!(spheres(&s)[0], (DVec3::new(0.0, 5.0, 0.0), 2.0));
+    assert_eq!(spheres(&s).len(), 4);
+    assert_eq!(s.camera.look_at, Some(DVec3::ZERO));
+}
+
+#[test]
+fn a_declaration_is_stored_before_the_next_directive_reads_it_even_without_semicolons() {
+    let out = debug(
+        "no_semicolons",
+        "#declare A = 1\n#declare B = A + 1\n#declare S = sphere { 0, B }\n#declare T = object { S }\n\
+         #if (B = 2) #debug \"ok\" #end",
+    );
+    assert_eq!(out, "ok");
+}
+
+#[test]
+fn arrays_of_one_to_five_dimensions() {
+    let out = debug(
+        "arrays",
+        "#declare A = array[2][3] { {1, 2, 3}, {4 5 6} }\n\
+         #declare B = array[4];\n#declare B[2] = \"x\";\n\
+         #declare O = array[2] { sphere { 0, 1 }, sphere { 0, 2 } }\n\
+         #debug concat(str(A[1][2], 0, 0), str(dimensions(A), 0, 0), str(dimension_size(A, 2), 0, 0), B[2])\n\
+         #ifdef (B[1]) #debug \"set\" #else #debug \"unset\" #end\n\
+         #if (defined(B[2])) #debug \"def\" #end",
+    );
+    assert_eq!(out, "623xunsetdef");
+    let e = error("array_range", "#declare A = array[2];\n#declare A[2] = 1;");
+    assert_eq!((e.line, e.col), (2, 1), "{e}");
+    assert!(e.message.contains("out of range"), "{e}");
+    let e = error("array_unset", "#declare A = array[2];\n#declare X = A[0];");
+    assert!(e.message.contains("has no value yet"), "{e}");
+    let e = error("array_size", "#declare A = array[100000][100000];");
+    assert!(e.message.contains("elements in all at most"), "{e}");
+}
+
+#[test]
+fn string_functions_as_pov_ray_3_7() {
+    let out = debug(
+        "strings",
+        "#declare S = \"Hello\";\n\
+         #debug concat(strupr(S), \",\", strlwr(S), \",\", substr(S, 2, 3), \",\", chr(65), \",\")\n\
+         #debug concat(str(strlen(S), 0, 0), \",\", str(asc(\"a\"), 0, 0), \",\", str(val(\"12.5x\"), 0, 1), \",\")\n\
+         #debug concat(str(strcmp(\"a\", \"b\"), 0, 0), \",\", vstr(3, <1, 2, 3>, \"_\", 0, 1), \",\", str(7, -3, 0))",
+    );
+    assert_eq!(out, "HELLO,hello,ell,A,5,97,12.5,-1,1.0_2.0_3.0,007");
+    let e = error("substr_range", "#declare S = substr(\"abc\", 3, 5);");
+    assert!(e.message.contains("outside the string"), "{e}");
+}
+
+#[test]
+fn rand_is_deterministic_per_seed_and_in_range() {
+    let text = "#declare R = seed(42); #declare Q = seed(7);\n\
+                #for (I, 1, 50) #declare V = rand(R); #if (V < 0 | V >= 1) #error \"range\" #end #end\n\
+                #debug concat(str(rand(R), 0, 9), \" \", str(rand(Q), 0, 9))";
+    let a = debug("rand_a", text);
+    let b = debug("rand_b", text);
+    assert_eq!(a, b);
+    let (x, y) = a.split_once(' ').unwrap();
+    assert_ne!(x, y, "different seeds give different numbers");
+}
+
+#[test]
+fn vector_functions_rotate_as_rotate_does() {
+    let out = debug(
+        "vectors",
+        "#declare V = vrotate(x, <0, 90, 0>); #declare W = vaxis_rotate(x, y, 90);\n\
+         #debug concat(vstr(3, V, \",\", 0, 3), \" \", vstr(3, W, \",\", 0, 3))",
+    );
+    assert_eq!(out, "0.000,0.000,-1.000 0.000,0.000,-1.000");
+}
+
+#[test]
+fn undef_and_version() {
+    let out = debug(
+        "undef",
+        "#declare A = 1; #undef A #ifndef (A) #debug \"gone\" #end\n\
+         #local V = version; #version 3.5; #debug str(version, 0, 1) #version V;",
+    );
+    assert_eq!(out, "gone3.5");
+}
+
+#[test]
+fn files_are_written_and_read_back_beside_the_scene() {
+    let text = "#fopen F \"data.txt\" write\n#write (F, 1.5, \",\", <1, 2, 3>, \",\\\"s\\\"\")\n#fclose F\n\
+                #fopen G \"data.txt\" read\n#read (G, A, B, C)\n#declare N = 0;\n\
+                #while (defined(G)) #read (G, D) #declare N = N + 1; #end\n\
+                #debug concat(str(A, 0, 1), vstr(3, B, \" \", 0, 0), C, str(N, 0, 0))\nsphere { 0, 1 }";
+    let (_, out) = load("fileio", text).unwrap();
+    assert_eq!(out, "1.51 2 3s0");
+    let written = std::fs::read_to_string(dir_path("fileio").join("data.txt")).unwrap();
+    assert_eq!(written, "1.5,<1,2,3>,\"s\"");
+    let e = error("fileio_outside", "#fopen F \"../x.txt\" write");
+    assert!(e.message.starts_with("#fopen writes only inside the scene's folder"), "{e}");
+    let e = error("fileio_missing", "#fopen F \"none.txt\" read");
+    assert!(e.message.contains("not found"), "{e}");
+}
+
+fn dir_path(test: &str) -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR")).join("language").join(test)
+}
+
+#[test]
+fn unmodelled_declarations_fail_only_where_they_are_used() {
+    let text =
+        "#declare T = texture { pigment { granite } }\n#declare U = texture { T }\n#declare C = cone { 0, 1, y, 0 }\n";
+    assert!(load("lazy_unused", &format!("{text}sphere {{ 0, 1 }}")).is_ok());
+    let e = error("lazy_used", &format!("{text}sphere {{ 0, 1 texture {{ U }} }}"));
+    assert_eq!((e.line, e.col), (4, 25), "{e}");
+    assert!(e.message.starts_with("this declaration cannot be used: `granite` is not supported in pigment"), "{e}");
+    assert!(e.message.contains("scene.pov:1:34"), "the note points at `granite`: {e}");
+    let e = error("lazy_object", &format!("{text}object {{ C }}"));
+    assert!(e.message.contains("`cone` is not supported"), "{e}");
+    // A misspelt keyword in a declaration is still an error where it is written.
+    let e = error("lazy_typo", "#declare T = texture { pigment { rgb 1 } finsh { } }");
+    assert!(e.message.starts_with("unknown keyword `finsh`"), "{e}");
+}
+
+#[test]
+fn unclosed_and_unmatched_blocks_are_located() {
+    let e =
+        match load_with("open_if_in_include", "#include \"open.inc\"\nsphere { 0, 1 }", &[("open.inc", "#if (1)\n")]) {
+            Ok(_) => panic!("loaded"),
+            Err(e) => e,
+        };
+    assert!(e.file.ends_with("open.inc"), "{e}");
+    assert!(e.message.starts_with("`#if` is not closed by `#end` before the end of the file"), "{e}");
+    let e = error("open_macro", "#macro M() #if (1) sphere { 0, 1 } #end\nM()");
+    assert!(e.message.starts_with("`#macro` is not closed by `#end`"), "{e}");
+    let e = error("open_while", "#declare I = 0;\n#while (I < 2) #declare I = I + 1;");
+    assert_eq!((e.line, e.col), (2, 1), "{e}");
+    let e = error("stray_end", "sphere { 0, 1 }\n#end");
+    assert_eq!((e.line, e.col), (2, 1), "{e}");
+}
+
+#[test]
+fn clock_values_come_from_the_parse_options() {
+    let d = dir("clock");
+    let path = d.join("scene.pov");
+    std::fs::write(&path, "sphere { 0, 1 + clock + clock_on }").unwrap();
+    let options = ParseOptions { clock: strahl::pov::Clock::frame(0.0, 2.0, 1, 3), ..ParseOptions::default() };
+    let (s, _) = load_scene_with_messages(&path, &IncludePath::default(), &options).unwrap();
+    assert_eq!(spheres(&s)[0].1, 3.0);
+}

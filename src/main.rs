@@ -5,7 +5,7 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use strahl::headless::capture::{self, FrameRange};
+use strahl::headless::capture::{self, ClockRange, FrameRange};
 use strahl::headless::{self, bench, tradeoff, CliError};
 use strahl::render::precise::Precision;
 use strahl::render::preset::Preset;
@@ -141,6 +141,10 @@ impl Common {
     }
 }
 
+/// `--clock` of capture and bench, one text for both.
+const CLOCK_HELP: &str = "Animate: parse the scene anew for each frame, with `clock` running from A on the first \
+                          frame to B on the last (POV-Ray's +KI A +KF B +KFF N), e.g. 0..1";
+
 #[derive(Args)]
 struct RenderCmd {
     /// The POV-Ray scene file.
@@ -171,9 +175,11 @@ struct CaptureCmd {
     /// Render only frames START..END (END excluded) of the N, e.g. to shard across machines.
     #[arg(long, value_name = "START..END")]
     frames_range: Option<FrameRange>,
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true, help = CLOCK_HELP)]
+    clock: Option<ClockRange>,
     /// Output folder: created if missing. It must be empty or hold this same capture (same scene,
-    /// path, size, frame count and settings; its frames are replaced), so frames of two captures
-    /// never mix.
+    /// path, size, frame count, clock range and settings; its frames are replaced), so frames of
+    /// two captures never mix.
     #[arg(short = 'o', long, value_name = "DIR")]
     output: PathBuf,
     /// Let -o name a folder of another capture: delete strahl's frame_NNNN.png and manifest.json
@@ -184,7 +190,7 @@ struct CaptureCmd {
     #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=4096))]
     tile: u32,
     /// Merge the manifests (and frames) of shard folders into -o DIR instead of rendering.
-    #[arg(long, num_args = 1.., value_name = "DIR", conflicts_with_all = ["scene", "path", "frames", "frames_range"])]
+    #[arg(long, num_args = 1.., value_name = "DIR", conflicts_with_all = ["scene", "path", "frames", "frames_range", "clock"])]
     merge: Vec<PathBuf>,
     /// Print nothing but errors, and no progress bar.
     #[arg(short, long)]
@@ -215,6 +221,8 @@ struct BenchCmd {
     /// Also run the bench at 1, 2, ... all cores and print a scaling table.
     #[arg(long)]
     threads_sweep: bool,
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true, help = CLOCK_HELP)]
+    clock: Option<ClockRange>,
     #[command(flatten)]
     common: Common,
 }
@@ -348,6 +356,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             res_scale: c.common.res_scale(),
             threads: c.common.threads,
             accel: c.common.accel.into(),
+            clock: c.clock,
             quiet: c.quiet,
             force: c.force,
         }),
@@ -375,6 +384,7 @@ fn run(cli: Cli) -> Result<(), CliError> {
             threads: b.common.threads,
             accel: b.common.accel.into(),
             threads_sweep: b.threads_sweep,
+            clock: b.clock,
         }),
     }
 }

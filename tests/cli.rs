@@ -365,3 +365,130 @@ fn path_key_with_look_at_equal_to_location_is_a_located_error() {
     let err = capture_with_bad_path("path_look_at", "same.path", text);
     assert!(err.contains("same.path:2:32: camera look_at is the same point as its location"), "{err}");
 }
+
+/// Writes a scene whose sphere moves and grows with `clock` (radius 0.5 at clock 0, 1 at clock
+/// 1), so every clock value gives other pixels; returns its path.
+fn clock_scene(test: &str) -> String {
+    let dir = scratch(test);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let scene = dir.join("clock.pov");
+    let text = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <5, 5, -5> color rgb 1 }\n\
+                sphere { <clock, 0, 0>, 0.5 + clock / 2 pigment { rgb <1, 0.5, 0> } }\n";
+    std::fs::write(&scene, text).unwrap_or_else(|e| panic!("{e}"));
+    scene.display().to_string()
+}
+
+/// Captures 3 frames of `scene` at 24×18 into `dir` with `extra` arguments; returns the
+/// manifest and the PNG bytes of every frame it lists.
+fn clock_capture(scene: &str, dir: &Path, extra: &[&str]) -> (Manifest, Vec<(u32, Vec<u8>)>) {
+    let (path, d) = (orbit(), dir.display().to_string());
+    let mut args = vec!["capture", scene, "--path", &path, "--frames", "3", "-W", "24", "-H", "18", "-q", "-o", &d];
+    args.extend_from_slice(extra);
+    ok(&args);
+    let m = Manifest::read(dir).unwrap_or_else(|e| panic!("{e}"));
+    let pngs = m.frames.iter().map(|f| (f.index, std::fs::read(dir.join(&f.file)).unwrap_or_else(|e| panic!("{e}"))));
+    let pngs = pngs.collect();
+    (m, pngs)
+}
+
+#[test]
+fn capture_with_clock_parses_each_frame_at_its_clock_and_shards_agree() {
+    let scene = clock_scene("clock_scene");
+    let (whole, frames) = clock_capture(&scene, &scratch("clock_whole"), &["--clock", "0..1"]);
+    assert_eq!(whole.frames.len(), 3);
+    let shas: Vec<&str> = whole.frames.iter().map(|f| f.sha256.as_str()).collect();
+    assert!(shas[0] != shas[1] && shas[1] != shas[2] && shas[0] != shas[2], "{shas:?}");
+    let text = std::fs::read_to_string(scratch_path("clock_whole").join("manifest.json")).unwrap_or_default();
+    let v = Json::parse(&text).unwrap_or_else(|e| panic!("{e}"));
+    let clock = v.get("clock").unwrap_or_else(|| panic!("no clock in {text}"));
+    assert_eq!(
+        (clock.get("from").and_then(Json::as_f64), clock.get("to").and_then(Json::as_f64)),
+        (Some(0.0), Some(1.0))
+    );
+    // A shard parses frame i at frame i's clock of the whole capture, not of the shard.
+    let (first, shard_a) =
+        clock_capture(&scene, &scratch("clock_shard_a"), &["--clock", "0..1", "--frames-range", "0..1"]);
+    let (last, shard_b) =
+        clock_capture(&scene, &scratch("clock_shard_b"), &["--clock", "0..1", "--frames-range", "2..3"]);
+    assert_eq!(shard_a, vec![frames[0].clone()], "frame 0 of shard 0..1 differs from the whole capture's");
+    assert_eq!(shard_b, vec![frames[2].clone()], "frame 2 of shard 2..3 differs from the whole capture's");
+    let (a, b) =
+        (scratch_path("clock_shard_a").display().to_string(), scratch_path("clock_shard_b").display().to_string());
+    let mid = scratch("clock_shard_mid");
+    clock_capture(&scene, &mid, &["--clock", "0..1", "--frames-range", "1..2"]);
+    let (m, out) = (mid.display().to_string(), scratch("clock_merged"));
+    ok(&["capture", "--merge", &a, &m, &b, "-o", &out.display().to_string()]);
+    let merged = Manifest::read(&out).unwrap_or_else(|e| panic!("{e}"));
+    assert!(merged.same_content(&whole), "merged clock shards differ from one run");
+    assert!(first.same_header(&last) && first.same_header(&whole));
+    // Another clock range is another capture: refused in the same folder, and it differs.
+    let dir = scratch_path("clock_whole").display().to_string();
+    let path = orbit();
+    let err = fails(&[
+        "capture", &scene, "--path", &path, "--frames", "3", "-W", "24", "-H", "18", "--clock", "0..0.5", "-o", &dir,
+    ]);
+    assert!(err.contains("not empty") && err.contains("clock range"), "{err}");
+    let (half, _) = clock_capture(&scene, &scratch("clock_half"), &["--clock", "0..0.5"]);
+    assert_eq!(half.frames[0].sha256, whole.frames[0].sha256, "both start at clock 0");
+    assert_ne!(half.frames[2].sha256, whole.frames[2].sha256, "clock 0.5 against clock 1");
+}
+
+/// The scratch folder of `test` without clearing it.
+fn scratch_path(test: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli").join(test)
+}
+
+#[test]
+fn capture_without_clock_parses_once_at_clock_0() {
+    let scene = clock_scene("noclock_scene");
+    let (m, frames) = clock_capture(&scene, &scratch("noclock"), &[]);
+    // The orbit is closed, so frames 0 and 2 share a camera; the scene at clock 0 does not move.
+    assert_eq!(frames[0].1, frames[2].1, "the same clock and camera give the same frame");
+    let text = std::fs::read_to_string(scratch_path("noclock").join("manifest.json")).unwrap_or_default();
+    assert!(!text.contains("\"clock\""), "no clock in the manifest of a still capture: {text}");
+    // Without --clock the scene sees clock 0: the same as the first frame of --clock 0..1.
+    let (clocked, clocked_frames) = clock_capture(&scene, &scratch("noclock_vs"), &["--clock", "0..1"]);
+    assert_eq!(frames[0].1, clocked_frames[0].1);
+    assert_ne!(m.frames[2].sha256, clocked.frames[2].sha256, "clock 1 moves the sphere");
+}
+
+#[test]
+fn malformed_clock_ranges_are_rejected_before_work() {
+    let dir = scratch("clock_malformed");
+    let d = dir.display().to_string();
+    let (scene, path) = (seed(), orbit());
+    for clock in ["x..y", "1", "nan..1", "0..inf", "..1", "-1e308..1e308"] {
+        let err = fails(&["capture", &scene, "--path", &path, "--frames", "3", "--clock", clock, "-o", &d]);
+        assert!(err.contains("--clock") && err.contains(clock), "{clock}: {err}");
+        let err = fails(&["bench", &scene, "--frames", "2", "--clock", clock]);
+        assert!(err.contains("--clock") && err.contains(clock), "bench {clock}: {err}");
+    }
+    // The argument is checked before the scene is read: a missing scene is not the error.
+    let err = fails(&["bench", "/nonexistent/scene.pov", "--clock", "1"]);
+    assert!(err.contains("--clock"), "{err}");
+    assert!(!dir.exists(), "nothing may be written");
+}
+
+#[test]
+fn bench_with_clock_reparses_every_timed_frame() {
+    let scene = clock_scene("bench_clock_scene");
+    let dir = scratch("bench_clock");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let json = dir.join("bench.json");
+    let (path, j) = (orbit(), json.display().to_string());
+    let args =
+        ["bench", &scene, "--path", &path, "-W", "16", "-H", "12", "--frames", "3", "--warmup", "1", "--json", &j];
+    let mut clocked = args.to_vec();
+    clocked.extend_from_slice(&["--clock", "1..0"]);
+    let stdout = String::from_utf8_lossy(&ok(&clocked).stdout).into_owned();
+    assert!(stdout.contains("clock:      1..0, scene parsed and built anew"), "{stdout}");
+    let v = Json::parse(&std::fs::read_to_string(&json).unwrap_or_default()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(v.get("parse_ms").and_then(Json::as_array).map(|a| a.len()), Some(3));
+    assert_eq!(v.get("frame_ms").and_then(Json::as_array).map(|a| a.len()), Some(3));
+    assert_eq!(v.get("clock").and_then(|c| c.get("to")).and_then(Json::as_f64), Some(0.0));
+    // Without --clock nothing about parsing is reported.
+    let stdout = String::from_utf8_lossy(&ok(&args).stdout).into_owned();
+    assert!(!stdout.contains("clock:"), "{stdout}");
+    let v = Json::parse(&std::fs::read_to_string(&json).unwrap_or_default()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(v.get("parse_ms").is_none() && v.get("clock").is_none());
+}

@@ -4,18 +4,21 @@
 //! The timed loop does nothing but `render()` into one pre-allocated image: cameras are computed
 //! before it, and nothing is encoded or written, so the figures are the renderer's alone.
 //! Warm-up frames (caches, page faults, rayon's thread start-up) run first and are not counted.
+//! With `--clock A..B` each timed frame's scene is parsed and built anew at its clock, outside
+//! the frame's timing; that time is reported on its own.
 
+use std::convert::Infallible;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
-use crate::headless::capture::frame_t;
+use crate::headless::capture::{frame_clock, frame_t, ClockRange};
 use crate::headless::json::Json;
-use crate::headless::{load_sized, output, with_threads, CliError};
+use crate::headless::{output, with_threads, CliError, Staged};
 use crate::render::image::Image;
-use crate::render::precise::{self, Precision};
+use crate::render::precise::Precision;
 use crate::render::resample::render_scaled;
 use crate::render::stats::RenderStats;
 use crate::render::RenderSettings;
@@ -70,6 +73,9 @@ pub struct Run {
     pub times_ms: Vec<f64>,
     pub stats: RenderStats,
     pub seconds: f64,
+    /// With `--clock`: milliseconds spent parsing and building each timed frame's scene, which
+    /// `times_ms` leaves out. Empty otherwise.
+    pub parse_ms: Vec<f64>,
 }
 
 impl Run {
@@ -93,6 +99,29 @@ pub fn timed_run_scaled(
     settings: &RenderSettings,
     res_scale: f32,
 ) -> Run {
+    let Ok(run) = timed_frames(scene, cameras, warmup, settings, res_scale, |_| Ok::<_, Infallible>(None));
+    run
+}
+
+/// A timed frame's own scene (parsed at the frame's `--clock` value) and the camera it is seen
+/// from, with the milliseconds parsing and building took.
+pub struct OwnFrame {
+    pub staged: Staged,
+    pub camera: Camera,
+    pub parse_ms: f64,
+}
+
+/// [`timed_run_scaled`], but timed frame i is rendered from `own_frame(i)` where that gives one
+/// (made before its timer starts; its parse time goes to `Run::parse_ms`). Warm-up frames use
+/// `scene`.
+pub fn timed_frames<E>(
+    scene: &Scene,
+    cameras: &[Camera],
+    warmup: u32,
+    settings: &RenderSettings,
+    res_scale: f32,
+    mut own_frame: impl FnMut(usize) -> Result<Option<OwnFrame>, E>,
+) -> Result<Run, E> {
     // Allocated once at full size: `render` resizes in place and never reallocates after this.
     let mut image = Image::new(settings.width, settings.height);
     let mut low = Image::new(settings.width, settings.height);
@@ -100,15 +129,19 @@ pub fn timed_run_scaled(
         render_scaled(scene, &cameras[i % cameras.len()], settings, res_scale, &mut low, &mut image);
     }
     let mut times_ms = Vec::with_capacity(cameras.len());
+    let mut parse_ms = Vec::new();
     let mut stats = RenderStats::default();
-    for camera in cameras {
+    for (i, camera) in cameras.iter().enumerate() {
+        let own = own_frame(i)?;
+        parse_ms.extend(own.as_ref().map(|o| o.parse_ms));
+        let (scene, camera) = own.as_ref().map_or((scene, camera), |o| (&o.staged.scene, &o.camera));
         let start = Instant::now();
         let s = render_scaled(scene, camera, settings, res_scale, &mut low, &mut image);
         times_ms.push(start.elapsed().as_secs_f64() * 1e3);
         stats += s;
     }
     let seconds = times_ms.iter().sum::<f64>() / 1e3;
-    Run { threads: rayon::current_num_threads(), times_ms, stats, seconds }
+    Ok(Run { threads: rayon::current_num_threads(), times_ms, stats, seconds, parse_ms })
 }
 
 pub struct BenchArgs {
@@ -124,6 +157,8 @@ pub struct BenchArgs {
     pub threads: usize,
     pub accel: AccelKind,
     pub threads_sweep: bool,
+    /// `--clock A..B`: parse each timed frame's scene at its clock.
+    pub clock: Option<ClockRange>,
 }
 
 fn quality_json(s: &RenderSettings, res_scale: f32) -> Json {
@@ -180,6 +215,13 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
         t.median_ms, t.p95_ms, t.p99_ms, t.max_ms
     );
     let _ = writeln!(o, "fps:        {:.1} (from the median)", 1e3 / t.median_ms);
+    if let Some(clock) = args.clock {
+        let _ = writeln!(
+            o,
+            "clock:      {clock}, scene parsed and built anew for every timed frame: median {:.2} ms, not in frame time",
+            frame_times(&run.parse_ms).median_ms
+        );
+    }
     let _ = writeln!(
         o,
         "rays:       {:.2} Mrays/s total   primary {:.2}   shadow {:.2}   secondary {:.2}",
@@ -233,6 +275,11 @@ pub fn report_json(args: &BenchArgs, run: &Run, cpu: &str, sweep: &[Run]) -> Jso
         ("cpu", Json::str(cpu)),
         ("frame_ms", Json::Array(run.times_ms.iter().map(|&v| Json::Number(v)).collect())),
     ];
+    if let Some(clock) = args.clock {
+        fields.push(("clock", clock.to_json()));
+        fields.push(("parse_median_ms", Json::Number(frame_times(&run.parse_ms).median_ms)));
+        fields.push(("parse_ms", Json::Array(run.parse_ms.iter().map(|&v| Json::Number(v)).collect())));
+    }
     if !sweep.is_empty() {
         fields.push(("threads_sweep", sweep_json(sweep)));
     }
@@ -277,22 +324,33 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         output::check_writable("--json", file)?;
     }
     let path = args.path.as_deref().map(CameraPath::load).transpose()?;
-    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
-    let scene = Scene::build(&desc, desc.camera.location, args.accel);
-    precise::prepare(&scene, &desc, args.settings.quality.precision);
-    let base = Camera::from_desc(&desc.camera);
-    let cameras: Vec<Camera> =
-        (0..args.frames).map(|i| path.as_ref().map_or(base, |p| p.camera_at(frame_t(i, args.frames), &base))).collect();
-    let main_run =
-        with_threads(args.threads, || timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale))?;
+    let load = |i| {
+        Staged::load(&args.scene, &args.include, &args.settings, args.accel, frame_clock(args.clock, i, args.frames))
+    };
+    // The first frame's scene: every frame's without --clock, and the warm-up frames' with it.
+    let (first, _) = load(0)?;
+    let camera_at = |i: u32, base: &Camera| path.as_ref().map_or(*base, |p| p.camera_at(frame_t(i, args.frames), base));
+    let cameras: Vec<Camera> = (0..args.frames).map(|i| camera_at(i, &first.base)).collect();
+    let own_frame = |i: usize| -> Result<Option<OwnFrame>, CliError> {
+        if args.clock.is_none() {
+            return Ok(None);
+        }
+        let (staged, parse) = load(i as u32)?;
+        let camera = camera_at(i as u32, &staged.base);
+        Ok(Some(OwnFrame { staged, camera, parse_ms: parse.as_secs_f64() * 1e3 }))
+    };
+    let timed = |threads| {
+        with_threads(threads, || {
+            timed_frames(&first.scene, &cameras, args.warmup, &args.settings, args.res_scale, &own_frame)
+        })?
+    };
+    let main_run = timed(args.threads)?;
     let cpu = cpu_model();
-    print!("{}", report(args, &main_run, scene.max_trace_level, &cpu));
+    print!("{}", report(args, &main_run, first.scene.max_trace_level, &cpu));
     let mut sweep = Vec::new();
     if args.threads_sweep {
         for n in 1..=crate::headless::cores() {
-            sweep.push(with_threads(n, || {
-                timed_run_scaled(&scene, &cameras, args.warmup, &args.settings, args.res_scale)
-            })?);
+            sweep.push(timed(n)?);
         }
         print!("\n{}", sweep_table(&sweep));
     }

@@ -4,6 +4,8 @@
 //! Frame i of N sits at t = i/(N-1) on the path, independent of the shard that renders it, and
 //! render space is always centred on the scene's own camera, so a frame's pixels depend only on
 //! (scene, path, N, i, settings): shards merge into exactly what one run would have written.
+//! With `--clock A..B` (POV-Ray's `+KI +KF +KFF`) frame i's scene is parsed and built anew at
+//! frame i's clock of the whole capture, so that holds for animated scenes too.
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -17,9 +19,9 @@ use crate::camera::Camera;
 use crate::headless::json::Json;
 use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Manifest};
 use crate::headless::progress::Progress;
-use crate::headless::{load_sized, output, with_threads, CliError};
+use crate::headless::{output, with_threads, CliError, Staged};
+use crate::pov::Clock;
 use crate::render::image::Image;
-use crate::render::precise;
 use crate::render::resample::render_scaled;
 use crate::render::{render, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
@@ -64,6 +66,57 @@ impl FrameRange {
     }
 }
 
+/// `--clock A..B`: the clock on the first frame and on the last (POV-Ray's `+KI` and `+KF`).
+/// B below A runs the clock backwards; A equal to B holds it still while `clock_on` is true.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClockRange {
+    pub from: f64,
+    pub to: f64,
+}
+
+impl FromStr for ClockRange {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<ClockRange, String> {
+        let bad =
+            || format!("`{s}` is not a clock range: write A..B, e.g. 0..1 (the clock on the first and last frame)");
+        let (a, b) = s.split_once("..").ok_or_else(bad)?;
+        let from: f64 = a.trim().parse().map_err(|_| bad())?;
+        let to: f64 = b.trim().parse().map_err(|_| bad())?;
+        // Either would hand the scene NaN or infinite clocks.
+        if !(from.is_finite() && to.is_finite()) {
+            return Err(format!("clock range `{s}`: A and B must be finite numbers"));
+        }
+        if !(to - from).is_finite() {
+            return Err(format!("clock range `{s}`: A and B are too far apart for a clock step"));
+        }
+        Ok(ClockRange { from, to })
+    }
+}
+
+impl fmt::Display for ClockRange {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}..{}", self.from, self.to)
+    }
+}
+
+impl ClockRange {
+    /// The clock values frame `index` of `frames` is parsed with.
+    pub fn frame(self, index: u32, frames: u32) -> Clock {
+        Clock::frame(self.from, self.to, index, frames)
+    }
+
+    /// `{"from": A, "to": B}`, as the manifest and the bench report record it.
+    pub fn to_json(self) -> Json {
+        Json::object(vec![("from", Json::Number(self.from)), ("to", Json::Number(self.to))])
+    }
+}
+
+/// The clock frame `index` of `frames` is parsed with: a still image's without `--clock`.
+pub fn frame_clock(clock: Option<ClockRange>, index: u32, frames: u32) -> Clock {
+    clock.map_or(Clock::default(), |c| c.frame(index, frames))
+}
+
 /// Path position of frame `i` of `n`: 0 for the first, 1 for the last, 0 when there is one.
 pub fn frame_t(i: u32, n: u32) -> f64 {
     if n <= 1 {
@@ -90,6 +143,8 @@ pub struct CaptureJob<'a> {
     /// Fraction of the output size to trace, upscaled back (1 = every pixel).
     pub res_scale: f32,
     pub accel: AccelKind,
+    /// `--clock`: each frame's scene is parsed at its own clock (recorded in the manifest).
+    pub clock: Option<ClockRange>,
     pub quiet: bool,
 }
 
@@ -124,18 +179,28 @@ fn header(job: &CaptureJob) -> Manifest {
         height: job.settings.height,
         frame_count: job.frames,
         settings: settings_json(&job.settings, job.res_scale, job.accel),
+        clock: job.clock,
         frames: Vec::new(),
     }
 }
 
 /// Renders the job's frames into `out_dir` (which must exist) and returns their manifest, which
-/// the caller writes. Runs on the current rayon pool.
-pub fn capture(scene: &Scene, base: &Camera, job: &CaptureJob, out_dir: &Path) -> Result<Manifest, CliError> {
+/// the caller writes. Runs on the current rayon pool. Frame `index` is rendered from
+/// `own_scene(index)` where that gives one (a scene parsed at the frame's clock), else from
+/// `shared`; parsing is not counted in `render_ms`.
+pub fn capture(
+    shared: &Staged,
+    own_scene: &dyn Fn(u32) -> Result<Option<Staged>, CliError>,
+    job: &CaptureJob,
+    out_dir: &Path,
+) -> Result<Manifest, CliError> {
     let mut image = Image::new(job.settings.width, job.settings.height);
     let mut low = Image::default();
     let progress = Progress::new((job.range.end - job.range.start) as u64, "frames", job.quiet);
     let mut frames = Vec::new();
     for index in job.range.start..job.range.end {
+        let own = own_scene(index)?;
+        let Staged { scene, base } = own.as_ref().unwrap_or(shared);
         let t = frame_t(index, job.frames);
         let (location, look_at, angle) = job.path.sample(t);
         let camera = Camera::looking_at(location, look_at, angle, base);
@@ -208,7 +273,7 @@ fn plan_output(dir: &Path, this: &Manifest, force: bool) -> Result<OutputPlan, C
     let more = if names.len() > 3 { ", ..." } else { "" };
     Err(CliError::user(format!(
         "-o {shown}: the folder is not empty ({} files: {}{more}) and holds no manifest of this capture \
-         (same scene, path, size, frame count and settings); its frames would mix with the new ones. \
+         (same scene, path, size, frame count, clock range and settings); its frames would mix with the new ones. \
          Give an empty or new folder, or --force to delete strahl's frame_NNNN.png and manifest.json there first",
         names.len(),
         examples.join(", ")
@@ -236,6 +301,8 @@ pub struct CaptureArgs {
     pub res_scale: f32,
     pub threads: usize,
     pub accel: AccelKind,
+    /// `--clock A..B`: parse the scene anew for each frame at its clock.
+    pub clock: Option<ClockRange>,
     pub quiet: bool,
     /// Delete strahl's frames and manifest from an output folder of another capture.
     pub force: bool,
@@ -243,7 +310,8 @@ pub struct CaptureArgs {
 
 /// `strahl capture SCENE --path P ...`. Everything a user can get wrong (frame count, range,
 /// output folder, path file, scene) is checked before the output folder is created or changed
-/// and before a frame is rendered.
+/// and before a frame is rendered. With `--clock` that covers the scene at the first frame's
+/// clock; a scene that fails only at a later clock fails when that frame comes.
 pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
     if args.frames == 0 {
         return Err(CliError::user("--frames must be at least 1"));
@@ -259,20 +327,26 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
         settings: args.settings,
         res_scale: args.res_scale,
         accel: args.accel,
+        clock: args.clock,
         quiet: args.quiet,
     };
     let plan = plan_output(&args.output, &header(&job), args.force)?;
-    let (desc, _) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
-    let scene = Scene::build(&desc, desc.camera.location, args.accel);
-    precise::prepare(&scene, &desc, args.settings.quality.precision);
-    let base = Camera::from_desc(&desc.camera);
+    let load = |index| {
+        let clock = frame_clock(args.clock, index, args.frames);
+        Staged::load(&args.scene, &args.include, &args.settings, args.accel, clock).map(|(s, _)| s)
+    };
+    // The scene of the shard's first frame, so that scene errors come before the folder changes;
+    // without --clock it is every frame's scene.
+    let first = load(range.start)?;
+    let own_scene = |index| if args.clock.is_some() && index != range.start { load(index).map(Some) } else { Ok(None) };
     apply_output_plan(&args.output, plan)?;
-    let manifest = with_threads(args.threads, || capture(&scene, &base, &job, &args.output))??;
+    let manifest = with_threads(args.threads, || capture(&first, &own_scene, &job, &args.output))??;
     write_manifest(&args.output, &manifest)?;
     if !args.quiet {
         let total: f64 = manifest.frames.iter().map(|f| f.render_ms).sum();
+        let clock = args.clock.map_or(String::new(), |c| format!(", clock {c}, scene parsed per frame"));
         println!(
-            "captured frames {range} of {} to {} ({:.1} ms/frame)",
+            "captured frames {range} of {} to {} ({:.1} ms/frame{clock})",
             args.frames,
             args.output.display(),
             total / manifest.frames.len().max(1) as f64

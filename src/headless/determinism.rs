@@ -8,7 +8,7 @@ use crate::camera::path::CameraPath;
 use crate::camera::Camera;
 use crate::headless::capture::{capture, frame_t, render_rgb8, sha256_hex, CaptureJob, FrameRange};
 use crate::headless::manifest::Manifest;
-use crate::headless::with_threads;
+use crate::headless::{with_threads, Staged};
 use crate::render::image::Image;
 use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
@@ -108,9 +108,8 @@ impl Drop for Scratch {
 
 #[test]
 fn shards_merge_into_the_whole_capture() {
-    let scene = seed();
+    let staged = Staged { scene: seed(), base: Camera::from_desc(&seed_scene().camera) };
     let path = orbit();
-    let base = Camera::from_desc(&seed_scene().camera);
     let job = |start, end| CaptureJob {
         scene_name: "seed".into(),
         path_name: "seed.orbit.path".into(),
@@ -120,11 +119,12 @@ fn shards_merge_into_the_whole_capture() {
         settings: RenderSettings { width: 24, height: 18, ..RenderSettings::default() },
         res_scale: 1.0,
         accel: AccelKind::Bvh,
+        clock: None,
         quiet: true,
     };
     let dir = Scratch::new("shards");
     let run = |start, end, threads| {
-        with_threads(threads, || capture(&scene, &base, &job(start, end), &dir.0))
+        with_threads(threads, || capture(&staged, &|_| Ok(None), &job(start, end), &dir.0))
             .and_then(|r| r)
             .unwrap_or_else(|e| panic!("{e}"))
     };

@@ -9,6 +9,7 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::camera::Camera;
+use crate::headless::capture::ClockRange;
 use crate::headless::json::Json;
 use crate::headless::CliError;
 
@@ -67,6 +68,9 @@ pub struct Manifest {
     pub frame_count: u32,
     /// Everything that changes pixels besides the camera (quality, accelerator); opaque here.
     pub settings: Json,
+    /// `--clock`: the frames' scenes were parsed at clocks from..to. Written only when given, so
+    /// a capture without it keeps the manifest it always had.
+    pub clock: Option<ClockRange>,
     /// Sorted by index.
     pub frames: Vec<FrameRecord>,
 }
@@ -83,10 +87,11 @@ impl Manifest {
             && self.frames.iter().zip(&other.frames).all(|(a, b)| a.same_content(b))
     }
 
-    /// Of the same capture: scene, path, size, frame count and settings agree (frames may differ).
+    /// Of the same capture: scene, path, size, frame count, clock range and settings agree
+    /// (frames may differ).
     pub fn same_header(&self, o: &Manifest) -> bool {
-        (&self.scene, &self.path, self.width, self.height, self.frame_count, &self.settings)
-            == (&o.scene, &o.path, o.width, o.height, o.frame_count, &o.settings)
+        (&self.scene, &self.path, self.width, self.height, self.frame_count, &self.settings, self.clock)
+            == (&o.scene, &o.path, o.width, o.height, o.frame_count, &o.settings, o.clock)
     }
 
     pub fn to_json(&self) -> Json {
@@ -113,7 +118,7 @@ impl Manifest {
                 ])
             })
             .collect();
-        Json::object(vec![
+        let mut fields = vec![
             ("format", Json::str(FORMAT)),
             ("version", Json::Number(VERSION as f64)),
             ("scene", Json::str(&self.scene)),
@@ -122,8 +127,12 @@ impl Manifest {
             ("height", Json::Number(self.height as f64)),
             ("frame_count", Json::Number(self.frame_count as f64)),
             ("settings", self.settings.clone()),
-            ("frames", Json::Array(frames)),
-        ])
+        ];
+        if let Some(c) = self.clock {
+            fields.push(("clock", c.to_json()));
+        }
+        fields.push(("frames", Json::Array(frames)));
+        Json::object(fields)
     }
 
     pub fn from_json(v: &Json) -> Result<Manifest, String> {
@@ -150,12 +159,17 @@ impl Manifest {
                 _ => Err(format!("`{k}` is not a 3-vector")),
             }
         };
+        let number = |o: &Json, k: &str| field(o, k)?.as_f64().ok_or_else(|| format!("`{k}` is not a number"));
+        let clock = match v.get("clock") {
+            None | Some(Json::Null) => None,
+            Some(c) => Some(ClockRange { from: number(c, "from")?, to: number(c, "to")? }),
+        };
         let mut frames = Vec::new();
         for f in field(v, "frames")?.as_array().ok_or("`frames` is not an array")? {
             let cam = field(f, "camera")?;
             frames.push(FrameRecord {
                 index: int(f, "index")?,
-                t: field(f, "t")?.as_f64().ok_or("`t` is not a number")?,
+                t: number(f, "t")?,
                 file: string(f, "file")?,
                 camera: CameraRecord {
                     location: vec3(&cam, "location")?,
@@ -176,6 +190,7 @@ impl Manifest {
             height: int(v, "height")?,
             frame_count: int(v, "frame_count")?,
             settings: field(v, "settings")?,
+            clock,
             frames,
         })
     }
@@ -191,7 +206,7 @@ impl Manifest {
     }
 
     /// Merges shard manifests of one capture into the manifest of the whole: the shards must
-    /// agree on scene, path, size, frame count and settings, may not list a frame twice, and
+    /// agree on scene, path, size, frame count, clock range and settings, may not list a frame twice, and
     /// together must cover every frame.
     pub fn merge(parts: &[Manifest]) -> Result<Manifest, String> {
         let first = parts.first().ok_or("nothing to merge")?;
@@ -199,7 +214,7 @@ impl Manifest {
         for (i, part) in parts.iter().enumerate() {
             if !part.same_header(first) {
                 return Err(format!(
-                    "shard {} is from a different capture (scene, path, size, frame count or settings differ)",
+                    "shard {} is from a different capture (scene, path, size, frame count, clock range or settings differ)",
                     i + 1
                 ));
             }
@@ -254,6 +269,7 @@ mod tests {
             height: 6,
             frame_count: 4,
             settings: Json::object(vec![("aa", Json::Number(1.0))]),
+            clock: None,
             frames,
         }
     }
@@ -261,8 +277,24 @@ mod tests {
     #[test]
     fn json_round_trip() {
         let m = manifest((0..4).map(|i| frame(i, 1.25)).collect());
-        let back = Manifest::from_json(&Json::parse(&m.to_json().to_pretty()).expect("parses")).expect("valid");
+        let text = m.to_json().to_pretty();
+        assert!(!text.contains("clock"), "no clock key without --clock: {text}");
+        let back = Manifest::from_json(&Json::parse(&text).expect("parses")).expect("valid");
         assert_eq!(back, m);
+        let clocked = Manifest { clock: Some(ClockRange { from: 0.1, to: -2.5 }), ..m };
+        let back = Manifest::from_json(&Json::parse(&clocked.to_json().to_pretty()).expect("parses")).expect("valid");
+        assert_eq!(back, clocked);
+    }
+
+    #[test]
+    fn another_clock_range_is_another_capture() {
+        let a = manifest(vec![frame(0, 1.0), frame(1, 1.0)]);
+        let b =
+            Manifest { clock: Some(ClockRange { from: 0.0, to: 1.0 }), ..manifest(vec![frame(2, 1.0), frame(3, 1.0)]) };
+        assert!(!a.same_header(&b));
+        assert!(Manifest::merge(&[a, b.clone()]).unwrap_err().contains("shard 2 is from a different capture"));
+        let c = Manifest { clock: Some(ClockRange { from: 0.0, to: 2.0 }), ..b.clone() };
+        assert!(!b.same_header(&c));
     }
 
     #[test]

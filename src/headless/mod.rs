@@ -21,8 +21,12 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use crate::camera::Camera;
 use crate::error::LocatedError;
-use crate::pov::{load_scene_with_messages, IncludePath, ParseOptions};
+use crate::pov::{load_scene_with_messages, Clock, IncludePath, ParseOptions};
+use crate::render::precise::{self, Precision};
+use crate::render::RenderSettings;
+use crate::scene::build::{AccelKind, Scene};
 use crate::scene::desc::SceneDesc;
 
 /// An error for the user, with the process exit code it maps to.
@@ -74,20 +78,63 @@ pub fn load(path: &Path, user_dirs: &[PathBuf]) -> Result<(SceneDesc, Duration),
 
 /// Parses a scene for an image of `width`×`height`, which `image_width`/`image_height` report,
 /// printing what the scene printed (`#debug` text, warnings such as POV-Ray's "Scale by 0.0
-/// changed to 1.0") to stderr.
+/// changed to 1.0") to stderr. The scene sees a still image's clock (0, `clock_on` false).
 pub fn load_sized(
     path: &Path,
     user_dirs: &[PathBuf],
     width: u32,
     height: u32,
 ) -> Result<(SceneDesc, Duration), CliError> {
+    load_with_clock(path, user_dirs, width, height, Clock::default())
+}
+
+/// [`load_sized`] for one frame of an animation: the scene reads `clock`, `frame_number` and the
+/// rest from `clock`, so each frame of `--clock A..B` is parsed anew, as POV-Ray does.
+pub fn load_with_clock(
+    path: &Path,
+    user_dirs: &[PathBuf],
+    width: u32,
+    height: u32,
+    clock: Clock,
+) -> Result<(SceneDesc, Duration), CliError> {
     let start = Instant::now();
-    let options = ParseOptions { image_width: width, image_height: height, ..Default::default() };
+    let options = ParseOptions { image_width: width, image_height: height, clock };
     let (desc, messages) = load_scene_with_messages(path, &include_path(user_dirs), &options)?;
     for m in messages {
         eprint!("{m}");
     }
     Ok((desc, start.elapsed()))
+}
+
+/// A scene ready to render along a camera path: built with render space centred on the scene's
+/// own camera (so a frame's pixels do not depend on which frame came first), and that camera,
+/// whose projection the path's cameras keep.
+pub struct Staged {
+    pub scene: Scene,
+    pub base: Camera,
+}
+
+impl Staged {
+    /// Builds `desc` and prepares the f64 copy when `precision` needs one.
+    pub fn new(desc: &SceneDesc, accel: AccelKind, precision: Precision) -> Staged {
+        let scene = Scene::build(desc, desc.camera.location, accel);
+        precise::prepare(&scene, desc, precision);
+        Staged { scene, base: Camera::from_desc(&desc.camera) }
+    }
+
+    /// Parses `path` at `clock` for the settings' image size and builds it for their precision;
+    /// also returns the time parsing and building took together.
+    pub fn load(
+        path: &Path,
+        user_dirs: &[PathBuf],
+        settings: &RenderSettings,
+        accel: AccelKind,
+        clock: Clock,
+    ) -> Result<(Staged, Duration), CliError> {
+        let start = Instant::now();
+        let (desc, _) = load_with_clock(path, user_dirs, settings.width, settings.height, clock)?;
+        Ok((Staged::new(&desc, accel, settings.quality.precision), start.elapsed()))
+    }
 }
 
 /// The cores rayon would use by default (one worker per core).

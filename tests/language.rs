@@ -157,10 +157,11 @@ fn directives_stand_anywhere_a_token_may() {
 fn a_declaration_is_stored_before_the_next_directive_reads_it_even_without_semicolons() {
     let out = debug(
         "no_semicolons",
-        "#declare A = 1\n#declare B = A + 1\n#declare S = sphere { 0, B }\n#declare T = object { S }\n\
-         #if (B = 2) #debug \"ok\" #end",
+        "#macro Show(V) #debug V #end\n\
+         #declare A = 1\n#declare B = A + 1\n#declare S = sphere { 0, B }\n#declare T = object { S }\n\
+         #if (B = 2) #debug \"ok\" #end\n#declare C = \" and C\"\nShow(C)",
     );
-    assert_eq!(out, "ok");
+    assert_eq!(out, "ok and C");
 }
 
 #[test]

@@ -101,6 +101,9 @@ fn strip_location(line: &str) -> &str {
 /// by `…`, and numbers and strings dropped, so `#macro is not supported` gathers all scenes that
 /// stop at a macro whatever else the line says.
 pub fn group_of(message: &str) -> String {
+    // A declaration that needs a feature fails where it is used, naming the feature: the same
+    // group as the feature written in place.
+    let message = message.strip_prefix("this declaration cannot be used: ").unwrap_or(message);
     let mut out = String::new();
     let mut quoted = 0;
     let mut rest = message;
@@ -133,6 +136,29 @@ pub fn group_of(message: &str) -> String {
         })
         .collect();
     words.join(" ")
+}
+
+/// What kind of scene feature a group of failures needs, for the survey's table: an object, a
+/// pattern, a light, a camera, a global setting, atmosphere, ... or "language" for anything
+/// that is not a scene feature strahl lacks.
+pub fn needs(group: &str) -> &'static str {
+    const ATMOSPHERE: &[&str] = &["`sky_sphere`", "`fog`", "`media`", "`rainbow`"];
+    if !group.contains(" is not supported") && !group.contains(" are not supported") {
+        return if group == "timed out" || group.starts_with("crashed") { "—" } else { "language / scene error" };
+    }
+    let context = group.split(" is not supported").nth(1).unwrap_or("");
+    match context.trim() {
+        c if c.starts_with("in pigment") || c.starts_with("in normal") || c.starts_with("in texture") => "pattern",
+        c if c.starts_with("in light_source") => "light",
+        c if c.starts_with("in camera") => "camera",
+        c if c.starts_with("in global_settings") => "global setting",
+        c if c.starts_with("in finish") || c.starts_with("in interior") => "finish / interior",
+        _ if ATMOSPHERE.iter().any(|a| group.starts_with(a)) => "atmosphere",
+        c if c.starts_with("in the scene") => "scene item",
+        c if c.is_empty() || c.starts_with("inside") => "object / CSG",
+        c if c.starts_with("in ") => "object modifier",
+        _ => "other feature",
+    }
 }
 
 /// Renders one scene in a child `strahl render` from the scene's folder.
@@ -203,14 +229,26 @@ pub fn summary(dir: &Path, results: &[(PathBuf, Outcome)], top: usize) -> String
     }
     let mut ranked: Vec<(&String, &Vec<&Path>)> = groups.iter().collect();
     ranked.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then(a.0.cmp(b.0)));
-    let _ =
-        writeln!(o, "\nfirst errors of the others, commonest first:\n| scenes | first error | e.g. |\n|--:|---|---|");
+    let mut kinds: BTreeMap<&str, usize> = BTreeMap::new();
+    for (group, scenes) in &ranked {
+        *kinds.entry(needs(group)).or_default() += scenes.len();
+    }
+    let mut kinds: Vec<_> = kinds.into_iter().collect();
+    kinds.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(b.0)));
+    let _ = writeln!(o, "\nwhat the others need first:\n| scenes | needs |\n|--:|---|");
+    for (kind, n) in kinds {
+        let _ = writeln!(o, "| {n} | {kind} |");
+    }
+    let _ = writeln!(
+        o,
+        "\nfirst errors of the others, commonest first:\n| scenes | needs | first error | e.g. |\n|--:|---|---|---|"
+    );
     for (group, scenes) in ranked.iter().take(top) {
-        let _ = writeln!(o, "| {} | {group} | {} |", scenes.len(), scenes[0].display());
+        let _ = writeln!(o, "| {} | {} | {group} | {} |", scenes.len(), needs(group), scenes[0].display());
     }
     if ranked.len() > top {
         let rest: usize = ranked[top..].iter().map(|(_, s)| s.len()).sum();
-        let _ = writeln!(o, "| {rest} | ({} more groups) | |", ranked.len() - top);
+        let _ = writeln!(o, "| {rest} | | ({} more groups) | |", ranked.len() - top);
     }
     o
 }
@@ -280,6 +318,17 @@ mod tests {
             group_of("expected an expression, found string \"a.ttf\""),
             "expected an expression, found string …"
         );
+    }
+
+    #[test]
+    fn groups_say_what_kind_of_feature_they_need() {
+        assert_eq!(group_of("this declaration cannot be used: `cone` is not supported"), group_of("`cone` is not supported"));
+        assert_eq!(needs(&group_of("`cone` is not supported (supported: sphere)")), "object / CSG");
+        assert_eq!(needs(&group_of("`granite` is not supported in pigment (supported: checker)")), "pattern");
+        assert_eq!(needs(&group_of("`area_light` is not supported in light_source")), "light");
+        assert_eq!(needs(&group_of("`fog` is not supported in the scene")), "atmosphere");
+        assert_eq!(needs(&group_of("`radiosity` is not supported in global_settings")), "global setting");
+        assert_eq!(needs(&group_of("undefined identifier `Foo`")), "language / scene error");
     }
 
     #[test]

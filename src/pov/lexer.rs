@@ -276,7 +276,7 @@ mod tests {
     fn directives_and_strings() {
         assert_eq!(
             kinds("# include \"a b.inc\""),
-            vec![TokenKind::Directive("include".into()), TokenKind::Str("a b.inc".into()), TokenKind::Eof]
+            vec![TokenKind::Directive("include"), TokenKind::Str("a b.inc".into()), TokenKind::Eof]
         );
     }
 

@@ -188,8 +188,9 @@ impl Parser<'_, '_> {
                 self.expect_punct('(', "after `#write`")?;
                 let (handle, _) = self.raw_name("#write (")?;
                 let mut values = Vec::new();
-                while self.is_punct(',') {
-                    self.bump();
+                // The commas are optional, as POV-Ray reads them (`#write (F Header)`).
+                while !self.is_punct(')') && !matches!(self.cur.kind, TokenKind::Eof | TokenKind::FrameEnd) {
+                    self.eat_punct(',');
                     let e = self.full_expr()?;
                     values.push(self.low.eval(&e)?);
                 }

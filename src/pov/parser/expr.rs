@@ -165,12 +165,16 @@ impl Parser<'_, '_> {
     }
 
     /// The next token where it may continue what was just read (an operator, a component):
-    /// a directive there ends the expression instead of running first, so that `#declare A = 1`
-    /// stores `A` before a following `#if (A)` reads it, even without the `;`.
+    /// a directive or macro call there ends the expression instead of running first, so that
+    /// `#declare A = 1` stores `A` before a following `#if (A)` or `M(A)` reads it, even without
+    /// the `;`.
     fn peek_more(&mut self) -> Token {
         loop {
             match self.cur.kind {
                 TokenKind::Directive(_) => return Token { kind: TokenKind::Eof, span: self.cur.span },
+                // A word cannot continue an expression (only start one): a macro call there
+                // waits too (`#declare C = "a"` before `M(C)` on the next line).
+                TokenKind::Ident(_) => return self.cur.clone(),
                 // The expression may go on after the macro that wrote its start; a directive
                 // there still waits.
                 TokenKind::FrameEnd => self.close_frame(),

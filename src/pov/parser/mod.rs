@@ -99,30 +99,25 @@ pub(crate) struct Parser<'l, 'f> {
 impl Parser<'_, '_> {
     // ---- the token stream ----------------------------------------------------------------
 
-    /// Reads the next token from the stream into `cur`, closing frames that run out.
+    /// Reads the next token from the stream into `cur` (`FrameEnd` where a frame runs out).
     fn advance_raw(&mut self) {
         if self.pending.is_some() {
             return;
         }
-        loop {
-            match self.stream.next() {
-                Next::Token(t) => {
-                    self.cur = t;
-                    self.ready = false;
-                    return;
-                }
-                Next::FrameEnd => {
-                    // Closed when the parser reads past it (`expand`), not now: the directive
-                    // that took the frame's last token may still need the frame's scope.
-                    self.cur = Token { kind: TokenKind::FrameEnd, span: self.cur.span };
-                    self.ready = false;
-                    return;
-                }
-                Next::End(span) => {
-                    self.cur = Token { kind: TokenKind::Eof, span };
-                    self.ready = true;
-                    return;
-                }
+        match self.stream.next() {
+            Next::Token(t) => {
+                self.cur = t;
+                self.ready = false;
+            }
+            Next::FrameEnd => {
+                // Closed when the parser reads past it (`expand`), not now: the directive that
+                // took the frame's last token may still need the frame's scope.
+                self.cur = Token { kind: TokenKind::FrameEnd, span: self.cur.span };
+                self.ready = false;
+            }
+            Next::End(span) => {
+                self.cur = Token { kind: TokenKind::Eof, span };
+                self.ready = true;
             }
         }
     }
@@ -146,13 +141,24 @@ impl Parser<'_, '_> {
                     Ok(())
                 }
                 TokenKind::Directive(d) => {
-                    let d = *d;
-                    self.directive(d)
+                    // A directive inside another one's value (`#declare A = #if (..) 1 #end`)
+                    // nests on the stack: counted like any other nesting.
+                    let (d, span) = (*d, self.cur.span);
+                    self.enter(span).and_then(|()| {
+                        let result = self.directive(d);
+                        self.leave();
+                        result
+                    })
                 }
                 TokenKind::Ident(name) => match self.low.lookup(name) {
                     Some(super::value::Value::Macro(m)) => {
-                        let m = m.clone();
-                        self.call_macro(m)
+                        let (m, span) = (m.clone(), self.cur.span);
+                        // Arguments may call macros in turn: counted as nesting.
+                        self.enter(span).and_then(|()| {
+                            let result = self.call_macro(m);
+                            self.leave();
+                            result
+                        })
                     }
                     _ => {
                         self.ready = true;

@@ -343,7 +343,8 @@ mod tests {
         let s = summary(dir, &results, 10);
         assert!(s.starts_with("survey of /s: 1 of 4 scenes render"), "{s}");
         assert!(s.contains("| objects | 1 | 2 |") && s.contains("| textures | 0 | 2 |"), "{s}");
-        assert!(s.contains("| 2 | `cone` is not supported | objects/b.pov |"), "{s}");
-        assert!(s.contains("| 1 | timed out | textures/d.pov |"), "{s}");
+        assert!(s.contains("| 2 | object / CSG | `cone` is not supported | objects/b.pov |"), "{s}");
+        assert!(s.contains("| 1 | — | timed out | textures/d.pov |"), "{s}");
+        assert!(s.contains("what the others need first:\n| scenes | needs |\n|--:|---|\n| 2 | object / CSG |"), "{s}");
     }
 }

@@ -492,3 +492,20 @@ fn bench_with_clock_reparses_every_timed_frame() {
     let v = Json::parse(&std::fs::read_to_string(&json).unwrap_or_default()).unwrap_or_else(|e| panic!("{e}"));
     assert!(v.get("parse_ms").is_none() && v.get("clock").is_none());
 }
+
+#[test]
+fn render_names_every_included_file_and_where_it_was_included() {
+    let dir = scratch("render_included");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("inner.inc"), "#declare R = 1;\n").unwrap();
+    std::fs::write(dir.join("outer.inc"), "#declare Q = 2;\n#include \"inner.inc\"\n").unwrap();
+    std::fs::write(dir.join("s.pov"), "#include \"outer.inc\"\nsphere { 0, R }\n").unwrap();
+    let scene = dir.join("s.pov");
+    let png = dir.join("s.png");
+    let out = ok(&["render", scene.to_str().unwrap(), "-W", "8", "-H", "6", "-o", png.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let lines: Vec<&str> = stdout.lines().filter(|l| l.starts_with("Included: ")).collect();
+    assert_eq!(lines.len(), 2, "{stdout}");
+    assert!(lines[0].contains("outer.inc") && lines[0].ends_with("s.pov:1:1)"), "{stdout}");
+    assert!(lines[1].contains("inner.inc") && lines[1].ends_with("outer.inc:2:1)"), "{stdout}");
+}

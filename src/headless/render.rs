@@ -4,7 +4,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use crate::camera::Camera;
-use crate::headless::report::{statistics, Timings};
+use crate::headless::report::{included_files, statistics, Timings};
 use crate::headless::{load_sized, output, peak_memory_bytes, with_threads, CliError};
 use crate::render::image::Image;
 use crate::render::precise;
@@ -54,6 +54,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                 peak_memory_bytes()
             )
         );
+        print!("{}", included_files(&desc.included));
         println!("wrote {} ({}x{})", args.output.display(), image.width, image.height);
         output::flush_stdout();
     }

@@ -12,6 +12,16 @@ pub struct Timings {
     pub trace: Duration,
 }
 
+/// The files a scene included and from where, one line each, for the statistics (empty when
+/// there were none).
+pub fn included_files(included: &[crate::scene::desc::IncludedFile]) -> String {
+    let mut o = String::new();
+    for f in included {
+        let _ = writeln!(o, "Included: {}  (from {}:{}:{})", f.path, f.from.file, f.from.line, f.from.col);
+    }
+    o
+}
+
 pub fn statistics(
     name: &str,
     w: u32,

@@ -322,7 +322,10 @@ mod tests {
 
     #[test]
     fn groups_say_what_kind_of_feature_they_need() {
-        assert_eq!(group_of("this declaration cannot be used: `cone` is not supported"), group_of("`cone` is not supported"));
+        assert_eq!(
+            group_of("this declaration cannot be used: `cone` is not supported"),
+            group_of("`cone` is not supported")
+        );
         assert_eq!(needs(&group_of("`cone` is not supported (supported: sphere)")), "object / CSG");
         assert_eq!(needs(&group_of("`granite` is not supported in pigment (supported: checker)")), "pattern");
         assert_eq!(needs(&group_of("`area_light` is not supported in light_source")), "light");

@@ -14,7 +14,7 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use crate::error::{visible, LocatedError};
-use crate::scene::desc::{SceneDesc, SourceRef};
+use crate::scene::desc::{IncludedFile, SceneDesc, SourceRef};
 use crate::text::decode_user_text;
 use lexer::Token;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
@@ -167,7 +167,13 @@ pub fn load_scene_with_messages(
     include: &IncludePath,
     options: &ParseOptions,
 ) -> Result<(SceneDesc, Vec<Message>), LocatedError> {
-    let mut loader = Loader { map: SourceMap::default(), include, stack: Vec::new(), options: options.clone() };
+    let mut loader = Loader {
+        map: SourceMap::default(),
+        include,
+        stack: Vec::new(),
+        options: options.clone(),
+        included: Vec::new(),
+    };
     let result = loader.load_main(path);
     result.map_err(|d| loader.map.locate(&d))
 }
@@ -178,6 +184,8 @@ struct Loader<'a> {
     /// Files being lowered, outermost first, for cycle detection and depth.
     stack: Vec<(PathBuf, FileId)>,
     options: ParseOptions,
+    /// Every file `#include` read, in order.
+    included: Vec<IncludedFile>,
 }
 
 impl Loader<'_> {
@@ -188,9 +196,10 @@ impl Loader<'_> {
         let options = self.options.clone();
         let mut low = lower::Lowerer::new(self, &options);
         let (result, expansions) = parser::run(&mut low, tokens);
-        let (scene, output) = low.finish();
+        let (mut scene, output) = low.finish();
         self.map.expansions = expansions;
         result?;
+        scene.included = std::mem::take(&mut self.included);
         let mut messages: Vec<Message> = output
             .into_iter()
             .map(|o| match o {
@@ -260,6 +269,7 @@ impl lower::Files for Loader<'_> {
             return Err(Diag::new(directive, format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels")));
         }
         let (id, tokens) = self.read_and_lex(&found, found.display().to_string(), Some(directive))?;
+        self.included.push(IncludedFile { path: found.display().to_string(), from: self.source_ref(directive) });
         self.stack.push((key, id));
         Ok((id, tokens))
     }

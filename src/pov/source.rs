@@ -89,6 +89,9 @@ pub struct SourceFile {
 #[derive(Clone, Debug, Default)]
 pub struct SourceMap {
     pub files: Vec<SourceFile>,
+    /// Byte offsets where each file's lines start, for `line_col` without rescanning the text
+    /// (every object records where it is written).
+    line_starts: Vec<Vec<u32>>,
     /// Macro calls that tokens came through; see `Span::expansion`.
     pub expansions: Vec<Expansion>,
 }
@@ -99,6 +102,8 @@ const MAX_CHAIN_LINES: usize = 12;
 
 impl SourceMap {
     pub fn add(&mut self, file: SourceFile) -> FileId {
+        let starts = std::iter::once(0).chain(file.text.match_indices('\n').map(|(i, _)| i as u32 + 1)).collect();
+        self.line_starts.push(starts);
         self.files.push(file);
         (self.files.len() - 1) as FileId
     }
@@ -109,13 +114,15 @@ impl SourceMap {
 
     /// Line and column (1-based) of the start of `span`.
     pub fn line_col(&self, span: Span) -> (u32, u32) {
-        match self.file(span.file) {
-            Some(f) => {
-                let e = LocatedError::at_offset(&f.display, &f.text, span.start as usize, "");
-                (e.line, e.col)
-            }
-            None => (1, 1),
-        }
+        let (Some(f), Some(starts)) = (self.file(span.file), self.line_starts.get(span.file as usize)) else {
+            return (1, 1);
+        };
+        let offset = (span.start as usize).min(f.text.len());
+        let line = starts.partition_point(|&s| s as usize <= offset).max(1);
+        let start = starts[line - 1] as usize;
+        // Columns count characters, as `LocatedError::at_offset` does.
+        let col = f.text.get(start..offset).map_or(0, |t| t.chars().count());
+        (line as u32, col as u32 + 1)
     }
 
     /// The error with its position, followed by the macro calls and includes that led there,

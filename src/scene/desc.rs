@@ -285,6 +285,16 @@ pub struct SceneDesc {
     pub background: Color,
     pub global: GlobalSettings,
     pub objects: Vec<ObjectDesc>,
+    /// Every file `#include` read, in order, with the directive that read it (for the
+    /// statistics: which `colors.inc` a scene got).
+    pub included: Vec<IncludedFile>,
+}
+
+/// A file an `#include` read: where it was found, and where the directive stands.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IncludedFile {
+    pub path: String,
+    pub from: SourceRef,
 }
 
 impl Default for SceneDesc {
@@ -297,6 +307,7 @@ impl Default for SceneDesc {
             background: Color::BLACK,
             global: GlobalSettings::default(),
             objects: Vec::new(),
+            included: Vec::new(),
         }
     }
 }

@@ -5,7 +5,7 @@
 use std::rc::Rc;
 
 use super::stream::{FrameKind, Mark};
-use super::{is_pov_keyword, Parser, LAYERED, RESERVED, UNSUPPORTED_SHAPES};
+use super::{is_pov_keyword, Parser, LAYERED, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{DeclValue, DefaultItem};
 use crate::pov::lexer::TokenKind;
 use crate::pov::lower::{FileMode, MessageKind, MAX_LOOP_ITERATIONS};
@@ -543,7 +543,7 @@ impl Parser<'_, '_> {
             }
         }
         let (name, name_span) = self.raw_name(directive)?;
-        if RESERVED.contains(&&*name) || is_pov_keyword(&name) {
+        if super::is_reserved(&name) || is_pov_keyword(&name) {
             return Err(Diag::new(name_span, format!("cannot declare `{name}`: it is a keyword")));
         }
         let indices = self.indices()?;

@@ -445,7 +445,7 @@ impl Parser<'_, '_> {
             }
             return Ok(Expr { kind: ExprKind::Call(word.to_string(), args), span: span.to(close) });
         }
-        if super::RESERVED.contains(&word) {
+        if super::is_reserved(word) {
             return Err(Diag::new(span, format!("expected an expression, found `{word}`")));
         }
         if super::is_pov_keyword(word) {

@@ -458,6 +458,12 @@ const UNSUPPORTED_WORDS: &[&str] = &[
     "write",
 ];
 
+/// Whether `word` is one of strahl's own keywords (`RESERVED`), in constant time.
+pub(crate) fn is_reserved(word: &str) -> bool {
+    static WORDS: std::sync::OnceLock<std::collections::HashSet<&'static str>> = std::sync::OnceLock::new();
+    WORDS.get_or_init(|| RESERVED.iter().copied().collect()).contains(word)
+}
+
 /// Whether `word` is a POV-Ray 3.7 keyword strahl does not support (it cannot be declared,
 /// and messages say "not supported" rather than "unknown").
 pub(crate) fn is_pov_keyword(word: &str) -> bool {

@@ -25,7 +25,7 @@ impl Parser<'_, '_> {
     /// `#macro Name(A, optional B) ... #end`: stores the body unread.
     pub(super) fn define_macro(&mut self, start: Span) -> PResult<()> {
         let (name, name_span): (Rc<str>, Span) = self.raw_name("#macro")?;
-        if super::is_pov_keyword(&name) || super::RESERVED.contains(&&*name) {
+        if super::is_pov_keyword(&name) || super::is_reserved(&name) {
             return Err(Diag::new(name_span, format!("cannot name a macro `{name}`: it is a keyword")));
         }
         self.expect_raw('(', &format!("after `#macro {name}`"))?;
@@ -111,7 +111,7 @@ impl Parser<'_, '_> {
                 TokenKind::Ident(w)
                     if matches!(self.stream.peek_kind(), Some(TokenKind::Punct(',' | ')')))
                         && !super::is_pov_keyword(w)
-                        && !super::RESERVED.contains(&&**w) =>
+                        && !super::is_reserved(&w) =>
                 {
                     Some(w.clone())
                 }

@@ -22,7 +22,7 @@ use super::lexer::{Token, TokenKind};
 use super::lower::Lowerer;
 use super::source::{Diag, Expansion, PResult, Span};
 use directives::Cond;
-pub(crate) use keywords::{is_pov_keyword, RESERVED, UNSUPPORTED_SHAPES};
+pub(crate) use keywords::{is_pov_keyword, is_reserved, UNSUPPORTED_SHAPES};
 use macros::MacroCall;
 use stream::{FrameKind, Next, Stream};
 
@@ -339,7 +339,7 @@ impl Parser<'_, '_> {
     fn unknown_token(&self, t: &Token, context: &str, expected: &[&str]) -> Diag {
         let list = expected.join(", ");
         let message = match &t.kind {
-            TokenKind::Ident(word) if is_pov_keyword(word) || RESERVED.contains(&&**word) => {
+            TokenKind::Ident(word) if is_pov_keyword(word) || is_reserved(&word) => {
                 return Diag::unmodelled(t.span, format!("`{word}` is not supported in {context} (supported: {list})"));
             }
             TokenKind::Ident(word) => {

@@ -3,7 +3,7 @@
 
 use std::rc::Rc;
 
-use super::{is_pov_keyword, Parser, RESERVED, UNSUPPORTED_SHAPES};
+use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
 };
@@ -96,7 +96,7 @@ impl Parser<'_, '_> {
         // POV-Ray lets a declared camera's name stand first, to start from a copy of it. A word
         // followed by a value (`locaton <0, 2, -5>`) is a misspelt item instead, reported below.
         if let Some(name) =
-            self.peek_ident().filter(|w| !CAMERA.contains(&&**w) && !is_pov_keyword(w) && !RESERVED.contains(&&**w))
+            self.peek_ident().filter(|w| !CAMERA.contains(&&**w) && !is_pov_keyword(w) && !super::is_reserved(&w))
         {
             let span = self.peek().span;
             match self.low.lookup(&name) {

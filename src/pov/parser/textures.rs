@@ -50,7 +50,7 @@ impl Parser<'_, '_> {
         match &self.peek().kind {
             TokenKind::Ident(w) if !keywords.contains(&&**w) && color_key(w).is_none() => {
                 let w = w.clone();
-                if super::is_pov_keyword(&w) || super::RESERVED.contains(&&*w) {
+                if super::is_pov_keyword(&w) || super::is_reserved(&w) {
                     return Ok(None);
                 }
                 Ok(Some(self.maybe_bare_name(Self::expr)?))

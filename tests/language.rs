@@ -293,3 +293,11 @@ fn clock_values_come_from_the_parse_options() {
     let (s, _) = load_scene_with_messages(&path, &IncludePath::default(), &options).unwrap();
     assert_eq!(spheres(&s)[0].1, 3.0);
 }
+
+#[test]
+fn a_runaway_loop_that_prints_stops_at_the_output_limit() {
+    let text = format!("#declare S = \"{}\";\n#while (1) #debug S #end", "x".repeat(4096));
+    let e = error("print_limit", &text);
+    assert_eq!((e.line, e.col), (2, 12), "{e}");
+    assert!(e.message.starts_with("the scene printed more than"), "{e}");
+}

@@ -95,9 +95,8 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
         if c.is_ascii_whitespace() {
             i += 1;
         } else if bytes[i..].starts_with(b"//") {
-            while i < bytes.len() && bytes[i] != b'\n' {
-                i += 1;
-            }
+            // Include files are mostly comments: find the line's end in one search.
+            i = bytes[i..].iter().position(|&b| b == b'\n').map_or(bytes.len(), |k| i + k);
         } else if bytes[i..].starts_with(b"/*") {
             i = skip_block_comment(bytes, i)
                 .ok_or_else(|| Diag::new(span(start, start + 2), "block comment `/*` is never closed with `*/`"))?;
@@ -160,6 +159,11 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
 fn skip_block_comment(bytes: &[u8], mut i: usize) -> Option<usize> {
     let mut depth = 0usize;
     while i < bytes.len() {
+        // Only `/` and `*` can open or close a comment: skip to the next of either.
+        match bytes[i..].iter().position(|&b| b == b'/' || b == b'*') {
+            Some(k) => i += k,
+            None => return None,
+        }
         if bytes[i..].starts_with(b"/*") {
             depth += 1;
             i += 2;

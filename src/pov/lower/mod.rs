@@ -30,6 +30,10 @@ pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
 /// this bounds memory near 2 GiB even for a union that doubles itself in a loop.
 pub const MAX_OBJECTS: usize = 2_000_000;
 
+/// Most bytes of `#debug` text and warnings one scene may print (a runaway loop that prints
+/// stops here instead of filling memory).
+pub const MAX_OUTPUT_BYTES: usize = 16 << 20;
+
 /// What a scene prints while it is lowered: `#debug` text (POV-Ray's debug stream, exactly as
 /// written, newlines included) and located warnings.
 #[derive(Clone, Debug, PartialEq)]
@@ -94,6 +98,8 @@ pub struct Lowerer<'f> {
     random: functions::RandomStreams,
     /// Files `#fopen` opened.
     open_files: fileio::OpenFiles,
+    /// Bytes of messages so far, against `MAX_OUTPUT_BYTES`.
+    output_bytes: usize,
 }
 
 impl<'f> Lowerer<'f> {
@@ -110,6 +116,7 @@ impl<'f> Lowerer<'f> {
             default_texture: TextureDesc::default(),
             random: Default::default(),
             open_files: Default::default(),
+            output_bytes: 0,
         }
     }
 
@@ -287,6 +294,10 @@ impl<'f> Lowerer<'f> {
 
     /// `#debug` text goes to the debug stream, `#warning` becomes a warning, `#error` stops.
     pub(crate) fn message(&mut self, kind: MessageKind, text: String, span: Span) -> PResult<()> {
+        self.output_bytes += text.len();
+        if self.output_bytes > MAX_OUTPUT_BYTES {
+            return Err(Diag::new(span, format!("the scene printed more than {MAX_OUTPUT_BYTES} bytes of messages")));
+        }
         match kind {
             MessageKind::Debug => self.output.push(Output::Debug(text)),
             MessageKind::Warning => self.warn(Diag::new(span, text)),

@@ -6,6 +6,7 @@
 pub mod ast;
 pub mod lexer;
 mod lower;
+mod names;
 pub mod parser;
 pub mod source;
 pub mod value;

@@ -10,11 +10,11 @@ mod functions;
 mod objects;
 mod textures;
 
-use std::collections::HashMap;
 use std::rc::Rc;
 
 use crate::pov::ast::{DeclValue, DefaultItem, GlobalItem, Stmt};
 use crate::pov::lexer::Token;
+use crate::pov::names::NameMap;
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
@@ -69,7 +69,7 @@ pub trait Files {
 /// One level of the symbol table: the scene's globals, a file's `#local`s, a macro call.
 #[derive(Debug, Default)]
 struct Scope {
-    vars: HashMap<Rc<str>, Value>,
+    vars: NameMap<Rc<str>, Value>,
     /// A macro call's parameters (empty for other scopes).
     params: Vec<Rc<str>>,
     /// Parameters the macro assigned, to write back to by-reference arguments.

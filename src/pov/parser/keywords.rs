@@ -460,13 +460,15 @@ const UNSUPPORTED_WORDS: &[&str] = &[
 
 /// Whether `word` is one of strahl's own keywords (`RESERVED`), in constant time.
 pub(crate) fn is_reserved(word: &str) -> bool {
-    static WORDS: std::sync::OnceLock<std::collections::HashSet<&'static str>> = std::sync::OnceLock::new();
-    WORDS.get_or_init(|| RESERVED.iter().copied().collect()).contains(word)
+    static WORDS: std::sync::OnceLock<crate::pov::names::NameMap<&'static str, ()>> = std::sync::OnceLock::new();
+    WORDS.get_or_init(|| RESERVED.iter().map(|&w| (w, ())).collect()).contains_key(word)
 }
 
 /// Whether `word` is a POV-Ray 3.7 keyword strahl does not support (it cannot be declared,
 /// and messages say "not supported" rather than "unknown").
 pub(crate) fn is_pov_keyword(word: &str) -> bool {
-    static WORDS: std::sync::OnceLock<std::collections::HashSet<&'static str>> = std::sync::OnceLock::new();
-    WORDS.get_or_init(|| UNSUPPORTED_SHAPES.iter().chain(UNSUPPORTED_WORDS).copied().collect()).contains(word)
+    static WORDS: std::sync::OnceLock<crate::pov::names::NameMap<&'static str, ()>> = std::sync::OnceLock::new();
+    WORDS
+        .get_or_init(|| UNSUPPORTED_SHAPES.iter().chain(UNSUPPORTED_WORDS).map(|&w| (w, ())).collect())
+        .contains_key(word)
 }

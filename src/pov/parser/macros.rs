@@ -111,7 +111,7 @@ impl Parser<'_, '_> {
                 TokenKind::Ident(w)
                     if matches!(self.stream.peek_kind(), Some(TokenKind::Punct(',' | ')')))
                         && !super::is_pov_keyword(w)
-                        && !super::is_reserved(&w) =>
+                        && !super::is_reserved(w) =>
                 {
                     Some(w.clone())
                 }

@@ -339,7 +339,7 @@ impl Parser<'_, '_> {
     fn unknown_token(&self, t: &Token, context: &str, expected: &[&str]) -> Diag {
         let list = expected.join(", ");
         let message = match &t.kind {
-            TokenKind::Ident(word) if is_pov_keyword(word) || is_reserved(&word) => {
+            TokenKind::Ident(word) if is_pov_keyword(word) || is_reserved(word) => {
                 return Diag::unmodelled(t.span, format!("`{word}` is not supported in {context} (supported: {list})"));
             }
             TokenKind::Ident(word) => {

@@ -96,7 +96,7 @@ impl Parser<'_, '_> {
         // POV-Ray lets a declared camera's name stand first, to start from a copy of it. A word
         // followed by a value (`locaton <0, 2, -5>`) is a misspelt item instead, reported below.
         if let Some(name) =
-            self.peek_ident().filter(|w| !CAMERA.contains(&&**w) && !is_pov_keyword(w) && !super::is_reserved(&w))
+            self.peek_ident().filter(|w| !CAMERA.contains(&&**w) && !is_pov_keyword(w) && !super::is_reserved(w))
         {
             let span = self.peek().span;
             match self.low.lookup(&name) {

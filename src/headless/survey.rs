@@ -143,6 +143,9 @@ pub fn group_of(message: &str) -> String {
 /// that is not a scene feature strahl lacks.
 pub fn needs(group: &str) -> &'static str {
     const ATMOSPHERE: &[&str] = &["`sky_sphere`", "`fog`", "`media`", "`rainbow`"];
+    if group.starts_with("layered textures") {
+        return "texture layers";
+    }
     if !group.contains(" is not supported") && !group.contains(" are not supported") {
         return if group == "timed out" || group.starts_with("crashed") { "—" } else { "language / scene error" };
     }
@@ -332,6 +335,10 @@ mod tests {
         assert_eq!(needs(&group_of("`fog` is not supported in the scene")), "atmosphere");
         assert_eq!(needs(&group_of("`radiosity` is not supported in global_settings")), "global setting");
         assert_eq!(needs(&group_of("undefined identifier `Foo`")), "language / scene error");
+        assert_eq!(
+            needs(&group_of("layered textures (a `texture` over another one) are not supported yet")),
+            "texture layers"
+        );
     }
 
     #[test]

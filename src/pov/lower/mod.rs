@@ -184,7 +184,7 @@ impl<'f> Lowerer<'f> {
         } else {
             holder.unwrap_or(0)
         };
-        if param_scope == Some(scope) || self.scopes[scope].params.iter().any(|p| &**p == name) {
+        if self.scopes[scope].params.iter().any(|p| &**p == name) {
             let s = &mut self.scopes[scope];
             if !s.written.iter().any(|p| &**p == name) {
                 s.written.push(Rc::from(name));

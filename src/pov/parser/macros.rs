@@ -88,7 +88,7 @@ impl Parser<'_, '_> {
         self.take_raw();
         let mut by_value: Vec<(Rc<str>, Value)> = Vec::new();
         let mut by_ref: Vec<(Rc<str>, Rc<str>)> = Vec::new();
-        for (i, (param, optional)) in m.params.iter().enumerate() {
+        for (i, (param, _)) in m.params.iter().enumerate() {
             self.expand();
             if self.cur.kind == TokenKind::Punct(')') {
                 if let Some((missing, _)) = m.params[i..].iter().find(|(_, optional)| !optional) {
@@ -104,7 +104,6 @@ impl Parser<'_, '_> {
                 self.take_raw();
                 self.expand();
             }
-            let _ = optional;
             // A bare identifier is passed by reference (also an undeclared one: the macro may
             // declare it).
             let bare = match &self.cur.kind {
@@ -155,7 +154,7 @@ impl Parser<'_, '_> {
     /// (`pigment { }`, an object, another macro's object).
     fn argument(&mut self) -> PResult<Value> {
         match self.peek_ident() {
-            Some(w) if super::directives::starts_declared_block(&w) => self.declared_value(),
+            Some(w) if super::declarations::starts_declared_block(&w) => self.declared_value(),
             _ => {
                 let e = self.full_color()?;
                 self.low.eval(&e)

@@ -2,7 +2,8 @@
 //!
 //! Data flows one way: `pov` parses text into `scene::desc`; `scene::build` turns that into
 //! render-ready data; `render` traces it with `geometry`, `accel` and `shading`; `headless` and
-//! `app` drive `render`.
+//! `app` drive `render`. Underneath everything, `lanes` is the arithmetic (one f32, eight f32s
+//! or one f64) that shapes, bounds and shading formulas are written in once.
 
 pub mod accel;
 pub mod app;
@@ -11,6 +12,7 @@ pub mod error;
 pub mod fly;
 pub mod geometry;
 pub mod headless;
+pub mod lanes;
 pub mod pov;
 pub mod render;
 pub mod scene;

@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use strahl::headless::capture::{self, ClockRange, FrameRange};
 use strahl::headless::{self, bench, tradeoff, CliError};
-use strahl::render::precise::Precision;
+use strahl::render::precision::Precision;
 use strahl::render::preset::Preset;
 use strahl::render::resample::MIN_RES_SCALE;
 use strahl::render::{Quality, RenderSettings};
@@ -102,8 +102,8 @@ struct Common {
     /// Cap on turbulence/noise octaves (texture detail).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=32))]
     max_octaves: Option<u32>,
-    /// Arithmetic of rays and intersections: f32 (fast, packets) or f64 (single rays, for
-    /// reference images and extreme scales). Default f32; the reference preset uses f64.
+    /// Arithmetic of intersections: f32, or f64 (each ray's nearest hit re-solved in f64, for
+    /// reference images). Default f32; the reference preset uses f64.
     #[arg(long, value_name = "P")]
     precision: Option<Precision>,
 }

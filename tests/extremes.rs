@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 use common::transform_scene;
 use glam::{DMat4, DVec3};
 use strahl::camera::Camera;
+use strahl::geometry::Shape;
 use strahl::headless::include_path;
 use strahl::headless::metrics::psnr;
 use strahl::pov::load_scene;

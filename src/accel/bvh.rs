@@ -5,8 +5,9 @@
 
 use glam::Vec3;
 
+use super::aabb::slabs;
 use super::aabb::Aabb;
-use crate::geometry::{cuboid::slabs, ray::Ray};
+use crate::geometry::ray::Ray;
 
 /// A flat node: 32 bytes, two per 64-byte cache line.
 ///

@@ -5,8 +5,9 @@
 
 use glam::{IVec3, Vec3};
 
+use super::aabb::slabs;
 use super::aabb::Aabb;
-use crate::geometry::{cuboid::slabs, ray::Ray};
+use crate::geometry::ray::Ray;
 
 pub struct Grid {
     pub bounds: Aabb,

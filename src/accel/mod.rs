@@ -7,13 +7,30 @@ pub mod aabb;
 pub mod bvh;
 pub mod grid;
 pub mod packet;
-pub mod precise;
 
 use crate::geometry::ray::Ray;
-use crate::scene::build::AccelKind;
 use aabb::Aabb;
 use bvh::Bvh;
 use grid::Grid;
+
+/// Which accelerator to build over the bounded primitives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum AccelKind {
+    #[default]
+    Bvh,
+    Grid,
+    None,
+}
+
+impl AccelKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            AccelKind::Bvh => "bvh",
+            AccelKind::Grid => "grid",
+            AccelKind::None => "none",
+        }
+    }
+}
 
 pub enum Accel {
     Bvh(Bvh),

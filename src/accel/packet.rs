@@ -10,16 +10,13 @@
 #![allow(clippy::needless_range_loop)]
 use glam::Vec3;
 
+use super::aabb::node_slabs;
 use super::bvh::{Bvh, BvhNode};
-use crate::geometry::lanes::{node_slabs, Lane, F8, M8, V3};
+use crate::geometry::ray::RayLanes;
+use crate::lanes::{Lane, F8, M8, V3};
 
 /// Eight rays in structure-of-arrays form.
-#[derive(Clone, Copy, Debug)]
-pub struct Ray8 {
-    pub o: V3<F8>,
-    pub d: V3<F8>,
-    pub inv: V3<F8>,
-}
+pub type Ray8 = RayLanes<F8>;
 
 impl Ray8 {
     pub const ZERO: Ray8 = Ray8 {

@@ -6,7 +6,7 @@ use glam::DVec3;
 
 use crate::app::font::{Canvas, GLYPH};
 use crate::app::render_thread::Progress;
-use crate::render::precise::Precision;
+use crate::render::precision::Precision;
 
 /// The last frame intervals, for average and 95th-percentile frame time.
 #[derive(Clone, Debug)]

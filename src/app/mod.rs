@@ -139,8 +139,6 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     }
     let origin = desc.camera.location;
     let scene = Scene::build(desc, origin, options.accel);
-    // F2 may switch to the `reference` preset, which traces in f64, at any time.
-    scene.prepare_precise(desc);
     let camera = Camera::from_desc(&desc.camera);
     let speed = crate::fly::initial_speed(scene.world_bounds(), scene.frame.unit);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
@@ -154,7 +152,6 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     // the path started with it (a reload during playback is not reflected).
     eprintln!("comparing {} sampled frames with full-quality renders ...", playback.samples().len());
     let scene = Scene::build(desc, origin, options.accel);
-    crate::render::precise::prepare(&scene, desc, options.quality.precision);
     let cx = ReportContext {
         scene: &options.scene.display().to_string(),
         path: &play.file,

@@ -308,8 +308,6 @@ impl Worker {
         let (result, camera) = match watch.reloader.reload() {
             Ok(desc) => {
                 self.scene = Scene::build(desc, watch.origin, watch.accel);
-                // As at load (`app::run_watched`): F2 may select the f64 `reference` preset.
-                self.scene.prepare_precise(desc);
                 (None, Some(Camera::from_desc(&desc.camera)))
             }
             Err(message) => (Some(message.to_string()), None),

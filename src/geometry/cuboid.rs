@@ -4,8 +4,9 @@
 
 use glam::{Affine3A, Mat3A, Vec3};
 
-use super::lanes::{self, Lane, V3};
-use super::ray::Ray;
+use super::ray::{pick_root, RayLanes};
+use super::Shape;
+use crate::lanes::{Lane, V3};
 
 /// An axis-aligned box in its own space, plus the map into it when that is not render space.
 #[derive(Clone, Copy, Debug)]
@@ -23,43 +24,40 @@ pub struct BoxFrame {
     pub normal_to_render: Mat3A,
 }
 
-/// Conservative slab test for bounding boxes (see `lanes::node_slabs`): entry and exit
-/// distances, with an axis the ray lies exactly in a face plane of counting as unbounded.
-#[inline]
-pub fn slabs(min: Vec3, max: Vec3, origin: Vec3, inv_dir: Vec3) -> (f32, f32) {
-    lanes::node_slabs(V3::from_vec3(min), V3::from_vec3(max), V3::from_vec3(origin), V3::from_vec3(inv_dir))
+/// Slab test: (entry, exit) distances of the ray against an axis-aligned box.
+#[inline(always)]
+fn slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
+    let t0 = min.sub(o).mul(inv);
+    let t1 = max.sub(o).mul(inv);
+    let near = t0.min(t1);
+    let far = t0.max(t1);
+    (near.x.max(near.y).max(near.z), far.x.min(far.y).min(far.z))
 }
 
-impl Cuboid {
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let (o, d) = (V3::from_vec3(ray.origin), V3::from_vec3(ray.dir));
-        let t = match &self.frame {
-            None => lanes::aabb(
-                V3::from_vec3(self.min),
-                V3::from_vec3(self.max),
-                o,
-                V3::from_vec3(ray.inv_dir),
-                t_min,
-                t_max,
-            ),
+/// Ray/box: the slab test; the far side counts when the origin is inside.
+#[inline(always)]
+fn aabb<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>, t_min: L, t_max: L) -> L {
+    let (near, far) = slabs(min, max, o, inv);
+    pick_root(near.le(far), near, far, t_min, t_max)
+}
+
+impl Shape for Cuboid {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let (lo, hi) = (V3::splat(self.min), V3::splat(self.max));
+        match &self.frame {
+            None => aabb(lo, hi, ray.o, ray.inv, t_min, t_max),
             Some(f) => {
-                let lo = o.transform_point(&f.object_from_render);
-                let ld = d.transform_vector(&f.object_from_render);
-                lanes::aabb(V3::from_vec3(self.min), V3::from_vec3(self.max), lo, ld.recip(), t_min, t_max)
+                let o = ray.o.transform_point(&f.object_from_render);
+                let d = ray.d.transform_vector(&f.object_from_render);
+                aabb(lo, hi, o, d.recip(), t_min, t_max)
             }
-        };
-        (t != lanes::MISS).then_some(t)
+        }
     }
 
     /// Outward normal of the face nearest to `p` (a point on the surface, render space).
-    pub fn normal_at(&self, p: Vec3) -> Vec3 {
-        self.normal_lanes(V3::from_vec3(p)).vec3()
-    }
-
-    /// `normal_at` for one or eight points.
     #[inline(always)]
-    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let local = match &self.frame {
             None => p,
             Some(f) => p.transform_point(&f.object_from_render),
@@ -83,7 +81,9 @@ impl Cuboid {
             Some(f) => best_n.mat3_mul(&f.normal_to_render).normalize_or(best_n),
         }
     }
+}
 
+impl Cuboid {
     /// Render-space bounds (of the transformed corners, for a rotated box).
     pub fn bounds(&self) -> (Vec3, Vec3) {
         match &self.frame {
@@ -119,10 +119,11 @@ pub fn frame_for(render_from_object: Affine3A) -> BoxFrame {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::Ray;
 
     #[test]
     fn eight_lanes_of_normals_match_one_lane_bit_for_bit() {
-        use crate::geometry::lanes::F8;
+        use crate::lanes::F8;
         let rotated = Affine3A::from_rotation_y(0.35) * Affine3A::from_scale(Vec3::new(1.0, 2.0, 0.5));
         for b in [unit_box(), Cuboid { min: Vec3::splat(-1.0), max: Vec3::ONE, frame: Some(frame_for(rotated)) }] {
             for k in 0..400 {
@@ -133,7 +134,7 @@ mod tests {
                     let v = if i.is_multiple_of(3) { v / v.abs().max_element() } else { v };
                     rotated.transform_point3(v)
                 };
-                let wide = b.normal_lanes(V3::<F8>::from_lanes(p));
+                let wide = b.normal(V3::<F8>::from_lanes(p));
                 for i in 0..8 {
                     assert_eq!(
                         wide.lane(i).to_array().map(f32::to_bits),

@@ -1,11 +1,41 @@
-//! Shapes and their ray tests, one file per kind. Every routine answers the nearest `t` in an
-//! open interval `(t_min, t_max)`; normals are computed afterwards, only for the winning hit.
+//! Shapes and their ray tests, one file per kind, each written once for every path.
+//!
+//! A shape implements `Shape`: `hit` answers the nearest `t` in an open interval
+//! `(t_min, t_max)` (or `MISS`) for one ray in f32, eight rays in f32 (`F8`, packets) or one ray
+//! in f64 (`--precision f64` re-solving a hit), from the same formula; `normal` gives the
+//! geometric normal, computed afterwards, only for the winning hit. The lane arithmetic is
+//! `crate::lanes`; what every test shares (rays, `MISS`, root picking, offsets) is `ray`.
 
 pub mod cuboid;
-pub mod lanes;
 pub mod plane;
 pub mod polygon;
-pub mod precise;
 pub mod ray;
 pub mod sphere;
 pub mod triangle;
+
+use glam::Vec3;
+
+use crate::lanes::{Lane, V3};
+use ray::{Ray, RayLanes, MISS};
+
+/// A surface rays can hit.
+pub trait Shape {
+    /// The nearest hit in `(t_min, t_max)` for each lane, `MISS` where there is none.
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L;
+
+    /// The outward geometric normal at points on the surface (render space), unit length.
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L>;
+
+    /// `hit` for one f32 ray, `None` for a miss.
+    #[inline]
+    fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        let t = self.hit(&ray.lanes(), t_min, t_max);
+        (t != MISS).then_some(t)
+    }
+
+    /// `normal` at one point.
+    #[inline]
+    fn normal_at(&self, p: Vec3) -> Vec3 {
+        self.normal(V3::from_vec3(p)).vec3()
+    }
+}

@@ -2,8 +2,9 @@
 
 use glam::Vec3;
 
-use super::lanes::{self, V3};
-use super::ray::Ray;
+use super::ray::{RayLanes, MISS};
+use super::Shape;
+use crate::lanes::{Lane, V3};
 
 /// Points `p` with `normal · p = distance`, `normal` of unit length.
 #[derive(Clone, Copy, Debug)]
@@ -19,25 +20,31 @@ impl Plane {
         let (sa, sb) = (self.normal.dot(a) - self.distance, self.normal.dot(b) - self.distance);
         (sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0)
     }
+}
 
+impl Shape for Plane {
     /// A ray parallel to the plane never hits it, even when it lies in it.
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let t = lanes::plane(
-            V3::from_vec3(self.normal),
-            self.distance,
-            V3::from_vec3(ray.origin),
-            V3::from_vec3(ray.dir),
-            t_min,
-            t_max,
-        );
-        (t != lanes::MISS).then_some(t)
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let (n, dist) = (V3::splat(self.normal), L::splat(self.distance));
+        let (o, d) = (ray.o, ray.d);
+        let denom = n.dot(d);
+        let t = (dist - n.dot(o)) / denom;
+        let parallel = L::and(L::le(denom, L::splat(0.0)), L::le(L::splat(0.0), denom));
+        let ok = L::and(L::not(parallel), L::and(t_min.lt(t), t.lt(t_max)));
+        L::select(ok, t, L::splat(MISS))
+    }
+
+    #[inline(always)]
+    fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
+        V3::splat(self.normal)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::Ray;
 
     const FLOOR: Plane = Plane { normal: Vec3::Y, distance: 0.0 };
 

@@ -1,15 +1,17 @@
 //! Ray/polygon intersection as in chapter 24.3: hit the polygon's plane, then test whether the
 //! point lies inside the outline (crossing-number test in the plane's dominant 2D projection).
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{DVec2, DVec3, Vec2, Vec3};
 
-use super::precise::PolygonD;
-use super::ray::Ray;
+use super::plane::Plane;
+use super::ray::{RayLanes, MISS};
+use super::Shape;
+use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Debug)]
 pub struct Polygon {
-    pub normal: Vec3,
-    pub distance: f32,
+    /// The polygon's plane.
+    pub plane: Plane,
     /// The two axes kept by the projection (the normal's largest component is dropped).
     pub axes: [usize; 2],
     /// Outline projected onto `axes`.
@@ -20,53 +22,71 @@ pub struct Polygon {
 
 impl Polygon {
     /// `points` (render space, f64) must be planar with a well-defined normal (the parser
-    /// rejects degenerate ones). The plane and projection are found once, in f64
-    /// (`PolygonD::new`: Newell's normal, the dominant axes), and rounded to f32 here.
+    /// rejects degenerate ones). The plane and projection are found once, in f64 (Newell's
+    /// method, a robust normal for any simple planar polygon, and the dominant axes), then
+    /// rounded to f32.
     pub fn new(points: &[DVec3]) -> Polygon {
-        let d = PolygonD::new(points);
+        let mut n = DVec3::ZERO;
+        for (i, a) in points.iter().enumerate() {
+            let b = points[(i + 1) % points.len()];
+            n += DVec3::new((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+        }
+        let normal = n.normalize_or(DVec3::Y);
+        let centroid = points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64;
+        let a = normal.abs();
+        let axes = if a.x >= a.y && a.x >= a.z {
+            [1, 2]
+        } else if a.y >= a.z {
+            [2, 0]
+        } else {
+            [0, 1]
+        };
+        let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+        for p in points {
+            lo = lo.min(*p);
+            hi = hi.max(*p);
+        }
         Polygon {
-            normal: d.normal.as_vec3(),
-            distance: d.distance as f32,
-            axes: d.axes,
-            points: d.points.iter().map(|p| p.as_vec2()).collect(),
-            min: d.min.as_vec3(),
-            max: d.max.as_vec3(),
+            plane: Plane { normal: normal.as_vec3(), distance: normal.dot(centroid) as f32 },
+            axes,
+            points: points.iter().map(|p| DVec2::new(p[axes[0]], p[axes[1]]).as_vec2()).collect(),
+            min: lo.as_vec3(),
+            max: hi.as_vec3(),
         }
     }
+}
 
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let denom = self.normal.dot(ray.dir);
-        if denom == 0.0 {
-            return None;
-        }
-        let t = (self.distance - self.normal.dot(ray.origin)) / denom;
-        if !(t > t_min && t < t_max) {
-            return None;
-        }
+impl Shape for Polygon {
+    /// The plane's hit, kept where it lies inside the outline by the even-odd rule: count the
+    /// edges a ray from the point towards +u crosses.
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let t = self.plane.hit(ray, t_min, t_max);
         let p = ray.at(t);
-        self.contains(Vec2::new(p[self.axes[0]], p[self.axes[1]])).then_some(t)
-    }
-
-    /// Even-odd rule: count crossings of a ray towards +u.
-    fn contains(&self, q: Vec2) -> bool {
-        let mut inside = false;
+        let (qx, qy) = (p.axis(self.axes[0]), p.axis(self.axes[1]));
+        let mut inside = L::lt(L::splat(0.0), L::splat(0.0));
         let n = self.points.len();
         let mut j = n - 1;
         for i in 0..n {
             let (a, b) = (self.points[i], self.points[j]);
-            if (a.y > q.y) != (b.y > q.y) && q.x < (b.x - a.x) * (q.y - a.y) / (b.y - a.y) + a.x {
-                inside = !inside;
-            }
+            let straddles = L::xor(qy.lt(L::splat(a.y)), qy.lt(L::splat(b.y)));
+            let x = L::splat(b.x - a.x) * (qy - L::splat(a.y)) / L::splat(b.y - a.y) + L::splat(a.x);
+            inside = L::xor(inside, L::and(straddles, qx.lt(x)));
             j = i;
         }
-        inside
+        L::select(L::and(inside, t.lt(L::splat(MISS))), t, L::splat(MISS))
+    }
+
+    #[inline(always)]
+    fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
+        V3::splat(self.plane.normal)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::Ray;
 
     /// An L-shaped (concave) outline in the plane z = 3.
     fn ell() -> Polygon {
@@ -90,6 +110,6 @@ mod tests {
     #[test]
     fn normal_is_unit_and_perpendicular() {
         let p = ell();
-        assert!((p.normal.abs() - Vec3::Z).length() < 1e-6);
+        assert!((p.plane.normal.abs() - Vec3::Z).length() < 1e-6);
     }
 }

@@ -2,6 +2,8 @@
 
 use glam::Vec3;
 
+use crate::lanes::{Lane, V3};
+
 #[derive(Clone, Copy, Debug)]
 pub struct Ray {
     pub origin: Vec3,
@@ -21,6 +23,54 @@ impl Ray {
     pub fn at(&self, t: f32) -> Vec3 {
         self.origin + self.dir * t
     }
+}
+
+/// One ray (`f32`, `f64`) or eight (`F8`), as the shape tests take them.
+#[derive(Clone, Copy, Debug)]
+pub struct RayLanes<L> {
+    pub o: V3<L>,
+    /// Unit length, so `t` is a distance.
+    pub d: V3<L>,
+    /// `1 / d`, with ±0 components giving ±inf.
+    pub inv: V3<L>,
+}
+
+impl<L: Lane> RayLanes<L> {
+    #[inline(always)]
+    pub fn new(o: V3<L>, d: V3<L>) -> RayLanes<L> {
+        RayLanes { o, d, inv: d.recip() }
+    }
+
+    #[inline(always)]
+    pub fn at(&self, t: L) -> V3<L> {
+        self.o.add(self.d.scale(t))
+    }
+}
+
+impl Ray {
+    /// This ray as the shape tests take it.
+    #[inline(always)]
+    pub fn lanes(&self) -> RayLanes<f32> {
+        RayLanes { o: V3::from_vec3(self.origin), d: V3::from_vec3(self.dir), inv: V3::from_vec3(self.inv_dir) }
+    }
+
+    /// This ray widened to f64, exactly.
+    #[inline(always)]
+    pub fn lanes_f64(&self) -> RayLanes<f64> {
+        let w = |v: Vec3| V3::from_dvec3(v.as_dvec3());
+        RayLanes { o: w(self.origin), d: w(self.dir), inv: w(self.dir).recip() }
+    }
+}
+
+/// "No hit" distance.
+pub const MISS: f32 = f32::INFINITY;
+
+/// Picks the near root if it lies in `(t_min, t_max)`, else the far one, else `MISS`.
+#[inline(always)]
+pub fn pick_root<L: Lane>(valid: L::Mask, near: L, far: L, t_min: L, t_max: L) -> L {
+    let near_ok = L::and(valid, L::and(t_min.lt(near), near.lt(t_max)));
+    let far_ok = L::and(valid, L::and(t_min.lt(far), far.lt(t_max)));
+    L::select(near_ok, near, L::select(far_ok, far, L::splat(MISS)))
 }
 
 /// Relative error bound of a computed hit point, in units of its largest coordinate.

@@ -1,9 +1,12 @@
-//! Ray/sphere intersection (chapter 24.3), in the numerically stable form.
+//! Ray/sphere intersection (chapter 24.3), in the numerically stable form, and the ellipsoid
+//! (a sphere under a non-uniform scale or shear: the unit sphere in its own space).
 
 use glam::Vec3;
 
-use super::lanes::{self, Lane, V3};
-use super::ray::Ray;
+use super::cuboid::BoxFrame;
+use super::ray::{pick_root, RayLanes};
+use super::Shape;
+use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere {
@@ -11,35 +14,49 @@ pub struct Sphere {
     pub radius: f32,
 }
 
-impl Sphere {
+/// The stable roots of `|o + t·d|² = r²` for `oc = o − centre` and `a = d·d`: the discriminant
+/// as `r² − |oc − (oc·d/a)d|²` and the roots as `c/q` and `q` with `q = −b − sign(b)·√(disc/a)`,
+/// so neither cancels catastrophically (for small or far spheres). `a = 1` for a unit `d`.
+#[inline(always)]
+fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L, t_min: L, t_max: L) -> L {
+    let b = match a {
+        Some(a) => oc.dot(d) / a,
+        None => oc.dot(d),
+    };
+    let perp = oc.sub(d.scale(b));
+    let disc = r2 - perp.dot(perp);
+    let valid = L::le(L::splat(0.0), disc);
+    let c = oc.dot(oc) - r2;
+    let (c, root) = match a {
+        Some(a) => (c / a, (disc.max(L::splat(0.0)) / a).sqrt()),
+        None => (c, disc.max(L::splat(0.0)).sqrt()),
+    };
+    let q = -b - b.sign_or_one() * root;
+    // q = 0 only when b = 0 and disc = 0: a tangent ray starting at the tangent point.
+    let q_zero = L::and(L::le(q, L::splat(0.0)), L::le(L::splat(0.0), q));
+    let safe_q = L::select(q_zero, L::splat(1.0), q);
+    let t0 = L::select(q_zero, L::splat(0.0), c / safe_q);
+    let t1 = L::select(q_zero, L::splat(0.0), q);
+    pick_root(valid, t0.min(t1), t0.max(t1), t_min, t_max)
+}
+
+impl Shape for Sphere {
     /// Nearest root in `(t_min, t_max)`: the near one from outside, the far one from inside.
-    /// The formula (stable against cancellation for small or far spheres) is in `lanes::sphere`.
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let t = lanes::sphere(
-            V3::from_vec3(self.center),
-            self.radius,
-            V3::from_vec3(ray.origin),
-            V3::from_vec3(ray.dir),
-            t_min,
-            t_max,
-        );
-        (t != lanes::MISS).then_some(t)
-    }
-
-    #[inline]
-    pub fn normal_at(&self, p: Vec3) -> Vec3 {
-        self.normal_lanes(V3::from_vec3(p)).vec3()
-    }
-
-    /// `normal_at` for one or eight points.
     #[inline(always)]
-    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let r = L::splat(self.radius);
+        stable_roots(ray.o.sub(V3::splat(self.center)), ray.d, None, r * r, t_min, t_max)
+    }
+
+    #[inline(always)]
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let r = L::splat(self.radius);
         let v = p.sub(V3::splat(self.center));
         V3 { x: v.x / r, y: v.y / r, z: v.z / r }.normalize_or(V3::splat(Vec3::Y))
     }
+}
 
+impl Sphere {
     pub fn bounds(&self) -> (Vec3, Vec3) {
         (self.center - Vec3::splat(self.radius), self.center + Vec3::splat(self.radius))
     }
@@ -48,6 +65,7 @@ impl Sphere {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::Ray;
 
     fn unit() -> Sphere {
         Sphere { center: Vec3::new(0.0, 0.0, 5.0), radius: 1.0 }
@@ -95,7 +113,7 @@ mod tests {
 /// A sphere under a non-uniform scale or shear: the unit sphere in its own space.
 #[derive(Clone, Copy, Debug)]
 pub struct Ellipsoid {
-    pub frame: super::cuboid::BoxFrame,
+    pub frame: BoxFrame,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -112,40 +130,20 @@ impl Ellipsoid {
         let c: Vec3 = render_from_object.translation.into();
         Ellipsoid { frame: super::cuboid::frame_for(render_from_object), min: c - rows, max: c + rows }
     }
+}
 
+impl Shape for Ellipsoid {
     /// The unit sphere hit in object space; `t` stays a render-space distance because the
     /// object-space direction is not renormalised.
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let o = self.frame.object_from_render.transform_point3(ray.origin);
-        let d = self.frame.object_from_render.transform_vector3(ray.dir);
-        let a = d.length_squared();
-        let b = o.dot(d) / a;
-        let perp = o - b * d;
-        let disc = 1.0 - perp.length_squared();
-        if disc < 0.0 {
-            return None;
-        }
-        let c = (o.length_squared() - 1.0) / a;
-        let q = -b - b.signum() * (disc / a).sqrt();
-        let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (c / q, q) };
-        let (near, far) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
-        if near > t_min && near < t_max {
-            Some(near)
-        } else if far > t_min && far < t_max {
-            Some(far)
-        } else {
-            None
-        }
-    }
-
-    pub fn normal_at(&self, p: Vec3) -> Vec3 {
-        self.normal_lanes(V3::from_vec3(p)).vec3()
-    }
-
-    /// `normal_at` for one or eight points.
     #[inline(always)]
-    pub fn normal_lanes<L: Lane>(&self, p: V3<L>) -> V3<L> {
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        stable_roots(o, d, Some(d.dot(d)), L::splat(1.0), t_min, t_max)
+    }
+
+    #[inline(always)]
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let local = p.transform_point(&self.frame.object_from_render);
         local.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
@@ -154,6 +152,7 @@ impl Ellipsoid {
 #[cfg(test)]
 mod ellipsoid_tests {
     use super::*;
+    use crate::geometry::ray::Ray;
     use glam::Affine3A;
 
     #[test]

@@ -2,8 +2,9 @@
 
 use glam::Vec3;
 
-use super::lanes::{self, V3};
-use super::ray::Ray;
+use super::ray::{RayLanes, MISS};
+use super::Shape;
+use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Triangle {
@@ -21,20 +22,6 @@ impl Triangle {
         Triangle { v0: a, e1, e2, normal: e1.cross(e2).normalize_or(Vec3::Y) }
     }
 
-    #[inline]
-    pub fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
-        let t = lanes::triangle(
-            V3::from_vec3(self.v0),
-            V3::from_vec3(self.e1),
-            V3::from_vec3(self.e2),
-            V3::from_vec3(ray.origin),
-            V3::from_vec3(ray.dir),
-            t_min,
-            t_max,
-        );
-        (t != lanes::MISS).then_some(t)
-    }
-
     pub fn bounds(&self) -> (Vec3, Vec3) {
         let b = self.v0 + self.e1;
         let c = self.v0 + self.e2;
@@ -42,9 +29,38 @@ impl Triangle {
     }
 }
 
+impl Shape for Triangle {
+    /// Möller–Trumbore.
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let (v0, e1, e2) = (V3::splat(self.v0), V3::splat(self.e1), V3::splat(self.e2));
+        let (o, d) = (ray.o, ray.d);
+        let p = d.cross(e2);
+        let det = e1.dot(p);
+        let inv = L::splat(1.0) / det;
+        let s = o.sub(v0);
+        let u = s.dot(p) * inv;
+        let q = s.cross(e1);
+        let v = d.dot(q) * inv;
+        let t = e2.dot(q) * inv;
+        let zero = L::splat(0.0);
+        let one = L::splat(1.0);
+        let det_zero = L::and(L::le(det, zero), L::le(zero, det));
+        let inside = L::and(L::and(L::le(zero, u), L::le(u, one)), L::and(L::le(zero, v), L::le(u + v, one)));
+        let ok = L::and(L::and(L::not(det_zero), inside), L::and(t_min.lt(t), t.lt(t_max)));
+        L::select(ok, t, L::splat(MISS))
+    }
+
+    #[inline(always)]
+    fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
+        V3::splat(self.normal)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::Ray;
 
     fn tri() -> Triangle {
         Triangle::new(Vec3::new(-1.0, -1.0, 2.0), Vec3::new(1.0, -1.0, 2.0), Vec3::new(0.0, 1.0, 2.0))

@@ -18,7 +18,6 @@ use crate::headless::capture::{frame_clock, frame_t, ClockRange};
 use crate::headless::json::Json;
 use crate::headless::{output, with_threads, CliError, Staged};
 use crate::render::image::Image;
-use crate::render::precise::Precision;
 use crate::render::resample::render_scaled;
 use crate::render::stats::RenderStats;
 use crate::render::RenderSettings;
@@ -206,7 +205,7 @@ pub fn report(args: &BenchArgs, run: &Run, scene_level: u32, cpu: &str) -> Strin
         "threads:    {}   accel: {}   packets: {}",
         run.threads,
         args.accel.name(),
-        if args.settings.packets && args.settings.quality.precision == Precision::F32 { "on" } else { "off" }
+        if args.settings.packets { "on" } else { "off" }
     );
     let _ = writeln!(o, "quality:    {}", quality_text(&args.settings, args.res_scale, scene_level));
     let _ = writeln!(

@@ -24,7 +24,6 @@ use std::time::{Duration, Instant};
 use crate::camera::Camera;
 use crate::error::LocatedError;
 use crate::pov::{load_scene_with_messages, Clock, IncludePath, ParseOptions};
-use crate::render::precise::{self, Precision};
 use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
 use crate::scene::desc::SceneDesc;
@@ -115,14 +114,13 @@ pub struct Staged {
 }
 
 impl Staged {
-    /// Builds `desc` and prepares the f64 copy when `precision` needs one.
-    pub fn new(desc: &SceneDesc, accel: AccelKind, precision: Precision) -> Staged {
+    /// Builds `desc` with render space centred on its camera.
+    pub fn new(desc: &SceneDesc, accel: AccelKind) -> Staged {
         let scene = Scene::build(desc, desc.camera.location, accel);
-        precise::prepare(&scene, desc, precision);
         Staged { scene, base: Camera::from_desc(&desc.camera) }
     }
 
-    /// Parses `path` at `clock` for the settings' image size and builds it for their precision;
+    /// Parses `path` at `clock` for the settings' image size and builds it;
     /// also returns the time parsing and building took together.
     pub fn load(
         path: &Path,
@@ -133,7 +131,7 @@ impl Staged {
     ) -> Result<(Staged, Duration), CliError> {
         let start = Instant::now();
         let (desc, _) = load_with_clock(path, user_dirs, settings.width, settings.height, clock)?;
-        Ok((Staged::new(&desc, accel, settings.quality.precision), start.elapsed()))
+        Ok((Staged::new(&desc, accel), start.elapsed()))
     }
 }
 

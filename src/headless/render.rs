@@ -7,7 +7,6 @@ use crate::camera::Camera;
 use crate::headless::report::{included_files, statistics, Timings};
 use crate::headless::{load_sized, output, peak_memory_bytes, with_threads, CliError};
 use crate::render::image::Image;
-use crate::render::precise;
 use crate::render::resample::render_scaled;
 use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
@@ -29,7 +28,6 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let (desc, parse) = load_sized(&args.scene, &args.include, args.settings.width, args.settings.height)?;
     let build_start = Instant::now();
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
-    precise::prepare(&scene, &desc, args.settings.quality.precision);
     let build = build_start.elapsed();
     let camera = Camera::from_desc(&desc.camera);
     let (mut low, mut image) = (Image::default(), Image::default());

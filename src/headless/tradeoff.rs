@@ -27,7 +27,7 @@ use crate::headless::capture::frame_t;
 use crate::headless::progress::Progress;
 use crate::headless::{load_sized, metrics, output, with_threads, CliError};
 use crate::render::image::Image;
-use crate::render::precise::Precision;
+use crate::render::precision::Precision;
 use crate::render::preset::Preset;
 use crate::render::resample::render_scaled;
 use crate::render::{Quality, RenderSettings};
@@ -282,7 +282,6 @@ pub fn run(args: &TradeoffArgs) -> Result<(), CliError> {
     let (desc, _) = load_sized(&args.scene, &args.include, args.width, args.height)?;
     let scene = Scene::build(&desc, desc.camera.location, args.accel);
     // The reference preset and the precision knob trace in f64.
-    scene.prepare_precise(&desc);
     let base = Camera::from_desc(&desc.camera);
     let cameras: Vec<Camera> = match &path {
         Some(p) => (0..args.frames).map(|i| p.camera_at(frame_t(i, args.frames), &base)).collect(),

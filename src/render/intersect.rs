@@ -3,10 +3,15 @@
 
 use glam::Vec3;
 
-use crate::geometry::lanes::{Lane, V3};
-use crate::geometry::ray::Ray;
+use crate::geometry::ray::{Ray, RayLanes, MISS};
+use crate::geometry::Shape;
+use crate::lanes::{Lane, V3};
 use crate::render::stats::RenderStats;
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
+
+/// How far (relative to `t`) an f64 root may lie from the f32 one and still be the same hit:
+/// f32's formulas are good to a few ulps (1e-7), so 1e-4 only rejects a different root.
+const REFINE_WINDOW: f64 = 1e-4;
 
 /// What a ray hit: a bounded primitive (index into `Scene::prims`) or a plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,18 +27,27 @@ pub struct Hit {
 }
 
 impl Scene {
+    /// Primitive `p`'s nearest hit in `(0, t_max)` for one ray (f32 or f64) or eight: the one
+    /// dispatch every path shares, so each shape's formula is written once (`geometry::Shape`).
+    #[inline(always)]
+    pub fn hit_prim<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> L {
+        let i = p.index as usize;
+        let zero = L::splat(0.0);
+        match p.kind {
+            ShapeKind::Sphere => self.spheres[i].hit(ray, zero, t_max),
+            ShapeKind::Ellipsoid => self.ellipsoids[i].hit(ray, zero, t_max),
+            ShapeKind::Box => self.boxes[i].hit(ray, zero, t_max),
+            ShapeKind::Triangle => self.triangles[i].hit(ray, zero, t_max),
+            ShapeKind::Polygon => self.polygons[i].hit(ray, zero, t_max),
+            ShapeKind::Plane => L::splat(MISS),
+        }
+    }
+
     /// One primitive test, counted for the statistics.
     #[inline]
     pub fn test_prim(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<f32> {
-        let i = p.index as usize;
-        let t = match p.kind {
-            ShapeKind::Sphere => self.spheres[i].intersect(ray, 0.0, t_max),
-            ShapeKind::Ellipsoid => self.ellipsoids[i].intersect(ray, 0.0, t_max),
-            ShapeKind::Box => self.boxes[i].intersect(ray, 0.0, t_max),
-            ShapeKind::Triangle => self.triangles[i].intersect(ray, 0.0, t_max),
-            ShapeKind::Polygon => self.polygons[i].intersect(ray, 0.0, t_max),
-            ShapeKind::Plane => None,
-        };
+        let t = self.hit_prim(p, &ray.lanes(), t_max);
+        let t = (t != MISS).then_some(t);
         stats.count_test(p.kind, t.is_some());
         t
     }
@@ -59,6 +73,23 @@ impl Scene {
             Some(t)
         }) as u64;
         best
+    }
+
+    /// `hit` re-solved in f64 (`Precision::F64`): the same shape's formula on `ray` widened
+    /// exactly, so `t` carries one rounding (to f32) instead of the formula's. The f32 `t` stays
+    /// where f64 finds no root near it (a ray grazing an edge, which f32 rounded onto the shape).
+    pub fn refine(&self, ray: &Ray, hit: Hit) -> Hit {
+        let r = ray.lanes_f64();
+        let t = match hit.shape {
+            HitShape::Plane(i) => self.planes[i as usize].hit(&r, 0.0, f64::INFINITY),
+            HitShape::Prim(i) => self.hit_prim(&self.prims[i as usize], &r, f64::INFINITY),
+        };
+        let t32 = hit.t as f64;
+        if (t - t32).abs() <= REFINE_WINDOW * t32 {
+            Hit { t: t as f32, ..hit }
+        } else {
+            hit
+        }
     }
 
     /// Whether anything lies on `ray` with `0 < t < t_max` (pbrt's `IntersectP`): stops at the
@@ -126,11 +157,11 @@ impl Scene {
                 let r = &self.prims[i as usize];
                 let k = r.index as usize;
                 match r.kind {
-                    ShapeKind::Sphere => self.spheres[k].normal_lanes(p),
-                    ShapeKind::Ellipsoid => self.ellipsoids[k].normal_lanes(p),
-                    ShapeKind::Box => self.boxes[k].normal_lanes(p),
-                    ShapeKind::Triangle => V3::splat(self.triangles[k].normal),
-                    ShapeKind::Polygon => V3::splat(self.polygons[k].normal),
+                    ShapeKind::Sphere => self.spheres[k].normal(p),
+                    ShapeKind::Ellipsoid => self.ellipsoids[k].normal(p),
+                    ShapeKind::Box => self.boxes[k].normal(p),
+                    ShapeKind::Triangle => self.triangles[k].normal(p),
+                    ShapeKind::Polygon => self.polygons[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

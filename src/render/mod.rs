@@ -8,7 +8,7 @@ pub mod adaptive;
 pub mod image;
 pub mod intersect;
 pub mod packet;
-pub mod precise;
+pub mod precision;
 pub mod preset;
 pub mod progressive;
 pub mod resample;
@@ -21,8 +21,8 @@ use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
 use crate::camera::Camera;
-use crate::geometry::lanes::{Lane, F8, V3};
 use crate::geometry::ray::Ray;
+use crate::lanes::{Lane, F8, V3};
 use crate::scene::build::{RenderFrame, Scene};
 use image::Image;
 use stats::RenderStats;
@@ -36,13 +36,13 @@ pub struct Quality {
     pub shadows: bool,
     /// Caps turbulence and noise octaves (texture detail).
     pub max_octaves: Option<u32>,
-    /// f32 (packets) or f64 (`render::precise`; the scene must be prepared for it).
-    pub precision: precise::Precision,
+    /// f32, or f32 with each nearest hit re-solved in f64 (`render::precision`).
+    pub precision: precision::Precision,
 }
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality { max_trace_level: None, shadows: true, max_octaves: None, precision: precise::Precision::F32 }
+        Quality { max_trace_level: None, shadows: true, max_octaves: None, precision: precision::Precision::F32 }
     }
 }
 
@@ -124,9 +124,6 @@ pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
-    if settings.quality.precision == precise::Precision::F64 {
-        return precise::render(scene, camera, settings, image);
-    }
     let gen = RayGen::new(camera, &scene.frame);
     let use_packets = settings.packets && packet::supported(scene);
     render_tiles(settings, image, |t, raster| {

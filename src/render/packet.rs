@@ -1,7 +1,7 @@
 //! Packet tracing: primary rays in 8×8 pixel blocks, and their shadow rays towards each point
 //! light as packets too. Everything after the first hit (shading, reflection, refraction) goes
 //! through the single-ray `Tracer`, so the image is bit-identical to single-ray rendering: the
-//! 8-wide kernels are the single-ray kernels (`geometry::lanes`), and shading is shared.
+//! 8-wide kernels are the single-ray kernels (`geometry::Shape`), and shading is shared.
 //!
 //! AVX2 is used when the CPU has it (`is_x86_feature_detected!`): the same generic code is
 //! compiled twice, once inside a `#[target_feature(enable = "avx2")]` function. Without FMA
@@ -13,9 +13,11 @@ use glam::Vec3;
 
 use crate::accel::packet::{Frustum, Ray8, RowTest};
 use crate::accel::Accel;
-use crate::geometry::lanes::{self, Lane, F8, M8, V3};
 use crate::geometry::ray::Ray;
+use crate::geometry::ray::MISS;
 use crate::geometry::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
+use crate::geometry::Shape;
+use crate::lanes::{Lane, F8, M8, V3};
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
@@ -89,10 +91,18 @@ fn hit_shape(id: u32) -> Option<HitShape> {
 #[inline(always)]
 fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
     let scene = tracer.scene;
-    let mut t = [F8::splat(lanes::MISS); 8];
+    let mut t = [F8::splat(MISS); 8];
     let mut ids = [[NO_HIT; 8]; 8];
     let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
     intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
+    if tracer.refines() {
+        for r in 0..rows {
+            for i in 0..lanes {
+                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                t[r].0[i] = scene.refine(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).t;
+            }
+        }
+    }
     let n = (rows * lanes) as u64;
     tracer.stats.primary_rays += n;
     tracer.stats.max_depth = tracer.stats.max_depth.max(1);
@@ -418,8 +428,7 @@ fn intersect_rows_generic(
 ) {
     for (p, plane) in scene.planes.iter().enumerate() {
         for (r, ray) in rows.iter().enumerate() {
-            let tp =
-                lanes::plane(V3::splat(plane.normal), F8::splat(plane.distance), ray.o, ray.d, F8::splat(0.0), t[r]);
+            let tp = plane.hit(ray, F8::splat(0.0), t[r]);
             let hits = take_nearer(&mut t[r], &mut ids[r], tp, PLANE_ID + p as u32);
             stats.tests[ShapeKind::Plane as usize] += 8;
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
@@ -478,7 +487,7 @@ impl RowTest for BlockedRows<'_, '_> {
             return;
         }
         let t_new = prim_row(self.scene, prim, &self.rows[r], *t);
-        let hit = F8::and(t_new.lt(F8::splat(lanes::MISS)), self.active[r]);
+        let hit = F8::and(t_new.lt(F8::splat(MISS)), self.active[r]);
         self.stats.tests[p.kind as usize] += 8;
         self.stats.hits[p.kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
         self.block(r, t, hit);
@@ -488,45 +497,7 @@ impl RowTest for BlockedRows<'_, '_> {
 /// One primitive against a row of rays: hit distances below `t_max`, else `MISS`.
 #[inline(always)]
 fn prim_row(scene: &Scene, prim: u32, ray: &Ray8, t_max: F8) -> F8 {
-    let p = &scene.prims[prim as usize];
-    let k = p.index as usize;
-    let zero = F8::splat(0.0);
-    match p.kind {
-        ShapeKind::Sphere => {
-            let s = &scene.spheres[k];
-            lanes::sphere(V3::splat(s.center), F8::splat(s.radius), ray.o, ray.d, zero, t_max)
-        }
-        ShapeKind::Box => {
-            let b = &scene.boxes[k];
-            let (lo, hi) = (V3::splat(b.min), V3::splat(b.max));
-            match &b.frame {
-                None => lanes::aabb(lo, hi, ray.o, ray.inv, zero, t_max),
-                Some(f) => {
-                    let o = ray.o.transform_point(&f.object_from_render);
-                    let d = ray.d.transform_vector(&f.object_from_render);
-                    lanes::aabb(lo, hi, o, d.recip(), zero, t_max)
-                }
-            }
-        }
-        ShapeKind::Triangle => {
-            let tri = &scene.triangles[k];
-            lanes::triangle(V3::splat(tri.v0), V3::splat(tri.e1), V3::splat(tri.e2), ray.o, ray.d, zero, t_max)
-        }
-        // Shapes without a packet kernel run the single-ray routine lane by lane.
-        ShapeKind::Ellipsoid | ShapeKind::Polygon | ShapeKind::Plane => F8(std::array::from_fn(|i| {
-            let single = Ray {
-                origin: Vec3::new(ray.o.x.0[i], ray.o.y.0[i], ray.o.z.0[i]),
-                dir: Vec3::new(ray.d.x.0[i], ray.d.y.0[i], ray.d.z.0[i]),
-                inv_dir: Vec3::new(ray.inv.x.0[i], ray.inv.y.0[i], ray.inv.z.0[i]),
-            };
-            let t = match p.kind {
-                ShapeKind::Ellipsoid => scene.ellipsoids[k].intersect(&single, 0.0, t_max.0[i]),
-                ShapeKind::Polygon => scene.polygons[k].intersect(&single, 0.0, t_max.0[i]),
-                _ => None,
-            };
-            t.unwrap_or(lanes::MISS)
-        })),
-    }
+    scene.hit_prim(&scene.prims[prim as usize], ray, t_max)
 }
 
 /// Which lanes of each row are blocked before their `t_max` (`IntersectP` for packets).

@@ -2,7 +2,7 @@
 //! an antialiasing level and the `Quality` knobs, chosen from measured trade-offs.
 //!
 //! `full` renders exactly what the scene asks; `reference` is the best strahl renders (4×4
-//! antialiasing, traced in f64 by `render::precise`) and the image `strahl tradeoff` measures
+//! antialiasing, nearest hits re-solved in f64) and the image `strahl tradeoff` measures
 //! every other setting against. `fast` and `balanced` are
 //! points on the Pareto front that `strahl tradeoff` measured on the seed scene
 //! (`docs/tradeoff/seed.md`). Explicit flags override a preset's fields in the CLI.
@@ -10,7 +10,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use super::precise::Precision;
+use super::precision::Precision;
 use super::Quality;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -62,8 +62,8 @@ impl Preset {
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
             Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
             Preset::Full => full,
-            // 4×4 samples per pixel, rays in f64: strahl's best, and the reference errors are
-            // measured against. f64 removes the f32 rounding of intersections (docs/precision.md).
+            // 4×4 samples per pixel, hits re-solved in f64: strahl's best, and the reference
+            // errors are measured against (docs/precision.md).
             Preset::Reference => {
                 PresetSettings { aa: 4, quality: Quality { precision: Precision::F64, ..full.quality }, ..full }
             }

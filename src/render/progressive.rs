@@ -73,7 +73,7 @@ impl Accumulator {
 mod tests {
     use super::*;
     use crate::camera::Camera;
-    use crate::render::precise::Precision;
+    use crate::render::precision::Precision;
     use crate::render::{render, Quality, RenderSettings};
     use crate::scene::build::{AccelKind, Scene};
     use crate::scene::fixtures::seed_scene as seed_like;
@@ -84,7 +84,6 @@ mod tests {
     fn progressive_aa_equals_full_render() {
         let desc = seed_like();
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
-        scene.prepare_precise(&desc);
         let camera = Camera::from_desc(&desc.camera);
         for (aa, precision) in [1, 2, 3].into_iter().flat_map(|aa| Precision::ALL.map(|p| (aa, p))) {
             let quality = Quality { precision, ..Quality::default() };

@@ -2,14 +2,14 @@
 //!
 //! `Tracer::shade_surface` lights single hits with it and `render::packet` lights whole rows of a
 //! packet with it, so both compute the same IEEE operations in the same order and give the same
-//! bits (as the intersection kernels of `geometry::lanes` do).
+//! bits (as the shapes' `geometry::Shape::hit` does).
 //!
 //! `I = ambient·C·ambient_light·opacity + Σ_lights L·(diffuse·C·(N·L)^brilliance·opacity
 //!      + phong·(R·L)^phong_size + specular·(N·H)^(1/roughness))`
 
 use glam::Vec3;
 
-use crate::geometry::lanes::{Lane, V3};
+use crate::lanes::{Lane, V3};
 use crate::scene::material::Finish;
 
 /// Light arriving at a hit from one light source.

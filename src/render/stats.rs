@@ -3,8 +3,15 @@
 
 use std::ops::AddAssign;
 
-use crate::render::trace::RayKind;
 use crate::scene::build::ShapeKind;
+
+/// The kind of ray being traced, for statistics.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RayKind {
+    Primary,
+    Reflected,
+    Refracted,
+}
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct RenderStats {

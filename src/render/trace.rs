@@ -8,10 +8,12 @@
 
 use glam::Vec3;
 
-use crate::geometry::lanes::V3;
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
+use crate::lanes::V3;
 use crate::render::intersect::Hit;
+use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
+pub use crate::render::stats::RayKind;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::build::Scene;
@@ -32,14 +34,6 @@ pub struct Tracer<'a> {
     pub stats: RenderStats,
 }
 
-/// The kind of ray being traced, for statistics.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum RayKind {
-    Primary,
-    Reflected,
-    Refracted,
-}
-
 impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
         Tracer { scene, quality, stats: RenderStats::default() }
@@ -48,6 +42,12 @@ impl<'a> Tracer<'a> {
     #[inline]
     pub fn pattern_quality(&self) -> PatternQuality {
         PatternQuality { max_octaves: self.quality.max_octaves }
+    }
+
+    /// Whether nearest hits are re-solved in f64 (`Precision::F64`).
+    #[inline]
+    pub fn refines(&self) -> bool {
+        self.quality.precision == Precision::F64
     }
 
     fn max_level(&self) -> u32 {
@@ -59,7 +59,10 @@ impl<'a> Tracer<'a> {
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
         self.stats.count_ray(kind, level);
         match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
-            Some(hit) => self.shade(ray, &hit, level, weight),
+            Some(hit) => {
+                let hit = if self.refines() { self.scene.refine(ray, hit) } else { hit };
+                self.shade(ray, &hit, level, weight)
+            }
             None => self.scene.background.rgb,
         }
     }

@@ -6,12 +6,11 @@
 //! the same precision as one at the world origin, and a scene scaled by 1e-4 or 1e5 becomes the
 //! same f32 numbers as the original: the same image, not merely a similar one.
 
-use std::sync::OnceLock;
-
 use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 
 use crate::accel::aabb::Aabb;
 use crate::accel::Accel;
+pub use crate::accel::AccelKind;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::plane::Plane;
 use crate::geometry::polygon::Polygon;
@@ -19,7 +18,6 @@ use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 use crate::scene::material::Material;
-use crate::scene::precise::PreciseScene;
 use crate::shading::pattern::Rgbft;
 
 /// The kinds of shape, in the order the statistics report them.
@@ -105,28 +103,6 @@ pub struct Scene {
     pub gamma: f32,
     pub features: Features,
     pub accel: Accel,
-    /// The f64 geometry for `Precision::F64` renders, built on first request
-    /// (`prepare_precise`), so f32 renders pay nothing for it.
-    precise: OnceLock<PreciseScene>,
-}
-
-/// Which accelerator to build over the bounded primitives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum AccelKind {
-    #[default]
-    Bvh,
-    Grid,
-    None,
-}
-
-impl AccelKind {
-    pub fn name(self) -> &'static str {
-        match self {
-            AccelKind::Bvh => "bvh",
-            AccelKind::Grid => "grid",
-            AccelKind::None => "none",
-        }
-    }
 }
 
 /// Where render space sits in world space: `render = (world − origin) / unit`.
@@ -183,9 +159,8 @@ impl RenderFrame {
     }
 }
 
-/// One shape of the description placed in render space, in f64. `Scene::add_shape` casts it
-/// to the f32 arrays and `scene::precise` keeps it in f64, so both paths classify and place
-/// every shape the same way, and their arrays line up index for index.
+/// One shape of the description placed in render space, in f64: everything subtracted and
+/// composed before `Scene::add_shape` rounds it to the f32 arrays.
 pub(crate) enum RenderShape {
     Sphere {
         center: DVec3,
@@ -309,7 +284,6 @@ impl Scene {
             gamma: desc.output_gamma().unwrap_or(1.0) as f32,
             features: Features::default(),
             accel: Accel::None { count: 0 },
-            precise: OnceLock::new(),
         };
         for object in &desc.objects {
             let material = scene.materials.len() as u32;
@@ -323,18 +297,6 @@ impl Scene {
         }
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
-    }
-
-    /// Builds the f64 geometry from `desc` (the description this scene was built from) unless
-    /// it is there already. Front ends call it before rendering with `Precision::F64`; the
-    /// window calls it at load, since F2 may switch to the `reference` preset at any time.
-    pub fn prepare_precise(&self, desc: &SceneDesc) -> &PreciseScene {
-        self.precise.get_or_init(|| PreciseScene::build(desc, self))
-    }
-
-    /// The f64 geometry, if `prepare_precise` built it.
-    pub fn precise(&self) -> Option<&PreciseScene> {
-        self.precise.get()
     }
 
     fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {

@@ -2,7 +2,7 @@
 
 use glam::{DMat4, Vec3};
 
-use crate::geometry::lanes::Lane;
+use crate::lanes::Lane;
 use crate::scene::desc::{FinishDesc, InteriorDesc, TextureDesc};
 use crate::shading::normal::NormalF32;
 use crate::shading::pattern::Rgbft;

@@ -19,7 +19,7 @@
 
 use glam::{Mat3A, Vec3, Vec3A};
 
-use crate::geometry::lanes::{Lane, V3};
+use crate::lanes::{Lane, V3};
 
 /// Turbulence of a pattern, render-ready.
 #[derive(Clone, Copy, Debug, PartialEq)]

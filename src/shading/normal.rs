@@ -12,7 +12,7 @@ use glam::{DMat4, Mat3A, Vec3};
 
 use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32};
 use super::pigment::{pattern_from_render, PatternQuality};
-use crate::geometry::lanes::{Lane, V3};
+use crate::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -128,7 +128,7 @@ mod tests {
 
     #[test]
     fn eight_lanes_match_one_lane_bit_for_bit() {
-        use crate::geometry::lanes::F8;
+        use crate::lanes::F8;
         let q = PatternQuality::default();
         for nrm in [bumps(0.4, DVec3::splat(0.2)), bumps(3.0, DVec3::new(1.0, 0.1, 5.0))] {
             for k in 0..500 {

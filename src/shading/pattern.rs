@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use crate::geometry::lanes::{Lane, V3};
+use crate::lanes::{Lane, V3};
 
 /// A colour with POV-Ray's filter and transmit channels, in linear light.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]

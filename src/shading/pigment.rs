@@ -6,7 +6,7 @@ use glam::{Affine3A, DMat4, Vec3};
 
 use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32};
 use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
-use crate::geometry::lanes::{Lane, V3};
+use crate::lanes::{Lane, V3};
 use crate::scene::desc::{PigmentDesc, PigmentPattern};
 
 /// Per-frame knobs that trade pattern fidelity for speed.
@@ -186,7 +186,7 @@ mod tests {
 
     #[test]
     fn eight_lanes_match_one_lane_bit_for_bit() {
-        use crate::geometry::lanes::F8;
+        use crate::lanes::F8;
         use crate::scene::desc::Turbulence;
         let map = vec![
             ColorMapEntry { value: 0.1, color: Color::WHITE },

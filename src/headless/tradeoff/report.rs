@@ -3,7 +3,7 @@
 use std::fmt::Write as _;
 
 use super::{Measure, Setting};
-use crate::render::precise::Precision;
+use crate::render::precision::Precision;
 
 /// One measured setting, with its effective knob values.
 #[derive(Clone, Debug, PartialEq)]

@@ -140,7 +140,7 @@ fn dnoise_from_grad3(p: Vec3) -> Vec3 {
 
 #[test]
 fn eight_lanes_match_one_lane_and_the_gradient_table_bit_for_bit() {
-    use crate::geometry::lanes::F8;
+    use crate::lanes::F8;
     let pts: Vec<Vec3> = points(8000, 600.0).collect();
     let bits = |v: Vec3| v.to_array().map(f32::to_bits);
     for chunk in pts.chunks_exact(8) {

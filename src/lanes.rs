@@ -1,11 +1,18 @@
-//! One set of intersection formulas for single rays (`f32`) and 8-ray packets (`F8`).
+//! The arithmetic every ray test, pattern and shading formula is written in: `Lane`, a number
+//! that is one `f32`, eight `f32`s (`F8`) or one `f64`, and `V3`, a vector of lanes.
 //!
-//! The kernels are written once, generic over `Lane`, so the packet path computes exactly the
+//! Formulas are written once, generic over `Lane`, so the packet path computes exactly the
 //! same IEEE operations in the same order as the single-ray path: packets and single rays give
-//! bit-identical hits by construction, not by tolerance. `F8` is eight `f32`s operated on with
+//! bit-identical results by construction, not by tolerance. `F8` is eight `f32`s operated on with
 //! plain loops; inside a function compiled with AVX2 enabled (see `render::packet`) LLVM turns
 //! each loop into one 256-bit instruction, and elsewhere into two SSE instructions. Neither
 //! contracts `a*b + c` into FMA, so both give the same bits on every x86-64 CPU.
+//!
+//! `f64` is the same formula in double precision: `--precision f64` re-solves a ray's nearest
+//! hit with it, and a shape whose formula needs more than f32 holds (a quartic) may compute in
+//! it internally. Constants and shape data enter as `f32` (`splat`), which widens exactly.
+//!
+//! This module is at the bottom of the house: it depends on nothing but glam.
 
 // Lane loops index by `i` on purpose: a plain `for i in 0..8` over fixed arrays is the shape
 // LLVM turns into one vector instruction. `V3::add`/`sub`/`mul` are lane-generic helpers, not the
@@ -30,6 +37,7 @@ pub trait Lane:
     fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     fn or(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     fn not(a: Self::Mask) -> Self::Mask;
+    fn xor(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     fn select(m: Self::Mask, a: Self, b: Self) -> Self;
     /// 1 for `self >= 0` (including -0), else -1: the sign the stable quadratic needs, never 0.
     fn sign_or_one(self) -> Self;
@@ -37,9 +45,9 @@ pub trait Lane:
     fn recip(self) -> Self {
         Self::splat(1.0) / self
     }
-    /// Lanes in one value: 1 for `f32`, 8 for `F8`.
+    /// Lanes in one value: 1 for `f32` and `f64`, 8 for `F8`.
     const WIDTH: usize;
-    /// Lane `i`.
+    /// Lane `i` (rounded to f32 for `f64`).
     fn get(self, i: usize) -> f32;
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
     /// Whether lane `i` of a mask is set.
@@ -110,6 +118,10 @@ impl Lane for f32 {
         !a
     }
     #[inline(always)]
+    fn xor(a: bool, b: bool) -> bool {
+        a ^ b
+    }
+    #[inline(always)]
     fn select(m: bool, a: f32, b: f32) -> f32 {
         if m {
             a
@@ -157,6 +169,119 @@ impl Lane for f32 {
     #[inline(always)]
     fn times_unit(self, bits: &[u32; 8], k: u32) -> f32 {
         f32::from_bits(times_unit_bits(self.to_bits(), bits[0], k))
+    }
+}
+
+/// One lane in double precision: the `f32` rules (minps/maxps on NaN, the sign never 0) in f64.
+impl Lane for f64 {
+    type Mask = bool;
+    #[inline(always)]
+    fn splat(v: f32) -> f64 {
+        v as f64
+    }
+    #[inline(always)]
+    fn sqrt(self) -> f64 {
+        f64::sqrt(self)
+    }
+    #[inline(always)]
+    fn min(self, o: f64) -> f64 {
+        if self < o {
+            self
+        } else {
+            o
+        }
+    }
+    #[inline(always)]
+    fn max(self, o: f64) -> f64 {
+        if self > o {
+            self
+        } else {
+            o
+        }
+    }
+    #[inline(always)]
+    fn lt(self, o: f64) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn le(self, o: f64) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn and(a: bool, b: bool) -> bool {
+        a & b
+    }
+    #[inline(always)]
+    fn or(a: bool, b: bool) -> bool {
+        a | b
+    }
+    #[inline(always)]
+    fn not(a: bool) -> bool {
+        !a
+    }
+    #[inline(always)]
+    fn xor(a: bool, b: bool) -> bool {
+        a ^ b
+    }
+    #[inline(always)]
+    fn select(m: bool, a: f64, b: f64) -> f64 {
+        if m {
+            a
+        } else {
+            b
+        }
+    }
+    #[inline(always)]
+    fn abs(self) -> f64 {
+        f64::abs(self)
+    }
+    #[inline(always)]
+    fn sign_or_one(self) -> f64 {
+        if self >= 0.0 {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+    const WIDTH: usize = 1;
+    #[inline(always)]
+    fn get(self, _: usize) -> f32 {
+        self as f32
+    }
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f32) -> f64 {
+        f(0) as f64
+    }
+    #[inline(always)]
+    fn mask_lane(m: bool, _: usize) -> bool {
+        m
+    }
+    #[inline(always)]
+    fn mask_from_fn(mut f: impl FnMut(usize) -> bool) -> bool {
+        f(0)
+    }
+    #[inline(always)]
+    fn floor(self) -> f64 {
+        f64::floor(self)
+    }
+    #[inline(always)]
+    fn map(self, f: impl Fn(f32) -> f32) -> f64 {
+        f(self as f32) as f64
+    }
+    #[inline(always)]
+    fn times_unit(self, bits: &[u32; 8], k: u32) -> f64 {
+        let g = if (bits[0] >> k) & 1 == 0 {
+            0.0
+        } else if (bits[0] >> (16 + k)) & 1 == 0 {
+            1.0
+        } else {
+            -1.0
+        };
+        if g == 0.0 {
+            0.0f64.copysign(self)
+        } else {
+            self * g
+        }
     }
 }
 
@@ -277,6 +402,14 @@ impl Lane for F8 {
     #[inline(always)]
     fn not(a: M8) -> M8 {
         M8(a.0.map(|v| !v))
+    }
+    #[inline(always)]
+    fn xor(a: M8, b: M8) -> M8 {
+        let mut r = [0; 8];
+        for i in 0..8 {
+            r[i] = a.0[i] ^ b.0[i];
+        }
+        M8(r)
     }
     #[inline(always)]
     fn select(m: M8, a: F8, b: F8) -> F8 {
@@ -408,6 +541,15 @@ impl<L: Lane> V3<L> {
         let ok = L::and(rcp.lt(L::splat(f32::INFINITY)), L::splat(0.0).lt(rcp));
         V3::select(ok, self.scale(rcp), fallback)
     }
+    /// Component `axis` (0 = x, 1 = y, 2 = z).
+    #[inline(always)]
+    pub fn axis(self, axis: usize) -> L {
+        match axis {
+            0 => self.x,
+            1 => self.y,
+            _ => self.z,
+        }
+    }
     /// Lane `i` as a `Vec3`.
     #[inline(always)]
     pub fn lane(self, i: usize) -> Vec3 {
@@ -469,152 +611,20 @@ impl V3<f32> {
     }
 }
 
-/// "No hit" distance.
-pub const MISS: f32 = f32::INFINITY;
-
-/// Slab test: (entry, exit) distances of the ray against an axis-aligned box.
-#[inline(always)]
-pub fn slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
-    let t0 = min.sub(o).mul(inv);
-    let t1 = max.sub(o).mul(inv);
-    let near = t0.min(t1);
-    let far = t0.max(t1);
-    (near.x.max(near.y).max(near.z), far.x.min(far.y).min(far.z))
-}
-
-/// Slab test for bounding volumes (BVH nodes, the grid): conservative where `slabs` is not.
-///
-/// A ray lying exactly in a face plane gives `0·∞ = NaN` on that axis; here that axis then
-/// bounds nothing (−∞, +∞), so the node is entered whenever anything inside it could be hit.
-/// (Found by the property test comparing the BVH with brute force on axis-aligned rays.)
-#[inline(always)]
-pub fn node_slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
-    let t0 = min.sub(o).mul(inv);
-    let t1 = max.sub(o).mul(inv);
-    let axis = |a: L, b: L| {
-        let nan = L::or(L::not(a.le(a)), L::not(b.le(b)));
-        (L::select(nan, L::splat(f32::NEG_INFINITY), a.min(b)), L::select(nan, L::splat(f32::INFINITY), a.max(b)))
-    };
-    let (nx, fx) = axis(t0.x, t1.x);
-    let (ny, fy) = axis(t0.y, t1.y);
-    let (nz, fz) = axis(t0.z, t1.z);
-    (nx.max(ny).max(nz), fx.min(fy).min(fz))
-}
-
-/// Picks the near root if it lies in `(t_min, t_max)`, else the far one, else `MISS`.
-#[inline(always)]
-pub fn pick_root<L: Lane>(valid: L::Mask, near: L, far: L, t_min: L, t_max: L) -> L {
-    let near_ok = L::and(valid, L::and(t_min.lt(near), near.lt(t_max)));
-    let far_ok = L::and(valid, L::and(t_min.lt(far), far.lt(t_max)));
-    L::select(near_ok, near, L::select(far_ok, far, L::splat(MISS)))
-}
-
-/// Ray/sphere in the stable form: the discriminant as `r² - |oc - (oc·d)d|²`, the roots as
-/// `c/q` and `q` with `q = -b - sign(b)·√disc`, so neither cancels catastrophically.
-#[inline(always)]
-pub fn sphere<L: Lane>(center: V3<L>, radius: L, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
-    let oc = o.sub(center);
-    let b = oc.dot(d);
-    let perp = oc.sub(d.scale(b));
-    let r2 = radius * radius;
-    let disc = r2 - perp.dot(perp);
-    let valid = L::le(L::splat(0.0), disc);
-    let c = oc.dot(oc) - r2;
-    let q = -b - b.sign_or_one() * disc.max(L::splat(0.0)).sqrt();
-    // q = 0 only when b = 0 and disc = 0: a tangent ray starting at the tangent point.
-    let q_zero = L::and(L::le(q, L::splat(0.0)), L::le(L::splat(0.0), q));
-    let safe_q = L::select(q_zero, L::splat(1.0), q);
-    let t0 = L::select(q_zero, L::splat(0.0), c / safe_q);
-    let t1 = L::select(q_zero, L::splat(0.0), q);
-    pick_root(valid, t0.min(t1), t0.max(t1), t_min, t_max)
-}
-
-/// Ray/plane: `n·p = dist`. Parallel rays (n·d = 0) never hit.
-#[inline(always)]
-pub fn plane<L: Lane>(n: V3<L>, dist: L, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
-    let denom = n.dot(d);
-    let t = (dist - n.dot(o)) / denom;
-    let parallel = L::and(L::le(denom, L::splat(0.0)), L::le(L::splat(0.0), denom));
-    let ok = L::and(L::not(parallel), L::and(t_min.lt(t), t.lt(t_max)));
-    L::select(ok, t, L::splat(MISS))
-}
-
-/// Ray/box: the slab test; the far side counts when the origin is inside.
-#[inline(always)]
-pub fn aabb<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>, t_min: L, t_max: L) -> L {
-    let (near, far) = slabs(min, max, o, inv);
-    pick_root(near.le(far), near, far, t_min, t_max)
-}
-
-/// Möller–Trumbore ray/triangle.
-#[inline(always)]
-pub fn triangle<L: Lane>(v0: V3<L>, e1: V3<L>, e2: V3<L>, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
-    let p = d.cross(e2);
-    let det = e1.dot(p);
-    let inv = L::splat(1.0) / det;
-    let s = o.sub(v0);
-    let u = s.dot(p) * inv;
-    let q = s.cross(e1);
-    let v = d.dot(q) * inv;
-    let t = e2.dot(q) * inv;
-    let zero = L::splat(0.0);
-    let one = L::splat(1.0);
-    let det_zero = L::and(L::le(det, zero), L::le(zero, det));
-    let inside = L::and(L::and(L::le(zero, u), L::le(u, one)), L::and(L::le(zero, v), L::le(u + v, one)));
-    let ok = L::and(L::and(L::not(det_zero), inside), L::and(t_min.lt(t), t.lt(t_max)));
-    L::select(ok, t, L::splat(MISS))
+impl V3<f64> {
+    #[inline(always)]
+    pub fn from_dvec3(v: glam::DVec3) -> V3<f64> {
+        V3 { x: v.x, y: v.y, z: v.z }
+    }
+    #[inline(always)]
+    pub fn dvec3(self) -> glam::DVec3 {
+        glam::DVec3::new(self.x, self.y, self.z)
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Deterministic pseudo-random numbers for the property tests (a hash, no shared state).
-    fn rnd(i: u32) -> f32 {
-        let mut x = i.wrapping_mul(0x9E37_79B9) ^ 0x85EB_CA6B;
-        x ^= x >> 16;
-        x = x.wrapping_mul(0x7FEB_352D);
-        x ^= x >> 15;
-        (x >> 8) as f32 / (1u32 << 24) as f32
-    }
-
-    fn lanes(base: u32, f: impl Fn(u32) -> f32) -> F8 {
-        F8(std::array::from_fn(|i| f(base + i as u32)))
-    }
-
-    #[test]
-    fn packet_and_single_ray_kernels_agree_bit_for_bit() {
-        for round in 0..500u32 {
-            let b = round * 64;
-            let o = V3 {
-                x: lanes(b, |i| rnd(i) * 4.0 - 2.0),
-                y: lanes(b + 8, |i| rnd(i) * 4.0 - 2.0),
-                z: lanes(b + 16, |i| -5.0 + rnd(i)),
-            };
-            let d = V3 {
-                x: lanes(b + 24, |i| rnd(i) - 0.5),
-                y: lanes(b + 32, |i| rnd(i) - 0.5),
-                z: lanes(b + 40, |_| 1.0),
-            };
-            let c = Vec3::new(rnd(b + 50) - 0.5, rnd(b + 51) - 0.5, 2.0);
-            let r = 0.5 + rnd(b + 52);
-            let wide = sphere(V3::splat(c), F8::splat(r), o, d, F8::splat(0.0), F8::splat(MISS));
-            let inv = d.recip();
-            let wide_box = aabb(V3::splat(c - 0.7), V3::splat(c + 0.7), o, inv, F8::splat(0.0), F8::splat(MISS));
-            let (e1, e2) = (Vec3::new(1.0, 0.2, 0.3), Vec3::new(-0.1, 1.2, 0.1));
-            let wide_tri = triangle(V3::splat(c), V3::splat(e1), V3::splat(e2), o, d, F8::splat(0.0), F8::splat(MISS));
-            for i in 0..8 {
-                let oi = V3 { x: o.x.0[i], y: o.y.0[i], z: o.z.0[i] };
-                let di = V3 { x: d.x.0[i], y: d.y.0[i], z: d.z.0[i] };
-                let single = sphere(V3::from_vec3(c), r, oi, di, 0.0, MISS);
-                assert_eq!(single.to_bits(), wide.0[i].to_bits());
-                let single_box = aabb(V3::from_vec3(c - 0.7), V3::from_vec3(c + 0.7), oi, di.recip(), 0.0, MISS);
-                assert_eq!(single_box.to_bits(), wide_box.0[i].to_bits());
-                let single_tri = triangle(V3::from_vec3(c), V3::from_vec3(e1), V3::from_vec3(e2), oi, di, 0.0, MISS);
-                assert_eq!(single_tri.to_bits(), wide_tri.0[i].to_bits());
-            }
-        }
-    }
 
     #[test]
     fn select_and_masks() {
@@ -624,5 +634,21 @@ mod tests {
         let s = F8::select(m, a, b);
         assert_eq!(s.0, [1.0, 2.0, 1.0, 2.0, 1.0, 2.0, 1.0, 2.0]);
         assert!(m.any() && !M8::default().any());
+        let x = F8::xor(m, M8::from_fn(|i| i < 4));
+        assert_eq!(x.0.map(|v| v != 0), [false, true, false, true, true, false, true, false]);
+    }
+
+    #[test]
+    fn times_unit_is_the_product_in_every_width() {
+        // bits: lane gets g = 1 (k = 0), g = -1 (k = 1), g = 0 (k = 2).
+        let bits = [(1 << 0) | (1 << 1) | (1 << 17); 8];
+        for v in [2.5f32, -0.0, 0.0, -3.0] {
+            for (k, g) in [(0u32, 1.0f32), (1, -1.0), (2, 0.0)] {
+                let want = if g == 0.0 { 0.0f32.copysign(v) } else { v * g };
+                assert_eq!(v.times_unit(&bits, k).to_bits(), want.to_bits());
+                assert_eq!(F8::splat(v).times_unit(&bits, k).0[3].to_bits(), want.to_bits());
+                assert_eq!((v as f64).times_unit(&bits, k).to_bits(), (want as f64).to_bits());
+            }
+        }
     }
 }

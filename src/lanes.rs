@@ -50,6 +50,10 @@ pub trait Lane:
     /// Lane `i` (rounded to f32 for `f64`).
     fn get(self, i: usize) -> f32;
     fn from_fn(f: impl FnMut(usize) -> f32) -> Self;
+    /// Lane `i` widened to f64 (exact), for formulas that solve each lane in f64.
+    fn get_f64(self, i: usize) -> f64;
+    /// Lanes from f64 values, rounded once to the lane's precision.
+    fn from_fn_f64(f: impl FnMut(usize) -> f64) -> Self;
     /// Whether lane `i` of a mask is set.
     fn mask_lane(m: Self::Mask, i: usize) -> bool;
     fn mask_from_fn(f: impl FnMut(usize) -> bool) -> Self::Mask;
@@ -149,6 +153,14 @@ impl Lane for f32 {
     #[inline(always)]
     fn from_fn(mut f: impl FnMut(usize) -> f32) -> f32 {
         f(0)
+    }
+    #[inline(always)]
+    fn get_f64(self, _: usize) -> f64 {
+        self as f64
+    }
+    #[inline(always)]
+    fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> f32 {
+        f(0) as f32
     }
     #[inline(always)]
     fn mask_lane(m: bool, _: usize) -> bool {
@@ -251,6 +263,14 @@ impl Lane for f64 {
     #[inline(always)]
     fn from_fn(mut f: impl FnMut(usize) -> f32) -> f64 {
         f(0) as f64
+    }
+    #[inline(always)]
+    fn get_f64(self, _: usize) -> f64 {
+        self
+    }
+    #[inline(always)]
+    fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> f64 {
+        f(0)
     }
     #[inline(always)]
     fn mask_lane(m: bool, _: usize) -> bool {
@@ -435,6 +455,14 @@ impl Lane for F8 {
     #[inline(always)]
     fn from_fn(f: impl FnMut(usize) -> f32) -> F8 {
         F8(std::array::from_fn(f))
+    }
+    #[inline(always)]
+    fn get_f64(self, i: usize) -> f64 {
+        self.0[i] as f64
+    }
+    #[inline(always)]
+    fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> F8 {
+        F8(std::array::from_fn(|i| f(i) as f32))
     }
     #[inline(always)]
     fn mask_lane(m: M8, i: usize) -> bool {

@@ -6,11 +6,15 @@
 //! geometric normal, computed afterwards, only for the winning hit. The lane arithmetic is
 //! `crate::lanes`; what every test shares (rays, `MISS`, root picking, offsets) is `ray`.
 
+pub mod cone;
 pub mod cuboid;
+pub mod disc;
 pub mod plane;
 pub mod polygon;
 pub mod ray;
+pub mod roots;
 pub mod sphere;
+pub mod torus;
 pub mod triangle;
 
 use glam::Vec3;

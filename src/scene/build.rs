@@ -394,10 +394,13 @@ impl Scene {
                 push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
             }
             RenderShape::Ellipsoid { render_from_object, center, radius } => {
-                let xf = affine_f32(&render_from_object)
-                    * Affine3A::from_translation(center.as_vec3())
-                    * Affine3A::from_scale(Vec3::splat(radius as f32));
-                self.ellipsoids.push(Ellipsoid::new(xf));
+                // Composed in f64 and cast once: the sphere's object-space centre is as written
+                // (1e6 for a sphere written in place and scaled about itself), and in f32 it
+                // cancelled against the render-space translation with an ulp of 0.06.
+                let xf = render_from_object
+                    * DAffine3::from_translation(center)
+                    * DAffine3::from_scale(DVec3::splat(radius));
+                self.ellipsoids.push(Ellipsoid::new(affine_f32(&xf)));
                 push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
             }
             RenderShape::Box { min, max, frame } => {

@@ -208,7 +208,15 @@ impl RenderFrame {
                     let (a, b) = (point(lo), point(hi));
                     RenderShape::Box { min: a.min(b), max: a.max(b), frame: None }
                 } else {
-                    RenderShape::Box { min: lo, max: hi, frame: Some(render_from_object()) }
+                    // Object space re-centred on `c` before anything becomes f32: the corners
+                    // of a box written far from its object origin would be cast as written.
+                    let c = box_object_origin(lo, hi);
+                    let frame = if c == DVec3::ZERO {
+                        render_from_object()
+                    } else {
+                        render_from_object() * DAffine3::from_translation(c)
+                    };
+                    RenderShape::Box { min: lo - c, max: hi - c, frame: Some(frame) }
                 }
             }
             ShapeDesc::Triangle { a, b, c } => RenderShape::Triangle([point(*a), point(*b), point(*c)]),
@@ -224,6 +232,45 @@ impl RenderFrame {
             }
         }
     }
+}
+
+/// The snap grid of `box_object_origin`, in a rotated box's largest extents: the grid is the
+/// smallest power of two at least this many extents.
+///
+/// Measured on the in-place twins of `tests/far.rs` (boxes 1.2 to 2.2 units across, offsets
+/// 1e5 = 2^5·3125, 1e6 = 2^6·15625, 1e7 = 2^7·78125): with 64 extents (grids of 128 and 256)
+/// the wood and refraction twins at 1e5 and 1e6 differed from the original on 1 to 33 pixels,
+/// since those offsets are not multiples of the grid; with 16, the refraction twin at 1e5 on 1;
+/// with 4 (grids of 8 and 16) all are identical. Fewer extents also leave the corners nearer
+/// zero, so more precise; the cost is that fewer boxes keep their old numbers (those within 2
+/// to 4 extents of their object origin do, the seed scene's among them).
+const BOX_SNAP_EXTENTS: f64 = 4.0;
+
+/// The point a rotated box's object space is re-centred on: its centre snapped to a multiple
+/// of a power of two at least `BOX_SNAP_EXTENTS` × its largest extent (zero for a degenerate
+/// or unbounded box).
+///
+/// A rotated box keeps its corners in object space, which the f32 slab test works in, so a box
+/// written in place 1e6 from the origin (`box { <1e6, 0, 0>, .. } translate -P rotate ..
+/// translate P`) kept corners at 1e6, an f32 ulp of 0.06: bent boxes. Snapping instead of
+/// using the centre itself keeps three things exact: a box near its object origin (the seed
+/// scene's) snaps to zero and keeps exactly its old numbers; the corners minus a multiple of a
+/// power of two no finer than their own spacing subtract exactly in f64; and a box moved by a
+/// multiple of the grid moves its origin by exactly as much, so it becomes the same f32
+/// numbers. What is left is at most half a grid cell plus half the box: the corners stay
+/// within 4.5 extents of zero, with f32 precision relative to the box's size.
+fn box_object_origin(lo: DVec3, hi: DVec3) -> DVec3 {
+    let extent = (hi - lo).max_element();
+    if !(extent > 0.0 && lo.is_finite() && hi.is_finite()) {
+        return DVec3::ZERO;
+    }
+    let mut grid = (BOX_SNAP_EXTENTS * extent).log2().ceil().exp2();
+    if grid < BOX_SNAP_EXTENTS * extent {
+        grid *= 2.0;
+    }
+    // floor(x + 0.5) rather than round(), whose ties go away from zero: moving a box by a
+    // whole number of cells moves this by exactly that many, on either side of zero.
+    ((lo + hi) * 0.5 / grid + 0.5).floor() * grid
 }
 
 /// An f64 affine map as f32.
@@ -309,10 +356,13 @@ impl Scene {
                 push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
             }
             RenderShape::Ellipsoid { render_from_object, center, radius } => {
-                let xf = affine_f32(&render_from_object)
-                    * Affine3A::from_translation(center.as_vec3())
-                    * Affine3A::from_scale(Vec3::splat(radius as f32));
-                self.ellipsoids.push(Ellipsoid::new(xf));
+                // Composed in f64 and cast once: the sphere's object-space centre is as written
+                // (1e6 for a sphere written in place and scaled about itself), and in f32 it
+                // cancelled against the render-space translation with an ulp of 0.06.
+                let xf = render_from_object
+                    * DAffine3::from_translation(center)
+                    * DAffine3::from_scale(DVec3::splat(radius));
+                self.ellipsoids.push(Ellipsoid::new(affine_f32(&xf)));
                 push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
             }
             RenderShape::Box { min, max, frame } => {

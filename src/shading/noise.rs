@@ -21,6 +21,11 @@ use glam::{Mat3A, Vec3, Vec3A};
 
 use crate::lanes::{Lane, V3};
 
+/// The noise lattice repeats every this many units on each axis: `cell` and `dnoise_lanes`
+/// wrap the lattice coordinates with `& 255`. Patterns made of noise repeat with it, which
+/// lets `pigment::pattern_from_render` drop whole periods from a far pattern origin.
+pub const LATTICE_PERIOD: f64 = 256.0;
+
 /// Turbulence of a pattern, render-ready.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TurbulenceF32 {

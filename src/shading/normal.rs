@@ -10,8 +10,8 @@
 
 use glam::{DMat4, Mat3A, Vec3};
 
-use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32};
-use super::pigment::{pattern_from_render, PatternQuality};
+use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
+use super::pigment::{pattern_from_render, PatternQuality, Period};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern};
 
@@ -39,7 +39,11 @@ const BUMPS_GAIN: f64 = 0.1009 / 0.1084;
 
 impl NormalF32 {
     pub fn from_desc(d: &NormalDesc, world_from_render: &DMat4) -> NormalF32 {
-        let pattern_from_render = pattern_from_render(&d.transform.inverse, world_from_render);
+        let periods = match d.pattern {
+            NormalPattern::Bumps(_) => [Period::Every(LATTICE_PERIOD); 3],
+        };
+        let pattern_from_render =
+            pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let linear = pattern_from_render.matrix3;
         let pattern = match d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
@@ -124,6 +128,15 @@ mod tests {
         let (a, b) = (slope_std(1.0), slope_std(0.2));
         assert!((a - b).abs() / a < 0.1, "{a} vs {b}");
         assert!((a - 0.1028).abs() / 0.1028 < 0.15, "{a}");
+    }
+
+    #[test]
+    fn far_bumps_reduce_by_the_noise_lattice() {
+        // Bumps evaluated 256·3907 units from their origin (the camera there, the texture not
+        // moved) become the numbers of the camera 3 units from it.
+        let d = NormalDesc { pattern: NormalPattern::Bumps(0.4), turbulence: None, transform: Transform::default() };
+        let at = |x: f64| NormalF32::from_desc(&d, &DMat4::from_translation(DVec3::new(x, 1.0, -4.0)));
+        assert_eq!(at(256.0 * 3907.0 + 3.0).pattern_from_render, at(3.0).pattern_from_render);
     }
 
     #[test]

@@ -4,10 +4,10 @@
 
 use glam::{Affine3A, DMat4, Vec3};
 
-use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32};
+use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
 use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{PigmentDesc, PigmentPattern};
+use crate::scene::desc::{PigmentDesc, PigmentPattern, Turbulence};
 
 /// Per-frame knobs that trade pattern fidelity for speed.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -68,10 +68,109 @@ pub struct Pigment {
     pub slack_per_render: f32,
 }
 
+/// How a pattern (turbulence included) repeats along one axis of its own space.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Period {
+    /// It does not depend on this coordinate at all (wood along its axis).
+    Any,
+    /// Moving the point by this many units leaves it unchanged; always a power of two here
+    /// (checker 2, noise `LATTICE_PERIOD`), so of two periods the longer is a multiple of both.
+    Every(f64),
+    /// It does not repeat (wood's rings across its axis, turbulence with a fractional
+    /// `lambda`).
+    Never,
+}
+
+impl Period {
+    /// The period of a pattern made of two parts with these periods.
+    fn with(self, other: Period) -> Period {
+        match (self, other) {
+            (Period::Never, _) | (_, Period::Never) => Period::Never,
+            (Period::Any, p) | (p, Period::Any) => p,
+            (Period::Every(a), Period::Every(b)) => Period::Every(a.max(b)),
+        }
+    }
+}
+
+/// The period turbulence gives a pattern: octave i samples the noise at λ^i·p, which repeats
+/// every `LATTICE_PERIOD` when λ is an integer (POV-Ray's default is 2); any other λ makes it
+/// aperiodic. No turbulence (or no octaves) imposes nothing.
+fn turbulence_period(t: Option<&Turbulence>) -> Period {
+    match t {
+        None => Period::Any,
+        Some(t) if t.octaves == 0 => Period::Any,
+        Some(t) if t.lambda.is_finite() && t.lambda.fract() == 0.0 => Period::Every(LATTICE_PERIOD),
+        Some(_) => Period::Never,
+    }
+}
+
+/// How far from the render origin (the camera), in render units (the camera's unit), a
+/// pattern's origin must lie along an axis before `pattern_from_render` reduces that axis.
+///
+/// Reducing moves every pattern point by whole steps, so the points the camera sees get small
+/// coordinates only if they are near the camera. A checker floor seen through a telephoto
+/// lens from 8.3e4 units away, looking at the pattern origin (`tests/extremes.rs`), had its
+/// visible points moved from near 0 to about 2e4, where the checker's tolerance, relative to
+/// the coordinate, shifted edges by a third of a check: 3 995 wrong pixels. Its origin lies
+/// one camera unit away (the unit is the distance to `look_at`), a scene written 1e6 away from
+/// its floor's origin 2e5. Beyond 16 units, the points within a few units of the camera, where
+/// it looks, come nearer the pattern origin (to within half a step plus their distance), and
+/// an origin nearer than that, like the telephoto's, keeps its numbers.
+const FAR_PATTERN_ORIGIN: f64 = 16.0;
+
+/// The shortest lattice step `pattern_from_render` reduces by, in pattern units.
+///
+/// Reducing a checker by its own period 2 moved the seed scene's floor translation from 3 to
+/// −1, the same pattern but other f32 roundings: 14 pixels of the 1280×720 seed render
+/// changed. With steps of at least 32, translations under 16 units keep their numbers (the
+/// seed's, and the reference scenes' at most 10), which costs at most an f32 ulp of 16 units
+/// (2e-6), and an offset that is a multiple of 32 (1e5 = 2^5·3125 and every larger power of
+/// ten) reduces to exactly the numbers of the scene at the origin, so renders the same bytes.
+const MIN_REDUCTION_STEP: f64 = 32.0;
+
+/// The lattice step for a pattern of period `period` (a power of two): the smallest multiple of
+/// it by a power of two that is at least `MIN_REDUCTION_STEP`.
+fn reduction_step(period: f64) -> f64 {
+    let mut step = period;
+    while step < MIN_REDUCTION_STEP {
+        step *= 2.0;
+    }
+    step
+}
+
 /// `pattern_from_world ∘ world_from_render`, composed in f64 then cast: its translation is
 /// where the render origin sits in pattern space, so f32 keeps precision near the camera.
-pub fn pattern_from_render(world_from_pattern_inverse: &DMat4, world_from_render: &DMat4) -> Affine3A {
-    let m = *world_from_pattern_inverse * *world_from_render;
+///
+/// Where the pattern itself lies far from the render origin (a checker floor under a scene
+/// written at x = 1e6, whose texture is not moved with it), that translation is large and its
+/// f32 ulp (0.06 at 1e6) moves every check edge. So along each axis where the pattern has a
+/// period (its own `periods` with `turbulence`'s), the translation t is reduced in f64 by a
+/// whole number of lattice steps L, a multiple of the period (`reduction_step`):
+/// t − floor(t/L + ½)·L. No colour changes, since the pattern repeats, and |t| < L/2 keeps
+/// its old numbers. floor(x + ½) rather than round(), whose ties go away from zero, so that a
+/// scene moved by whole steps reduces to the same number on either side of zero; L is a power
+/// of two, so the reduction is exact. An axis without a period keeps its translation: wood's
+/// rings far from their own axis stay limited by f32 (a known limit; POV-Ray evaluates
+/// patterns in double).
+pub fn pattern_from_render(
+    world_from_pattern_inverse: &DMat4,
+    world_from_render: &DMat4,
+    periods: [Period; 3],
+    turbulence: Option<&Turbulence>,
+) -> Affine3A {
+    let mut m = *world_from_pattern_inverse * *world_from_render;
+    let turbulence = turbulence_period(turbulence);
+    for (axis, period) in periods.into_iter().enumerate() {
+        let t = m.w_axis[axis];
+        // Pattern units per render unit along this axis: the row's absolute sum.
+        let per_render = m.row(axis).truncate().abs().element_sum();
+        if let Period::Every(p) = period.with(turbulence) {
+            if t.abs() > FAR_PATTERN_ORIGIN * per_render {
+                let step = reduction_step(p);
+                m.w_axis[axis] = t - (t / step + 0.5).floor() * step;
+            }
+        }
+    }
     Affine3A::from_mat4(m.as_mat4())
 }
 
@@ -82,7 +181,13 @@ impl Pigment {
             PigmentPattern::Checker(a, b) => PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)]),
             PigmentPattern::Wood(map) => PigmentPattern32::Wood(ColorMap::from_desc(map)),
         };
-        let pattern_from_render = pattern_from_render(&d.transform.inverse, world_from_render);
+        let periods = match &d.pattern {
+            PigmentPattern::Solid(_) => [Period::Any; 3],
+            PigmentPattern::Checker(..) => [Period::Every(2.0); 3],
+            PigmentPattern::Wood(_) => [Period::Never, Period::Never, Period::Any],
+        };
+        let pattern_from_render =
+            pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let m = pattern_from_render.matrix3;
         let row_norm = (0..3).map(|r| m.row(r).abs().element_sum()).fold(0.0, f32::max);
         Pigment {
@@ -167,6 +272,68 @@ mod tests {
             let got = eval_pigment(&pig, ((w - origin) / unit).as_vec3(), PatternQuality::default());
             assert_eq!(got, Rgbft::from_desc(if expect == 0 { &Color::WHITE } else { &Color::BLACK }));
         }
+    }
+
+    fn checker_desc(turbulence: Option<crate::scene::desc::Turbulence>) -> PigmentDesc {
+        PigmentDesc {
+            pattern: PigmentPattern::Checker(Color::WHITE, Color::BLACK),
+            turbulence,
+            transform: scaled(DVec3::ONE),
+        }
+    }
+
+    /// A render frame centred on `origin` in the seed scene's unit.
+    fn frame_at(origin: DVec3) -> DMat4 {
+        DMat4::from_translation(origin) * DMat4::from_scale(DVec3::splat(22f64.sqrt()))
+    }
+
+    #[test]
+    fn a_far_checker_reduces_to_the_numbers_of_the_near_one() {
+        // A floor checker under a camera 1e6 (a multiple of the 32-unit step) from its origin
+        // becomes the pattern of the camera at the origin, number for number.
+        let near = Pigment::from_desc(&checker_desc(None), &frame_at(DVec3::new(3.0, 3.0, -1.0)));
+        let far = Pigment::from_desc(&checker_desc(None), &frame_at(DVec3::new(1e6 + 3.0, 3.0, 7e5 - 1.0)));
+        assert_eq!(far.pattern_from_render, near.pattern_from_render);
+        // Not a multiple: another lattice step, the same colours.
+        let odd = Pigment::from_desc(&checker_desc(None), &frame_at(DVec3::new(123458.0, 3.0, -1.0)));
+        assert!(odd.pattern_from_render.translation.x.abs() <= 16.0);
+        for i in 0..2000 {
+            let p = Vec3::new((i as f32 * 0.37).sin() * 9.0, (i as f32 * 0.23).sin(), (i as f32 * 0.11).cos() * 9.0);
+            let w = DVec3::new(123458.0, 3.0, -1.0) + p.as_dvec3() * 22f64.sqrt();
+            let edge = |v: f64| (v - v.floor()).min(v.ceil() - v) < 1e-3;
+            if edge(w.x) || edge(w.y) || edge(w.z) {
+                continue; // too near an edge for f32
+            }
+            let cell = w.floor();
+            let want = if (cell.x + cell.y + cell.z).rem_euclid(2.0) == 0.0 { Color::WHITE } else { Color::BLACK };
+            assert_eq!(eval_pigment(&odd, p, PatternQuality::default()), Rgbft::from_desc(&want), "at {w}");
+        }
+    }
+
+    #[test]
+    fn only_periodic_axes_far_from_the_camera_are_reduced() {
+        use crate::scene::desc::Turbulence;
+        let far = frame_at(DVec3::new(1e6 + 3.0, 1e6 + 3.0, 1e6 + 3.0));
+        let t = |d: &PigmentDesc, frame: &DMat4| Pigment::from_desc(d, frame).pattern_from_render.translation;
+        // A pattern origin within 16 camera units keeps its translation (a telephoto camera
+        // 8.3e4 away looking at the origin has it 1 unit away).
+        let telephoto = DMat4::from_translation(DVec3::new(1e4, 2e4, -8e4)) * DMat4::from_scale(DVec3::splat(8.3e4));
+        assert_eq!(t(&checker_desc(None), &telephoto), Vec3::new(1e4, 2e4, -8e4).into());
+        // Turbulence with an integer lambda repeats with the noise lattice; a fractional one
+        // does not repeat at all.
+        let turb = |lambda| Some(Turbulence { amount: DVec3::splat(0.3), octaves: 3, omega: 0.5, lambda });
+        assert!(t(&checker_desc(turb(2.0)), &far).abs().max_element() <= 128.0);
+        assert_eq!(t(&checker_desc(turb(2.5)), &far), Vec3::splat(1e6 + 3.0).into());
+        // Wood's rings never repeat across the axis; along it, only turbulence's period counts.
+        let wood = |turbulence| PigmentDesc {
+            pattern: PigmentPattern::Wood(vec![]),
+            turbulence,
+            transform: Transform::default(),
+        };
+        assert_eq!(t(&wood(None), &far), Vec3::splat(1e6 + 3.0).into());
+        let w = t(&wood(turb(2.0)), &far);
+        assert_eq!((w.x, w.y), (1e6 + 3.0, 1e6 + 3.0));
+        assert!(w.z.abs() <= 128.0);
     }
 
     #[test]

@@ -174,14 +174,15 @@ fn rnd(i: u64, salt: u64) -> f64 {
     (x >> 11) as f64 / (1u64 << 53) as f64
 }
 
-/// Every kind of bounded shape, each with a few variants (ellipsoids, rotated boxes), scattered.
+/// Every kind of bounded shape, each with a few variants (ellipsoids, rotated boxes, open
+/// cylinders, discs with holes, tilted tori), scattered.
 fn shape_soup(n: u64) -> String {
     let mut s = String::from("#version 3.7;\nlight_source { <0, 50, -20> color rgb 1 }\nplane { y, -12 }\n");
     for i in 0..n {
         let c = |k: u64| (rnd(i, k) - 0.5) * 20.0;
         let (x, y, z) = (c(1), c(2), c(3));
         let r = 0.2 + rnd(i, 4) * 1.2;
-        let obj = match i % 6 {
+        let obj = match i % 10 {
             0 => format!("sphere {{ <{x}, {y}, {z}>, {r} }}"),
             1 => format!(
                 "sphere {{ <0, 0, 0>, 1 scale <{r}, {}, 0.4> rotate <{}, {}, 0> translate <{x}, {y}, {z}> }}",
@@ -203,6 +204,22 @@ fn shape_soup(n: u64) -> String {
                 z + c(8) * 0.1,
                 y + r,
                 z + 0.3
+            ),
+            6 => format!(
+                "cylinder {{ <{x}, {y}, {z}>, <{}, {}, {}>, {} {} }}",
+                x + c(5) * 0.2,
+                y + r * 2.0,
+                z + c(6) * 0.1,
+                r * 0.5,
+                if i % 20 == 6 { "open" } else { "" }
+            ),
+            7 => format!("cone {{ <{x}, {y}, {z}>, {r}, <{}, {}, {z}>, {} }}", x + 0.3, y + 1.5 * r, 0.2 * r),
+            8 => format!("disc {{ <{x}, {y}, {z}>, <{}, 1, {}>, {r}, {} }}", c(5) * 0.1, c(6) * 0.1, 0.3 * r),
+            9 => format!(
+                "torus {{ {r}, {} rotate <{}, 0, {}> translate <{x}, {y}, {z}> }}",
+                0.3 * r,
+                c(5) * 9.0,
+                c(6) * 9.0
             ),
             _ => format!(
                 "polygon {{ 4, <{x}, {y}, {z}>, <{}, {y}, {z}>, <{}, {}, {z}>, <{x}, {}, {z}> }}",

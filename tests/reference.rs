@@ -88,6 +88,18 @@ fn scene(name: &str) -> PathBuf {
     root().join("tests/reference/scenes").join(format!("{name}.pov"))
 }
 
+/// Cylinders and cones (capped, open, under a non-uniform scale) and discs (with a hole).
+#[test]
+fn cylinders_cones_and_discs_match_povray() {
+    check_psnr("cones", &scene("cones"), 35.0);
+}
+
+/// Tori upright, tilted, thin (with `sturm`), squashed and edge-on.
+#[test]
+fn tori_match_povray() {
+    check_psnr("tori", &scene("tori"), 35.0);
+}
+
 #[test]
 fn flat_seed_variant_matches_povray() {
     check_psnr("flat", &scene("flat"), 35.0);

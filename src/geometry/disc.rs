@@ -20,7 +20,9 @@ pub struct Disc {
 impl Disc {
     pub fn new(render_from_object: Affine3A, hole: f32) -> Disc {
         let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-        for c in [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0)] {
+        for c in
+            [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0)]
+        {
             let w = render_from_object.transform_point3(c);
             lo = lo.min(w);
             hi = hi.max(w);
@@ -60,7 +62,10 @@ mod tests {
 
     #[test]
     fn disc_with_a_hole() {
-        let d = Disc::new(Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0)) * Affine3A::from_scale(Vec3::splat(2.0)), 0.25);
+        let d = Disc::new(
+            Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0)) * Affine3A::from_scale(Vec3::splat(2.0)),
+            0.25,
+        );
         let at = |x: f32| Ray::new(Vec3::new(x, 0.0, 0.0), Vec3::Z);
         assert_eq!(d.intersect(&at(1.0), 0.0, f32::INFINITY), Some(3.0));
         assert_eq!(d.intersect(&at(0.2), 0.0, f32::INFINITY), None, "hole");

@@ -125,12 +125,9 @@ mod tests {
 
     #[test]
     fn finds_every_root_of_quartics_in_order() {
-        for roots in [
-            vec![-3.0, -1.0, 0.5, 2.0],
-            vec![1.0, 1.0 + 1e-6, 5.0, 7.0],
-            vec![1e-3, 2e-3, 1e3, 2e3],
-            vec![-2.0, 4.0],
-        ] {
+        for roots in
+            [vec![-3.0, -1.0, 0.5, 2.0], vec![1.0, 1.0 + 1e-6, 5.0, 7.0], vec![1e-3, 2e-3, 1e3, 2e3], vec![-2.0, 4.0]]
+        {
             let c = from_roots(&roots);
             let mut out = [0.0; MAX_DEGREE];
             let n = roots_in(&c, -10.0, 1e4, &mut out);

@@ -307,6 +307,10 @@ pub enum ShapeKind {
     Box,
     Triangle,
     Polygon,
+    Cylinder,
+    Cone,
+    Disc,
+    Torus,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -332,6 +336,10 @@ pub enum Modifier {
     NoShadow,
     /// `hollow [on|off]`: kept for media (not modelled yet); changes nothing else in POV-Ray.
     Hollow(Option<Expr>),
+    /// `open` on a cylinder or cone: no end caps.
+    Open(Span),
+    /// `sturm` on a polynomial shape: POV-Ray's robust root finder, which strahl always uses.
+    Sturm(Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]

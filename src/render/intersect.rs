@@ -39,6 +39,9 @@ impl Scene {
             ShapeKind::Box => self.boxes[i].hit(ray, zero, t_max),
             ShapeKind::Triangle => self.triangles[i].hit(ray, zero, t_max),
             ShapeKind::Polygon => self.polygons[i].hit(ray, zero, t_max),
+            ShapeKind::Cone => self.cones[i].hit(ray, zero, t_max),
+            ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
+            ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
             ShapeKind::Plane => L::splat(MISS),
         }
     }
@@ -162,6 +165,9 @@ impl Scene {
                     ShapeKind::Box => self.boxes[k].normal(p),
                     ShapeKind::Triangle => self.triangles[k].normal(p),
                     ShapeKind::Polygon => self.polygons[k].normal(p),
+                    ShapeKind::Cone => self.cones[k].normal(p),
+                    ShapeKind::Disc => self.discs[k].normal(p),
+                    ShapeKind::Torus => self.tori[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

@@ -24,8 +24,8 @@ pub struct RenderStats {
     /// Deepest level reached, 1 = primary rays only (POV-Ray's "Max Level").
     pub max_depth: u32,
     /// Ray→shape tests and hits, indexed by `ShapeKind as usize`.
-    pub tests: [u64; 6],
-    pub hits: [u64; 6],
+    pub tests: [u64; ShapeKind::COUNT],
+    pub hits: [u64; ShapeKind::COUNT],
     /// Bounding-volume nodes or grid cells visited.
     pub nodes_visited: u64,
     /// Samples whose colour came out NaN or infinite (replaced by black); must stay zero.

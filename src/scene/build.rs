@@ -11,10 +11,13 @@ use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 use crate::accel::aabb::Aabb;
 use crate::accel::Accel;
 pub use crate::accel::AccelKind;
+use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
+use crate::geometry::disc::Disc;
 use crate::geometry::plane::Plane;
 use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
 use crate::scene::material::Material;
@@ -31,11 +34,26 @@ pub enum ShapeKind {
     Plane = 4,
     /// A sphere under non-uniform scale; reported as a sphere.
     Ellipsoid = 5,
+    /// `cone` and `cylinder`.
+    Cone = 6,
+    Disc = 7,
+    Torus = 8,
 }
 
 impl ShapeKind {
-    pub const ALL: [ShapeKind; 5] =
-        [ShapeKind::Box, ShapeKind::Plane, ShapeKind::Polygon, ShapeKind::Sphere, ShapeKind::Triangle];
+    /// In the order the statistics list them (alphabetical, as POV-Ray's).
+    pub const ALL: [ShapeKind; 8] = [
+        ShapeKind::Box,
+        ShapeKind::Cone,
+        ShapeKind::Disc,
+        ShapeKind::Plane,
+        ShapeKind::Polygon,
+        ShapeKind::Sphere,
+        ShapeKind::Torus,
+        ShapeKind::Triangle,
+    ];
+    /// Size of per-kind tables (`ShapeKind as usize` indexes them).
+    pub const COUNT: usize = 9;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -44,6 +62,9 @@ impl ShapeKind {
             ShapeKind::Triangle => "Triangle",
             ShapeKind::Polygon => "Polygon",
             ShapeKind::Plane => "Plane",
+            ShapeKind::Cone => "Cone/Cylinder",
+            ShapeKind::Disc => "Disc",
+            ShapeKind::Torus => "Torus",
         }
     }
 }
@@ -85,6 +106,9 @@ pub struct Scene {
     pub boxes: Vec<Cuboid>,
     pub triangles: Vec<Triangle>,
     pub polygons: Vec<Polygon>,
+    pub cones: Vec<Cone>,
+    pub discs: Vec<Disc>,
+    pub tori: Vec<Torus>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -181,6 +205,23 @@ pub(crate) enum RenderShape {
     },
     Triangle([DVec3; 3]),
     Polygon(Vec<DVec3>),
+    /// The canonical cone (axis z from 0 to 1, radii `r0` and `r1`) under `render_from_object`.
+    Cone {
+        render_from_object: DAffine3,
+        r0: f64,
+        r1: f64,
+        open: bool,
+    },
+    /// The unit disc in z = 0 with a hole of radius `hole`.
+    Disc {
+        render_from_object: DAffine3,
+        hole: f64,
+    },
+    /// The torus of major radius 1 and minor radius `minor`.
+    Torus {
+        render_from_object: DAffine3,
+        minor: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -220,6 +261,29 @@ impl RenderFrame {
                 }
             }
             ShapeDesc::Triangle { a, b, c } => RenderShape::Triangle([point(*a), point(*b), point(*c)]),
+            ShapeDesc::Cone { base, base_radius, cap, cap_radius, open, .. } => {
+                // Canonical space: the axis along z, base at 0, cap at 1, scaled uniformly.
+                let axis = *cap - *base;
+                let len = axis.length();
+                let (u, v) = perpendiculars(axis / len);
+                let local = DAffine3::from_cols(u * len, v * len, axis, *base);
+                RenderShape::Cone {
+                    render_from_object: render_from_object() * local,
+                    r0: base_radius / len,
+                    r1: cap_radius / len,
+                    open: *open,
+                }
+            }
+            ShapeDesc::Disc { center, normal, radius, hole } => {
+                let n = normal.normalize();
+                let (u, v) = perpendiculars(n);
+                let local = DAffine3::from_cols(u * *radius, v * *radius, n * *radius, *center);
+                RenderShape::Disc { render_from_object: render_from_object() * local, hole: hole / radius }
+            }
+            ShapeDesc::Torus { major, minor } => RenderShape::Torus {
+                render_from_object: render_from_object() * DAffine3::from_scale(DVec3::splat(*major)),
+                minor: minor / major,
+            },
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Plane { normal, distance } => {
                 // n·p = d in object space; a point on it maps through the transform and the normal
@@ -273,6 +337,13 @@ fn box_object_origin(lo: DVec3, hi: DVec3) -> DVec3 {
     ((lo + hi) * 0.5 / grid + 0.5).floor() * grid
 }
 
+/// Two unit vectors completing unit `w` to a right-handed orthonormal basis (u × v = w).
+fn perpendiculars(w: DVec3) -> (DVec3, DVec3) {
+    let helper = if w.x.abs() < 0.9 { DVec3::X } else { DVec3::Y };
+    let u = helper.cross(w).normalize();
+    (u, w.cross(u))
+}
+
 /// An f64 affine map as f32.
 fn affine_f32(a: &DAffine3) -> Affine3A {
     Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
@@ -310,6 +381,9 @@ impl Scene {
             boxes: Vec::new(),
             triangles: Vec::new(),
             polygons: Vec::new(),
+            cones: Vec::new(),
+            discs: Vec::new(),
+            tori: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -378,6 +452,18 @@ impl Scene {
                 self.polygons.push(Polygon::new(&points));
                 push(ShapeKind::Polygon, self.polygons.len() - 1, &mut self.prims);
             }
+            RenderShape::Cone { render_from_object, r0, r1, open } => {
+                self.cones.push(Cone::new(affine_f32(&render_from_object), r0 as f32, r1 as f32, open));
+                push(ShapeKind::Cone, self.cones.len() - 1, &mut self.prims);
+            }
+            RenderShape::Disc { render_from_object, hole } => {
+                self.discs.push(Disc::new(affine_f32(&render_from_object), hole as f32));
+                push(ShapeKind::Disc, self.discs.len() - 1, &mut self.prims);
+            }
+            RenderShape::Torus { render_from_object, minor } => {
+                self.tori.push(Torus::new(affine_f32(&render_from_object), minor as f32));
+                push(ShapeKind::Torus, self.tori.len() - 1, &mut self.prims);
+            }
             RenderShape::Plane { normal, distance } => {
                 self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                 self.plane_materials.push(material);
@@ -417,6 +503,9 @@ impl Scene {
                         let poly = &self.polygons[p.index as usize];
                         (poly.min, poly.max)
                     }
+                    ShapeKind::Cone => self.cones[p.index as usize].bounds(),
+                    ShapeKind::Disc => self.discs[p.index as usize].bounds(),
+                    ShapeKind::Torus => self.tori[p.index as usize].bounds(),
                     ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
                 };
                 Aabb::new(lo, hi)

@@ -234,6 +234,29 @@ pub enum ShapeDesc {
     Polygon {
         points: Vec<DVec3>,
     },
+    /// `cylinder` (`base_radius == cap_radius`) or `cone`: the axis from `base` to `cap`.
+    Cone {
+        base: DVec3,
+        base_radius: f64,
+        cap: DVec3,
+        cap_radius: f64,
+        /// No end caps.
+        open: bool,
+        /// Written as `cylinder` (for messages and printing).
+        cylinder: bool,
+    },
+    /// A flat disc around `center` facing `normal`, with an optional hole (0: none).
+    Disc {
+        center: DVec3,
+        normal: DVec3,
+        radius: f64,
+        hole: f64,
+    },
+    /// The ring of radius `major` in the xz-plane, swept by a circle of radius `minor`.
+    Torus {
+        major: f64,
+        minor: f64,
+    },
 }
 
 impl ShapeDesc {
@@ -245,6 +268,10 @@ impl ShapeDesc {
             ShapeDesc::Box { .. } => "box",
             ShapeDesc::Triangle { .. } => "triangle",
             ShapeDesc::Polygon { .. } => "polygon",
+            ShapeDesc::Cone { cylinder: true, .. } => "cylinder",
+            ShapeDesc::Cone { .. } => "cone",
+            ShapeDesc::Disc { .. } => "disc",
+            ShapeDesc::Torus { .. } => "torus",
         }
     }
 }

@@ -285,7 +285,12 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             ShapeDesc::Plane { normal, distance } => {
                 let _ = write!(o, "plane {{ {}, {distance}", v(*normal));
             }
-            ShapeDesc::Polygon { .. } => return Err("write_pov: polygon is not supported".into()),
+            other @ (ShapeDesc::Polygon { .. }
+            | ShapeDesc::Cone { .. }
+            | ShapeDesc::Disc { .. }
+            | ShapeDesc::Torus { .. }) => {
+                return Err(format!("write_pov: {} is not supported", other.keyword()));
+            }
         }
         match &obj.texture.pigment.pattern {
             PigmentPattern::Solid(c) => {

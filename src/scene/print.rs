@@ -58,6 +58,19 @@ fn object(s: &mut String, o: &ObjectDesc) {
             let pts: Vec<String> = points.iter().map(|p| vec(*p)).collect();
             write!(s, "polygon {{ {}, {}", points.len(), pts.join(", "))
         }
+        ShapeDesc::Cone { base, base_radius, cap, cap_radius, open, cylinder } => {
+            let open = if *open { " open" } else { "" };
+            if *cylinder {
+                write!(s, "cylinder {{ {}, {}, {}{open}", vec(*base), vec(*cap), num(*base_radius))
+            } else {
+                let (b, r0, c, r1) = (vec(*base), num(*base_radius), vec(*cap), num(*cap_radius));
+                write!(s, "cone {{ {b}, {r0}, {c}, {r1}{open}")
+            }
+        }
+        ShapeDesc::Disc { center, normal, radius, hole } => {
+            write!(s, "disc {{ {}, {}, {}, {}", vec(*center), vec(*normal), num(*radius), num(*hole))
+        }
+        ShapeDesc::Torus { major, minor } => write!(s, "torus {{ {}, {}", num(*major), num(*minor)),
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);

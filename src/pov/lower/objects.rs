@@ -76,6 +76,15 @@ impl Lowerer<'_> {
                 }
                 Modifier::NoShadow => obj.no_shadow = true,
                 Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
+                Modifier::Open(span) => match &mut obj.shape {
+                    ShapeDesc::Cone { open, .. } => *open = true,
+                    other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
+                },
+                Modifier::Sturm(span) => {
+                    if !matches!(obj.shape, ShapeDesc::Torus { .. }) {
+                        return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), "torus"));
+                    }
+                }
             }
             if surface || matches!(m, Modifier::Texture(_)) {
                 part.textured = true;
@@ -141,6 +150,8 @@ impl Lowerer<'_> {
                         part.desc.no_shadow = true;
                     }
                 }
+                Modifier::Open(span) => return Err(flag_not_taken(*span, "open", "union", "cylinder and cone")),
+                Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", "union", "torus")),
                 // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
                 Modifier::Hollow(on) => {
                     let hollow = self.hollow(on.as_ref())?;
@@ -191,6 +202,55 @@ impl Lowerer<'_> {
                 ShapeDesc::Triangle { a, b, c }
             }
             ShapeKind::Polygon => self.polygon(args, span)?,
+            ShapeKind::Cylinder | ShapeKind::Cone => {
+                let cylinder = kind == ShapeKind::Cylinder;
+                let base = self.vec3(arg(0)?)?;
+                let (base_radius, cap, cap_radius, radii) = if cylinder {
+                    let r = self.float(arg(2)?)?;
+                    (r, self.vec3(arg(1)?)?, r, [(r, arg(2)?.span)])
+                } else {
+                    let (r0, r1) = (self.float(arg(1)?)?, self.float(arg(3)?)?);
+                    (r0, self.vec3(arg(2)?)?, r1, [(r0.min(r1), if r0 <= r1 { arg(1)? } else { arg(3)? }.span)])
+                };
+                let word = if cylinder { "cylinder" } else { "cone" };
+                if (cap - base).length() == 0.0 {
+                    return Err(Diag::new(span, format!("{word}: base and cap are the same point")));
+                }
+                for (r, at) in radii {
+                    if r < 0.0 || (cylinder && r == 0.0) {
+                        return Err(Diag::new(at, format!("{word} radius must be positive")));
+                    }
+                }
+                if !cylinder && base_radius == 0.0 && cap_radius == 0.0 {
+                    return Err(Diag::new(span, "cone: both radii are 0"));
+                }
+                ShapeDesc::Cone { base, base_radius, cap, cap_radius, open: false, cylinder }
+            }
+            ShapeKind::Disc => {
+                let (center, normal, radius) = (self.vec3(arg(0)?)?, self.vec3(arg(1)?)?, self.float(arg(2)?)?);
+                let hole = match args.get(3) {
+                    Some(e) => self.float(e)?,
+                    None => 0.0,
+                };
+                if normal.length() == 0.0 {
+                    return Err(Diag::new(arg(1)?.span, "disc normal must not be zero"));
+                }
+                if radius <= 0.0 {
+                    return Err(Diag::new(arg(2)?.span, "disc radius must be positive"));
+                }
+                if !(0.0..radius).contains(&hole) {
+                    return Err(Diag::new(args[3].span, "disc hole radius must lie in [0, radius)"));
+                }
+                ShapeDesc::Disc { center, normal, radius, hole }
+            }
+            ShapeKind::Torus => {
+                let (major, minor) = (self.float(arg(0)?)?, self.float(arg(1)?)?);
+                if major <= 0.0 || minor <= 0.0 {
+                    let at = if major <= 0.0 { arg(0)? } else { arg(1)? };
+                    return Err(Diag::new(at.span, "torus radii must be positive"));
+                }
+                ShapeDesc::Torus { major, minor }
+            }
         })
     }
 
@@ -257,4 +317,9 @@ fn collinear(points: &[DVec3]) -> bool {
     let far = points.iter().copied().max_by(|p, q| (*p - a).length().total_cmp(&(*q - a).length())).unwrap_or(a);
     let dir = (far - a) / scale;
     points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
+}
+
+/// `flag` written on a shape that does not take it.
+fn flag_not_taken(span: Span, flag: &str, on: &str, takes: &str) -> Diag {
+    Diag::new(span, format!("`{flag}` does not apply to {on} (only {takes} take it)"))
 }

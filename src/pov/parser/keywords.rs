@@ -21,6 +21,12 @@ pub(crate) const RESERVED: &[&str] = &[
     "box",
     "triangle",
     "polygon",
+    "cylinder",
+    "cone",
+    "disc",
+    "torus",
+    "open",
+    "sturm",
     "object",
     "union",
     "merge",
@@ -108,10 +114,6 @@ pub(crate) const RESERVED: &[&str] = &[
 
 /// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
 pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
-    "torus",
-    "cylinder",
-    "cone",
-    "disc",
     "difference",
     "intersection",
     "blob",

@@ -23,16 +23,32 @@ const TOP_LEVEL: &[&str] = &[
     "box",
     "triangle",
     "polygon",
+    "cylinder",
+    "cone",
+    "disc",
+    "torus",
 ];
-const SHAPES: &str = "sphere, plane, box, triangle, polygon, union, merge, object";
+const SHAPES: &str = "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, union, merge, object";
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
     &["color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "rotate", "scale", "translate", "shadowless"];
 const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
 /// What may follow an object's arguments.
-pub const MODIFIERS: &[&str] =
-    &["pigment", "normal", "finish", "texture", "interior", "rotate", "scale", "translate", "no_shadow", "hollow"];
+pub const MODIFIERS: &[&str] = &[
+    "pigment",
+    "normal",
+    "finish",
+    "texture",
+    "interior",
+    "rotate",
+    "scale",
+    "translate",
+    "no_shadow",
+    "hollow",
+    "open",
+    "sturm",
+];
 
 pub fn is_object_keyword(word: &str) -> bool {
     shape_kind(word).is_some() || matches!(word, "object" | "union" | "merge")
@@ -45,6 +61,10 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "box" => ShapeKind::Box,
         "triangle" => ShapeKind::Triangle,
         "polygon" => ShapeKind::Polygon,
+        "cylinder" => ShapeKind::Cylinder,
+        "cone" => ShapeKind::Cone,
+        "disc" => ShapeKind::Disc,
+        "torus" => ShapeKind::Torus,
         _ => return None,
     })
 }
@@ -57,6 +77,10 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Box => &["corner1", "corner2"],
         ShapeKind::Triangle => &["a", "b", "c"],
         ShapeKind::Polygon => &["number of points", "points"],
+        ShapeKind::Cylinder => &["base", "cap", "radius"],
+        ShapeKind::Cone => &["base", "base radius", "cap", "cap radius"],
+        ShapeKind::Disc => &["center", "normal", "radius"],
+        ShapeKind::Torus => &["major radius", "minor radius"],
     }
 }
 
@@ -266,6 +290,8 @@ impl Parser<'_, '_> {
                     self.bump();
                     Modifier::NoShadow
                 }
+                Some("open") => Modifier::Open(self.bump().span),
+                Some("sturm") => Modifier::Sturm(self.bump().span),
                 Some("hollow") => {
                     self.bump();
                     // `hollow` alone means on; a boolean may follow (`hollow off`, `hollow 0`).
@@ -337,6 +363,18 @@ impl Parser<'_, '_> {
                 ));
             }
             args.push(self.expr()?);
+        }
+        // disc's hole radius is optional.
+        if shape == ShapeKind::Disc {
+            let mark = self.is_punct(',');
+            if mark {
+                self.eat_punct(',');
+            }
+            if self.starts_expr(MODIFIERS) {
+                args.push(self.expr()?);
+            } else if mark {
+                return Err(Diag::new(self.peek().span, "disc: expected the hole radius after `,`"));
+            }
         }
         Ok(args)
     }

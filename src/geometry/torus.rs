@@ -50,7 +50,8 @@ impl Torus {
 fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option<f64> {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let len2 = dot(d, d);
-    if !(len2 > 0.0) || !len2.is_finite() {
+    // NaN compares false everywhere: each test below also rejects it.
+    if len2.is_nan() || len2 <= 0.0 || !len2.is_finite() {
         return None;
     }
     let len = len2.sqrt();
@@ -59,7 +60,7 @@ fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option
     let p = [o[0] + t_c * d[0], o[1] + t_c * d[1], o[2] + t_c * d[2]];
     let outer = 1.0 + minor;
     let reach2 = outer * outer - dot(p, p);
-    if !(reach2 >= 0.0) {
+    if reach2.is_nan() || reach2 < 0.0 {
         return None;
     }
     // s: distance along u from p; t = t_c + s / len.
@@ -67,7 +68,7 @@ fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option
     let reach = reach2.sqrt() * (1.0 + 1e-9) + 1e-12;
     let lo = (-reach).max((t_min - t_c) * len);
     let hi = reach.min((t_max - t_c) * len);
-    if !(lo < hi) {
+    if lo.is_nan() || hi.is_nan() || lo >= hi {
         return None;
     }
     let e = dot(p, p) + 1.0 - minor * minor;

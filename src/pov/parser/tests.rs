@@ -39,8 +39,12 @@ fn unknown_camera_keyword_lists_the_valid_ones() {
 
 #[test]
 fn unsupported_shape_is_named() {
-    let e = parse_str("torus { 1, 0.5 }").unwrap_err();
-    assert_eq!(e, "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)");
+    let e = parse_str("blob { threshold 0.5 }").unwrap_err();
+    assert_eq!(
+        e,
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
+         union, merge, object)"
+    );
 }
 
 #[test]

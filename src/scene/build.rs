@@ -304,8 +304,8 @@ impl RenderFrame {
 /// Measured on the in-place twins of `tests/far.rs` (boxes 1.2 to 2.2 units across, offsets
 /// 1e5 = 2^5·3125, 1e6 = 2^6·15625, 1e7 = 2^7·78125): with 64 extents (grids of 128 and 256)
 /// the wood and refraction twins at 1e5 and 1e6 differed from the original on 1 to 33 pixels,
-/// since those offsets are not multiples of the grid; with 16, the refraction twin at 1e5 on 1;
-/// with 4 (grids of 8 and 16) all are identical. Fewer extents also leave the corners nearer
+/// since those offsets are not multiples of the grid; with 16, the refraction twins at 1e5 and
+/// <1e6, −3e5, 7e5> on 1 each; with 4 (grids of 8 and 16) all are identical. Fewer extents also leave the corners nearer
 /// zero, so more precise; the cost is that fewer boxes keep their old numbers (those within 2
 /// to 4 extents of their object origin do, the seed scene's among them).
 const BOX_SNAP_EXTENTS: f64 = 4.0;

@@ -120,17 +120,21 @@ const FAR_PATTERN_ORIGIN: f64 = 16.0;
 
 /// The shortest lattice step `pattern_from_render` reduces by, in pattern units.
 ///
-/// Reducing a checker by its own period 2 moved the seed scene's floor translation from 3 to
-/// −1, the same pattern but other f32 roundings: 14 pixels of the 1280×720 seed render
-/// changed. With steps of at least 32, translations under 16 units keep their numbers (the
-/// seed's, and the reference scenes' at most 10), which costs at most an f32 ulp of 16 units
-/// (2e-6), and an offset that is a multiple of 32 (1e5 = 2^5·3125 and every larger power of
-/// ten) reduces to exactly the numbers of the scene at the origin, so renders the same bytes.
+/// A scene near the pattern origin is not reduced (`FAR_PATTERN_ORIGIN`), so the same scene
+/// written at an offset renders the same numbers only if its reduced translation comes back to
+/// the unreduced one: the offset must be a multiple of the step, and the near translation
+/// under half a step. Reducing a checker by its own period 2 would bring the seed scene's
+/// floor (translation 3) at 1e6 to −1, the same pattern in other roundings (reduced to −1
+/// itself, the seed render changed on 14 of its 1280×720 pixels). With steps of at least 32,
+/// near translations under 16 units come back (the seed's, and the reference scenes' at most
+/// 10) for offsets that are multiples of 32 (1e5 = 2^5·3125 and every larger power of ten),
+/// at the cost of at most an f32 ulp of 16 units (2e-6).
 const MIN_REDUCTION_STEP: f64 = 32.0;
 
 /// The lattice step for a pattern of period `period` (a power of two): the smallest multiple of
 /// it by a power of two that is at least `MIN_REDUCTION_STEP`.
 fn reduction_step(period: f64) -> f64 {
+    debug_assert!(period > 0.0, "a period must be positive: {period}");
     let mut step = period;
     while step < MIN_REDUCTION_STEP {
         step *= 2.0;
@@ -161,14 +165,13 @@ pub fn pattern_from_render(
     let mut m = *world_from_pattern_inverse * *world_from_render;
     let turbulence = turbulence_period(turbulence);
     for (axis, period) in periods.into_iter().enumerate() {
+        let Period::Every(p) = period.with(turbulence) else { continue };
         let t = m.w_axis[axis];
         // Pattern units per render unit along this axis: the row's absolute sum.
         let per_render = m.row(axis).truncate().abs().element_sum();
-        if let Period::Every(p) = period.with(turbulence) {
-            if t.abs() > FAR_PATTERN_ORIGIN * per_render {
-                let step = reduction_step(p);
-                m.w_axis[axis] = t - (t / step + 0.5).floor() * step;
-            }
+        if t.abs() > FAR_PATTERN_ORIGIN * per_render {
+            let step = reduction_step(p);
+            m.w_axis[axis] = t - (t / step + 0.5).floor() * step;
         }
     }
     Affine3A::from_mat4(m.as_mat4())

@@ -232,9 +232,13 @@ fn error_argument_count() {
 
 #[test]
 fn error_unsupported_keywords() {
-    let (l, c, m) = err("e_torus", "\n torus { 1, 0.5 }");
+    let (l, c, m) = err("e_blob", "\n blob { threshold 0.5 }");
     assert_eq!((l, c), (2, 2));
-    assert_eq!(m, "`torus` is not supported (supported: sphere, plane, box, triangle, polygon, union, merge, object)");
+    assert_eq!(
+        m,
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
+         union, merge, object)"
+    );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
     let (_, _, m) = err("e_spot", "light_source { 0 color rgb 1 spotlight }");

@@ -348,6 +348,17 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
             (ShapeDesc::Polygon { points: p1 }, ShapeDesc::Polygon { points: p2 }) => {
                 p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close3(*p, *q))
             }
+            (
+                ShapeDesc::Cone { base: b1, base_radius: r1, cap: c1, cap_radius: s1, open: o1, cylinder: y1 },
+                ShapeDesc::Cone { base: b2, base_radius: r2, cap: c2, cap_radius: s2, open: o2, cylinder: y2 },
+            ) => close3(*b1, *b2) && close(*r1, *r2) && close3(*c1, *c2) && close(*s1, *s2) && o1 == o2 && y1 == y2,
+            (
+                ShapeDesc::Disc { center: c1, normal: n1, radius: r1, hole: h1 },
+                ShapeDesc::Disc { center: c2, normal: n2, radius: r2, hole: h2 },
+            ) => close3(*c1, *c2) && close3(*n1, *n2) && close(*r1, *r2) && close(*h1, *h2),
+            (ShapeDesc::Torus { major: a1, minor: b1 }, ShapeDesc::Torus { major: a2, minor: b2 }) => {
+                close(*a1, *a2) && close(*b1, *b2)
+            }
             _ => false,
         };
         check(shape_ok, format!("object {i}: shape {:?} vs {:?}", oa.shape, ob.shape))?;

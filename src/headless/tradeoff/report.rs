@@ -216,7 +216,7 @@ pub fn markdown(rows: &[Row], ctx: &Context, svg_name: &str) -> String {
     let mut o = format!("# Speed/accuracy trade-off: `{}`\n\n", ctx.scene);
     let _ = writeln!(o, "{}.\n", ctx.summary());
     o.push_str(
-        "Errors are against `--preset reference` (4×4 aa in f64, everything else as the scene asks): PSNR over \
+        "Errors are against `--preset reference` (4×4 aa, hits re-solved in f64, everything else as the scene asks): PSNR over \
          all cameras' pixels, SSIM (8×8 blocks of luma) averaged over cameras, and the largest 8-bit \
          error of any channel in any frame. Each row moves one knob from `full`, except the presets. \
          Regenerate with `strahl tradeoff`.\n\n",

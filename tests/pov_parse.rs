@@ -834,3 +834,43 @@ fn declared_camera_errors_are_located() {
     assert_eq!((line, col), (1, 10), "{m}");
     assert!(m.contains("unknown keyword `locaton` in camera"), "{m}");
 }
+
+/// Cylinders, cones, discs and tori as POV-Ray writes them: optional hole, `open`, `sturm`.
+#[test]
+fn cylinders_cones_discs_and_tori_load() {
+    let s = load_text(
+        "round_shapes",
+        "cylinder { <0, 0, 0>, <0, 2, 0>, 0.5 open }\n\
+         cone { 0, 1, y, 0 }\n\
+         disc { <0, 1, 0>, y, 2, 0.5 }\n\
+         disc { 0, z, 1 }\n\
+         torus { 2, 0.25 sturm }",
+    )
+    .unwrap();
+    let kinds: Vec<&str> = s.objects.iter().map(|o| o.shape.keyword()).collect();
+    assert_eq!(kinds, ["cylinder", "cone", "disc", "disc", "torus"]);
+    assert!(matches!(s.objects[0].shape, ShapeDesc::Cone { open: true, cylinder: true, .. }));
+    assert!(matches!(s.objects[1].shape, ShapeDesc::Cone { open: false, base_radius: 1.0, cap_radius: 0.0, .. }));
+    assert!(matches!(s.objects[2].shape, ShapeDesc::Disc { radius: 2.0, hole: 0.5, .. }));
+    assert!(matches!(s.objects[3].shape, ShapeDesc::Disc { hole: 0.0, .. }));
+    assert!(matches!(s.objects[4].shape, ShapeDesc::Torus { major: 2.0, minor: 0.25 }));
+}
+
+/// Bad round shapes are located errors that say what is wrong.
+#[test]
+fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
+    for (text, at, message) in [
+        ("\ncylinder { y, y, 1 }", (2, 1), "cylinder: base and cap are the same point"),
+        ("cylinder { 0, y, 0 }", (1, 18), "cylinder radius must be positive"),
+        ("cone { 0, -1, y, 0 }", (1, 11), "cone radius must be positive"),
+        ("cone { 0, 0, y, 0 }", (1, 1), "cone: both radii are 0"),
+        ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
+        ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
+        ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
+        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder and cone)"),
+        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus)"),
+    ] {
+        let (l, c, m) = err("bad_round", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}

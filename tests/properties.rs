@@ -135,7 +135,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(5) {
+    match r.pick(8) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -149,6 +149,23 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
             }
         },
         3 => ShapeDesc::Plane { normal: r.unit() * r.f(0.5, 2.0), distance: r.f(-5.0, 5.0) },
+        4 => {
+            let base = r.v(-4.0, 4.0);
+            let cap = base + r.unit() * r.f(0.3, 3.0);
+            let cylinder = r.pick(2) == 0;
+            let base_radius = r.f(0.05, 1.5);
+            let cap_radius = if cylinder { base_radius } else { r.f(0.0, 1.5) };
+            ShapeDesc::Cone { base, base_radius, cap, cap_radius, open: r.pick(3) == 0, cylinder }
+        }
+        5 => {
+            let radius = r.f(0.1, 2.0);
+            let hole = if r.pick(2) == 0 { 0.0 } else { radius * r.f(0.0, 0.9) };
+            ShapeDesc::Disc { center: r.v(-4.0, 4.0), normal: r.unit() * r.f(0.5, 2.0), radius, hole }
+        }
+        6 => {
+            let major = r.f(0.2, 2.0);
+            ShapeDesc::Torus { major, minor: major * r.f(0.05, 0.9) }
+        }
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
             let u = n.any_orthonormal_vector();

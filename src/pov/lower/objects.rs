@@ -321,5 +321,5 @@ fn collinear(points: &[DVec3]) -> bool {
 
 /// `flag` written on a shape that does not take it.
 fn flag_not_taken(span: Span, flag: &str, on: &str, takes: &str) -> Diag {
-    Diag::new(span, format!("`{flag}` does not apply to {on} (only {takes} take it)"))
+    Diag::new(span, format!("`{flag}` does not apply to {on} (only to {takes})"))
 }

@@ -324,7 +324,16 @@ impl Parser<'_, '_> {
                     };
                     return Err(Diag::new(self.peek().span, message));
                 }
-                _ => return Err(self.unknown_in(&word, MODIFIERS)),
+                _ => {
+                    // Name only the flags this shape takes.
+                    let takes = |m: &&str| match *m {
+                        "open" => matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone)),
+                        "sturm" => shape_kind(&word) == Some(ShapeKind::Torus),
+                        _ => true,
+                    };
+                    let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();
+                    return Err(self.unknown_in(&word, &allowed));
+                }
             };
             modifiers.push(m);
         }

@@ -29,18 +29,21 @@ pub enum Kind {
     Spheres,
     Boxes,
     Triangles,
+    /// Capped cylinders along random axes.
+    Cylinders,
     /// Spheres, boxes and triangles in turn.
     Mixed,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 4] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Mixed];
+    pub const ALL: [Kind; 5] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed];
 
     pub fn name(self) -> &'static str {
         match self {
             Kind::Spheres => "spheres",
             Kind::Boxes => "boxes",
             Kind::Triangles => "triangles",
+            Kind::Cylinders => "cylinders",
             Kind::Mixed => "mixed",
         }
     }
@@ -131,6 +134,12 @@ fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
             let corner = |f: u64| qv(center + DVec3::new(u(f) - 0.5, u(f + 1) - 0.5, u(f + 2) - 0.5) * 1.6);
             ShapeDesc::Triangle { a: corner(10), b: corner(13), c: corner(16) }
         }
+        Kind::Cylinders => {
+            let axis = (DVec3::new(u(10), u(11), u(12)) - 0.5).normalize_or(DVec3::Y) * (0.4 + 0.4 * u(13));
+            let radius = q(0.15 + 0.2 * u(14));
+            let (base, cap) = (qv(center - axis), qv(center + axis));
+            ShapeDesc::Cone { base, base_radius: radius, cap, cap_radius: radius, open: false, cylinder: true }
+        }
     }
 }
 
@@ -214,7 +223,7 @@ pub fn write_generated(kind: Kind, n: usize) -> Result<String, String> {
 }
 
 /// Writes `desc` as POV-Ray 3.7 scene text, camera vectors as they are. Only what the
-/// generators produce is supported: untransformed spheres, boxes, triangles and planes with
+/// generators produce is supported: untransformed spheres, boxes, triangles, capped cylinders and planes with
 /// solid or checker pigments; anything else is an error naming what it found.
 pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
     let r = desc.camera.right;
@@ -284,6 +293,9 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             }
             ShapeDesc::Plane { normal, distance } => {
                 let _ = write!(o, "plane {{ {}, {distance}", v(*normal));
+            }
+            ShapeDesc::Cone { base, base_radius, cap, cylinder: true, open: false, .. } => {
+                let _ = write!(o, "cylinder {{ {}, {}, {base_radius}", v(*base), v(*cap));
             }
             other @ (ShapeDesc::Polygon { .. }
             | ShapeDesc::Cone { .. }

@@ -11,7 +11,7 @@ use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{RayLanes, MISS};
-use super::Shape;
+use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Copy, Debug)]
@@ -31,17 +31,7 @@ impl Cone {
     /// A cone (or, with `r0 == r1`, a cylinder) under `render_from_object`.
     pub fn new(render_from_object: Affine3A, r0: f32, r1: f32, open: bool) -> Cone {
         let r = r0.max(r1);
-        let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-        for i in 0..8 {
-            let c = Vec3::new(
-                if i & 1 == 0 { -r } else { r },
-                if i & 2 == 0 { -r } else { r },
-                if i & 4 == 0 { 0.0 } else { 1.0 },
-            );
-            let w = render_from_object.transform_point3(c);
-            lo = lo.min(w);
-            hi = hi.max(w);
-        }
+        let (lo, hi) = transformed_bounds(&render_from_object, Vec3::new(-r, -r, 0.0), Vec3::new(r, r, 1.0));
         Cone { frame: frame_for(render_from_object), r0, r1, open, min: lo, max: hi }
     }
 

@@ -5,7 +5,7 @@
 use glam::{Affine3A, Mat3A, Vec3};
 
 use super::ray::{pick_root, RayLanes};
-use super::Shape;
+use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 /// An axis-aligned box in its own space, plus the map into it when that is not render space.
@@ -88,22 +88,7 @@ impl Cuboid {
     pub fn bounds(&self) -> (Vec3, Vec3) {
         match &self.frame {
             None => (self.min, self.max),
-            Some(f) => {
-                let render_from_object = f.object_from_render.inverse();
-                let mut lo = Vec3::splat(f32::INFINITY);
-                let mut hi = Vec3::splat(f32::NEG_INFINITY);
-                for i in 0..8 {
-                    let c = Vec3::new(
-                        if i & 1 == 0 { self.min.x } else { self.max.x },
-                        if i & 2 == 0 { self.min.y } else { self.max.y },
-                        if i & 4 == 0 { self.min.z } else { self.max.z },
-                    );
-                    let w = render_from_object.transform_point3(c);
-                    lo = lo.min(w);
-                    hi = hi.max(w);
-                }
-                (lo, hi)
-            }
+            Some(f) => transformed_bounds(&f.object_from_render.inverse(), self.min, self.max),
         }
     }
 }

@@ -4,7 +4,7 @@ use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{RayLanes, MISS};
-use super::Shape;
+use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Copy, Debug)]
@@ -19,14 +19,7 @@ pub struct Disc {
 
 impl Disc {
     pub fn new(render_from_object: Affine3A, hole: f32) -> Disc {
-        let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-        for c in
-            [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0), Vec3::new(1.0, 1.0, 0.0)]
-        {
-            let w = render_from_object.transform_point3(c);
-            lo = lo.min(w);
-            hi = hi.max(w);
-        }
+        let (lo, hi) = transformed_bounds(&render_from_object, Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, 1.0, 0.0));
         Disc { frame: frame_for(render_from_object), hole, min: lo, max: hi }
     }
 

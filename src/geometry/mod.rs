@@ -22,6 +22,23 @@ use glam::Vec3;
 use crate::lanes::{Lane, V3};
 use ray::{Ray, RayLanes, MISS};
 
+/// Render-space bounds of the object-space box `[lo, hi]` under `render_from_object`: the box
+/// of its eight transformed corners.
+pub fn transformed_bounds(render_from_object: &glam::Affine3A, lo: Vec3, hi: Vec3) -> (Vec3, Vec3) {
+    let (mut min, mut max) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
+    for i in 0..8 {
+        let c = Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        let w = render_from_object.transform_point3(c);
+        min = min.min(w);
+        max = max.max(w);
+    }
+    (min, max)
+}
+
 /// A surface rays can hit.
 pub trait Shape {
     /// The nearest hit in `(t_min, t_max)` for each lane, `MISS` where there is none.

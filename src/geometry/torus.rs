@@ -11,7 +11,7 @@ use glam::{Affine3A, Vec3};
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{RayLanes, MISS};
 use super::roots::smallest_root;
-use super::Shape;
+use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Copy, Debug)]
@@ -26,18 +26,8 @@ pub struct Torus {
 impl Torus {
     /// A torus of major radius 1 and minor radius `minor` under `render_from_object`.
     pub fn new(render_from_object: Affine3A, minor: f32) -> Torus {
-        let (e, h) = (1.0 + minor, minor);
-        let (mut lo, mut hi) = (Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY));
-        for i in 0..8 {
-            let c = Vec3::new(
-                if i & 1 == 0 { -e } else { e },
-                if i & 2 == 0 { -h } else { h },
-                if i & 4 == 0 { -e } else { e },
-            );
-            let w = render_from_object.transform_point3(c);
-            lo = lo.min(w);
-            hi = hi.max(w);
-        }
+        let extent = Vec3::new(1.0 + minor, minor, 1.0 + minor);
+        let (lo, hi) = transformed_bounds(&render_from_object, -extent, extent);
         Torus { frame: frame_for(render_from_object), minor, min: lo, max: hi }
     }
 

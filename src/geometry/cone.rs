@@ -104,6 +104,15 @@ impl Shape for Cone {
         }
         n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
+
+    /// Inside the side and between the caps; an `open` cone is a solid too, as in POV-Ray.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        let r = L::splat(self.r0) + L::splat(self.r1 - self.r0) * q.z;
+        let between = L::and(L::splat(0.0).lt(q.z), q.z.lt(L::splat(1.0)));
+        L::and(between, (q.x * q.x + q.y * q.y).lt(r * r))
+    }
 }
 
 #[cfg(test)]

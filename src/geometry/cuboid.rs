@@ -81,6 +81,19 @@ impl Shape for Cuboid {
             Some(f) => best_n.mat3_mul(&f.normal_to_render).normalize_or(best_n),
         }
     }
+
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = match &self.frame {
+            None => p,
+            Some(f) => p.transform_point(&f.object_from_render),
+        };
+        let (lo, hi) = (V3::<L>::splat(self.min), V3::<L>::splat(self.max));
+        let x = L::and(lo.x.lt(q.x), q.x.lt(hi.x));
+        let y = L::and(lo.y.lt(q.y), q.y.lt(hi.y));
+        let z = L::and(lo.z.lt(q.z), q.z.lt(hi.z));
+        L::and(x, L::and(y, z))
+    }
 }
 
 impl Cuboid {

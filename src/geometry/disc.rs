@@ -46,6 +46,12 @@ impl Shape for Disc {
     fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
         V3::splat(Vec3::Z).mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
+
+    /// Flat: no inside.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, _: V3<L>) -> L::Mask {
+        L::mask_from_fn(|_| false)
+    }
 }
 
 #[cfg(test)]

@@ -47,6 +47,11 @@ pub trait Shape {
     /// The outward geometric normal at points on the surface (render space), unit length.
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L>;
 
+    /// Which points lie inside the solid (render space), as CSG asks: POV-Ray's `Inside`.
+    /// Flat shapes (triangles, polygons, discs) have no inside and answer false everywhere;
+    /// points on the surface may answer either way.
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask;
+
     /// `hit` for one f32 ray, `None` for a miss.
     #[inline]
     fn intersect(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {

@@ -39,6 +39,12 @@ impl Shape for Plane {
     fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
         V3::splat(self.normal)
     }
+
+    /// The half-space the normal points away from (POV-Ray's solid plane).
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        V3::splat(self.normal).dot(p).lt(L::splat(self.distance))
+    }
 }
 
 #[cfg(test)]

@@ -81,6 +81,12 @@ impl Shape for Polygon {
     fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
         V3::splat(self.plane.normal)
     }
+
+    /// Flat: no inside.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, _: V3<L>) -> L::Mask {
+        L::mask_from_fn(|_| false)
+    }
 }
 
 #[cfg(test)]

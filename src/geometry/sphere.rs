@@ -54,6 +54,12 @@ impl Shape for Sphere {
         let v = p.sub(V3::splat(self.center));
         V3 { x: v.x / r, y: v.y / r, z: v.z / r }.normalize_or(V3::splat(Vec3::Y))
     }
+
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let v = p.sub(V3::splat(self.center));
+        v.dot(v).lt(L::splat(self.radius * self.radius))
+    }
 }
 
 impl Sphere {
@@ -146,6 +152,12 @@ impl Shape for Ellipsoid {
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let local = p.transform_point(&self.frame.object_from_render);
         local.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
+
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let local = p.transform_point(&self.frame.object_from_render);
+        local.dot(local).lt(L::splat(1.0))
     }
 }
 

@@ -92,6 +92,13 @@ impl Shape for Torus {
         let ring = V3 { x: q.x / rho, y: L::splat(0.0), z: q.z / rho };
         q.sub(ring).mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
+
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        let rho = (q.x * q.x + q.z * q.z).sqrt() - L::splat(1.0);
+        (rho * rho + q.y * q.y).lt(L::splat(self.minor * self.minor))
+    }
 }
 
 #[cfg(test)]

@@ -55,6 +55,12 @@ impl Shape for Triangle {
     fn normal<L: Lane>(&self, _: V3<L>) -> V3<L> {
         V3::splat(self.normal)
     }
+
+    /// Flat: no inside.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, _: V3<L>) -> L::Mask {
+        L::mask_from_fn(|_| false)
+    }
 }
 
 #[cfg(test)]

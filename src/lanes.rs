@@ -54,8 +54,14 @@ pub trait Lane:
     fn get_f64(self, i: usize) -> f64;
     /// Lanes from f64 values, rounded once to the lane's precision.
     fn from_fn_f64(f: impl FnMut(usize) -> f64) -> Self;
+    /// `v` rounded to the lane's precision (and widened back): what a lane would hold. An f64
+    /// solve must compare its roots with `t_min` after this, or a root that rounds down onto
+    /// `t_min` is found again and again (CSG looking past a crossing).
+    fn round_f64(v: f64) -> f64;
     /// Whether lane `i` of a mask is set.
     fn mask_lane(m: Self::Mask, i: usize) -> bool;
+    /// Whether any lane of `m` is set.
+    fn any(m: Self::Mask) -> bool;
     fn mask_from_fn(f: impl FnMut(usize) -> bool) -> Self::Mask;
     fn floor(self) -> Self;
     /// `f` applied lane by lane, for what has no vector instruction (`powf`, `round`).
@@ -159,11 +165,19 @@ impl Lane for f32 {
         self as f64
     }
     #[inline(always)]
+    fn round_f64(v: f64) -> f64 {
+        v as f32 as f64
+    }
+    #[inline(always)]
     fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> f32 {
         f(0) as f32
     }
     #[inline(always)]
     fn mask_lane(m: bool, _: usize) -> bool {
+        m
+    }
+    #[inline(always)]
+    fn any(m: bool) -> bool {
         m
     }
     #[inline(always)]
@@ -269,11 +283,19 @@ impl Lane for f64 {
         self
     }
     #[inline(always)]
+    fn round_f64(v: f64) -> f64 {
+        v
+    }
+    #[inline(always)]
     fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> f64 {
         f(0)
     }
     #[inline(always)]
     fn mask_lane(m: bool, _: usize) -> bool {
+        m
+    }
+    #[inline(always)]
+    fn any(m: bool) -> bool {
         m
     }
     #[inline(always)]
@@ -461,12 +483,20 @@ impl Lane for F8 {
         self.0[i] as f64
     }
     #[inline(always)]
+    fn round_f64(v: f64) -> f64 {
+        v as f32 as f64
+    }
+    #[inline(always)]
     fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> F8 {
         F8(std::array::from_fn(|i| f(i) as f32))
     }
     #[inline(always)]
     fn mask_lane(m: M8, i: usize) -> bool {
         m.0[i] != 0
+    }
+    #[inline(always)]
+    fn any(m: M8) -> bool {
+        m.any()
     }
     #[inline(always)]
     fn mask_from_fn(mut f: impl FnMut(usize) -> bool) -> M8 {

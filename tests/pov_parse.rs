@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
-         union, merge, object)"
+         union, merge, intersection, difference, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -639,12 +639,15 @@ fn error_control_flow() {
 
 #[test]
 fn error_csg() {
-    let (l, c, m) = err("e_diff", "union {\n  difference { sphere { 0, 1 } }\n}");
+    let (l, c, m) = err("e_diff", "union {\n  sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n}");
     assert_eq!((l, c), (2, 3));
-    assert!(m.starts_with("`difference` is not supported (supported: "), "{m}");
+    assert!(m.starts_with("`sphere_sweep` is not supported (supported: "), "{m}");
     let (l, c, m) = err("e_cam", "union {\n  sphere { 0, 1 }\n  camera { }\n}");
     assert_eq!((l, c), (3, 3));
-    assert_eq!(m, "`camera` is not supported inside `union` or `merge`");
+    assert_eq!(
+        m,
+        "`camera` is not supported inside a CSG object (`union`, `merge`, `intersection`, `difference`, `clipped_by`)"
+    );
     let (l, c, m) = err("e_poly", "polygon { 4,\n <0,0,0>, <1,0,0>, <1,1,0>, <0,1,1> }");
     assert_eq!((l, c), (2, 29));
     assert_eq!(m, "polygon points must lie in one plane; point 4 does not");
@@ -873,4 +876,48 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         let (l, c, m) = err("bad_round", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
+}
+
+#[test]
+fn csg_nodes_keep_their_structure_and_pass_textures_down() {
+    use strahl::scene::desc::CsgOp;
+    let s = load_text(
+        "csg_tree",
+        "#declare D = difference { box { -1, 1 } sphere { 0, 1.2 pigment { rgb x } } union { sphere { x, 0.1 } sphere { -x, 0.1 } } }
+         object { D pigment { rgb y } translate 2*x }
+         sphere { 0, 1 clipped_by { plane { y, 0 } } inverse }
+         merge { sphere { 0, 1 } sphere { x, 1 } }",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 3);
+    let ShapeDesc::Csg { op: CsgOp::Difference, children } = &s.objects[0].shape else {
+        panic!("{:?}", s.objects[0].shape)
+    };
+    assert_eq!(children.len(), 3, "the nested union stays one child");
+    assert!(matches!(&children[2].shape, ShapeDesc::Csg { op: CsgOp::Union, children } if children.len() == 2));
+    let color = |o: &strahl::scene::desc::ObjectDesc| match &o.texture.pigment.pattern {
+        PigmentPattern::Solid(c) => c.rgb,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(color(&children[0]), DVec3::Y, "the declared object's pigment reaches the box");
+    assert_eq!(color(&children[1]), DVec3::X, "the sphere keeps its own");
+    assert!(close(children[0].transform.matrix.transform_point3(DVec3::ZERO), DVec3::new(2.0, 0.0, 0.0)));
+    let ShapeDesc::Csg { op: CsgOp::Clip, children } = &s.objects[1].shape else { panic!() };
+    assert!(s.objects[1].inverse && matches!(children[1].shape, ShapeDesc::Plane { .. }));
+    assert!(matches!(s.objects[2].shape, ShapeDesc::Csg { op: CsgOp::Merge, .. }));
+}
+
+#[test]
+fn csg_errors_are_located() {
+    let (l, c, m) = err("csg_open", "intersection { sphere { 0, 1 } box { -1, 1 }\n open }");
+    assert_eq!((l, c), (2, 2));
+    assert_eq!(m, "`open` does not apply to intersection (only to cylinder and cone)");
+    let (l, c, m) = err("csg_clip", "sphere { 0, 1 clipped_by { bounded_by } }");
+    assert_eq!((l, c), (1, 28));
+    assert!(m.contains("needs a `bounded_by` with objects"), "{m}");
+    let (l, _, m) = err("csg_child", "difference { sphere { 0, 1 }\n sphere { 0, -1 } }");
+    assert_eq!(l, 2);
+    assert_eq!(m, "sphere radius must be positive");
+    let (_, _, m) = err("csg_order", "intersection { sphere { 0, 1 } pigment { rgb 1 } box { -1, 1 } }");
+    assert!(m.contains("its objects must come first"), "{m}");
 }

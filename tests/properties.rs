@@ -213,6 +213,7 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
                 texture,
                 interior: InteriorDesc { ior },
                 no_shadow: r.pick(5) == 0,
+                inverse: false,
                 hollow: false,
                 source,
             }
@@ -327,7 +328,6 @@ fn close_xf(a: &Transform, b: &Transform) -> bool {
 
 /// Field-by-field equality up to float rounding; `Err` names the first field that differs.
 fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
-    let check = |ok: bool, what: String| if ok { Ok(()) } else { Err(what) };
     check(close(a.version, b.version), "version".into())?;
     check(a.global.assumed_gamma == b.global.assumed_gamma, "assumed_gamma".into())?;
     check(a.global.max_trace_level == b.global.max_trace_level, "max_trace_level".into())?;
@@ -349,85 +349,107 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
     }
     check(a.objects.len() == b.objects.len(), "object count".into())?;
     for (i, (oa, ob)) in a.objects.iter().zip(&b.objects).enumerate() {
-        let shape_ok = match (&oa.shape, &ob.shape) {
-            (ShapeDesc::Sphere { center: c1, radius: r1 }, ShapeDesc::Sphere { center: c2, radius: r2 }) => {
-                close3(*c1, *c2) && close(*r1, *r2)
-            }
-            (ShapeDesc::Plane { normal: n1, distance: d1 }, ShapeDesc::Plane { normal: n2, distance: d2 }) => {
-                close3(*n1, *n2) && close(*d1, *d2)
-            }
-            (ShapeDesc::Box { corner1: a1, corner2: b1 }, ShapeDesc::Box { corner1: a2, corner2: b2 }) => {
-                close3(*a1, *a2) && close3(*b1, *b2)
-            }
-            (ShapeDesc::Triangle { a: a1, b: b1, c: c1 }, ShapeDesc::Triangle { a: a2, b: b2, c: c2 }) => {
-                close3(*a1, *a2) && close3(*b1, *b2) && close3(*c1, *c2)
-            }
-            (ShapeDesc::Polygon { points: p1 }, ShapeDesc::Polygon { points: p2 }) => {
-                p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close3(*p, *q))
-            }
-            (
-                ShapeDesc::Cone { base: b1, base_radius: r1, cap: c1, cap_radius: s1, open: o1, cylinder: y1 },
-                ShapeDesc::Cone { base: b2, base_radius: r2, cap: c2, cap_radius: s2, open: o2, cylinder: y2 },
-            ) => close3(*b1, *b2) && close(*r1, *r2) && close3(*c1, *c2) && close(*s1, *s2) && o1 == o2 && y1 == y2,
-            (
-                ShapeDesc::Disc { center: c1, normal: n1, radius: r1, hole: h1 },
-                ShapeDesc::Disc { center: c2, normal: n2, radius: r2, hole: h2 },
-            ) => close3(*c1, *c2) && close3(*n1, *n2) && close(*r1, *r2) && close(*h1, *h2),
-            (ShapeDesc::Torus { major: a1, minor: b1 }, ShapeDesc::Torus { major: a2, minor: b2 }) => {
-                close(*a1, *a2) && close(*b1, *b2)
-            }
-            _ => false,
-        };
-        check(shape_ok, format!("object {i}: shape {:?} vs {:?}", oa.shape, ob.shape))?;
-        check(close_xf(&oa.transform, &ob.transform), format!("object {i}: transform"))?;
-        check(close(oa.interior.ior, ob.interior.ior), format!("object {i}: ior"))?;
-        let (ta, tb) = (&oa.texture, &ob.texture);
-        let pattern_ok = match (&ta.pigment.pattern, &tb.pigment.pattern) {
-            (PigmentPattern::Solid(x), PigmentPattern::Solid(y)) => close_color(x, y),
-            (PigmentPattern::Checker(x1, x2), PigmentPattern::Checker(y1, y2)) => {
-                close_color(x1, y1) && close_color(x2, y2)
-            }
-            (PigmentPattern::Wood(m1), PigmentPattern::Wood(m2)) => {
-                m1.len() == m2.len()
-                    && m1.iter().zip(m2).all(|(p, q)| close(p.value, q.value) && close_color(&p.color, &q.color))
-            }
-            _ => false,
-        };
-        check(pattern_ok, format!("object {i}: pigment pattern"))?;
-        let turb_ok = |x: &Option<Turbulence>, y: &Option<Turbulence>| match (x, y) {
-            (None, None) => true,
-            (Some(p), Some(q)) => {
-                close3(p.amount, q.amount)
-                    && p.octaves == q.octaves
-                    && close(p.omega, q.omega)
-                    && close(p.lambda, q.lambda)
-            }
-            _ => false,
-        };
-        check(turb_ok(&ta.pigment.turbulence, &tb.pigment.turbulence), format!("object {i}: pigment turbulence"))?;
-        check(close_xf(&ta.pigment.transform, &tb.pigment.transform), format!("object {i}: pigment transform"))?;
-        let normal_ok = match (&ta.normal, &tb.normal) {
-            (None, None) => true,
-            (Some(p), Some(q)) => {
-                let NormalPattern::Bumps(x) = p.pattern;
-                let NormalPattern::Bumps(y) = q.pattern;
-                close(x, y) && turb_ok(&p.turbulence, &q.turbulence) && close_xf(&p.transform, &q.transform)
-            }
-            _ => false,
-        };
-        check(normal_ok, format!("object {i}: normal"))?;
-        let (fa, fb) = (&ta.finish, &tb.finish);
-        let finish_ok = close3(fa.ambient, fb.ambient)
-            && close(fa.diffuse, fb.diffuse)
-            && close(fa.brilliance, fb.brilliance)
-            && close(fa.phong, fb.phong)
-            && close(fa.phong_size, fb.phong_size)
-            && close(fa.specular, fb.specular)
-            && close(fa.roughness, fb.roughness)
-            && close3(fa.reflection, fb.reflection);
-        check(finish_ok, format!("object {i}: finish"))?;
+        same_object(&format!("object {i}"), oa, ob)?;
     }
     Ok(())
+}
+
+/// One object (and a CSG node's children) against its printed and reloaded self.
+fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), String> {
+    let shape_ok = match (&oa.shape, &ob.shape) {
+        (ShapeDesc::Sphere { center: c1, radius: r1 }, ShapeDesc::Sphere { center: c2, radius: r2 }) => {
+            close3(*c1, *c2) && close(*r1, *r2)
+        }
+        (ShapeDesc::Plane { normal: n1, distance: d1 }, ShapeDesc::Plane { normal: n2, distance: d2 }) => {
+            close3(*n1, *n2) && close(*d1, *d2)
+        }
+        (ShapeDesc::Box { corner1: a1, corner2: b1 }, ShapeDesc::Box { corner1: a2, corner2: b2 }) => {
+            close3(*a1, *a2) && close3(*b1, *b2)
+        }
+        (ShapeDesc::Triangle { a: a1, b: b1, c: c1 }, ShapeDesc::Triangle { a: a2, b: b2, c: c2 }) => {
+            close3(*a1, *a2) && close3(*b1, *b2) && close3(*c1, *c2)
+        }
+        (ShapeDesc::Polygon { points: p1 }, ShapeDesc::Polygon { points: p2 }) => {
+            p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close3(*p, *q))
+        }
+        (
+            ShapeDesc::Cone { base: b1, base_radius: r1, cap: c1, cap_radius: s1, open: o1, cylinder: y1 },
+            ShapeDesc::Cone { base: b2, base_radius: r2, cap: c2, cap_radius: s2, open: o2, cylinder: y2 },
+        ) => close3(*b1, *b2) && close(*r1, *r2) && close3(*c1, *c2) && close(*s1, *s2) && o1 == o2 && y1 == y2,
+        (
+            ShapeDesc::Disc { center: c1, normal: n1, radius: r1, hole: h1 },
+            ShapeDesc::Disc { center: c2, normal: n2, radius: r2, hole: h2 },
+        ) => close3(*c1, *c2) && close3(*n1, *n2) && close(*r1, *r2) && close(*h1, *h2),
+        (ShapeDesc::Torus { major: a1, minor: b1 }, ShapeDesc::Torus { major: a2, minor: b2 }) => {
+            close(*a1, *a2) && close(*b1, *b2)
+        }
+        (ShapeDesc::Csg { op: o1, children: c1 }, ShapeDesc::Csg { op: o2, children: c2 }) => {
+            check(
+                o1 == o2 && c1.len() == c2.len(),
+                format!("{label}: {o1:?} of {} vs {o2:?} of {}", c1.len(), c2.len()),
+            )?;
+            for (k, (x, y)) in c1.iter().zip(c2).enumerate() {
+                same_object(&format!("{label}, child {k}"), x, y)?;
+            }
+            true
+        }
+        _ => false,
+    };
+    check(oa.inverse == ob.inverse, format!("{label}: inverse"))?;
+    check(shape_ok, format!("{label}: shape {:?} vs {:?}", oa.shape, ob.shape))?;
+    check(close_xf(&oa.transform, &ob.transform), format!("{label}: transform"))?;
+    check(close(oa.interior.ior, ob.interior.ior), format!("{label}: ior"))?;
+    let (ta, tb) = (&oa.texture, &ob.texture);
+    let pattern_ok = match (&ta.pigment.pattern, &tb.pigment.pattern) {
+        (PigmentPattern::Solid(x), PigmentPattern::Solid(y)) => close_color(x, y),
+        (PigmentPattern::Checker(x1, x2), PigmentPattern::Checker(y1, y2)) => {
+            close_color(x1, y1) && close_color(x2, y2)
+        }
+        (PigmentPattern::Wood(m1), PigmentPattern::Wood(m2)) => {
+            m1.len() == m2.len()
+                && m1.iter().zip(m2).all(|(p, q)| close(p.value, q.value) && close_color(&p.color, &q.color))
+        }
+        _ => false,
+    };
+    check(pattern_ok, format!("{label}: pigment pattern"))?;
+    let turb_ok = |x: &Option<Turbulence>, y: &Option<Turbulence>| match (x, y) {
+        (None, None) => true,
+        (Some(p), Some(q)) => {
+            close3(p.amount, q.amount) && p.octaves == q.octaves && close(p.omega, q.omega) && close(p.lambda, q.lambda)
+        }
+        _ => false,
+    };
+    check(turb_ok(&ta.pigment.turbulence, &tb.pigment.turbulence), format!("{label}: pigment turbulence"))?;
+    check(close_xf(&ta.pigment.transform, &tb.pigment.transform), format!("{label}: pigment transform"))?;
+    let normal_ok = match (&ta.normal, &tb.normal) {
+        (None, None) => true,
+        (Some(p), Some(q)) => {
+            let NormalPattern::Bumps(x) = p.pattern;
+            let NormalPattern::Bumps(y) = q.pattern;
+            close(x, y) && turb_ok(&p.turbulence, &q.turbulence) && close_xf(&p.transform, &q.transform)
+        }
+        _ => false,
+    };
+    check(normal_ok, format!("{label}: normal"))?;
+    let (fa, fb) = (&ta.finish, &tb.finish);
+    let finish_ok = close3(fa.ambient, fb.ambient)
+        && close(fa.diffuse, fb.diffuse)
+        && close(fa.brilliance, fb.brilliance)
+        && close(fa.phong, fb.phong)
+        && close(fa.phong_size, fb.phong_size)
+        && close(fa.specular, fb.specular)
+        && close(fa.roughness, fb.roughness)
+        && close3(fa.reflection, fb.reflection);
+    check(finish_ok, format!("{label}: finish"))?;
+    Ok(())
+}
+
+fn check(ok: bool, what: String) -> Result<(), String> {
+    if ok {
+        Ok(())
+    } else {
+        Err(what)
+    }
 }
 
 fn same_hit(a: Option<Hit>, b: Option<Hit>) -> Result<(), String> {
@@ -543,4 +565,209 @@ fn fuzzer_regressions_do_not_panic() {
         count += 1;
     }
     println!("{count} regression inputs loaded without panicking");
+}
+
+/// A random solid for CSG: any shape `random_shape` makes (flat and unbounded ones included:
+/// they are legal children), sometimes `inverse`.
+fn csg_leaf(r: &mut Rng) -> ObjectDesc {
+    ObjectDesc {
+        shape: random_shape(r),
+        transform: random_transform(r),
+        texture: TextureDesc::default(),
+        interior: InteriorDesc::default(),
+        no_shadow: false,
+        inverse: r.pick(6) == 0,
+        hollow: false,
+        source: SourceRef::default(),
+    }
+}
+
+/// A random CSG tree of depth up to `depth` over random solids.
+fn csg_tree(r: &mut Rng, depth: u32) -> ObjectDesc {
+    use strahl::scene::desc::CsgOp;
+    if depth == 0 || r.pick(3) == 0 {
+        return csg_leaf(r);
+    }
+    let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Merge, CsgOp::Union, CsgOp::Clip][r.pick(5) as usize];
+    let children = (0..2 + r.pick(2)).map(|_| csg_tree(r, depth - 1)).collect();
+    ObjectDesc { shape: ShapeDesc::Csg { op, children }, inverse: r.pick(8) == 0, ..csg_leaf(r) }
+}
+
+fn csg_scene(object: ObjectDesc) -> Scene {
+    let desc = SceneDesc { objects: vec![object], ..SceneDesc::default() };
+    Scene::build(&desc, DVec3::ZERO, AccelKind::Bvh)
+}
+
+/// Every solid's `inside` against the parity of its surface crossings: a ray from a point
+/// crosses a closed surface an odd number of times exactly when the point is inside. Counting
+/// crossings walks each ray with `t_min` set to the last one, as CSG does, so this also checks
+/// that every shape finds the root after a given one.
+#[test]
+fn inside_agrees_with_crossing_parity() {
+    use strahl::geometry::ray::MISS;
+    let r = &mut Rng(0x1A51DE);
+    let (mut checked, mut inside_count) = (0, 0);
+    for _ in 0..400 {
+        let leaf = csg_leaf(r);
+        let flat =
+            matches!(leaf.shape, ShapeDesc::Triangle { .. } | ShapeDesc::Polygon { .. } | ShapeDesc::Disc { .. });
+        // An open cone is a solid with holes in its surface: no parity to count.
+        if matches!(leaf.shape, ShapeDesc::Cone { open: true, .. }) {
+            continue;
+        }
+        let scene = csg_scene(ObjectDesc { inverse: false, ..leaf });
+        // Planes stay outside the primitives (and are checked as CSG leaves below).
+        let Some(&p) = scene.prims.first() else { continue };
+        let b = scene.bounds_of(&p);
+        let (c, h) = ((b.min + b.max) * 0.5, (b.max - b.min) * 0.6);
+        for _ in 0..50 {
+            let origin = if h.is_finite() { c + h * r.v(-1.0, 1.0).as_vec3() } else { r.v(-5.0, 5.0).as_vec3() };
+            let ray = Ray::new(origin, r.unit().as_vec3());
+            let mut t = 0.0f32;
+            let mut crossings = Vec::new();
+            while crossings.len() < 16 {
+                let next = scene.hit_prim_in(&p, &ray.lanes(), t, MISS);
+                if next == MISS {
+                    break;
+                }
+                crossings.push(next);
+                t = next;
+            }
+            // Grazing rays and points on the surface decide nothing.
+            let scale = 1.0 + origin.length();
+            let near = |a: f32, b: f32| (a - b).abs() < 1e-3 * scale;
+            if crossings.first().is_some_and(|&c| c < 1e-3 * scale) || crossings.windows(2).any(|w| near(w[0], w[1])) {
+                continue;
+            }
+            let inside = scene.inside_prim(&p, strahl::lanes::V3::from_vec3(origin));
+            if flat {
+                assert!(!inside, "a flat shape has no inside");
+                continue;
+            }
+            assert_eq!(inside, crossings.len() % 2 == 1, "{:?} at {origin} along {}: {crossings:?}", p.kind, ray.dir);
+            checked += 1;
+            inside_count += inside as usize;
+        }
+    }
+    assert!(checked > 5000 && inside_count > 300, "{checked} rays checked, {inside_count} from inside");
+}
+
+/// Where a CSG child's surface crosses `ray`, from every crossing of its leaves tested one by
+/// one: a leaf's crossings; a node's surface children's crossings where the other children
+/// agree (a union: always; a merge: none contains the point; the rest: all contain it).
+fn csg_reference(scene: &Scene, target: strahl::scene::csg::CsgTarget, ray: &Ray) -> Vec<f32> {
+    use strahl::geometry::ray::MISS;
+    use strahl::scene::csg::{CsgRule, CsgTarget};
+    match target {
+        CsgTarget::Leaf(i) => {
+            let (mut out, mut from) = (Vec::new(), 0.0f32);
+            while out.len() < 64 {
+                let c = scene.hit_prim_in(&scene.prims[i as usize], &ray.lanes(), from, MISS);
+                if c == MISS {
+                    break;
+                }
+                out.push(c);
+                from = c;
+            }
+            out
+        }
+        CsgTarget::Node(k) => {
+            let n = scene.csg[k as usize];
+            let kids = &scene.csg_children[n.children()];
+            let inside = |c: &strahl::scene::csg::CsgChild, t: f32| {
+                let p = strahl::lanes::V3::from_vec3(ray.at(t));
+                let raw = match c.target {
+                    CsgTarget::Leaf(i) => scene.inside_prim(&scene.prims[i as usize], p),
+                    CsgTarget::Node(m) => scene.inside_node(m, p),
+                };
+                raw != c.inverse
+            };
+            let mut out = Vec::new();
+            for (i, c) in kids[..n.surfaces as usize].iter().enumerate() {
+                for t in csg_reference(scene, c.target, ray) {
+                    let mut others = kids.iter().enumerate().filter(|(j, _)| *j != i).map(|(_, o)| inside(o, t));
+                    let keep = match n.rule {
+                        CsgRule::Union => true,
+                        CsgRule::Merge => !others.any(|x| x),
+                        CsgRule::All => others.all(|x| x),
+                    };
+                    if keep {
+                        out.push(t);
+                    }
+                }
+            }
+            out
+        }
+    }
+}
+
+/// The CSG node's nearest surface against `csg_reference`, built from its leaves' crossings
+/// and the nodes' inside tests rather than the node's own search. Packets must give the single
+/// ray's bits, and f64 a `t` within rounding of f32's.
+#[test]
+fn csg_surfaces_match_a_crossing_reference() {
+    use strahl::geometry::ray::MISS;
+    use strahl::lanes::{Lane, F8};
+    use strahl::scene::csg::CsgTarget;
+    let r = &mut Rng(0xC5C);
+    let (mut compared, mut hits) = (0, 0);
+    for _ in 0..300 {
+        let scene = csg_scene(csg_tree(r, 3));
+        let Some(&node) = scene.prims.first() else { continue };
+        if node.kind != strahl::scene::build::ShapeKind::Csg {
+            continue;
+        }
+        for _ in 0..40 {
+            let ray = Ray::new(r.v(-9.0, 9.0).as_vec3(), r.unit().as_vec3());
+            let (t, leaf) = scene.hit_csg(node.index, &ray.lanes(), 0.0, f32::INFINITY);
+            // The same through eight lanes, each a different ray but this one in lane 3.
+            let mut rays = [Ray::new(r.v(-9.0, 9.0).as_vec3(), r.unit().as_vec3()); 8];
+            rays[3] = ray;
+            let packet = strahl::accel::packet::Ray8::from_fn(|i| (rays[i].origin, rays[i].dir, rays[i].inv_dir));
+            let (t8, _) = scene.hit_csg(node.index, &packet, F8::splat(0.0), F8::splat(MISS));
+            assert_eq!(t8.0[3].to_bits(), t.to_bits(), "packet lane against the single ray");
+            let (t64, _) = scene.hit_csg(node.index, &ray.lanes_f64(), 0.0, f64::INFINITY);
+            // Reference: every leaf crossing.
+            let mut crossings = Vec::new();
+            for leaf in &scene.prims[scene.first_leaf as usize..] {
+                let mut from = 0.0f32;
+                while crossings.len() < 200 {
+                    let c = scene.hit_prim_in(leaf, &ray.lanes(), from, MISS);
+                    if c == MISS {
+                        break;
+                    }
+                    crossings.push(c);
+                    from = c;
+                }
+            }
+            crossings.sort_by(f32::total_cmp);
+            let scale = 1.0 + ray.origin.length();
+            if crossings.windows(2).any(|w| w[1] - w[0] < 2e-3 * scale) || crossings.first().is_some_and(|&c| c < 2e-3)
+            {
+                continue;
+            }
+            let delta = 1e-3 * scale;
+            let expected =
+                csg_reference(&scene, CsgTarget::Node(node.index), &ray, delta).into_iter().min_by(f32::total_cmp);
+            match expected {
+                Some(e) => {
+                    assert!(
+                        (t - e).abs() <= 1e-4 * scale,
+                        "node hit {t}, reference {e}, crossings {crossings:?}, ray {ray:?}, nodes {:?}, children {:?}, leaves {:?}",
+                        scene.csg,
+                        scene.csg_children,
+                        &scene.prims[scene.first_leaf as usize..]
+                    );
+                    assert!(leaf as usize >= scene.first_leaf as usize, "the hit names a leaf");
+                    // Relative too: a plane met at a grazing angle far away is ill-conditioned.
+                    let tol = 1e-3 * scale as f64 + 1e-5 * e as f64;
+                    assert!((t64 - e as f64).abs() <= tol, "f64 {t64} against {e}");
+                    hits += 1;
+                }
+                None => assert_eq!(t, MISS, "node hit {t} where the reference has none: {crossings:?}"),
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared > 3000 && hits > 500, "{compared} rays compared, {hits} hits");
 }

@@ -94,6 +94,13 @@ fn cylinders_cones_and_discs_match_povray() {
     check_psnr("cones", &scene("cones"), 35.0);
 }
 
+/// CSG: intersection, difference (with a nested union and a torus groove), glass merge,
+/// inverse, clipped_by, planes as half-spaces, textures inherited through a declared object.
+#[test]
+fn csg_matches_povray() {
+    check_psnr("csg", &scene("csg"), 35.0);
+}
+
 /// Tori upright, tilted, thin (with `sturm`), squashed and edge-on.
 #[test]
 fn tori_match_povray() {

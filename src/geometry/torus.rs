@@ -10,7 +10,7 @@ use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{RayLanes, MISS};
-use super::roots::smallest_root;
+use super::roots::{roots_in, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
@@ -37,7 +37,9 @@ impl Torus {
 }
 
 /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the torus.
-fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option<f64> {
+/// `round` is the lane's rounding (`Lane::round_f64`): roots are compared with the interval as
+/// the lane will hold them.
+fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let len2 = dot(d, d);
     // NaN compares false everywhere: each test below also rejects it.
@@ -67,9 +69,11 @@ fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option
     let b2 = p[0] * u[0] + p[2] * u[2];
     let c2 = p[0] * p[0] + p[2] * p[2];
     let c = [1.0, 4.0 * f, 4.0 * f * f + 2.0 * e - 4.0 * a2, 4.0 * f * e - 8.0 * b2, e * e - 4.0 * c2];
-    let s = smallest_root(&c, lo, hi)?;
-    let t = t_c + s / len;
-    (t > t_min && t < t_max).then_some(t)
+    // The first root whose `t` lies in the interval: a root at `t_min` itself (CSG looking
+    // past a rejected crossing, with `t_min` that crossing rounded) may land on either side.
+    let mut roots = [0.0; MAX_DEGREE];
+    let n = roots_in(&c, lo, hi, &mut roots);
+    roots[..n].iter().map(|s| round(t_c + s / len)).find(|&t| t > t_min && t < t_max)
 }
 
 impl Shape for Torus {
@@ -80,7 +84,7 @@ impl Shape for Torus {
         L::from_fn_f64(|i| {
             let v = |v: V3<L>| [v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i)];
             let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
-            solve(v(o), v(d), self.minor as f64, lo, hi).unwrap_or(MISS as f64)
+            solve(v(o), v(d), self.minor as f64, lo, hi, L::round_f64).unwrap_or(MISS as f64)
         })
     }
 

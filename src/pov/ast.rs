@@ -5,6 +5,7 @@ use std::rc::Rc;
 
 use super::source::Span;
 use super::value::Value;
+pub use crate::scene::desc::CsgOp;
 
 /// An item of the scene as the parser hands it to `lower`; directives never get here, the
 /// token stream runs them (`parser::directives`).
@@ -321,8 +322,9 @@ pub enum ObjectKind {
     Ref(Expr),
     /// `object { sphere { ... } ... }`: an object written inside `object`.
     Inner(Box<Object>),
-    /// `union { ... }` or `merge { ... }`: child objects and the directives that make them.
-    Csg { merge: bool, children: Vec<Stmt> },
+    /// `union`, `merge`, `intersection` or `difference { ... }`: child objects and the
+    /// directives that make them.
+    Csg { op: CsgOp, children: Vec<Stmt> },
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -340,6 +342,20 @@ pub enum Modifier {
     Open(Span),
     /// `sturm` on a polynomial shape: POV-Ray's robust root finder, which strahl always uses.
     Sturm(Span),
+    /// `inverse`: inside and outside swap (for CSG).
+    Inverse,
+    /// `clipped_by { objects }`: only the surface inside all of them remains.
+    ClippedBy(Clip),
+    /// `bounded_by { objects }`: a hint for the renderer, which changes no picture.
+    BoundedBy(Clip),
+}
+
+/// What `clipped_by` and `bounded_by` hold.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Clip {
+    Objects(Vec<Stmt>, Span),
+    /// `clipped_by { bounded_by }` or `bounded_by { clipped_by }`: the other one's objects.
+    Other(Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]

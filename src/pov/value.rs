@@ -11,8 +11,8 @@ use crate::pov::ast::BinOp;
 use crate::pov::lexer::Token;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{
-    CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc, ObjectDesc, PigmentDesc,
-    TextureDesc, Transform,
+    CameraDesc, Color, ColorMapEntry, CsgOp, FinishDesc, InteriorDesc, LightDesc, NormalDesc, ObjectDesc, PigmentDesc,
+    ShapeDesc, SourceRef, TextureDesc, Transform,
 };
 
 #[derive(Clone, Debug, PartialEq)]
@@ -114,13 +114,76 @@ pub struct Part {
     pub textured: bool,
     /// An `interior` was given.
     pub has_interior: bool,
+    /// A CSG node's children, kept as parts while lowering so that a texture given later (on
+    /// `object { Declared pigment { .. } }`) still reaches the leaves without one. `desc.shape`
+    /// is then `ShapeDesc::Csg` with no children until `into_desc` moves them in.
+    pub children: Vec<Part>,
 }
 
-/// What an object statement lowers to: one shape, or the flattened children of a union.
+impl Part {
+    /// A plain shape without texture or interior.
+    pub fn leaf(desc: ObjectDesc) -> Part {
+        Part { desc, textured: false, has_interior: false, children: Vec::new() }
+    }
+
+    /// A CSG node over `children`.
+    pub fn node(op: CsgOp, children: Vec<Part>, source: SourceRef) -> Part {
+        let desc = ObjectDesc {
+            shape: ShapeDesc::Csg { op, children: Vec::new() },
+            transform: Transform::default(),
+            texture: TextureDesc::default(),
+            interior: InteriorDesc::default(),
+            no_shadow: false,
+            inverse: false,
+            hollow: false,
+            source,
+        };
+        Part { desc, textured: false, has_interior: false, children }
+    }
+
+    pub fn is_node(&self) -> bool {
+        matches!(self.desc.shape, ShapeDesc::Csg { .. })
+    }
+
+    /// Calls `f` on every shape below this part (the part itself when it is one).
+    pub fn for_each_leaf(&mut self, f: &mut impl FnMut(&mut Part)) {
+        if self.is_node() {
+            for c in &mut self.children {
+                c.for_each_leaf(f);
+            }
+        } else {
+            f(self)
+        }
+    }
+
+    /// Shapes below this part.
+    pub fn leaf_count(&self) -> usize {
+        if self.is_node() {
+            self.children.iter().map(Part::leaf_count).sum()
+        } else {
+            1
+        }
+    }
+
+    /// The finished object: leaves without a texture get `default` (the one in effect where
+    /// the object is placed), and a node's children move into its shape.
+    pub fn into_desc(self, default: &TextureDesc) -> ObjectDesc {
+        let mut desc = self.desc;
+        if let ShapeDesc::Csg { children, .. } = &mut desc.shape {
+            *children = self.children.into_iter().map(|c| c.into_desc(default)).collect();
+        } else if !self.textured {
+            desc.texture = default.clone();
+        }
+        desc
+    }
+}
+
+/// What an object statement lowers to: one shape (or CSG node), or the flattened children of a
+/// union.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Group {
     pub parts: Vec<Part>,
-    /// A `union`/`merge` (modifiers apply to each child) rather than a single shape.
+    /// A `union` (modifiers apply to each child) rather than a single object.
     pub csg: bool,
 }
 

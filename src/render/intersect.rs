@@ -31,18 +31,44 @@ impl Scene {
     /// dispatch every path shares, so each shape's formula is written once (`geometry::Shape`).
     #[inline(always)]
     pub fn hit_prim<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> L {
+        self.hit_prim_in(p, ray, L::splat(0.0), t_max)
+    }
+
+    /// `hit_prim` in `(t_min, t_max)`. A CSG node answers its nearest surface; which leaf
+    /// that is, `resolve` finds afterwards.
+    #[inline(always)]
+    pub fn hit_prim_in<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         let i = p.index as usize;
-        let zero = L::splat(0.0);
         match p.kind {
-            ShapeKind::Sphere => self.spheres[i].hit(ray, zero, t_max),
-            ShapeKind::Ellipsoid => self.ellipsoids[i].hit(ray, zero, t_max),
-            ShapeKind::Box => self.boxes[i].hit(ray, zero, t_max),
-            ShapeKind::Triangle => self.triangles[i].hit(ray, zero, t_max),
-            ShapeKind::Polygon => self.polygons[i].hit(ray, zero, t_max),
-            ShapeKind::Cone => self.cones[i].hit(ray, zero, t_max),
-            ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
-            ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
-            ShapeKind::Plane => L::splat(MISS),
+            ShapeKind::Sphere => self.spheres[i].hit(ray, t_min, t_max),
+            ShapeKind::Ellipsoid => self.ellipsoids[i].hit(ray, t_min, t_max),
+            ShapeKind::Box => self.boxes[i].hit(ray, t_min, t_max),
+            ShapeKind::Triangle => self.triangles[i].hit(ray, t_min, t_max),
+            ShapeKind::Polygon => self.polygons[i].hit(ray, t_min, t_max),
+            ShapeKind::Cone => self.cones[i].hit(ray, t_min, t_max),
+            ShapeKind::Disc => self.discs[i].hit(ray, t_min, t_max),
+            ShapeKind::Torus => self.tori[i].hit(ray, t_min, t_max),
+            // Only CSG leaves are planes among the primitives.
+            ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
+            ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
+        }
+    }
+
+    /// Which points lie inside primitive `p`'s solid (not counting its `flip`).
+    #[inline(always)]
+    pub fn inside_prim<L: Lane>(&self, p: &PrimRef, q: V3<L>) -> L::Mask {
+        let i = p.index as usize;
+        match p.kind {
+            ShapeKind::Sphere => self.spheres[i].inside(q),
+            ShapeKind::Ellipsoid => self.ellipsoids[i].inside(q),
+            ShapeKind::Box => self.boxes[i].inside(q),
+            ShapeKind::Triangle => self.triangles[i].inside(q),
+            ShapeKind::Polygon => self.polygons[i].inside(q),
+            ShapeKind::Cone => self.cones[i].inside(q),
+            ShapeKind::Disc => self.discs[i].inside(q),
+            ShapeKind::Torus => self.tori[i].inside(q),
+            ShapeKind::Plane => self.half_spaces[i].inside(q),
+            ShapeKind::Csg => self.inside_node(p.index, q),
         }
     }
 
@@ -75,7 +101,20 @@ impl Scene {
             }
             Some(t)
         }) as u64;
-        best
+        best.map(|hit| self.resolve(ray, hit))
+    }
+
+    /// A hit on a CSG node as the hit on its leaf (whose normal and material shade it).
+    #[inline]
+    pub fn resolve(&self, ray: &Ray, hit: Hit) -> Hit {
+        match hit.shape {
+            HitShape::Prim(i) if self.prims[i as usize].kind == ShapeKind::Csg => {
+                let (t, leaf) = self.hit_csg(self.prims[i as usize].index, &ray.lanes(), 0.0, f32::INFINITY);
+                debug_assert_eq!(t, hit.t, "the node's nearest surface, found again");
+                Hit { t: hit.t, shape: HitShape::Prim(leaf as u32) }
+            }
+            _ => hit,
+        }
     }
 
     /// `hit` re-solved in f64 (`Precision::F64`): the same shape's formula on `ray` widened
@@ -83,11 +122,15 @@ impl Scene {
     /// where f64 finds no root near it (a ray grazing an edge, which f32 rounded onto the shape).
     pub fn refine(&self, ray: &Ray, hit: Hit) -> Hit {
         let r = ray.lanes_f64();
+        let t32 = hit.t as f64;
         let t = match hit.shape {
             HitShape::Plane(i) => self.planes[i as usize].hit(&r, 0.0, f64::INFINITY),
+            // A CSG leaf's nearest root may lie outside the node: look only near the hit.
+            HitShape::Prim(i) if i >= self.first_leaf => {
+                self.hit_prim_in(&self.prims[i as usize], &r, t32 * (1.0 - REFINE_WINDOW), f64::INFINITY)
+            }
             HitShape::Prim(i) => self.hit_prim(&self.prims[i as usize], &r, f64::INFINITY),
         };
-        let t32 = hit.t as f64;
         if (t - t32).abs() <= REFINE_WINDOW * t32 {
             Hit { t: t as f32, ..hit }
         } else {
@@ -159,7 +202,7 @@ impl Scene {
             HitShape::Prim(i) => {
                 let r = &self.prims[i as usize];
                 let k = r.index as usize;
-                match r.kind {
+                let n = match r.kind {
                     ShapeKind::Sphere => self.spheres[k].normal(p),
                     ShapeKind::Ellipsoid => self.ellipsoids[k].normal(p),
                     ShapeKind::Box => self.boxes[k].normal(p),
@@ -168,7 +211,14 @@ impl Scene {
                     ShapeKind::Cone => self.cones[k].normal(p),
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
-                    ShapeKind::Plane => V3::splat(Vec3::Y),
+                    ShapeKind::Plane => self.half_spaces[k].normal(p),
+                    // Hits are resolved to leaves before anything asks for a normal.
+                    ShapeKind::Csg => V3::splat(Vec3::Y),
+                };
+                if r.flip {
+                    n.neg()
+                } else {
+                    n
                 }
             }
         }

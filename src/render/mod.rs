@@ -5,6 +5,7 @@
 //! statistics are integer sums, so the result never depends on the thread count or tile order.
 
 pub mod adaptive;
+pub mod csg;
 pub mod image;
 pub mod intersect;
 pub mod packet;

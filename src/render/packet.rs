@@ -95,6 +95,20 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     let mut ids = [[NO_HIT; 8]; 8];
     let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
     intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
+    if !scene.csg.is_empty() {
+        // Hits on CSG nodes become hits on their leaves, one ray at a time (`Scene::resolve`).
+        for r in 0..rows {
+            for i in 0..lanes {
+                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i]) {
+                    if let HitShape::Prim(leaf) =
+                        scene.resolve(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).shape
+                    {
+                        ids[r][i] = leaf;
+                    }
+                }
+            }
+        }
+    }
     if tracer.refines() {
         for r in 0..rows {
             for i in 0..lanes {

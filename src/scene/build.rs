@@ -19,7 +19,8 @@ use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
-use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
+use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgTarget, EVERYWHERE};
+use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc, Transform};
 use crate::scene::material::Material;
 use crate::shading::pattern::Rgbft;
 
@@ -38,13 +39,16 @@ pub enum ShapeKind {
     Cone = 6,
     Disc = 7,
     Torus = 8,
+    /// A CSG node (`intersection`, `difference`, `merge`, `clipped_by`) over leaf primitives.
+    Csg = 9,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 8] = [
+    pub const ALL: [ShapeKind; 9] = [
         ShapeKind::Box,
         ShapeKind::Cone,
+        ShapeKind::Csg,
         ShapeKind::Disc,
         ShapeKind::Plane,
         ShapeKind::Polygon,
@@ -53,7 +57,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 9;
+    pub const COUNT: usize = 10;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -65,6 +69,7 @@ impl ShapeKind {
             ShapeKind::Cone => "Cone/Cylinder",
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
+            ShapeKind::Csg => "CSG",
         }
     }
 }
@@ -77,6 +82,8 @@ pub struct PrimRef {
     pub casts_shadow: bool,
     pub index: u32,
     pub material: u32,
+    /// The normal points in: an `inverse`d shape, or one subtracted by a `difference`.
+    pub flip: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -114,8 +121,14 @@ pub struct Scene {
     pub plane_materials: Vec<u32>,
     /// False for `no_shadow` planes.
     pub plane_casts_shadow: Vec<bool>,
-    /// Bounded primitives; the accelerator's primitive indices refer to this.
+    /// Bounded primitives: the accelerator's, `[..first_leaf]`, then the leaves of CSG nodes.
     pub prims: Vec<PrimRef>,
+    /// Where the CSG leaves start in `prims`.
+    pub first_leaf: u32,
+    pub csg: Vec<CsgNode>,
+    pub csg_children: Vec<CsgChild>,
+    /// Planes inside CSG nodes, as half-spaces (`ShapeKind::Plane` primitives index this).
+    pub half_spaces: Vec<Plane>,
     pub materials: Vec<Material>,
     pub lights: Vec<Light>,
     pub background: Rgbft,
@@ -285,6 +298,7 @@ impl RenderFrame {
                 minor: minor / major,
             },
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
+            ShapeDesc::Csg { .. } => unreachable!("CSG nodes are built by `Scene::add_object`"),
             ShapeDesc::Plane { normal, distance } => {
                 // n·p = d in object space; a point on it maps through the transform and the normal
                 // through the inverse transpose.
@@ -388,6 +402,10 @@ impl Scene {
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
             prims: Vec::new(),
+            first_leaf: 0,
+            csg: Vec::new(),
+            csg_children: Vec::new(),
+            half_spaces: Vec::new(),
             materials: Vec::with_capacity(desc.objects.len()),
             lights: desc
                 .lights
@@ -406,28 +424,128 @@ impl Scene {
             features: Features::default(),
             accel: Accel::None { count: 0 },
         };
+        let mut leaves = Vec::new();
         for object in &desc.objects {
-            let material = scene.materials.len() as u32;
-            let m = Material::from_desc(&object.texture, &object.interior, &frame.world_from_render());
-            scene.features.transparency |= m.may_be_transparent();
-            scene.features.reflection |= m.finish.reflects();
-            scene.features.normals |= m.normal.is_some();
-            scene.materials.push(m);
-            scene.features.no_shadow |= object.no_shadow;
-            scene.add_shape(&object.shape, &object.transform, material, !object.no_shadow);
+            scene.add_object(object, &mut leaves);
         }
+        scene.first_leaf = scene.prims.len() as u32;
+        for c in &mut scene.csg_children {
+            if let CsgTarget::Leaf(i) = &mut c.target {
+                *i += scene.first_leaf;
+            }
+        }
+        scene.prims.extend(leaves);
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
 
-    fn add_shape(&mut self, shape: &ShapeDesc, t: &Transform, material: u32, casts_shadow: bool) {
-        let push = |kind: ShapeKind, index: usize, prims: &mut Vec<PrimRef>| {
-            prims.push(PrimRef { kind, casts_shadow, index: index as u32, material })
+    /// The material of `object`, noting what it needs in `features`.
+    fn add_material(&mut self, object: &ObjectDesc) -> u32 {
+        let m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
+        self.features.transparency |= m.may_be_transparent();
+        self.features.reflection |= m.finish.reflects();
+        self.features.normals |= m.normal.is_some();
+        self.features.no_shadow |= object.no_shadow;
+        self.materials.push(m);
+        self.materials.len() as u32 - 1
+    }
+
+    /// One object of the scene: a primitive (or plane), or a CSG node over leaves.
+    fn add_object(&mut self, object: &ObjectDesc, leaves: &mut Vec<PrimRef>) {
+        let ShapeDesc::Csg { op, children } = &object.shape else {
+            let material = self.add_material(object);
+            match self.frame.place(&object.shape, &object.transform) {
+                RenderShape::Plane { normal, distance } => {
+                    self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
+                    self.plane_materials.push(material);
+                    self.plane_casts_shadow.push(!object.no_shadow);
+                }
+                placed => {
+                    let (kind, index) = self.store(placed);
+                    let casts_shadow = !object.no_shadow;
+                    self.prims.push(PrimRef { kind, casts_shadow, index, material, flip: object.inverse });
+                }
+            }
+            return;
         };
-        match self.frame.place(shape, t) {
+        // A merge of opaque shapes looks like their union: its inner surfaces never show.
+        if *op == CsgOp::Merge && !object.inverse && children.iter().all(|c| !may_show_inner_surfaces(c)) {
+            for c in children {
+                self.add_object(c, leaves);
+            }
+            return;
+        }
+        let start = leaves.len();
+        let (target, bounds) = self.add_csg_child(object, false, leaves);
+        let CsgTarget::Node(index) = target else { unreachable!("a CSG description makes a node") };
+        let mut b = bounds.surface;
+        if is_unbounded(&b) {
+            // Outside every bounded primitive's reach, so the accelerator still works; an
+            // unbounded node is tested by every ray that reaches the scene's box.
+            b = Aabb::new(b.min.max(Vec3::splat(-UNBOUNDED)), b.max.min(Vec3::splat(UNBOUNDED)));
+        }
+        self.csg[index as usize].min = b.min;
+        self.csg[index as usize].max = b.max;
+        let material = leaves.get(start).map_or(0, |l| l.material);
+        let casts_shadow = children.iter().any(casts_any_shadow);
+        self.prims.push(PrimRef { kind: ShapeKind::Csg, casts_shadow, index, material, flip: false });
+    }
+
+    /// `object` as a CSG child below nodes whose inversions multiply to `flip`: its leaves go
+    /// to `leaves`, its nodes to `csg`.
+    fn add_csg_child(
+        &mut self,
+        object: &ObjectDesc,
+        flip: bool,
+        leaves: &mut Vec<PrimRef>,
+    ) -> (CsgTarget, ChildBounds) {
+        let flip = flip ^ object.inverse;
+        let ShapeDesc::Csg { op, children } = &object.shape else {
+            let material = self.add_material(object);
+            let (kind, index) = match self.frame.place(&object.shape, &object.transform) {
+                RenderShape::Plane { normal, distance } => {
+                    self.half_spaces.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
+                    (ShapeKind::Plane, self.half_spaces.len() as u32 - 1)
+                }
+                placed => self.store(placed),
+            };
+            let prim = PrimRef { kind, casts_shadow: !object.no_shadow, index, material, flip };
+            let surface = if kind == ShapeKind::Plane { EVERYWHERE } else { self.bounds_of(&prim) };
+            leaves.push(prim);
+            return (CsgTarget::Leaf(leaves.len() as u32 - 1), ChildBounds::of_leaf(surface, object.inverse));
+        };
+        let (rule, subtracts, all_surfaces) = op.rule();
+        let mut kids = Vec::with_capacity(children.len());
+        let mut bounds = Vec::with_capacity(children.len());
+        for (i, c) in children.iter().enumerate() {
+            let inverse = subtracts && i > 0;
+            let (target, b) = self.add_csg_child(c, flip ^ inverse, leaves);
+            let b = if inverse { ChildBounds { inside: EVERYWHERE, ..b } } else { b };
+            kids.push(CsgChild { target, inverse: inverse ^ c.inverse });
+            bounds.push(b);
+        }
+        let surfaces = if all_surfaces { kids.len() } else { kids.len().min(1) };
+        let b = ChildBounds::of_node(rule, &bounds, surfaces, object.inverse);
+        let first = self.csg_children.len() as u32;
+        self.csg_children.extend(kids);
+        self.csg.push(CsgNode {
+            rule,
+            first,
+            count: children.len() as u32,
+            surfaces: surfaces as u32,
+            min: b.surface.min,
+            max: b.surface.max,
+        });
+        (CsgTarget::Node(self.csg.len() as u32 - 1), b)
+    }
+
+    /// Puts a placed (non-plane) shape into its array: its kind and index there.
+    fn store(&mut self, placed: RenderShape) -> (ShapeKind, u32) {
+        let at = |len: usize| len as u32 - 1;
+        match placed {
             RenderShape::Sphere { center, radius } => {
                 self.spheres.push(Sphere { center: center.as_vec3(), radius: radius as f32 });
-                push(ShapeKind::Sphere, self.spheres.len() - 1, &mut self.prims);
+                (ShapeKind::Sphere, at(self.spheres.len()))
             }
             RenderShape::Ellipsoid { render_from_object, center, radius } => {
                 // Composed in f64 and cast once: the sphere's object-space centre is as written
@@ -437,38 +555,34 @@ impl Scene {
                     * DAffine3::from_translation(center)
                     * DAffine3::from_scale(DVec3::splat(radius));
                 self.ellipsoids.push(Ellipsoid::new(affine_f32(&xf)));
-                push(ShapeKind::Ellipsoid, self.ellipsoids.len() - 1, &mut self.prims);
+                (ShapeKind::Ellipsoid, at(self.ellipsoids.len()))
             }
             RenderShape::Box { min, max, frame } => {
                 let frame = frame.map(|f| frame_for(affine_f32(&f)));
                 self.boxes.push(Cuboid { min: min.as_vec3(), max: max.as_vec3(), frame });
-                push(ShapeKind::Box, self.boxes.len() - 1, &mut self.prims);
+                (ShapeKind::Box, at(self.boxes.len()))
             }
             RenderShape::Triangle([a, b, c]) => {
                 self.triangles.push(Triangle::new(a.as_vec3(), b.as_vec3(), c.as_vec3()));
-                push(ShapeKind::Triangle, self.triangles.len() - 1, &mut self.prims);
+                (ShapeKind::Triangle, at(self.triangles.len()))
             }
             RenderShape::Polygon(points) => {
                 self.polygons.push(Polygon::new(&points));
-                push(ShapeKind::Polygon, self.polygons.len() - 1, &mut self.prims);
+                (ShapeKind::Polygon, at(self.polygons.len()))
             }
             RenderShape::Cone { render_from_object, r0, r1, open } => {
                 self.cones.push(Cone::new(affine_f32(&render_from_object), r0 as f32, r1 as f32, open));
-                push(ShapeKind::Cone, self.cones.len() - 1, &mut self.prims);
+                (ShapeKind::Cone, at(self.cones.len()))
             }
             RenderShape::Disc { render_from_object, hole } => {
                 self.discs.push(Disc::new(affine_f32(&render_from_object), hole as f32));
-                push(ShapeKind::Disc, self.discs.len() - 1, &mut self.prims);
+                (ShapeKind::Disc, at(self.discs.len()))
             }
             RenderShape::Torus { render_from_object, minor } => {
                 self.tori.push(Torus::new(affine_f32(&render_from_object), minor as f32));
-                push(ShapeKind::Torus, self.tori.len() - 1, &mut self.prims);
+                (ShapeKind::Torus, at(self.tori.len()))
             }
-            RenderShape::Plane { normal, distance } => {
-                self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
-                self.plane_materials.push(material);
-                self.plane_casts_shadow.push(casts_shadow);
-            }
+            RenderShape::Plane { .. } => unreachable!("planes are stored by the caller"),
         }
     }
 
@@ -487,29 +601,46 @@ impl Scene {
         Some((world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3())))
     }
 
+    /// The bounds of the accelerator's primitives, `prims[..first_leaf]`.
     pub fn prim_bounds(&self) -> Vec<Aabb> {
-        self.prims
-            .iter()
-            .map(|p| {
-                let (lo, hi) = match p.kind {
-                    ShapeKind::Sphere => self.spheres[p.index as usize].bounds(),
-                    ShapeKind::Ellipsoid => {
-                        let e = &self.ellipsoids[p.index as usize];
-                        (e.min, e.max)
-                    }
-                    ShapeKind::Box => self.boxes[p.index as usize].bounds(),
-                    ShapeKind::Triangle => self.triangles[p.index as usize].bounds(),
-                    ShapeKind::Polygon => {
-                        let poly = &self.polygons[p.index as usize];
-                        (poly.min, poly.max)
-                    }
-                    ShapeKind::Cone => self.cones[p.index as usize].bounds(),
-                    ShapeKind::Disc => self.discs[p.index as usize].bounds(),
-                    ShapeKind::Torus => self.tori[p.index as usize].bounds(),
-                    ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
-                };
-                Aabb::new(lo, hi)
-            })
-            .collect()
+        self.prims[..self.first_leaf as usize].iter().map(|p| self.bounds_of(p)).collect()
+    }
+
+    /// One primitive's render-space bounds.
+    pub fn bounds_of(&self, p: &PrimRef) -> Aabb {
+        let i = p.index as usize;
+        let (lo, hi) = match p.kind {
+            ShapeKind::Sphere => self.spheres[i].bounds(),
+            ShapeKind::Ellipsoid => (self.ellipsoids[i].min, self.ellipsoids[i].max),
+            ShapeKind::Box => self.boxes[i].bounds(),
+            ShapeKind::Triangle => self.triangles[i].bounds(),
+            ShapeKind::Polygon => (self.polygons[i].min, self.polygons[i].max),
+            ShapeKind::Cone => self.cones[i].bounds(),
+            ShapeKind::Disc => self.discs[i].bounds(),
+            ShapeKind::Torus => self.tori[i].bounds(),
+            ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
+            ShapeKind::Plane => return EVERYWHERE,
+        };
+        Aabb::new(lo, hi)
+    }
+}
+
+/// Where an unbounded CSG node's box is cut off (render units, far beyond any bounded shape
+/// that f32 holds usefully).
+const UNBOUNDED: f32 = 1e30;
+
+/// Whether any shape of `object` may let light through (so a `merge`'s inner surfaces show).
+fn may_show_inner_surfaces(object: &ObjectDesc) -> bool {
+    match &object.shape {
+        ShapeDesc::Csg { children, .. } => children.iter().any(may_show_inner_surfaces),
+        _ => Material::from_desc(&object.texture, &object.interior, &glam::DMat4::IDENTITY).may_be_transparent(),
+    }
+}
+
+/// Whether any shape of `object` casts a shadow.
+fn casts_any_shadow(object: &ObjectDesc) -> bool {
+    match &object.shape {
+        ShapeDesc::Csg { children, .. } => children.iter().any(casts_any_shadow),
+        _ => !object.no_shadow,
     }
 }

@@ -257,6 +257,40 @@ pub enum ShapeDesc {
         major: f64,
         minor: f64,
     },
+    /// Constructive solid geometry over `children` (each with its own transform, texture and
+    /// `inverse`; the node's own transforms are already applied to them).
+    Csg {
+        op: CsgOp,
+        children: Vec<ObjectDesc>,
+    },
+}
+
+/// How a CSG node combines its children.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    /// Every child's surface.
+    Union,
+    /// The union's surfaces that lie inside no other child.
+    Merge,
+    /// The surfaces of each child that lie inside all the others.
+    Intersection,
+    /// The first child's surface outside all the others, and theirs inside it.
+    Difference,
+    /// `clipped_by`: the first child's surface inside all the others (whose surfaces are not
+    /// added).
+    Clip,
+}
+
+impl CsgOp {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            CsgOp::Union => "union",
+            CsgOp::Merge => "merge",
+            CsgOp::Intersection => "intersection",
+            CsgOp::Difference => "difference",
+            CsgOp::Clip => "clipped_by",
+        }
+    }
 }
 
 impl ShapeDesc {
@@ -272,6 +306,7 @@ impl ShapeDesc {
             ShapeDesc::Cone { .. } => "cone",
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
+            ShapeDesc::Csg { op, .. } => op.keyword(),
         }
     }
 }
@@ -293,6 +328,8 @@ pub struct ObjectDesc {
     pub interior: InteriorDesc,
     /// `no_shadow`: the object is visible but casts no shadow (shadow rays ignore it).
     pub no_shadow: bool,
+    /// `inverse`: inside and outside swap, for an enclosing CSG (and its normal points in).
+    pub inverse: bool,
     /// `hollow`: the inside may hold media. Kept as written; nothing that strahl renders yet
     /// depends on it (in POV-Ray only media and fog inside objects do).
     pub hollow: bool,

@@ -25,6 +25,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transfo
         texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
         interior: Default::default(),
         no_shadow: false,
+        inverse: false,
         hollow: false,
         source: SourceRef { file: "fixtures::seed_scene".into(), line: 0, col: 0 },
     }

@@ -112,6 +112,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
         texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
         interior: Default::default(),
         no_shadow: false,
+        inverse: false,
         hollow: false,
         source: SourceRef { file: "scene::generate".into(), line: index as u32, col: 0 },
     }
@@ -300,7 +301,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             other @ (ShapeDesc::Polygon { .. }
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
-            | ShapeDesc::Torus { .. }) => {
+            | ShapeDesc::Torus { .. }
+            | ShapeDesc::Csg { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

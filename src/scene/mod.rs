@@ -2,6 +2,7 @@
 //! origin), with the fixtures, generators and printer that work on descriptions.
 
 pub mod build;
+pub mod csg;
 pub mod desc;
 pub mod fixtures;
 pub mod generate;

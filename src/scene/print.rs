@@ -14,7 +14,7 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    Color, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc,
+    Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc,
     Transform, Turbulence,
 };
 
@@ -49,6 +49,25 @@ pub fn to_pov(desc: &SceneDesc) -> String {
 }
 
 fn object(s: &mut String, o: &ObjectDesc) {
+    let inverse = if o.inverse { "  inverse\n" } else { "" };
+    if let ShapeDesc::Csg { op, children } = &o.shape {
+        // The node's transforms and textures are on its shapes.
+        match (op, children.split_first()) {
+            (CsgOp::Clip, Some((first, clips))) => {
+                let _ = writeln!(s, "object {{");
+                object(s, first);
+                let _ = writeln!(s, "clipped_by {{");
+                clips.iter().for_each(|c| object(s, c));
+                let _ = writeln!(s, "}}\n{inverse}}}");
+            }
+            _ => {
+                let _ = writeln!(s, "{} {{", op.keyword());
+                children.iter().for_each(|c| object(s, c));
+                let _ = writeln!(s, "{inverse}}}");
+            }
+        }
+        return;
+    }
     let _ = match &o.shape {
         ShapeDesc::Sphere { center, radius } => write!(s, "sphere {{ {}, {}", vec(*center), num(*radius)),
         ShapeDesc::Plane { normal, distance } => write!(s, "plane {{ {}, {}", vec(*normal), num(*distance)),
@@ -71,6 +90,7 @@ fn object(s: &mut String, o: &ObjectDesc) {
             write!(s, "disc {{ {}, {}, {}, {}", vec(*center), vec(*normal), num(*radius), num(*hole))
         }
         ShapeDesc::Torus { major, minor } => write!(s, "torus {{ {}, {}", num(*major), num(*minor)),
+        ShapeDesc::Csg { .. } => unreachable!("written above"),
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
@@ -86,7 +106,7 @@ fn object(s: &mut String, o: &ObjectDesc) {
     let _ = write!(s, "\n    ");
     finish(s, &t.finish);
     let _ = write!(s, "\n  }}\n  interior {{ ior {} }}\n", num(o.interior.ior));
-    let _ = writeln!(s, "  {}\n}}", modifiers(&o.transform.matrix).trim_start());
+    let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix).trim_start());
 }
 
 fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {

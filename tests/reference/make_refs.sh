@@ -16,6 +16,6 @@ render() {
     echo "wrote $out/$2.png"
 }
 render "$root/scenes/seed.pov" seed
-for s in flat reflection refraction shadows legacy gamma22 noversion cones tori; do
+for s in flat reflection refraction shadows legacy gamma22 noversion cones tori csg; do
     render "$here/scenes/$s.pov" "$s"
 done

@@ -168,7 +168,9 @@ fn nested_and_declared_unions() {
          merge { sphere { 0, 3 } #if (1) sphere { 0, 4 } #end }",
     )
     .unwrap();
-    assert_eq!(s.objects.len(), 6);
+    // The union flattens into its four spheres; the merge is one object over its two.
+    assert_eq!(s.objects.len(), 5);
+    assert!(matches!(&s.objects[4].shape, crate::scene::desc::ShapeDesc::Csg { children, .. } if children.len() == 2));
     let inner = s.objects[1].transform.matrix;
     assert_eq!(
         inner,
@@ -180,13 +182,13 @@ fn nested_and_declared_unions() {
 
 #[test]
 fn scene_items_inside_union_are_rejected() {
-    assert_eq!(
-        lower("union { sphere { 0, 1 } camera { } }").unwrap_err(),
-        "`camera` is not supported inside `union` or `merge`"
-    );
-    assert!(lower("difference { sphere { 0, 1 } sphere { x, 1 } }")
-        .unwrap_err()
-        .starts_with("`difference` is not supported"));
+    for csg in ["union", "difference", "intersection"] {
+        assert_eq!(
+            lower(&format!("{csg} {{ sphere {{ 0, 1 }} camera {{ }} }}")).unwrap_err(),
+            "`camera` is not supported inside a CSG object (`union`, `merge`, `intersection`, `difference`, `clipped_by`)"
+        );
+    }
+    assert!(lower("sphere { 0, 1 clipped_by { light_source { 0, 1 } } }").unwrap_err().starts_with("`light_source`"));
 }
 
 #[test]

@@ -18,7 +18,7 @@ use crate::pov::names::NameMap;
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
-use crate::scene::desc::{LightDesc, SceneDesc, SourceRef, TextureDesc};
+use crate::scene::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc};
 pub(crate) use fileio::Mode as FileMode;
 
 /// Total loop iterations (`#while`, `#for`) allowed in one scene: far beyond real scenes (a
@@ -89,6 +89,9 @@ pub struct Lowerer<'f> {
     options: ParseOptions,
     /// The children gathered so far by each open `union`/`merge`, innermost last.
     csg_stack: Vec<Vec<Part>>,
+    /// For each open CSG object: whether a union among its children stays whole (one child,
+    /// in anything but a union).
+    csg_whole_unions: Vec<bool>,
     /// Loop iterations so far, against `MAX_LOOP_ITERATIONS`.
     loop_iterations: u64,
     /// The texture `#default` last set (POV-Ray's own until then): where every texture, pigment,
@@ -112,6 +115,7 @@ impl<'f> Lowerer<'f> {
             output: Vec::new(),
             options: options.clone(),
             csg_stack: Vec::new(),
+            csg_whole_unions: Vec::new(),
             loop_iterations: 0,
             default_texture: TextureDesc::default(),
             random: Default::default(),
@@ -311,7 +315,7 @@ impl<'f> Lowerer<'f> {
         if self.csg_stack.is_empty() {
             Ok(())
         } else {
-            Err(Diag::new(span, format!("`{what}` is not supported inside `union` or `merge`")))
+            Err(Diag::new(span, format!("`{what}` is not supported inside a CSG object (`union`, `merge`, `intersection`, `difference`, `clipped_by`)")))
         }
     }
 
@@ -359,22 +363,21 @@ impl<'f> Lowerer<'f> {
                     Some(children) => children.len(),
                     None => self.scene.objects.len(),
                 };
-                if before + group.parts.len() > MAX_OBJECTS {
+                if before + group.parts.iter().map(Part::leaf_count).sum::<usize>() > MAX_OBJECTS {
                     let place = if self.csg_stack.is_empty() { "the scene" } else { "a union" };
                     return Err(Diag::new(o.span, format!("{place} would have more than {MAX_OBJECTS} objects")));
                 }
+                let whole = group.csg && self.csg_whole_unions.last() == Some(&true);
+                let source = self.files.source_ref(o.span);
                 match self.csg_stack.last_mut() {
+                    Some(children) if whole => children.push(Part::node(CsgOp::Union, group.parts, source)),
                     Some(children) => children.extend(group.parts),
                     None => {
                         // POV-Ray gives an object without a texture the default in effect where
                         // it is placed, not moved by the object's transforms (checked by rendering
                         // a declared sphere placed after a `#default`, and a scaled plane).
                         for part in group.parts {
-                            let mut desc = part.desc;
-                            if !part.textured {
-                                desc.texture = self.default_texture.clone();
-                            }
-                            self.scene.objects.push(desc);
+                            self.scene.objects.push(part.into_desc(&self.default_texture));
                         }
                     }
                 }

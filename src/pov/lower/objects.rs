@@ -1,13 +1,14 @@
 //! Objects: shape arguments → `ShapeDesc` (with the zero-size checks), then modifiers in written
 //! order. A transform moves the object and the patterns already attached to it; a pigment given
-//! after the transform is not moved, exactly as in POV-Ray. `union` and `merge` are flattened
-//! into their children, each carrying the union's transforms.
+//! after the transform is not moved, exactly as in POV-Ray. A `union` is flattened into its
+//! children, each carrying the union's transforms; `merge`, `intersection`, `difference` and
+//! `clipped_by` make CSG nodes, whose transforms likewise go down to their shapes.
 
 use glam::DVec3;
 
 use super::textures::transform_texture;
 use super::Lowerer;
-use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
+use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
 use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Group, Part, Value};
@@ -17,19 +18,16 @@ impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
         let mut group = match &o.kind {
             ObjectKind::Shape(kind, args) => Group {
-                parts: vec![Part {
-                    desc: ObjectDesc {
-                        shape: self.shape(*kind, args, o.span)?,
-                        transform: Transform::default(),
-                        texture: TextureDesc::default(),
-                        interior: InteriorDesc::default(),
-                        no_shadow: false,
-                        hollow: false,
-                        source: self.files.source_ref(o.span),
-                    },
-                    textured: false,
-                    has_interior: false,
-                }],
+                parts: vec![Part::leaf(ObjectDesc {
+                    shape: self.shape(*kind, args, o.span)?,
+                    transform: Transform::default(),
+                    texture: TextureDesc::default(),
+                    interior: InteriorDesc::default(),
+                    no_shadow: false,
+                    inverse: false,
+                    hollow: false,
+                    source: self.files.source_ref(o.span),
+                })],
                 csg: false,
             },
             ObjectKind::Inner(inner) => self.object(inner)?,
@@ -37,10 +35,21 @@ impl Lowerer<'_> {
                 (ExprKind::Value(_), Value::Object(group)) => *group,
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
-            ObjectKind::Csg { children, merge } => self.csg(children, *merge, o.span)?,
+            ObjectKind::Csg { op: CsgOp::Union, children } => {
+                Group { parts: self.children(children, "union", o.span)?, csg: true }
+            }
+            ObjectKind::Csg { op, children } => {
+                let parts = self.children(children, op.keyword(), o.span)?;
+                Group { parts: vec![Part::node(*op, parts, self.files.source_ref(o.span))], csg: false }
+            }
         };
+        // A union flattens into its children unless something needs it whole.
+        if group.csg && o.modifiers.iter().any(|m| matches!(m, Modifier::Inverse | Modifier::ClippedBy(_))) {
+            let parts = std::mem::take(&mut group.parts);
+            group = Group { parts: vec![Part::node(CsgOp::Union, parts, self.files.source_ref(o.span))], csg: false };
+        }
         if group.csg {
-            self.csg_modifiers(&mut group, &o.modifiers)?;
+            self.csg_modifiers(&mut group.parts, &o.modifiers, "union")?;
         } else {
             for part in &mut group.parts {
                 self.modifiers(part, &o.modifiers)?;
@@ -49,129 +58,201 @@ impl Lowerer<'_> {
         Ok(group)
     }
 
-    /// A single shape's modifiers, in written order. A transform moves the object and the
-    /// patterns already attached to it.
+    /// One object's modifiers, in written order. A transform moves the object and the patterns
+    /// already attached to it; on a CSG node, everything but `inverse` and `clipped_by` goes to
+    /// its children as a union's does.
     fn modifiers(&mut self, part: &mut Part, modifiers: &[Modifier]) -> PResult<()> {
+        let mut pending = Inherited::default();
         for m in modifiers {
-            let surface = matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_));
-            if surface && !part.textured {
-                // The first of these starts the object's texture from the default in effect.
-                part.desc.texture = self.default_texture.clone();
-            }
-            let obj = &mut part.desc;
             match m {
-                Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
-                Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
-                Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
-                Modifier::Texture(t) if part.textured => return Err(Diag::new(t.span, LAYERED)),
-                Modifier::Texture(t) => obj.texture = self.texture(t)?,
-                Modifier::Interior(i) => {
-                    obj.interior = self.interior(i)?;
-                    part.has_interior = true;
-                }
-                Modifier::Transform(t) => {
-                    let t = self.transform(t)?;
-                    obj.transform = obj.transform.then(&t);
-                    transform_texture(&mut obj.texture, &t);
-                }
-                Modifier::NoShadow => obj.no_shadow = true,
-                Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
-                Modifier::Open(span) => match &mut obj.shape {
-                    ShapeDesc::Cone { open, .. } => *open = true,
-                    other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
-                },
-                Modifier::Sturm(span) => {
-                    if !matches!(obj.shape, ShapeDesc::Torus { .. }) {
-                        return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), "torus"));
+                Modifier::Inverse => part.desc.inverse = !part.desc.inverse,
+                Modifier::ClippedBy(clip) => {
+                    let clips = match clip {
+                        Clip::Objects(children, span) => self.children(children, "clipped_by", *span)?,
+                        // `clipped_by { bounded_by }`: the bounding objects clip.
+                        Clip::Other(span) => match modifiers.iter().find_map(|m| match m {
+                            Modifier::BoundedBy(Clip::Objects(children, span)) => Some((children, span)),
+                            _ => None,
+                        }) {
+                            Some((children, span)) => self.children(children, "bounded_by", *span)?,
+                            None => {
+                                return Err(Diag::new(
+                                    *span,
+                                    "`clipped_by { bounded_by }` needs a `bounded_by` with objects",
+                                ))
+                            }
+                        },
+                    };
+                    if part.is_node() {
+                        self.inherit(&mut part.children, &mut pending);
                     }
+                    let inner = std::mem::replace(part, Part::leaf(part.desc.clone()));
+                    let mut children = vec![inner];
+                    children.extend(clips);
+                    *part = Part::node(CsgOp::Clip, children, part.desc.source.clone());
                 }
+                // A hint: the objects are checked, and change no picture.
+                Modifier::BoundedBy(Clip::Objects(children, span)) => {
+                    self.children(children, "bounded_by", *span)?;
+                }
+                Modifier::BoundedBy(Clip::Other(_)) => {}
+                _ if part.is_node() => {
+                    let word = part.desc.shape.keyword();
+                    self.csg_modifier(&mut part.children, m, &mut pending, word)?
+                }
+                _ => self.leaf_modifier(part, m)?,
             }
-            if surface || matches!(m, Modifier::Texture(_)) {
-                part.textured = true;
-            }
+        }
+        if part.is_node() {
+            self.inherit(&mut part.children, &mut pending);
         }
         Ok(())
     }
 
-    /// `union { ... }` / `merge { ... }`: the children, flattened. strahl's objects are opaque
-    /// or refract as separate surfaces, so `merge` (which removes the inner surfaces of
-    /// overlapping children, visible only through transparent ones) lowers like `union`.
-    fn csg(&mut self, children: &[Stmt], merge: bool, span: Span) -> PResult<Group> {
+    /// One modifier of a single shape.
+    fn leaf_modifier(&mut self, part: &mut Part, m: &Modifier) -> PResult<()> {
+        let surface = matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_));
+        if surface && !part.textured {
+            // The first of these starts the object's texture from the default in effect.
+            part.desc.texture = self.default_texture.clone();
+        }
+        let obj = &mut part.desc;
+        match m {
+            Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
+            Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
+            Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
+            Modifier::Texture(t) if part.textured => return Err(Diag::new(t.span, LAYERED)),
+            Modifier::Texture(t) => obj.texture = self.texture(t)?,
+            Modifier::Interior(i) => {
+                obj.interior = self.interior(i)?;
+                part.has_interior = true;
+            }
+            Modifier::Transform(t) => {
+                let t = self.transform(t)?;
+                obj.transform = obj.transform.then(&t);
+                transform_texture(&mut obj.texture, &t);
+            }
+            Modifier::NoShadow => obj.no_shadow = true,
+            Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
+            Modifier::Open(span) => match &mut obj.shape {
+                ShapeDesc::Cone { open, .. } => *open = true,
+                other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
+            },
+            Modifier::Sturm(span) => {
+                if !matches!(obj.shape, ShapeDesc::Torus { .. }) {
+                    return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), "torus"));
+                }
+            }
+            Modifier::Inverse | Modifier::ClippedBy(_) | Modifier::BoundedBy(_) => {
+                unreachable!("handled by `modifiers`")
+            }
+        }
+        if surface || matches!(m, Modifier::Texture(_)) {
+            part.textured = true;
+        }
+        Ok(())
+    }
+
+    /// The children of a `union`, `merge`, `intersection`, `difference` or `clipped_by`.
+    fn children(&mut self, children: &[Stmt], word: &str, span: Span) -> PResult<Vec<Part>> {
         self.csg_stack.push(Vec::new());
+        // A union flattens into a union only: in anything else it is one child.
+        self.csg_whole_unions.push(word != "union");
         let result = children.iter().try_for_each(|c| self.stmt(c));
+        self.csg_whole_unions.pop();
         let parts = self.csg_stack.pop().unwrap_or_default();
         result?;
         if parts.is_empty() {
-            let word = if merge { "merge" } else { "union" };
             self.warn(Diag::new(span, format!("`{word}` has no objects")));
         }
-        Ok(Group { parts, csg: true })
+        Ok(parts)
     }
 
-    /// A union's modifiers: transforms and `no_shadow` apply to every child; the union's own
-    /// texture and interior go, at the end, to the children that have none, as in POV-Ray.
     /// `hollow` alone is on; with a value, on unless it is 0.
     fn hollow(&self, on: Option<&Expr>) -> PResult<bool> {
         on.map_or(Ok(true), |e| Ok(self.float(e)? != 0.0))
     }
 
-    fn csg_modifiers(&mut self, group: &mut Group, modifiers: &[Modifier]) -> PResult<()> {
-        let mut texture: Option<TextureDesc> = None;
-        let mut interior = None;
+    /// A union's modifiers: transforms and `no_shadow` apply to every child; the union's own
+    /// texture and interior go, at the end, to the children that have none, as in POV-Ray.
+    fn csg_modifiers(&mut self, parts: &mut [Part], modifiers: &[Modifier], word: &str) -> PResult<()> {
+        let mut pending = Inherited::default();
         for m in modifiers {
-            match m {
-                Modifier::Pigment(p) => {
-                    let pigment = self.pigment(p)?;
-                    texture.get_or_insert_with(|| self.default_texture.clone()).pigment = pigment;
-                }
-                Modifier::Normal(n) => {
-                    let normal = self.normal(n)?;
-                    texture.get_or_insert_with(|| self.default_texture.clone()).normal = Some(normal);
-                }
-                Modifier::Finish(f) => {
-                    let finish = self.finish_block(f)?;
-                    texture.get_or_insert_with(|| self.default_texture.clone()).finish = finish;
-                }
-                Modifier::Texture(t) if texture.is_some() => return Err(Diag::new(t.span, LAYERED)),
-                Modifier::Texture(t) => texture = Some(self.texture(t)?),
-                Modifier::Interior(i) => interior = Some(self.interior(i)?),
-                Modifier::Transform(t) => {
-                    let t = self.transform(t)?;
-                    for part in &mut group.parts {
-                        part.desc.transform = part.desc.transform.then(&t);
-                        transform_texture(&mut part.desc.texture, &t);
-                    }
-                    if let Some(tex) = &mut texture {
-                        transform_texture(tex, &t);
-                    }
-                }
-                Modifier::NoShadow => {
-                    for part in &mut group.parts {
-                        part.desc.no_shadow = true;
-                    }
-                }
-                Modifier::Open(span) => return Err(flag_not_taken(*span, "open", "union", "cylinder and cone")),
-                Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", "union", "torus")),
-                // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
-                Modifier::Hollow(on) => {
-                    let hollow = self.hollow(on.as_ref())?;
-                    for part in &mut group.parts {
-                        part.desc.hollow = hollow;
-                    }
-                }
-            }
+            self.csg_modifier(parts, m, &mut pending, word)?;
         }
-        for part in &mut group.parts {
-            if let (false, Some(tex)) = (part.textured, &texture) {
-                part.desc.texture = tex.clone();
-                part.textured = true;
+        self.inherit(parts, &mut pending);
+        Ok(())
+    }
+
+    /// One modifier of a CSG object, for its `parts` (and the shapes below them).
+    fn csg_modifier(&mut self, parts: &mut [Part], m: &Modifier, pending: &mut Inherited, word: &str) -> PResult<()> {
+        let each = |parts: &mut [Part], f: &mut dyn FnMut(&mut Part)| {
+            for p in parts.iter_mut() {
+                p.for_each_leaf(&mut |leaf: &mut Part| f(leaf));
             }
-            if let (false, Some(int)) = (part.has_interior, &interior) {
-                part.desc.interior = *int;
-                part.has_interior = true;
+        };
+        match m {
+            Modifier::Pigment(p) => {
+                let pigment = self.pigment(p)?;
+                pending.texture.get_or_insert_with(|| self.default_texture.clone()).pigment = pigment;
             }
+            Modifier::Normal(n) => {
+                let normal = self.normal(n)?;
+                pending.texture.get_or_insert_with(|| self.default_texture.clone()).normal = Some(normal);
+            }
+            Modifier::Finish(f) => {
+                let finish = self.finish_block(f)?;
+                pending.texture.get_or_insert_with(|| self.default_texture.clone()).finish = finish;
+            }
+            Modifier::Texture(t) if pending.texture.is_some() => return Err(Diag::new(t.span, LAYERED)),
+            Modifier::Texture(t) => pending.texture = Some(self.texture(t)?),
+            Modifier::Interior(i) => pending.interior = Some(self.interior(i)?),
+            Modifier::Transform(t) => {
+                let t = self.transform(t)?;
+                each(parts, &mut |leaf| {
+                    leaf.desc.transform = leaf.desc.transform.then(&t);
+                    transform_texture(&mut leaf.desc.texture, &t);
+                });
+                if let Some(tex) = &mut pending.texture {
+                    transform_texture(tex, &t);
+                }
+            }
+            Modifier::NoShadow => each(parts, &mut |leaf| leaf.desc.no_shadow = true),
+            Modifier::Open(span) => return Err(flag_not_taken(*span, "open", word, "cylinder and cone")),
+            Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", word, "torus")),
+            // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
+            Modifier::Hollow(on) => {
+                let hollow = self.hollow(on.as_ref())?;
+                each(parts, &mut |leaf| leaf.desc.hollow = hollow);
+            }
+            Modifier::BoundedBy(Clip::Objects(children, span)) => {
+                self.children(children, "bounded_by", *span)?;
+            }
+            Modifier::BoundedBy(Clip::Other(_)) => {}
+            Modifier::Inverse | Modifier::ClippedBy(_) => unreachable!("a union taking these is made whole first"),
         }
         Ok(())
+    }
+
+    /// Gives the pending texture and interior of a CSG object to the shapes below `parts` that
+    /// have none.
+    fn inherit(&self, parts: &mut [Part], pending: &mut Inherited) {
+        let Inherited { texture, interior } = std::mem::take(pending);
+        if texture.is_none() && interior.is_none() {
+            return;
+        }
+        for p in parts.iter_mut() {
+            p.for_each_leaf(&mut |leaf| {
+                if let (false, Some(tex)) = (leaf.textured, &texture) {
+                    leaf.desc.texture = tex.clone();
+                    leaf.textured = true;
+                }
+                if let (false, Some(int)) = (leaf.has_interior, &interior) {
+                    leaf.desc.interior = *int;
+                    leaf.has_interior = true;
+                }
+            });
+        }
     }
 
     fn shape(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
@@ -317,6 +398,14 @@ fn collinear(points: &[DVec3]) -> bool {
     let far = points.iter().copied().max_by(|p, q| (*p - a).length().total_cmp(&(*q - a).length())).unwrap_or(a);
     let dir = (far - a) / scale;
     points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
+}
+
+/// A CSG object's texture and interior, given to its children without one at the end of its
+/// modifiers.
+#[derive(Default)]
+struct Inherited {
+    texture: Option<TextureDesc>,
+    interior: Option<InteriorDesc>,
 }
 
 /// `flag` written on a shape that does not take it.

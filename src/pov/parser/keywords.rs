@@ -114,8 +114,6 @@ pub(crate) const RESERVED: &[&str] = &[
 
 /// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
 pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
-    "difference",
-    "intersection",
     "blob",
     "mesh",
     "mesh2",
@@ -157,9 +155,6 @@ const UNSUPPORTED_WORDS: &[&str] = &[
     "double_illuminate",
     "matrix",
     "transform",
-    "inverse",
-    "bounded_by",
-    "clipped_by",
     "material",
     "metallic",
     "irid",

@@ -5,7 +5,8 @@ use std::rc::Rc;
 
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
-    CameraItem, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
+    CameraItem, Clip, CsgOp, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
+    TransformKind,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
@@ -18,6 +19,8 @@ const TOP_LEVEL: &[&str] = &[
     "object",
     "union",
     "merge",
+    "intersection",
+    "difference",
     "sphere",
     "plane",
     "box",
@@ -28,7 +31,8 @@ const TOP_LEVEL: &[&str] = &[
     "disc",
     "torus",
 ];
-const SHAPES: &str = "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, union, merge, object";
+const SHAPES: &str =
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, union, merge, intersection, difference, object";
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
@@ -48,10 +52,23 @@ pub const MODIFIERS: &[&str] = &[
     "hollow",
     "open",
     "sturm",
+    "inverse",
+    "clipped_by",
+    "bounded_by",
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || matches!(word, "object" | "union" | "merge")
+    shape_kind(word).is_some() || word == "object" || csg_op(word).is_some()
+}
+
+fn csg_op(word: &str) -> Option<CsgOp> {
+    Some(match word {
+        "union" => CsgOp::Union,
+        "merge" => CsgOp::Merge,
+        "intersection" => CsgOp::Intersection,
+        "difference" => CsgOp::Difference,
+        _ => return None,
+    })
 }
 
 fn shape_kind(word: &str) -> Option<ShapeKind> {
@@ -257,11 +274,11 @@ impl Parser<'_, '_> {
         self.open_block(&word, kw)?;
         let kind = match shape_kind(&word) {
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
-            None if word == "union" || word == "merge" => {
+            None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
                 let children = self.children();
                 self.in_csg = outer;
-                ObjectKind::Csg { merge: word == "merge", children: children? }
+                ObjectKind::Csg { op: csg_op(&word).unwrap_or(CsgOp::Union), children: children? }
             }
             None if self.peek_ident().is_some_and(|w| is_object_keyword(&w) || UNSUPPORTED_SHAPES.contains(&&*w)) => {
                 // `object { sphere { ... } modifiers }`, as a macro that makes an object is used.
@@ -291,6 +308,12 @@ impl Parser<'_, '_> {
                     Modifier::NoShadow
                 }
                 Some("open") => Modifier::Open(self.bump().span),
+                Some("inverse") => {
+                    self.bump();
+                    Modifier::Inverse
+                }
+                Some("clipped_by") => Modifier::ClippedBy(self.clip("clipped_by", "bounded_by")?),
+                Some("bounded_by") => Modifier::BoundedBy(self.clip("bounded_by", "clipped_by")?),
                 Some("sturm") => Modifier::Sturm(self.bump().span),
                 Some("hollow") => {
                     self.bump();
@@ -339,6 +362,23 @@ impl Parser<'_, '_> {
         }
         self.close_block(&word, kw)?;
         Ok(Object { kind, modifiers, span: kw })
+    }
+
+    /// `clipped_by { objects }` / `bounded_by { objects }`, or the one naming the other
+    /// (`clipped_by { bounded_by }`).
+    fn clip(&mut self, word: &str, other: &str) -> PResult<Clip> {
+        let kw = self.bump().span;
+        self.open_block(word, kw)?;
+        let clip = if self.peek_ident().as_deref() == Some(other) {
+            Clip::Other(self.bump().span)
+        } else {
+            let outer = std::mem::replace(&mut self.in_csg, true);
+            let children = self.children();
+            self.in_csg = outer;
+            Clip::Objects(children?, kw)
+        };
+        self.close_block(word, kw)?;
+        Ok(clip)
     }
 
     /// The comma-separated arguments of a shape; commas are optional, as in POV-Ray.

@@ -43,7 +43,7 @@ fn unsupported_shape_is_named() {
     assert_eq!(
         e,
         "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
-         union, merge, object)"
+         union, merge, intersection, difference, object)"
     );
 }
 

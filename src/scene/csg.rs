@@ -1,0 +1,147 @@
+//! CSG in render data: the nodes of `intersection`, `difference`, `merge`, `clipped_by` (and a
+//! `union` inside them) over leaf primitives, with the bounds that let them sit in the BVH.
+//!
+//! A node is one bounded primitive of the scene (`ShapeKind::Csg`); its leaves are ordinary
+//! primitives stored after the scene's own (`Scene::prims[first_leaf..]`), outside the
+//! accelerator, with their own materials. The queries (which surface a ray meets first, which
+//! points are inside) are in `render::csg`.
+
+use glam::Vec3;
+
+use crate::accel::aabb::Aabb;
+use crate::scene::desc::CsgOp;
+
+/// How a node's children combine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgRule {
+    /// Every child's surface; inside any child.
+    Union,
+    /// A child's surface where it is inside no other child; inside any child.
+    Merge,
+    /// A child's surface where it is inside every other child; inside all of them
+    /// (`intersection`, `difference` with its subtracted children inverted, `clipped_by`).
+    All,
+}
+
+/// One node: `children` index `Scene::csg_children`.
+#[derive(Clone, Copy, Debug)]
+pub struct CsgNode {
+    pub rule: CsgRule,
+    pub first: u32,
+    pub count: u32,
+    /// Only the first `surfaces` children are surfaces (`clipped_by`: only the clipped object);
+    /// the rest only decide what is inside.
+    pub surfaces: u32,
+    /// Render-space bounds of the node's surface (infinite where unbounded).
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+impl CsgNode {
+    pub fn children(&self) -> std::ops::Range<usize> {
+        self.first as usize..(self.first + self.count) as usize
+    }
+}
+
+/// What a child is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgTarget {
+    /// A primitive, `Scene::prims[i]`.
+    Leaf(u32),
+    /// A nested node, `Scene::csg[i]`.
+    Node(u32),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CsgChild {
+    pub target: CsgTarget,
+    /// Inside and outside swap (`inverse`, or a subtracted child of `difference`).
+    pub inverse: bool,
+}
+
+impl CsgOp {
+    /// The rule a node of this operation follows, and whether its children after the first
+    /// are inverted (`difference`) and surfaces (all but `clipped_by`'s).
+    pub fn rule(self) -> (CsgRule, bool, bool) {
+        match self {
+            CsgOp::Union => (CsgRule::Union, false, true),
+            CsgOp::Merge => (CsgRule::Merge, false, true),
+            CsgOp::Intersection => (CsgRule::All, false, true),
+            CsgOp::Difference => (CsgRule::All, true, true),
+            CsgOp::Clip => (CsgRule::All, false, false),
+        }
+    }
+}
+
+/// The everywhere box: where a child's inside or surface is unbounded.
+pub const EVERYWHERE: Aabb = Aabb { min: Vec3::splat(f32::NEG_INFINITY), max: Vec3::splat(f32::INFINITY) };
+
+/// Bounds of a child as CSG sees them: where its surface can be, and where its inside can be.
+#[derive(Clone, Copy, Debug)]
+pub struct ChildBounds {
+    pub surface: Aabb,
+    pub inside: Aabb,
+}
+
+impl ChildBounds {
+    /// A solid primitive's (its inside is within its surface's box); an inverted child's inside
+    /// is everywhere.
+    pub fn of_leaf(surface: Aabb, inverse: bool) -> ChildBounds {
+        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { surface } }
+    }
+
+    /// A node over children with these bounds (`surfaces` of them surfaces), under `rule`.
+    pub fn of_node(rule: CsgRule, children: &[ChildBounds], surfaces: usize, inverse: bool) -> ChildBounds {
+        let mut surface = Aabb::EMPTY;
+        for c in &children[..surfaces] {
+            surface.grow(&c.surface);
+        }
+        let inside = match rule {
+            CsgRule::Union | CsgRule::Merge => {
+                let mut b = Aabb::EMPTY;
+                children.iter().for_each(|c| b.grow(&c.inside));
+                b
+            }
+            CsgRule::All => {
+                let b = children.iter().fold(EVERYWHERE, |b, c| intersect(&b, &c.inside));
+                surface = intersect(&surface, &b);
+                b
+            }
+        };
+        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { inside } }
+    }
+}
+
+fn intersect(a: &Aabb, b: &Aabb) -> Aabb {
+    Aabb { min: a.min.max(b.min), max: a.max.min(b.max) }
+}
+
+/// Whether a box reaches infinity on some axis (such a node lives outside the BVH).
+pub fn is_unbounded(b: &Aabb) -> bool {
+    !(b.min.is_finite() && b.max.is_finite())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cube(lo: f32, hi: f32) -> Aabb {
+        Aabb::new(Vec3::splat(lo), Vec3::splat(hi))
+    }
+
+    #[test]
+    fn intersection_bounds_shrink_to_the_common_box() {
+        let kids = [ChildBounds::of_leaf(cube(0.0, 2.0), false), ChildBounds::of_leaf(cube(1.0, 3.0), false)];
+        let b = ChildBounds::of_node(CsgRule::All, &kids, 2, false);
+        assert_eq!((b.surface.min, b.surface.max), (Vec3::splat(1.0), Vec3::splat(2.0)));
+    }
+
+    #[test]
+    fn difference_keeps_the_first_box_and_a_half_space_stays_unbounded() {
+        let kids = [ChildBounds::of_leaf(cube(0.0, 2.0), false), ChildBounds::of_leaf(cube(1.0, 3.0), true)];
+        let b = ChildBounds::of_node(CsgRule::All, &kids, 2, false);
+        assert_eq!((b.surface.min, b.surface.max), (Vec3::splat(0.0), Vec3::splat(2.0)));
+        let plane = [ChildBounds::of_leaf(EVERYWHERE, false)];
+        assert!(is_unbounded(&ChildBounds::of_node(CsgRule::All, &plane, 1, false).surface));
+    }
+}

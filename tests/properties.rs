@@ -746,9 +746,7 @@ fn csg_surfaces_match_a_crossing_reference() {
             {
                 continue;
             }
-            let delta = 1e-3 * scale;
-            let expected =
-                csg_reference(&scene, CsgTarget::Node(node.index), &ray, delta).into_iter().min_by(f32::total_cmp);
+            let expected = csg_reference(&scene, CsgTarget::Node(node.index), &ray).into_iter().min_by(f32::total_cmp);
             match expected {
                 Some(e) => {
                     assert!(

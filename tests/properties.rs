@@ -20,7 +20,7 @@ use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 use strahl::scene::desc::{
     CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc, NormalPattern, ObjectDesc,
-    PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform, Turbulence,
+    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform, Turbulence,
 };
 use strahl::scene::print::to_pov;
 
@@ -135,7 +135,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(8) {
+    match r.pick(10) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -165,6 +165,26 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
         6 => {
             let major = r.f(0.2, 2.0);
             ShapeDesc::Torus { major, minor: major * r.f(0.05, 0.9) }
+        }
+        // Polynomial surfaces, mostly unbounded (outside the accelerator): a random quadric,
+        // or a random quartic (x⁴ + y⁴ + z⁴ plus random lower terms), with or without sturm.
+        8 => {
+            let mut coefficients: Vec<f64> = (0..10).map(|_| r.f(-1.0, 1.0)).collect();
+            coefficients[9] = r.f(-2.0, 0.5);
+            ShapeDesc::Poly { order: 2, coefficients, sturm: false, written: PolyForm::Quadric }
+        }
+        9 => {
+            let terms = strahl::geometry::poly::term_exponents(4);
+            let coefficients = terms
+                .iter()
+                .map(|e| match e {
+                    [4, 0, 0] | [0, 4, 0] | [0, 0, 4] => 1.0,
+                    [0, 0, 0] => -r.f(0.5, 3.0),
+                    e if e.iter().sum::<u8>() < 4 => r.f(-0.5, 0.5),
+                    _ => 0.0,
+                })
+                .collect();
+            ShapeDesc::Poly { order: 4, coefficients, sturm: r.pick(2) == 0, written: PolyForm::Quartic }
         }
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
@@ -375,6 +395,16 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
             ) => close3(*c1, *c2) && close3(*n1, *n2) && close(*r1, *r2) && close(*h1, *h2),
             (ShapeDesc::Torus { major: a1, minor: b1 }, ShapeDesc::Torus { major: a2, minor: b2 }) => {
                 close(*a1, *a2) && close(*b1, *b2)
+            }
+            (
+                ShapeDesc::Poly { order: o1, coefficients: c1, sturm: s1, written: w1 },
+                ShapeDesc::Poly { order: o2, coefficients: c2, sturm: s2, written: w2 },
+            ) => {
+                o1 == o2
+                    && s1 == s2
+                    && w1 == w2
+                    && c1.len() == c2.len()
+                    && c1.iter().zip(c2).all(|(a, b)| close(*a, *b))
             }
             _ => false,
         };

@@ -10,6 +10,7 @@ pub mod cone;
 pub mod cuboid;
 pub mod disc;
 pub mod plane;
+pub mod poly;
 pub mod polygon;
 pub mod ray;
 pub mod roots;

@@ -311,6 +311,10 @@ pub enum ShapeKind {
     Cone,
     Disc,
     Torus,
+    Quadric,
+    Cubic,
+    Quartic,
+    Poly,
 }
 
 #[derive(Clone, Debug, PartialEq)]

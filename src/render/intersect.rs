@@ -1,5 +1,6 @@
 //! Scene queries: the nearest hit (`intersect`) and yes/no occlusion (`occluded`), over the
-//! accelerator for bounded shapes plus a loop over the unbounded planes.
+//! accelerator for bounded shapes plus loops over the unbounded planes and the unbounded
+//! primitives (`Scene::unbounded`, see `scene::build`).
 
 use glam::Vec3;
 
@@ -42,6 +43,7 @@ impl Scene {
             ShapeKind::Cone => self.cones[i].hit(ray, zero, t_max),
             ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
             ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
+            ShapeKind::Poly => self.polys[i].hit(ray, zero, t_max),
             ShapeKind::Plane => L::splat(MISS),
         }
     }
@@ -65,6 +67,13 @@ impl Scene {
             if let Some(t) = t {
                 t_best = t;
                 best = Some(Hit { t, shape: HitShape::Plane(i as u32) });
+            }
+        }
+        // Unbounded primitives, nearest strictly first (open interval), so ties keep the plane.
+        for prim in self.unbounded.clone() {
+            if let Some(t) = self.test_prim(&self.prims[prim as usize], ray, t_best, stats) {
+                t_best = t;
+                best = Some(Hit { t, shape: HitShape::Prim(prim) });
             }
         }
         stats.nodes_visited += self.accel.traverse(ray, t_best, |prim, t_max| {
@@ -131,7 +140,14 @@ impl Scene {
         self.bounded_occluded(ray, t_max, stats)
     }
 
+    /// The unbounded primitives, then the accelerator's.
     fn bounded_occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
+        for prim in self.unbounded.clone() {
+            let p = &self.prims[prim as usize];
+            if p.casts_shadow && self.test_prim(p, ray, t_max, stats).is_some() {
+                return true;
+            }
+        }
         let mut blocked = false;
         stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
             let p = &self.prims[prim as usize];
@@ -168,6 +184,7 @@ impl Scene {
                     ShapeKind::Cone => self.cones[k].normal(p),
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
+                    ShapeKind::Poly => self.polys[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

@@ -5,6 +5,18 @@
 //! and divided in f64 before it becomes f32, so a scene translated 1e6 units away renders with
 //! the same precision as one at the world origin, and a scene scaled by 1e-4 or 1e5 becomes the
 //! same f32 numbers as the original: the same image, not merely a similar one.
+//!
+//! **Bounded and unbounded primitives.** `Scene::prims` is ordered as
+//! `[bounded primitives, in the accelerator][unbounded primitives]`: the accelerator is built
+//! over `prims[..unbounded.start]` only (`prim_bounds` covers that range), and the primitives in
+//! `Scene::unbounded` (a quadric cylinder, a general `poly`; later, say, an intersection of
+//! planes) are tested for every ray, as planes are, by every query (`Scene::intersect`,
+//! `occluded`, `occluded_towards` in `render::intersect`; `intersect_rows` and `occluded_rows`
+//! in `render::packet`). A primitive is unbounded when its bounds (`prim_box`) are not finite;
+//! `Scene::build` moves those behind the bounded ones once all objects are added (their
+//! `PrimRef`s point into the per-kind arrays, so the order of `prims` is free). A scene without
+//! them has an empty range and pays one empty loop per query. Planes keep their own arrays,
+//! since their shadow test is by side, not by intersection.
 
 use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 
@@ -15,7 +27,9 @@ use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
 use crate::geometry::plane::Plane;
+use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
+use crate::geometry::roots::Solver;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
@@ -38,22 +52,25 @@ pub enum ShapeKind {
     Cone = 6,
     Disc = 7,
     Torus = 8,
+    /// `quadric`, `cubic`, `quartic` and `poly`.
+    Poly = 9,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 8] = [
+    pub const ALL: [ShapeKind; 9] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Disc,
         ShapeKind::Plane,
+        ShapeKind::Poly,
         ShapeKind::Polygon,
         ShapeKind::Sphere,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 9;
+    pub const COUNT: usize = 10;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -65,6 +82,7 @@ impl ShapeKind {
             ShapeKind::Cone => "Cone/Cylinder",
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
+            ShapeKind::Poly => "Quadric/Poly",
         }
     }
 }
@@ -109,13 +127,18 @@ pub struct Scene {
     pub cones: Vec<Cone>,
     pub discs: Vec<Disc>,
     pub tori: Vec<Torus>,
+    pub polys: Vec<Poly>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
     /// False for `no_shadow` planes.
     pub plane_casts_shadow: Vec<bool>,
-    /// Bounded primitives; the accelerator's primitive indices refer to this.
+    /// Bounded primitives, then unbounded ones (see the module docs); the accelerator's
+    /// primitive indices refer to the first range.
     pub prims: Vec<PrimRef>,
+    /// The unbounded primitives' range in `prims` (empty in most scenes): tested for every
+    /// ray, outside the accelerator.
+    pub unbounded: std::ops::Range<u32>,
     pub materials: Vec<Material>,
     pub lights: Vec<Light>,
     pub background: Rgbft,
@@ -222,6 +245,13 @@ pub(crate) enum RenderShape {
         render_from_object: DAffine3,
         minor: f64,
     },
+    /// A polynomial of `order` with POV-Ray's coefficients (object space).
+    Poly {
+        render_from_object: DAffine3,
+        order: usize,
+        coefficients: Vec<f64>,
+        sturm: bool,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -283,6 +313,12 @@ impl RenderFrame {
             ShapeDesc::Torus { major, minor } => RenderShape::Torus {
                 render_from_object: render_from_object() * DAffine3::from_scale(DVec3::splat(*major)),
                 minor: minor / major,
+            },
+            ShapeDesc::Poly { order, coefficients, sturm, .. } => RenderShape::Poly {
+                render_from_object: render_from_object(),
+                order: *order,
+                coefficients: coefficients.clone(),
+                sturm: *sturm,
             },
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Plane { normal, distance } => {
@@ -384,10 +420,12 @@ impl Scene {
             cones: Vec::new(),
             discs: Vec::new(),
             tori: Vec::new(),
+            polys: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
             prims: Vec::new(),
+            unbounded: 0..0,
             materials: Vec::with_capacity(desc.objects.len()),
             lights: desc
                 .lights
@@ -416,6 +454,7 @@ impl Scene {
             scene.features.no_shadow |= object.no_shadow;
             scene.add_shape(&object.shape, &object.transform, material, !object.no_shadow);
         }
+        scene.order_unbounded_last();
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
@@ -464,6 +503,11 @@ impl Scene {
                 self.tori.push(Torus::new(affine_f32(&render_from_object), minor as f32));
                 push(ShapeKind::Torus, self.tori.len() - 1, &mut self.prims);
             }
+            RenderShape::Poly { render_from_object, order, coefficients, sturm } => {
+                let solver = if sturm { Solver::Sturm } else { Solver::Fast };
+                self.polys.push(Poly::new(affine_f32(&render_from_object), order, &coefficients, solver));
+                push(ShapeKind::Poly, self.polys.len() - 1, &mut self.prims);
+            }
             RenderShape::Plane { normal, distance } => {
                 self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                 self.plane_materials.push(material);
@@ -480,36 +524,57 @@ impl Scene {
         for p in self.prim_bounds() {
             b.grow(&p);
         }
-        if self.prims.is_empty() {
+        if self.unbounded.start == 0 {
             return None;
         }
         let world = self.frame.world_from_render();
         Some((world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3())))
     }
 
+    /// Moves the unbounded primitives behind the bounded ones and sets `unbounded` (see the
+    /// module docs); the bounded ones keep their order, so a scene without unbounded
+    /// primitives is unchanged.
+    fn order_unbounded_last(&mut self) {
+        let (bounded, unbounded): (Vec<PrimRef>, Vec<PrimRef>) = self.prims.iter().partition(|p| {
+            let (lo, hi) = self.prim_box(p);
+            lo.is_finite() && hi.is_finite()
+        });
+        self.unbounded = bounded.len() as u32..self.prims.len() as u32;
+        if !unbounded.is_empty() {
+            self.prims = bounded.into_iter().chain(unbounded).collect();
+        }
+    }
+
+    /// The bounded primitives' boxes (`prims[..unbounded.start]`), for the accelerator.
     pub fn prim_bounds(&self) -> Vec<Aabb> {
-        self.prims
+        self.prims[..self.unbounded.start as usize]
             .iter()
             .map(|p| {
-                let (lo, hi) = match p.kind {
-                    ShapeKind::Sphere => self.spheres[p.index as usize].bounds(),
-                    ShapeKind::Ellipsoid => {
-                        let e = &self.ellipsoids[p.index as usize];
-                        (e.min, e.max)
-                    }
-                    ShapeKind::Box => self.boxes[p.index as usize].bounds(),
-                    ShapeKind::Triangle => self.triangles[p.index as usize].bounds(),
-                    ShapeKind::Polygon => {
-                        let poly = &self.polygons[p.index as usize];
-                        (poly.min, poly.max)
-                    }
-                    ShapeKind::Cone => self.cones[p.index as usize].bounds(),
-                    ShapeKind::Disc => self.discs[p.index as usize].bounds(),
-                    ShapeKind::Torus => self.tori[p.index as usize].bounds(),
-                    ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
-                };
+                let (lo, hi) = self.prim_box(p);
                 Aabb::new(lo, hi)
             })
             .collect()
+    }
+
+    /// One primitive's render-space box, infinite for an unbounded one.
+    fn prim_box(&self, p: &PrimRef) -> (Vec3, Vec3) {
+        match p.kind {
+            ShapeKind::Sphere => self.spheres[p.index as usize].bounds(),
+            ShapeKind::Ellipsoid => {
+                let e = &self.ellipsoids[p.index as usize];
+                (e.min, e.max)
+            }
+            ShapeKind::Box => self.boxes[p.index as usize].bounds(),
+            ShapeKind::Triangle => self.triangles[p.index as usize].bounds(),
+            ShapeKind::Polygon => {
+                let poly = &self.polygons[p.index as usize];
+                (poly.min, poly.max)
+            }
+            ShapeKind::Cone => self.cones[p.index as usize].bounds(),
+            ShapeKind::Disc => self.discs[p.index as usize].bounds(),
+            ShapeKind::Torus => self.tori[p.index as usize].bounds(),
+            ShapeKind::Poly => self.polys[p.index as usize].bounds(),
+            ShapeKind::Plane => (Vec3::NEG_INFINITY, Vec3::INFINITY),
+        }
     }
 }

@@ -257,6 +257,36 @@ pub enum ShapeDesc {
         major: f64,
         minor: f64,
     },
+    /// `quadric`, `cubic`, `quartic` or `poly`: the zeros of a polynomial of `order` whose
+    /// coefficients are in POV-Ray's `poly` order (x's power falling, then y's, then z's; see
+    /// `geometry::poly::term_exponents`). A quadric is kept as its order-2 poly.
+    Poly {
+        order: usize,
+        coefficients: Vec<f64>,
+        sturm: bool,
+        /// The keyword it was written with, for messages and printing.
+        written: PolyForm,
+    },
+}
+
+/// How a polynomial surface was written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PolyForm {
+    Quadric,
+    Cubic,
+    Quartic,
+    Poly,
+}
+
+impl PolyForm {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            PolyForm::Quadric => "quadric",
+            PolyForm::Cubic => "cubic",
+            PolyForm::Quartic => "quartic",
+            PolyForm::Poly => "poly",
+        }
+    }
 }
 
 impl ShapeDesc {
@@ -272,6 +302,7 @@ impl ShapeDesc {
             ShapeDesc::Cone { .. } => "cone",
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
+            ShapeDesc::Poly { written, .. } => written.keyword(),
         }
     }
 }

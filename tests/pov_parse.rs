@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, union, merge, object)"
+         torus, quadric, cubic, quartic, poly, superellipsoid, union, merge, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -941,6 +941,21 @@ fn bad_polynomial_surfaces_are_located_errors() {
         ("quartic { <1, 2> open }", (1, 11), "quartic takes 35 coefficients, found 2"),
     ] {
         let (l, c, m) = err("bad_poly", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Superellipsoids: `<e, n>`, both positive.
+#[test]
+fn superellipsoids_load_and_bad_ones_are_located_errors() {
+    let s = load_text("superell", "superellipsoid { <0.25, 1.5> }").unwrap();
+    assert!(matches!(s.objects[0].shape, ShapeDesc::Superellipsoid { e: 0.25, n: 1.5 }));
+    for (text, at, message) in [
+        ("superellipsoid { <0, 1> }", (1, 18), "superellipsoid exponents <e, n> must be positive"),
+        ("\nsuperellipsoid { <1, -1> }", (2, 18), "superellipsoid exponents <e, n> must be positive"),
+        ("superellipsoid { }", (1, 18), "superellipsoid needs 1 arguments (<e, n>), found 0"),
+    ] {
+        let (l, c, m) = err("bad_superell", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

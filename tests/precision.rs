@@ -182,7 +182,7 @@ fn shape_soup(n: u64) -> String {
         let c = |k: u64| (rnd(i, k) - 0.5) * 20.0;
         let (x, y, z) = (c(1), c(2), c(3));
         let r = 0.2 + rnd(i, 4) * 1.2;
-        let obj = match i % 12 {
+        let obj = match i % 13 {
             0 => format!("sphere {{ <{x}, {y}, {z}>, {r} }}"),
             1 => format!(
                 "sphere {{ <0, 0, 0>, 1 scale <{r}, {}, 0.4> rotate <{}, {}, 0> translate <{x}, {y}, {z}> }}",
@@ -232,6 +232,13 @@ fn shape_soup(n: u64) -> String {
                 c(5) * 0.05,
                 if i % 24 == 11 { "sturm" } else { "" },
                 c(6) * 9.0
+            ),
+            12 => format!(
+                "superellipsoid {{ <{}, {}> scale {r} rotate <{}, {}, 0> translate <{x}, {y}, {z}> }}",
+                0.1 + rnd(i, 5) * 2.4,
+                0.1 + rnd(i, 6) * 2.4,
+                c(7) * 9.0,
+                c(8) * 9.0
             ),
             _ => format!(
                 "polygon {{ 4, <{x}, {y}, {z}>, <{}, {y}, {z}>, <{}, {}, {z}>, <{x}, {}, {z}> }}",

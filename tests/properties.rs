@@ -135,7 +135,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(10) {
+    match r.pick(11) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -186,6 +186,7 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
                 .collect();
             ShapeDesc::Poly { order: 4, coefficients, sturm: r.pick(2) == 0, written: PolyForm::Quartic }
         }
+        10 => ShapeDesc::Superellipsoid { e: r.f(0.1, 2.5), n: r.f(0.1, 2.5) },
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
             let u = n.any_orthonormal_vector();
@@ -405,6 +406,9 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
                     && w1 == w2
                     && c1.len() == c2.len()
                     && c1.iter().zip(c2).all(|(a, b)| close(*a, *b))
+            }
+            (ShapeDesc::Superellipsoid { e: e1, n: n1 }, ShapeDesc::Superellipsoid { e: e2, n: n2 }) => {
+                close(*e1, *e2) && close(*n1, *n2)
             }
             _ => false,
         };

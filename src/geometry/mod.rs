@@ -15,6 +15,7 @@ pub mod polygon;
 pub mod ray;
 pub mod roots;
 pub mod sphere;
+pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;
 

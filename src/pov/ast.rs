@@ -315,6 +315,7 @@ pub enum ShapeKind {
     Cubic,
     Quartic,
     Poly,
+    Superellipsoid,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -44,6 +44,7 @@ impl Scene {
             ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
             ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
             ShapeKind::Poly => self.polys[i].hit(ray, zero, t_max),
+            ShapeKind::Superellipsoid => self.superellipsoids[i].hit(ray, zero, t_max),
             ShapeKind::Plane => L::splat(MISS),
         }
     }
@@ -185,6 +186,7 @@ impl Scene {
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
                     ShapeKind::Poly => self.polys[k].normal(p),
+                    ShapeKind::Superellipsoid => self.superellipsoids[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

@@ -31,6 +31,7 @@ use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
 use crate::geometry::roots::Solver;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
@@ -54,11 +55,12 @@ pub enum ShapeKind {
     Torus = 8,
     /// `quadric`, `cubic`, `quartic` and `poly`.
     Poly = 9,
+    Superellipsoid = 10,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 9] = [
+    pub const ALL: [ShapeKind; 10] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Disc,
@@ -66,11 +68,12 @@ impl ShapeKind {
         ShapeKind::Poly,
         ShapeKind::Polygon,
         ShapeKind::Sphere,
+        ShapeKind::Superellipsoid,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 10;
+    pub const COUNT: usize = 11;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -83,6 +86,7 @@ impl ShapeKind {
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
             ShapeKind::Poly => "Quadric/Poly",
+            ShapeKind::Superellipsoid => "Superellipsoid",
         }
     }
 }
@@ -128,6 +132,7 @@ pub struct Scene {
     pub discs: Vec<Disc>,
     pub tori: Vec<Torus>,
     pub polys: Vec<Poly>,
+    pub superellipsoids: Vec<Superellipsoid>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -252,6 +257,12 @@ pub(crate) enum RenderShape {
         coefficients: Vec<f64>,
         sturm: bool,
     },
+    /// The superellipsoid `<e, n>` in the unit box.
+    Superellipsoid {
+        render_from_object: DAffine3,
+        e: f64,
+        n: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -320,6 +331,9 @@ impl RenderFrame {
                 coefficients: coefficients.clone(),
                 sturm: *sturm,
             },
+            ShapeDesc::Superellipsoid { e, n } => {
+                RenderShape::Superellipsoid { render_from_object: render_from_object(), e: *e, n: *n }
+            }
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Plane { normal, distance } => {
                 // n·p = d in object space; a point on it maps through the transform and the normal
@@ -421,6 +435,7 @@ impl Scene {
             discs: Vec::new(),
             tori: Vec::new(),
             polys: Vec::new(),
+            superellipsoids: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -508,6 +523,10 @@ impl Scene {
                 self.polys.push(Poly::new(affine_f32(&render_from_object), order, &coefficients, solver));
                 push(ShapeKind::Poly, self.polys.len() - 1, &mut self.prims);
             }
+            RenderShape::Superellipsoid { render_from_object, e, n } => {
+                self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
+                push(ShapeKind::Superellipsoid, self.superellipsoids.len() - 1, &mut self.prims);
+            }
             RenderShape::Plane { normal, distance } => {
                 self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                 self.plane_materials.push(material);
@@ -574,6 +593,7 @@ impl Scene {
             ShapeKind::Disc => self.discs[p.index as usize].bounds(),
             ShapeKind::Torus => self.tori[p.index as usize].bounds(),
             ShapeKind::Poly => self.polys[p.index as usize].bounds(),
+            ShapeKind::Superellipsoid => self.superellipsoids[p.index as usize].bounds(),
             ShapeKind::Plane => (Vec3::NEG_INFINITY, Vec3::INFINITY),
         }
     }

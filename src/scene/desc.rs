@@ -267,6 +267,11 @@ pub enum ShapeDesc {
         /// The keyword it was written with, for messages and printing.
         written: PolyForm,
     },
+    /// `superellipsoid { <e, n> }` in the unit box.
+    Superellipsoid {
+        e: f64,
+        n: f64,
+    },
 }
 
 /// How a polynomial surface was written.
@@ -303,6 +308,7 @@ impl ShapeDesc {
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
             ShapeDesc::Poly { written, .. } => written.keyword(),
+            ShapeDesc::Superellipsoid { .. } => "superellipsoid",
         }
     }
 }

@@ -71,6 +71,7 @@ fn object(s: &mut String, o: &ObjectDesc) {
             write!(s, "disc {{ {}, {}, {}, {}", vec(*center), vec(*normal), num(*radius), num(*hole))
         }
         ShapeDesc::Torus { major, minor } => write!(s, "torus {{ {}, {}", num(*major), num(*minor)),
+        ShapeDesc::Superellipsoid { e, n } => write!(s, "superellipsoid {{ <{}, {}>", num(*e), num(*n)),
         ShapeDesc::Poly { order, coefficients, sturm, written } => {
             let c = coefficients;
             let sturm = if *sturm { " sturm" } else { "" };

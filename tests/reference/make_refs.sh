@@ -22,3 +22,6 @@ done
 for s in quadrics; do
     render "$here/scenes/$s.pov" "$s"
 done
+for s in superellipsoids; do
+    render "$here/scenes/$s.pov" "$s"
+done

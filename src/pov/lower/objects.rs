@@ -264,6 +264,13 @@ impl Lowerer<'_> {
                 ShapeDesc::Poly { order: 2, coefficients, sturm: false, written: PolyForm::Quadric }
             }
             ShapeKind::Cubic | ShapeKind::Quartic | ShapeKind::Poly => self.poly(kind, args, span)?,
+            ShapeKind::Superellipsoid => {
+                let v = self.vec3(arg(0)?)?;
+                if !(v.x > 0.0 && v.y > 0.0) {
+                    return Err(Diag::new(arg(0)?.span, "superellipsoid exponents <e, n> must be positive"));
+                }
+                ShapeDesc::Superellipsoid { e: v.x, n: v.y }
+            }
         })
     }
 

@@ -125,7 +125,6 @@ pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "lathe",
     "prism",
     "sor",
-    "superellipsoid",
     "text",
     "bicubic_patch",
     "sphere_sweep",

@@ -31,9 +31,11 @@ const TOP_LEVEL: &[&str] = &[
     "cubic",
     "quartic",
     "poly",
+    "superellipsoid",
 ];
 const SHAPES: &str =
-    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, union, merge, object";
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, superellipsoid, union, \
+     merge, object";
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
@@ -74,6 +76,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "cubic" => ShapeKind::Cubic,
         "quartic" => ShapeKind::Quartic,
         "poly" => ShapeKind::Poly,
+        "superellipsoid" => ShapeKind::Superellipsoid,
         _ => return None,
     })
 }
@@ -94,6 +97,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Cubic => &["<20 coefficients>"],
         ShapeKind::Quartic => &["<35 coefficients>"],
         ShapeKind::Poly => &["order", "<coefficients>"],
+        ShapeKind::Superellipsoid => &["<e, n>"],
     }
 }
 

@@ -1,5 +1,9 @@
 //! Scenes written in place far from the origin (issue #13, section 1): in-place twins.
 //!
+//! `polys` holds the polynomial surfaces (unbounded quadrics, quartics with and without
+//! `sturm`), whose roots are found in f64 per lane: their twins test the root finding scaled by
+//! 1e-4 and 1e5 and moved up to 1e7.
+//!
 //! `tests/extremes.rs` moves a whole `SceneDesc` with one matrix; here the scene is *written*
 //! far away, as a user would write it: box corners at x = 1e6, `translate -P rotate y*30
 //! translate P`, sphere centres, light positions and textures `translate P`. Each template in
@@ -181,13 +185,14 @@ fn known_limit(scene: &str, s: f64) -> Option<(f64, &'static str)> {
 fn scenes_written_in_place_far_away_render_like_at_the_origin() {
     // (name, template file, whether its floor checker stays put, how the file is changed)
     type Edit = fn(&str) -> String;
-    let templates: [(&str, &str, bool, Option<Edit>); 6] = [
+    let templates: [(&str, &str, bool, Option<Edit>); 7] = [
         ("seed", "seed", true, None),
         ("seed, camera × S", "seed", true, Some(with_scaled_camera_vectors)),
         ("reflection", "reflection", false, None),
         ("refraction", "refraction", false, None),
         ("wood", "wood", false, None),
         ("ellipsoid", "ellipsoid", false, None),
+        ("polys", "polys", false, None),
     ];
     let _ = std::fs::remove_dir_all(root().join("target/far-failures"));
     let mut failures = Vec::new();

@@ -232,12 +232,12 @@ fn error_argument_count() {
 
 #[test]
 fn error_unsupported_keywords() {
-    let (l, c, m) = err("e_blob", "\n blob { threshold 0.5 }");
+    let (l, c, m) = err("e_sweep", "\n sphere_sweep { linear_spline 2, 0, 1, y, 1 }");
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
-         union, merge, intersection, difference, object)"
+        "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, union, merge, intersection, difference, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -871,7 +871,11 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
         ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder and cone)"),
-        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus)"),
+        (
+            "cylinder { 0, y, 1 sturm }",
+            (1, 20),
+            "`sturm` does not apply to cylinder (only to torus, cubic, quartic and poly)",
+        ),
     ] {
         let (l, c, m) = err("bad_round", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
@@ -920,4 +924,85 @@ fn csg_errors_are_located() {
     assert_eq!(m, "sphere radius must be positive");
     let (_, _, m) = err("csg_order", "intersection { sphere { 0, 1 } pigment { rgb 1 } box { -1, 1 } }");
     assert!(m.contains("its objects must come first"), "{m}");
+}
+
+/// Quadrics, cubics, quartics and polys as POV-Ray writes them, in its coefficient order.
+#[test]
+fn polynomial_surfaces_load() {
+    let zeros = |n: usize| vec!["0"; n].join(", ");
+    let s = load_text(
+        "polys",
+        &format!(
+            "quadric {{ <1, 2, 3>, <4, 5, 6>, <7, 8, 9>, 10 }}\n\
+             cubic {{ <1, {}> sturm }}\n\
+             quartic {{ <{}, -1> }}\n\
+             poly {{ 5, <{}, 1> sturm }}",
+            zeros(19),
+            zeros(34),
+            zeros(55)
+        ),
+    )
+    .unwrap();
+    let kinds: Vec<&str> = s.objects.iter().map(|o| o.shape.keyword()).collect();
+    assert_eq!(kinds, ["quadric", "cubic", "quartic", "poly"]);
+    // A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J as x², xy, xz, x, y², yz, y, z², z, 1.
+    let ShapeDesc::Poly { order: 2, coefficients, sturm: false, .. } = &s.objects[0].shape else { panic!() };
+    assert_eq!(coefficients, &[1.0, 4.0, 5.0, 7.0, 2.0, 6.0, 8.0, 3.0, 9.0, 10.0]);
+    assert!(
+        matches!(&s.objects[1].shape, ShapeDesc::Poly { order: 3, sturm: true, coefficients, .. } if coefficients.len() == 20 && coefficients[0] == 1.0)
+    );
+    assert!(
+        matches!(&s.objects[2].shape, ShapeDesc::Poly { order: 4, sturm: false, coefficients, .. } if coefficients.len() == 35 && coefficients[34] == -1.0)
+    );
+    assert!(
+        matches!(&s.objects[3].shape, ShapeDesc::Poly { order: 5, sturm: true, coefficients, .. } if coefficients.len() == 56)
+    );
+}
+
+/// Bad polynomial surfaces are located errors: coefficient counts, orders, empty polynomials.
+#[test]
+fn bad_polynomial_surfaces_are_located_errors() {
+    for (text, at, message) in [
+        ("cubic { <1, 2, 3> }", (1, 9), "cubic takes 20 coefficients, found 3"),
+        ("\n  quartic { <1, 2> }", (2, 13), "quartic takes 35 coefficients, found 2"),
+        ("poly { 2, <1, 2, 3> }", (1, 12), "poly of order 2 takes 10 coefficients, found 3"),
+        ("poly { 1, <1, 2, 3, 4> }", (1, 8), "poly order must be a whole number from 2 to 15, found 1"),
+        ("poly { 2.5, <1> }", (1, 8), "poly order must be a whole number from 2 to 15, found 2.5"),
+        ("poly { 16, <1> }", (1, 8), "poly order must be a whole number from 2 to 15, found 16"),
+        ("cubic { 1 }", (1, 9), "cubic needs its coefficients as <c1, c2, ...>, found number 1"),
+        (
+            "quadric { <0, 0, 0>, <0, 0, 0>, <0, 0, 0>, 1 }",
+            (1, 1),
+            "quadric: every coefficient but J is 0, so it has no surface",
+        ),
+        (
+            "quadric { <1, 0, 0>, <0, 0, 0>, <0, 0, 0> }",
+            (1, 43),
+            "quadric needs 4 arguments (<A, B, C>, <D, E, F>, <G, H, I>, J), found 3",
+        ),
+        (
+            "quadric { <1, 1, 1>, 0, 0, -1 sturm }",
+            (1, 31),
+            "`sturm` does not apply to quadric (only to torus, cubic, quartic and poly)",
+        ),
+        ("quartic { <1, 2> open }", (1, 11), "quartic takes 35 coefficients, found 2"),
+    ] {
+        let (l, c, m) = err("bad_poly", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Superellipsoids: `<e, n>`, both positive.
+#[test]
+fn superellipsoids_load_and_bad_ones_are_located_errors() {
+    let s = load_text("superell", "superellipsoid { <0.25, 1.5> }").unwrap();
+    assert!(matches!(s.objects[0].shape, ShapeDesc::Superellipsoid { e: 0.25, n: 1.5 }));
+    for (text, at, message) in [
+        ("superellipsoid { <0, 1> }", (1, 18), "superellipsoid exponents <e, n> must be positive"),
+        ("\nsuperellipsoid { <1, -1> }", (2, 18), "superellipsoid exponents <e, n> must be positive"),
+        ("superellipsoid { }", (1, 18), "superellipsoid needs 1 arguments (<e, n>), found 0"),
+    ] {
+        let (l, c, m) = err("bad_superell", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
 }

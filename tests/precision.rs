@@ -182,7 +182,7 @@ fn shape_soup(n: u64) -> String {
         let c = |k: u64| (rnd(i, k) - 0.5) * 20.0;
         let (x, y, z) = (c(1), c(2), c(3));
         let r = 0.2 + rnd(i, 4) * 1.2;
-        let obj = match i % 10 {
+        let obj = match i % 13 {
             0 => format!("sphere {{ <{x}, {y}, {z}>, {r} }}"),
             1 => format!(
                 "sphere {{ <0, 0, 0>, 1 scale <{r}, {}, 0.4> rotate <{}, {}, 0> translate <{x}, {y}, {z}> }}",
@@ -220,6 +220,25 @@ fn shape_soup(n: u64) -> String {
                 0.3 * r,
                 c(5) * 9.0,
                 c(6) * 9.0
+            ),
+            // An ellipsoid written as a quadric (bounded), and a rounded cube written as a
+            // quartic (unbounded to strahl), half of them with sturm.
+            10 => {
+                format!("quadric {{ <1, 2, 1.5>, <0.5, 0, 0.2>, <0, 0, 0>, -1 scale {r} translate <{x}, {y}, {z}> }}")
+            }
+            11 => format!(
+                "quartic {{ <1, {}, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, \
+                 0, 0, 1, 0, 0, 0, -1> {} scale {r} rotate <{}, 0, 0> translate <{x}, {y}, {z}> }}",
+                c(5) * 0.05,
+                if i % 24 == 11 { "sturm" } else { "" },
+                c(6) * 9.0
+            ),
+            12 => format!(
+                "superellipsoid {{ <{}, {}> scale {r} rotate <{}, {}, 0> translate <{x}, {y}, {z}> }}",
+                0.1 + rnd(i, 5) * 2.4,
+                0.1 + rnd(i, 6) * 2.4,
+                c(7) * 9.0,
+                c(8) * 9.0
             ),
             _ => format!(
                 "polygon {{ 4, <{x}, {y}, {z}>, <{}, {y}, {z}>, <{}, {}, {z}>, <{x}, {}, {z}> }}",

@@ -107,6 +107,19 @@ fn tori_match_povray() {
     check_psnr("tori", &scene("tori"), 35.0);
 }
 
+/// Polynomial surfaces, bare: unbounded quadrics (cylinder, paraboloid, hyperboloid), an
+/// ellipsoid quadric, a cubic, quartics (fast and `sturm`) and a poly of order 6.
+#[test]
+fn quadrics_and_polys_match_povray() {
+    check_psnr("quadrics", &scene("quadrics"), 35.0);
+}
+
+/// Superellipsoids: sphere, rounded box and cylinder, pillow, star (exponents above 2), diamond.
+#[test]
+fn superellipsoids_match_povray() {
+    check_psnr("superellipsoids", &scene("superellipsoids"), 35.0);
+}
+
 #[test]
 fn flat_seed_variant_matches_povray() {
     check_psnr("flat", &scene("flat"), 35.0);

@@ -10,10 +10,12 @@ pub mod cone;
 pub mod cuboid;
 pub mod disc;
 pub mod plane;
+pub mod poly;
 pub mod polygon;
 pub mod ray;
 pub mod roots;
 pub mod sphere;
+pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;
 

@@ -312,6 +312,11 @@ pub enum ShapeKind {
     Cone,
     Disc,
     Torus,
+    Quadric,
+    Cubic,
+    Quartic,
+    Poly,
+    Superellipsoid,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -1,5 +1,6 @@
 //! Scene queries: the nearest hit (`intersect`) and yes/no occlusion (`occluded`), over the
-//! accelerator for bounded shapes plus a loop over the unbounded planes.
+//! accelerator for bounded shapes plus loops over the unbounded planes and the unbounded
+//! primitives (`Scene::unbounded`, see `scene::build`).
 
 use glam::Vec3;
 
@@ -48,6 +49,8 @@ impl Scene {
             ShapeKind::Cone => self.cones[i].hit(ray, t_min, t_max),
             ShapeKind::Disc => self.discs[i].hit(ray, t_min, t_max),
             ShapeKind::Torus => self.tori[i].hit(ray, t_min, t_max),
+            ShapeKind::Poly => self.polys[i].hit(ray, t_min, t_max),
+            ShapeKind::Superellipsoid => self.superellipsoids[i].hit(ray, t_min, t_max),
             // Only CSG leaves are planes among the primitives.
             ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
             ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
@@ -67,6 +70,8 @@ impl Scene {
             ShapeKind::Cone => self.cones[i].inside(q),
             ShapeKind::Disc => self.discs[i].inside(q),
             ShapeKind::Torus => self.tori[i].inside(q),
+            ShapeKind::Poly => self.polys[i].inside(q),
+            ShapeKind::Superellipsoid => self.superellipsoids[i].inside(q),
             ShapeKind::Plane => self.half_spaces[i].inside(q),
             ShapeKind::Csg => self.inside_node(p.index, q),
         }
@@ -91,6 +96,13 @@ impl Scene {
             if let Some(t) = t {
                 t_best = t;
                 best = Some(Hit { t, shape: HitShape::Plane(i as u32) });
+            }
+        }
+        // Unbounded primitives, nearest strictly first (open interval), so ties keep the plane.
+        for prim in self.unbounded.clone() {
+            if let Some(t) = self.test_prim(&self.prims[prim as usize], ray, t_best, stats) {
+                t_best = t;
+                best = Some(Hit { t, shape: HitShape::Prim(prim) });
             }
         }
         stats.nodes_visited += self.accel.traverse(ray, t_best, |prim, t_max| {
@@ -174,7 +186,14 @@ impl Scene {
         self.bounded_occluded(ray, t_max, stats)
     }
 
+    /// The unbounded primitives, then the accelerator's.
     fn bounded_occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
+        for prim in self.unbounded.clone() {
+            let p = &self.prims[prim as usize];
+            if p.casts_shadow && self.test_prim(p, ray, t_max, stats).is_some() {
+                return true;
+            }
+        }
         let mut blocked = false;
         stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
             let p = &self.prims[prim as usize];
@@ -211,6 +230,8 @@ impl Scene {
                     ShapeKind::Cone => self.cones[k].normal(p),
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
+                    ShapeKind::Poly => self.polys[k].normal(p),
+                    ShapeKind::Superellipsoid => self.superellipsoids[k].normal(p),
                     ShapeKind::Plane => self.half_spaces[k].normal(p),
                     // Hits are resolved to leaves before anything asks for a normal.
                     ShapeKind::Csg => V3::splat(Vec3::Y),

@@ -386,7 +386,7 @@ fn has_avx2() -> bool {
     false
 }
 
-/// Nearest hits of up to eight rows of rays: planes, then the BVH.
+/// Nearest hits of up to eight rows of rays: planes, the unbounded primitives, then the BVH.
 fn intersect_rows(
     scene: &Scene,
     rows: &[Ray8],
@@ -448,12 +448,19 @@ fn intersect_rows_generic(
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
         }
     }
-    let Accel::Bvh(bvh) = &scene.accel else { return };
-    let all = [M8([-1; 8]); 8];
     let mut test = NearestRows { scene, rows, ids, stats: RenderStats::default() };
-    let visited = bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, &mut test);
+    // Unbounded primitives (`Scene::unbounded`), for every row, as planes.
+    for prim in scene.unbounded.clone() {
+        for r in 0..rows.len() {
+            test.test(prim, r, &mut t[r]);
+        }
+    }
+    if let Accel::Bvh(bvh) = &scene.accel {
+        let all = [M8([-1; 8]); 8];
+        let visited = bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, &mut test);
+        stats.nodes_visited += visited as u64;
+    }
     *stats += test.stats;
-    stats.nodes_visited += visited as u64;
 }
 
 /// The nearest-hit primitive test for packets: records which primitive each lane hit.
@@ -572,6 +579,11 @@ fn occluded_rows_generic(
             test.stats.tests[ShapeKind::Plane as usize] += 8;
             test.stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
             test.block(r, &mut t_max[r], hit);
+        }
+    }
+    for prim in scene.unbounded.clone() {
+        for r in 0..rows.len() {
+            test.test(prim, r, &mut t_max[r]);
         }
     }
     if let Accel::Bvh(bvh) = &scene.accel {

@@ -5,6 +5,18 @@
 //! and divided in f64 before it becomes f32, so a scene translated 1e6 units away renders with
 //! the same precision as one at the world origin, and a scene scaled by 1e-4 or 1e5 becomes the
 //! same f32 numbers as the original: the same image, not merely a similar one.
+//!
+//! **Bounded and unbounded primitives.** `Scene::prims` is ordered as
+//! `[bounded primitives, in the accelerator][unbounded primitives]`: the accelerator is built
+//! over `prims[..unbounded.start]` only (`prim_bounds` covers that range), and the primitives in
+//! `Scene::unbounded` (a quadric cylinder, a general `poly`; later, say, an intersection of
+//! planes) are tested for every ray, as planes are, by every query (`Scene::intersect`,
+//! `occluded`, `occluded_towards` in `render::intersect`; `intersect_rows` and `occluded_rows`
+//! in `render::packet`). A primitive is unbounded when its bounds (`prim_box`) are not finite;
+//! `Scene::build` moves those behind the bounded ones once all objects are added (their
+//! `PrimRef`s point into the per-kind arrays, so the order of `prims` is free). A scene without
+//! them has an empty range and pays one empty loop per query. Planes keep their own arrays,
+//! since their shadow test is by side, not by intersection.
 
 use glam::{Affine3A, DAffine3, DMat4, DVec3, Vec3};
 
@@ -15,8 +27,11 @@ use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
 use crate::geometry::plane::Plane;
+use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
+use crate::geometry::roots::Solver;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgTarget, EVERYWHERE};
@@ -39,25 +54,30 @@ pub enum ShapeKind {
     Cone = 6,
     Disc = 7,
     Torus = 8,
+    /// `quadric`, `cubic`, `quartic` and `poly`.
+    Poly = 9,
+    Superellipsoid = 10,
     /// A CSG node (`intersection`, `difference`, `merge`, `clipped_by`) over leaf primitives.
-    Csg = 9,
+    Csg = 11,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 9] = [
+    pub const ALL: [ShapeKind; 11] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
         ShapeKind::Plane,
+        ShapeKind::Poly,
         ShapeKind::Polygon,
         ShapeKind::Sphere,
+        ShapeKind::Superellipsoid,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 10;
+    pub const COUNT: usize = 12;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -70,6 +90,8 @@ impl ShapeKind {
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
             ShapeKind::Csg => "CSG",
+            ShapeKind::Poly => "Quadric/Poly",
+            ShapeKind::Superellipsoid => "Superellipsoid",
         }
     }
 }
@@ -116,13 +138,20 @@ pub struct Scene {
     pub cones: Vec<Cone>,
     pub discs: Vec<Disc>,
     pub tori: Vec<Torus>,
+    pub polys: Vec<Poly>,
+    pub superellipsoids: Vec<Superellipsoid>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
     /// False for `no_shadow` planes.
     pub plane_casts_shadow: Vec<bool>,
-    /// Bounded primitives: the accelerator's, `[..first_leaf]`, then the leaves of CSG nodes.
+    /// The primitives: `[..unbounded.start]` bounded, in the accelerator; `unbounded`, tested
+    /// for every ray (see the module docs); `[first_leaf..]` the leaves of CSG nodes, reached
+    /// only through their nodes.
     pub prims: Vec<PrimRef>,
+    /// The unbounded primitives' range in `prims` (empty in most scenes): tested for every
+    /// ray, outside the accelerator.
+    pub unbounded: std::ops::Range<u32>,
     /// Where the CSG leaves start in `prims`.
     pub first_leaf: u32,
     pub csg: Vec<CsgNode>,
@@ -235,6 +264,19 @@ pub(crate) enum RenderShape {
         render_from_object: DAffine3,
         minor: f64,
     },
+    /// A polynomial of `order` with POV-Ray's coefficients (object space).
+    Poly {
+        render_from_object: DAffine3,
+        order: usize,
+        coefficients: Vec<f64>,
+        sturm: bool,
+    },
+    /// The superellipsoid `<e, n>` in the unit box.
+    Superellipsoid {
+        render_from_object: DAffine3,
+        e: f64,
+        n: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -297,6 +339,15 @@ impl RenderFrame {
                 render_from_object: render_from_object() * DAffine3::from_scale(DVec3::splat(*major)),
                 minor: minor / major,
             },
+            ShapeDesc::Poly { order, coefficients, sturm, .. } => RenderShape::Poly {
+                render_from_object: render_from_object(),
+                order: *order,
+                coefficients: coefficients.clone(),
+                sturm: *sturm,
+            },
+            ShapeDesc::Superellipsoid { e, n } => {
+                RenderShape::Superellipsoid { render_from_object: render_from_object(), e: *e, n: *n }
+            }
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Csg { .. } => unreachable!("CSG nodes are built by `Scene::add_object`"),
             ShapeDesc::Plane { normal, distance } => {
@@ -398,6 +449,8 @@ impl Scene {
             cones: Vec::new(),
             discs: Vec::new(),
             tori: Vec::new(),
+            polys: Vec::new(),
+            superellipsoids: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -406,6 +459,7 @@ impl Scene {
             csg: Vec::new(),
             csg_children: Vec::new(),
             half_spaces: Vec::new(),
+            unbounded: 0..0,
             materials: Vec::with_capacity(desc.objects.len()),
             lights: desc
                 .lights
@@ -428,6 +482,7 @@ impl Scene {
         for object in &desc.objects {
             scene.add_object(object, &mut leaves);
         }
+        scene.order_unbounded_last();
         scene.first_leaf = scene.prims.len() as u32;
         for c in &mut scene.csg_children {
             if let CsgTarget::Leaf(i) = &mut c.target {
@@ -478,12 +533,9 @@ impl Scene {
         let start = leaves.len();
         let (target, bounds) = self.add_csg_child(object, false, leaves);
         let CsgTarget::Node(index) = target else { unreachable!("a CSG description makes a node") };
-        let mut b = bounds.surface;
-        if is_unbounded(&b) {
-            // Outside every bounded primitive's reach, so the accelerator still works; an
-            // unbounded node is tested by every ray that reaches the scene's box.
-            b = Aabb::new(b.min.max(Vec3::splat(-UNBOUNDED)), b.max.min(Vec3::splat(UNBOUNDED)));
-        }
+        // An unbounded node (an intersection of planes) is moved out of the accelerator with
+        // the other unbounded primitives.
+        let b = bounds.surface;
         self.csg[index as usize].min = b.min;
         self.csg[index as usize].max = b.max;
         let material = leaves.get(start).map_or(0, |l| l.material);
@@ -582,6 +634,15 @@ impl Scene {
                 self.tori.push(Torus::new(affine_f32(&render_from_object), minor as f32));
                 (ShapeKind::Torus, at(self.tori.len()))
             }
+            RenderShape::Poly { render_from_object, order, coefficients, sturm } => {
+                let solver = if sturm { Solver::Sturm } else { Solver::Fast };
+                self.polys.push(Poly::new(affine_f32(&render_from_object), order, &coefficients, solver));
+                (ShapeKind::Poly, at(self.polys.len()))
+            }
+            RenderShape::Superellipsoid { render_from_object, e, n } => {
+                self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
+                (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
+            }
             RenderShape::Plane { .. } => unreachable!("planes are stored by the caller"),
         }
     }
@@ -594,19 +655,31 @@ impl Scene {
         for p in self.prim_bounds() {
             b.grow(&p);
         }
-        if self.prims.is_empty() {
+        if self.unbounded.start == 0 {
             return None;
         }
         let world = self.frame.world_from_render();
         Some((world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3())))
     }
 
-    /// The bounds of the accelerator's primitives, `prims[..first_leaf]`.
-    pub fn prim_bounds(&self) -> Vec<Aabb> {
-        self.prims[..self.first_leaf as usize].iter().map(|p| self.bounds_of(p)).collect()
+    /// Moves the unbounded primitives behind the bounded ones and sets `unbounded` (see the
+    /// module docs); the bounded ones keep their order, so a scene without unbounded
+    /// primitives is unchanged.
+    fn order_unbounded_last(&mut self) {
+        let (bounded, unbounded): (Vec<PrimRef>, Vec<PrimRef>) =
+            self.prims.iter().partition(|p| !is_unbounded(&self.bounds_of(p)));
+        self.unbounded = bounded.len() as u32..self.prims.len() as u32;
+        if !unbounded.is_empty() {
+            self.prims = bounded.into_iter().chain(unbounded).collect();
+        }
     }
 
-    /// One primitive's render-space bounds.
+    /// The bounded primitives' boxes (`prims[..unbounded.start]`), for the accelerator.
+    pub fn prim_bounds(&self) -> Vec<Aabb> {
+        self.prims[..self.unbounded.start as usize].iter().map(|p| self.bounds_of(p)).collect()
+    }
+
+    /// One primitive's render-space bounds (infinite for unbounded ones).
     pub fn bounds_of(&self, p: &PrimRef) -> Aabb {
         let i = p.index as usize;
         let (lo, hi) = match p.kind {
@@ -618,16 +691,14 @@ impl Scene {
             ShapeKind::Cone => self.cones[i].bounds(),
             ShapeKind::Disc => self.discs[i].bounds(),
             ShapeKind::Torus => self.tori[i].bounds(),
+            ShapeKind::Poly => self.polys[i].bounds(),
+            ShapeKind::Superellipsoid => self.superellipsoids[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };
         Aabb::new(lo, hi)
     }
 }
-
-/// Where an unbounded CSG node's box is cut off (render units, far beyond any bounded shape
-/// that f32 holds usefully).
-const UNBOUNDED: f32 = 1e30;
 
 /// Whether any shape of `object` may let light through (so a `merge`'s inner surfaces show).
 fn may_show_inner_surfaces(object: &ObjectDesc) -> bool {

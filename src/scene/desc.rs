@@ -257,12 +257,47 @@ pub enum ShapeDesc {
         major: f64,
         minor: f64,
     },
+    /// `quadric`, `cubic`, `quartic` or `poly`: the zeros of a polynomial of `order` whose
+    /// coefficients are in POV-Ray's `poly` order (x's power falling, then y's, then z's; see
+    /// `geometry::poly::term_exponents`). A quadric is kept as its order-2 poly.
+    Poly {
+        order: usize,
+        coefficients: Vec<f64>,
+        sturm: bool,
+        /// The keyword it was written with, for messages and printing.
+        written: PolyForm,
+    },
+    /// `superellipsoid { <e, n> }` in the unit box.
+    Superellipsoid {
+        e: f64,
+        n: f64,
+    },
     /// Constructive solid geometry over `children` (each with its own transform, texture and
     /// `inverse`; the node's own transforms are already applied to them).
     Csg {
         op: CsgOp,
         children: Vec<ObjectDesc>,
     },
+}
+
+/// How a polynomial surface was written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PolyForm {
+    Quadric,
+    Cubic,
+    Quartic,
+    Poly,
+}
+
+impl PolyForm {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            PolyForm::Quadric => "quadric",
+            PolyForm::Cubic => "cubic",
+            PolyForm::Quartic => "quartic",
+            PolyForm::Poly => "poly",
+        }
+    }
 }
 
 /// How a CSG node combines its children.
@@ -307,6 +342,8 @@ impl ShapeDesc {
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
             ShapeDesc::Csg { op, .. } => op.keyword(),
+            ShapeDesc::Poly { written, .. } => written.keyword(),
+            ShapeDesc::Superellipsoid { .. } => "superellipsoid",
         }
     }
 }

@@ -302,7 +302,9 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
             | ShapeDesc::Torus { .. }
-            | ShapeDesc::Csg { .. }) => {
+            | ShapeDesc::Csg { .. }
+            | ShapeDesc::Poly { .. }
+            | ShapeDesc::Superellipsoid { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

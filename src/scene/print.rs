@@ -14,8 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc,
-    Transform, Turbulence,
+    Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc,
+    ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -91,6 +91,31 @@ fn object(s: &mut String, o: &ObjectDesc) {
         }
         ShapeDesc::Torus { major, minor } => write!(s, "torus {{ {}, {}", num(*major), num(*minor)),
         ShapeDesc::Csg { .. } => unreachable!("written above"),
+        ShapeDesc::Superellipsoid { e, n } => write!(s, "superellipsoid {{ <{}, {}>", num(*e), num(*n)),
+        ShapeDesc::Poly { order, coefficients, sturm, written } => {
+            let c = coefficients;
+            let sturm = if *sturm { " sturm" } else { "" };
+            let list = |c: &[f64]| c.iter().map(|&k| num(k)).collect::<Vec<_>>().join(", ");
+            match written {
+                // Back from the order-2 poly x², xy, xz, x, y², yz, y, z², z, 1.
+                PolyForm::Quadric => write!(
+                    s,
+                    "quadric {{ <{}, {}, {}>, <{}, {}, {}>, <{}, {}, {}>, {}",
+                    num(c[0]),
+                    num(c[4]),
+                    num(c[7]),
+                    num(c[1]),
+                    num(c[2]),
+                    num(c[5]),
+                    num(c[3]),
+                    num(c[6]),
+                    num(c[8]),
+                    num(c[9])
+                ),
+                PolyForm::Poly => write!(s, "poly {{ {order}, <{}>{sturm}", list(c)),
+                other => write!(s, "{} {{ <{}>{sturm}", other.keyword(), list(c)),
+            }
+        }
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);

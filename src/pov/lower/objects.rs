@@ -8,11 +8,12 @@ use glam::DVec3;
 
 use super::textures::transform_texture;
 use super::Lowerer;
+use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
 use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Group, Part, Value};
-use crate::scene::desc::{InteriorDesc, ObjectDesc, ShapeDesc, TextureDesc, Transform};
+use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
 
 impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
@@ -138,11 +139,11 @@ impl Lowerer<'_> {
                 ShapeDesc::Cone { open, .. } => *open = true,
                 other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
             },
-            Modifier::Sturm(span) => {
-                if !matches!(obj.shape, ShapeDesc::Torus { .. }) {
-                    return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), "torus"));
-                }
-            }
+            Modifier::Sturm(span) => match &mut obj.shape {
+                ShapeDesc::Torus { .. } => {}
+                ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
+                other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
+            },
             Modifier::Inverse | Modifier::ClippedBy(_) | Modifier::BoundedBy(_) => {
                 unreachable!("handled by `modifiers`")
             }
@@ -219,7 +220,7 @@ impl Lowerer<'_> {
             }
             Modifier::NoShadow => each(parts, &mut |leaf| leaf.desc.no_shadow = true),
             Modifier::Open(span) => return Err(flag_not_taken(*span, "open", word, "cylinder and cone")),
-            Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", word, "torus")),
+            Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", word, STURM_SHAPES)),
             // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
             Modifier::Hollow(on) => {
                 let hollow = self.hollow(on.as_ref())?;
@@ -332,7 +333,59 @@ impl Lowerer<'_> {
                 }
                 ShapeDesc::Torus { major, minor }
             }
+            ShapeKind::Quadric => {
+                // A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J, as the order-2
+                // poly x², xy, xz, x, y², yz, y, z², z, 1.
+                let (abc, def, ghi) = (self.vec3(arg(0)?)?, self.vec3(arg(1)?)?, self.vec3(arg(2)?)?);
+                let j = self.float(arg(3)?)?;
+                let coefficients = vec![abc.x, def.x, def.y, ghi.x, abc.y, def.z, ghi.y, abc.z, ghi.z, j];
+                if coefficients[..9].iter().all(|&c| c == 0.0) {
+                    return Err(Diag::new(span, "quadric: every coefficient but J is 0, so it has no surface"));
+                }
+                ShapeDesc::Poly { order: 2, coefficients, sturm: false, written: PolyForm::Quadric }
+            }
+            ShapeKind::Cubic | ShapeKind::Quartic | ShapeKind::Poly => self.poly(kind, args, span)?,
+            ShapeKind::Superellipsoid => {
+                let v = self.vec3(arg(0)?)?;
+                if !(v.x > 0.0 && v.y > 0.0) {
+                    return Err(Diag::new(arg(0)?.span, "superellipsoid exponents <e, n> must be positive"));
+                }
+                ShapeDesc::Superellipsoid { e: v.x, n: v.y }
+            }
         })
+    }
+
+    /// `cubic`, `quartic` or `poly`: the order (3, 4, or as written), then its coefficients.
+    fn poly(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
+        let (order, written, coefficients) = match kind {
+            ShapeKind::Cubic => (3, PolyForm::Cubic, args),
+            ShapeKind::Quartic => (4, PolyForm::Quartic, args),
+            _ => {
+                let order_expr = args.first().ok_or_else(|| Diag::new(span, "poly needs its order"))?;
+                let order = self.float(order_expr)?;
+                if order.fract() != 0.0 || !(2.0..=MAX_ORDER as f64).contains(&order) {
+                    return Err(Diag::new(
+                        order_expr.span,
+                        format!("poly order must be a whole number from 2 to {MAX_ORDER}, found {order}"),
+                    ));
+                }
+                let order = order as usize;
+                let found = args.len() - 1;
+                if found != term_count(order) {
+                    let at = args.get(1).map_or(order_expr.span, |first| first.span.to(args[args.len() - 1].span));
+                    return Err(Diag::new(
+                        at,
+                        format!("poly of order {order} takes {} coefficients, found {found}", term_count(order)),
+                    ));
+                }
+                (order, PolyForm::Poly, &args[1..])
+            }
+        };
+        let coefficients = coefficients.iter().map(|e| self.float(e)).collect::<PResult<Vec<f64>>>()?;
+        if coefficients.iter().all(|&c| c == 0.0) {
+            return Err(Diag::new(span, format!("{}: every coefficient is 0", written.keyword())));
+        }
+        Ok(ShapeDesc::Poly { order, coefficients, sturm: false, written })
     }
 
     fn polygon(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
@@ -400,6 +453,8 @@ fn collinear(points: &[DVec3]) -> bool {
     points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
 }
 
+/// The shapes `sturm` applies to.
+const STURM_SHAPES: &str = "torus, cubic, quartic and poly";
 /// A CSG object's texture and interior, given to its children without one at the end of its
 /// modifiers.
 #[derive(Default)]

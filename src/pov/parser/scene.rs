@@ -30,9 +30,15 @@ const TOP_LEVEL: &[&str] = &[
     "cone",
     "disc",
     "torus",
+    "quadric",
+    "cubic",
+    "quartic",
+    "poly",
+    "superellipsoid",
 ];
 const SHAPES: &str =
-    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, union, merge, intersection, difference, object";
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, superellipsoid, union, \
+     merge, intersection, difference, object";
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
@@ -82,6 +88,11 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "cone" => ShapeKind::Cone,
         "disc" => ShapeKind::Disc,
         "torus" => ShapeKind::Torus,
+        "quadric" => ShapeKind::Quadric,
+        "cubic" => ShapeKind::Cubic,
+        "quartic" => ShapeKind::Quartic,
+        "poly" => ShapeKind::Poly,
+        "superellipsoid" => ShapeKind::Superellipsoid,
         _ => return None,
     })
 }
@@ -98,6 +109,11 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Cone => &["base", "base radius", "cap", "cap radius"],
         ShapeKind::Disc => &["center", "normal", "radius"],
         ShapeKind::Torus => &["major radius", "minor radius"],
+        ShapeKind::Quadric => &["<A, B, C>", "<D, E, F>", "<G, H, I>", "J"],
+        ShapeKind::Cubic => &["<20 coefficients>"],
+        ShapeKind::Quartic => &["<35 coefficients>"],
+        ShapeKind::Poly => &["order", "<coefficients>"],
+        ShapeKind::Superellipsoid => &["<e, n>"],
     }
 }
 
@@ -351,7 +367,10 @@ impl Parser<'_, '_> {
                     // Name only the flags this shape takes.
                     let takes = |m: &&str| match *m {
                         "open" => matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone)),
-                        "sturm" => shape_kind(&word) == Some(ShapeKind::Torus),
+                        "sturm" => matches!(
+                            shape_kind(&word),
+                            Some(ShapeKind::Torus | ShapeKind::Cubic | ShapeKind::Quartic | ShapeKind::Poly)
+                        ),
                         _ => true,
                     };
                     let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();
@@ -401,6 +420,9 @@ impl Parser<'_, '_> {
             }
             return Ok(args);
         }
+        if matches!(shape, ShapeKind::Cubic | ShapeKind::Quartic | ShapeKind::Poly) {
+            return self.poly_args(shape, word);
+        }
         for i in 0..names.len() {
             if i > 0 {
                 self.eat_punct(',');
@@ -424,6 +446,46 @@ impl Parser<'_, '_> {
             } else if mark {
                 return Err(Diag::new(self.peek().span, "disc: expected the hole radius after `,`"));
             }
+        }
+        Ok(args)
+    }
+
+    /// `cubic { <20 coefficients> }`, `quartic { <35> }` or `poly { order, <coefficients> }`:
+    /// the order (poly only), then every coefficient as one argument. A list has more
+    /// components than a vector may, so it is read here; its count is checked here for cubic
+    /// and quartic, and when lowering (once the order is known) for poly.
+    fn poly_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
+        let mut args = Vec::new();
+        if shape == ShapeKind::Poly {
+            if !self.starts_expr(MODIFIERS) {
+                return Err(Diag::new(self.peek().span, "poly needs its order, then <coefficients>"));
+            }
+            args.push(self.expr()?);
+            self.eat_punct(',');
+        }
+        let open = self.peek().span;
+        if !self.is_punct('<') {
+            return Err(Diag::new(
+                open,
+                format!("{word} needs its coefficients as <c1, c2, ...>, found {}", self.peek().describe()),
+            ));
+        }
+        self.bump();
+        loop {
+            args.push(self.expr()?);
+            if !self.eat_punct(',') || self.is_punct('>') {
+                break;
+            }
+        }
+        let close = self.expect_punct('>', "to close the coefficients")?;
+        let found = args.len() - usize::from(shape == ShapeKind::Poly);
+        let wanted = match shape {
+            ShapeKind::Cubic => 20,
+            ShapeKind::Quartic => 35,
+            _ => found,
+        };
+        if found != wanted {
+            return Err(Diag::new(open.to(close), format!("{word} takes {wanted} coefficients, found {found}")));
         }
         Ok(args)
     }

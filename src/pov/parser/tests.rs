@@ -39,11 +39,11 @@ fn unknown_camera_keyword_lists_the_valid_ones() {
 
 #[test]
 fn unsupported_shape_is_named() {
-    let e = parse_str("blob { threshold 0.5 }").unwrap_err();
+    let e = parse_str("sphere_sweep { linear_spline 2, 0, 1, y, 1 }").unwrap_err();
     assert_eq!(
         e,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
-         union, merge, intersection, difference, object)"
+        "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, union, merge, intersection, difference, object)"
     );
 }
 

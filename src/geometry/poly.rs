@@ -1,0 +1,388 @@
+//! POV-Ray's polynomial surfaces, `quadric`, `cubic`, `quartic` and `poly`: the points where a
+//! polynomial in x, y, z (object space) is zero, inside where it is negative (POV-Ray 3.7
+//! reference, 3.4.6.5 "Poly, Cubic and Quartic" and 3.4.6.6 "Quadric"). One shape for all four:
+//! a quadric is a `poly` of order 2.
+//!
+//! Solved per lane in f64 (this shape has no 8-wide arithmetic: packets run its f64 solve lane
+//! by lane, as the torus does): the ray, moved to its point nearest the object origin and made
+//! unit, is substituted into the polynomial, which gives one polynomial in the distance along
+//! the ray, solved by `roots::smallest_root_by` with POV-Ray's solver (`Solver::Fast`) or
+//! `sturm` (`Solver::Sturm`).
+//!
+//! Such surfaces are in general unbounded: their bounds are infinite and `Scene` keeps them out
+//! of the accelerator, testing them for every ray as planes (see `scene::build`). A quadric
+//! whose quadratic part is definite (an ellipsoid written as a quadric) gets its finite box.
+
+use glam::{Affine3A, DMat3, DVec3, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::{RayLanes, MISS};
+use super::roots::{smallest_root_by, Solver, MAX_DEGREE};
+use super::{transformed_bounds, Shape};
+use crate::lanes::{Lane, V3};
+
+/// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
+/// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
+/// xyz, xy, xz², xz, x, y³, ..., z, 1).
+pub fn term_exponents(order: usize) -> Vec<[u8; 3]> {
+    let mut out = Vec::new();
+    for i in (0..=order).rev() {
+        for j in (0..=order - i).rev() {
+            for k in (0..=order - i - j).rev() {
+                out.push([i as u8, j as u8, k as u8]);
+            }
+        }
+    }
+    out
+}
+
+/// How many coefficients a polynomial of `order` has: (order + 1)(order + 2)(order + 3) / 6.
+pub fn term_count(order: usize) -> usize {
+    (order + 1) * (order + 2) * (order + 3) / 6
+}
+
+/// Highest order accepted (the root finder's limit).
+pub const MAX_ORDER: usize = MAX_DEGREE - 1;
+
+#[derive(Clone, Debug)]
+pub struct Poly {
+    pub frame: BoxFrame,
+    pub order: usize,
+    pub solver: Solver,
+    /// The non-zero terms: coefficient (scaled so the largest is ±1; the surface is the same)
+    /// and exponents of x, y, z.
+    pub terms: Vec<(f64, [u8; 3])>,
+    /// Render-space bounds, infinite for an unbounded surface.
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+impl Poly {
+    /// The polynomial with `coefficients` in POV-Ray's order for `order` (`term_exponents`)
+    /// under `render_from_object`.
+    pub fn new(render_from_object: Affine3A, order: usize, coefficients: &[f64], solver: Solver) -> Poly {
+        let scale = coefficients.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let scale = if scale > 0.0 && scale.is_finite() { scale } else { 1.0 };
+        let terms: Vec<(f64, [u8; 3])> = coefficients
+            .iter()
+            .zip(term_exponents(order))
+            .filter(|(c, _)| **c != 0.0)
+            .map(|(c, e)| (c / scale, e))
+            .collect();
+        let (min, max) = match (order == 2).then(|| quadric_box(&terms)).flatten() {
+            Some((lo, hi)) => transformed_bounds(&render_from_object, lo.as_vec3(), hi.as_vec3()),
+            None => (Vec3::splat(f32::NEG_INFINITY), Vec3::splat(f32::INFINITY)),
+        };
+        Poly { frame: frame_for(render_from_object), order, solver, terms, min, max }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    /// The polynomial at object-space `q`.
+    pub fn eval(&self, q: [f64; 3]) -> f64 {
+        self.terms
+            .iter()
+            .map(|&(c, [i, j, k])| c * q[0].powi(i as i32) * q[1].powi(j as i32) * q[2].powi(k as i32))
+            .sum()
+    }
+
+    /// The polynomial's gradient at object-space `q`.
+    pub fn gradient(&self, q: [f64; 3]) -> [f64; 3] {
+        let mut g = [0.0; 3];
+        for &(c, e) in &self.terms {
+            for (axis, slot) in g.iter_mut().enumerate() {
+                if e[axis] == 0 {
+                    continue;
+                }
+                let mut v = c * e[axis] as f64;
+                for (a, &p) in e.iter().enumerate() {
+                    let p = if a == axis { p - 1 } else { p };
+                    v *= q[a].powi(p as i32);
+                }
+                *slot += v;
+            }
+        }
+        g
+    }
+
+    /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the surface.
+    fn solve(&self, o: [f64; 3], d: [f64; 3], t_min: f64, t_max: f64) -> Option<f64> {
+        // A blocked shadow lane (t_max = −inf) costs nothing.
+        if t_max.is_nan() || t_min.is_nan() || t_max <= t_min {
+            return None;
+        }
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let len2 = dot(d, d);
+        if len2.is_nan() || len2 <= 0.0 || !len2.is_finite() {
+            return None;
+        }
+        let len = len2.sqrt();
+        let u = [d[0] / len, d[1] / len, d[2] / len];
+        // s: distance along u from p, the ray's point nearest the object origin; t = t_c + s/len.
+        let t_c = -dot(o, d) / len2;
+        let p = [o[0] + t_c * d[0], o[1] + t_c * d[1], o[2] + t_c * d[2]];
+        let n = self.order;
+        // powers[axis][e][m]: coefficient of s^m in (p + s·u)^e, lowest degree first.
+        let mut powers = [[[0.0; MAX_DEGREE + 1]; MAX_DEGREE + 1]; 3];
+        for axis in 0..3 {
+            powers[axis][0][0] = 1.0;
+            for e in 1..=n {
+                for m in 0..=e {
+                    let keep = if m < e { powers[axis][e - 1][m] * p[axis] } else { 0.0 };
+                    let step = if m > 0 { powers[axis][e - 1][m - 1] * u[axis] } else { 0.0 };
+                    powers[axis][e][m] = keep + step;
+                }
+            }
+        }
+        let mut poly = [0.0; MAX_DEGREE + 1];
+        let mut xy = [0.0; MAX_DEGREE + 1];
+        for &(c, [i, j, k]) in &self.terms {
+            let (i, j, k) = (i as usize, j as usize, k as usize);
+            xy[..=i + j].fill(0.0);
+            for a in 0..=i {
+                for b in 0..=j {
+                    xy[a + b] += powers[0][i][a] * powers[1][j][b];
+                }
+            }
+            for a in 0..=i + j {
+                for b in 0..=k {
+                    poly[a + b] += c * xy[a] * powers[2][k][b];
+                }
+            }
+        }
+        // Highest degree first, without leading terms that are rounding noise (a ray along
+        // the axis of a paraboloid makes the s² term cancel to ~1e-17 of the others).
+        let scale = poly[..=n].iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        if scale.is_nan() || scale == 0.0 {
+            return None;
+        }
+        let mut c = [0.0; MAX_DEGREE + 1];
+        for (slot, &v) in c.iter_mut().zip(poly[..=n].iter().rev()) {
+            *slot = v;
+        }
+        let first = c[..=n].iter().position(|v| v.abs() > 1e-14 * scale).unwrap_or(n);
+        let lo = (t_min - t_c) * len;
+        let hi = (t_max - t_c) * len;
+        let s = smallest_root_by(self.solver, &c[first..=n], lo, hi)?;
+        let t = t_c + s / len;
+        (t > t_min && t < t_max).then_some(t)
+    }
+}
+
+/// The object-space box of a quadric (order-2 terms) whose quadratic part is definite and whose
+/// surface is not empty: an ellipsoid. `None` for every other quadric (cylinders, cones,
+/// paraboloids, hyperboloids, planes), which are unbounded.
+fn quadric_box(terms: &[(f64, [u8; 3])]) -> Option<(DVec3, DVec3)> {
+    let (mut a, mut g, mut k) = (DMat3::ZERO, DVec3::ZERO, 0.0);
+    for &(c, e) in terms {
+        let axes: Vec<usize> = (0..3).flat_map(|ax| std::iter::repeat_n(ax, e[ax] as usize)).collect();
+        match axes[..] {
+            [p, q] if p == q => a.col_mut(p)[p] += c,
+            [p, q] => {
+                a.col_mut(p)[q] += c / 2.0;
+                a.col_mut(q)[p] += c / 2.0;
+            }
+            [p] => g[p] += c,
+            _ => k += c,
+        }
+    }
+    // Definite: Sylvester's criterion on A or on −A.
+    let sign = if a.x_axis.x < 0.0 { -1.0 } else { 1.0 };
+    let (a, g, k) = (a * sign, g * sign, k * sign);
+    let m1 = a.x_axis.x;
+    let m2 = a.x_axis.x * a.y_axis.y - a.x_axis.y * a.y_axis.x;
+    let m3 = a.determinant();
+    let size = a.x_axis.length() + a.y_axis.length() + a.z_axis.length();
+    if !(m1 > 1e-12 * size && m2 > 1e-12 * size * size && m3 > 1e-12 * size * size * size) {
+        return None;
+    }
+    // f(x) = (x − c)ᵀA(x − c) + f(c) with c = −A⁻¹g/2.
+    let inv = a.inverse();
+    let c = -(inv * g) * 0.5;
+    let fc = k - c.dot(a * c);
+    if fc.is_nan() || fc >= 0.0 {
+        return None;
+    }
+    // Half-widths sqrt(−f(c)·(A⁻¹)ᵢᵢ), padded for rounding.
+    let h = DVec3::new(inv.x_axis.x, inv.y_axis.y, inv.z_axis.z).max(DVec3::ZERO) * -fc;
+    let h = DVec3::new(h.x.sqrt(), h.y.sqrt(), h.z.sqrt()) * (1.0 + 1e-6) + DVec3::splat(1e-9 * c.abs().max_element());
+    Some((c - h, c + h))
+}
+
+impl Shape for Poly {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        L::from_fn_f64(|i| {
+            let v = |v: V3<L>| [v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i)];
+            let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
+            self.solve(v(o), v(d), lo, hi).unwrap_or(MISS as f64)
+        })
+    }
+
+    /// The gradient, which points to where the polynomial grows: out of the inside.
+    #[inline(always)]
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        let q = p.transform_point(&self.frame.object_from_render);
+        let mut g = [[0.0; 3]; 8];
+        for (i, slot) in g.iter_mut().enumerate().take(L::WIDTH) {
+            *slot = self.gradient([q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)]);
+        }
+        let n = V3 { x: L::from_fn_f64(|i| g[i][0]), y: L::from_fn_f64(|i| g[i][1]), z: L::from_fn_f64(|i| g[i][2]) };
+        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
+
+    /// Where the polynomial is negative.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        L::mask_from_fn(|i| self.eval([q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)]) < 0.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+    use crate::lanes::F8;
+
+    /// A quadric `<A,B,C>, <D,E,F>, <G,H,I>, J` as POV-Ray's order-2 coefficients.
+    fn quadric(q: [f64; 10]) -> [f64; 10] {
+        let [a, b, c, d, e, f, g, h, i, j] = q;
+        [a, d, e, g, b, f, h, c, i, j]
+    }
+
+    fn shape(order: usize, c: &[f64], solver: Solver) -> Poly {
+        Poly::new(Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)), order, c, solver)
+    }
+
+    #[test]
+    fn coefficient_order_is_povrays() {
+        assert_eq!(term_count(3), 20);
+        assert_eq!(term_count(4), 35);
+        let cubic = term_exponents(3);
+        assert_eq!(cubic.len(), 20);
+        assert_eq!(&cubic[..6], &[[3, 0, 0], [2, 1, 0], [2, 0, 1], [2, 0, 0], [1, 2, 0], [1, 1, 1]]);
+        assert_eq!(cubic[10], [0, 3, 0]);
+        assert_eq!(cubic[19], [0, 0, 0]);
+        assert_eq!(
+            term_exponents(2),
+            vec![
+                [2, 0, 0],
+                [1, 1, 0],
+                [1, 0, 1],
+                [1, 0, 0],
+                [0, 2, 0],
+                [0, 1, 1],
+                [0, 1, 0],
+                [0, 0, 2],
+                [0, 0, 1],
+                [0, 0, 0]
+            ]
+        );
+    }
+
+    #[test]
+    fn quadric_sphere_and_cylinder() {
+        for solver in [Solver::Fast, Solver::Sturm] {
+            // x² + y² + z² − 4: a sphere of radius 2, bounded.
+            let s = shape(2, &quadric([1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -4.0]), solver);
+            let r = Ray::new(Vec3::ZERO, Vec3::Z);
+            let t = s.intersect(&r, 0.0, MISS).expect("sphere");
+            assert!((t - 8.0).abs() < 1e-5, "{t}");
+            assert!((s.normal_at(r.at(t)) + Vec3::Z).length() < 1e-5);
+            let (lo, hi) = s.bounds();
+            assert!((lo - Vec3::new(-2.0, -2.0, 8.0)).abs().max_element() < 1e-4, "{lo}");
+            assert!((hi - Vec3::new(2.0, 2.0, 12.0)).abs().max_element() < 1e-4, "{hi}");
+            assert!(s.inside(V3::from_vec3(Vec3::new(0.0, 1.0, 10.0))));
+            assert!(!s.inside(V3::from_vec3(Vec3::new(0.0, 3.0, 10.0))));
+            // x² + y² − 1: the cylinder along z, unbounded; a ray along its axis from inside
+            // never meets it, one across meets its wall.
+            let c = shape(2, &quadric([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0]), solver);
+            assert!(c.bounds().0.x.is_infinite());
+            assert_eq!(c.intersect(&Ray::new(Vec3::new(0.5, 0.0, 0.0), Vec3::Z), 0.0, MISS), None);
+            let t = c.intersect(&Ray::new(Vec3::new(-5.0, 0.0, 1e4), Vec3::X), 0.0, MISS).expect("wall");
+            assert!((t - 4.0).abs() < 1e-5, "{t}");
+            // Grazing: tangent to the wall at y = 1.
+            let g = c.intersect(&Ray::new(Vec3::new(-5.0, 1.0 - 1e-4, 0.0), Vec3::X), 0.0, MISS).expect("graze");
+            assert!((g - (5.0 - (1.0f32 - (1.0 - 1e-4f32).powi(2)).sqrt())).abs() < 1e-3, "{g}");
+        }
+    }
+
+    #[test]
+    fn paraboloid_along_its_axis_and_hyperboloid_scales() {
+        // z = x² + y² (x² + y² − z = 0): a ray down the axis meets the vertex only.
+        let c = quadric([1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0]);
+        for solver in [Solver::Fast, Solver::Sturm] {
+            let p = Poly::new(Affine3A::IDENTITY, 2, &c, solver);
+            let t = p.intersect(&Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), 0.0, MISS).expect("vertex");
+            assert!((t - 3.0).abs() < 1e-5, "{solver:?} {t}");
+            assert!((p.normal_at(Vec3::ZERO) + Vec3::Z).length() < 1e-5);
+            // Scaled by 1e-4 and 1e5 with the ray: the same distances in those units.
+            for s in [1e-4f32, 1e5] {
+                let q = Poly::new(Affine3A::from_scale(Vec3::splat(s)), 2, &c, solver);
+                let t = q.intersect(&Ray::new(Vec3::new(0.5 * s, 0.0, 2.0 * s), -Vec3::Z), 0.0, MISS).expect("bowl");
+                assert!((t / s - 1.75).abs() < 1e-5, "{solver:?} {s}: {}", t / s);
+            }
+        }
+    }
+
+    #[test]
+    fn quartic_torus_matches_the_torus_and_packets_match_single_rays() {
+        // (x² + y² + z² + R² − r²)² − 4R²(x² + z²) with R = 2, r = 0.5, as 35 coefficients.
+        let (r2, big) = (0.25, 4.0);
+        let e = big - r2;
+        let mut c = vec![0.0; 35];
+        let terms = term_exponents(4);
+        let mut set = |x: u8, y: u8, z: u8, v: f64| {
+            let i = terms.iter().position(|t| *t == [x, y, z]).expect("term");
+            c[i] += v;
+        };
+        for (a, b) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)] {
+            let mut ex = [0u8; 3];
+            ex[a] += 2;
+            ex[b] += 2;
+            set(ex[0], ex[1], ex[2], if a == b { 1.0 } else { 2.0 });
+        }
+        set(2, 0, 0, 2.0 * e - 4.0 * big);
+        set(0, 2, 0, 2.0 * e);
+        set(0, 0, 2, 2.0 * e - 4.0 * big);
+        set(0, 0, 0, e * e);
+        let torus = crate::geometry::torus::Torus::new(
+            Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)) * Affine3A::from_scale(Vec3::splat(2.0)),
+            0.25,
+        );
+        let rays: [Ray; 8] = std::array::from_fn(|i| {
+            let o = Vec3::new(i as f32 * 0.6 - 2.0, 0.1 * i as f32, 0.0);
+            Ray::new(o, (Vec3::new(1.5, 0.2, 10.0) - o).normalize())
+        });
+        for solver in [Solver::Fast, Solver::Sturm] {
+            let q = shape(4, &c, solver);
+            for r in &rays {
+                let (a, b) = (q.intersect(r, 0.0, MISS), torus.intersect(r, 0.0, MISS));
+                assert_eq!(a.is_some(), b.is_some());
+                if let (Some(a), Some(b)) = (a, b) {
+                    assert!((a - b).abs() < 1e-4, "{solver:?}: {a} vs {b}");
+                    let (na, nb) = (q.normal_at(r.at(a)), torus.normal_at(r.at(b)));
+                    assert!((na - nb).length() < 1e-3, "{na} vs {nb}");
+                }
+            }
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| rays[i].origin),
+                d: V3::from_lanes(|i| rays[i].dir),
+                inv: V3::from_lanes(|i| rays[i].inv_dir),
+            };
+            let wide = q.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+            for (i, r) in rays.iter().enumerate() {
+                assert_eq!(wide.get(i).to_bits(), q.hit(&r.lanes(), 0.0, MISS).to_bits());
+            }
+            assert!(
+                q.inside(V3::from_vec3(Vec3::new(2.0, 0.0, 10.0)))
+                    && !q.inside(V3::from_vec3(Vec3::new(0.0, 0.0, 10.0)))
+            );
+        }
+    }
+}

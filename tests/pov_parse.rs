@@ -9,7 +9,7 @@ use strahl::pov::{
     load_scene, load_scene_with_messages, load_scene_with_options, load_scene_with_warnings, IncludePath, Message,
     ParseOptions,
 };
-use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc};
+use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -236,7 +236,7 @@ fn error_unsupported_keywords() {
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, \
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, \
          union, merge, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -867,10 +867,63 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
-        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder and cone)"),
-        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus)"),
+        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone and prism)"),
+        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus and prism)"),
     ] {
         let (l, c, m) = err("bad_round", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Prisms as POV-Ray writes them: spline and sweep keywords in any order, `open`, `sturm`.
+#[test]
+fn prisms_load() {
+    let s = load_text(
+        "prisms",
+        "prism { 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }\n\
+         prism { conic_sweep quadratic_spline 0.5, 1, 5, <0, -1>, <1, 0>, <0, 1>, <-1, 0>, <1, 0> open sturm }\n\
+         prism { bezier_spline linear_sweep -1, 1, 4, <0, 0>, <1, 1>, <1, -1>, <0, 0> }",
+    )
+    .unwrap();
+    assert!(
+        matches!(&s.objects[0].shape, ShapeDesc::Prism { spline: SplineKind::Linear, conic: false, open: false, points, .. } if points.len() == 4)
+    );
+    assert!(matches!(
+        s.objects[1].shape,
+        ShapeDesc::Prism { spline: SplineKind::Quadratic, conic: true, open: true, h1: 0.5, h2: 1.0, .. }
+    ));
+    assert!(matches!(s.objects[2].shape, ShapeDesc::Prism { spline: SplineKind::Bezier, h1: -1.0, .. }));
+}
+
+/// Bad prisms are located errors naming what is wrong: counts, unclosed splines, keywords.
+#[test]
+fn bad_prisms_are_located_errors() {
+    for (text, at, message) in [
+        ("prism { 0, 1, 5, <0, 0>, <1, 0>, <0, 1>, <0, 0> }", (1, 15), "prism says it has 5 points, but 4 are given"),
+        (
+            "prism { quadratic_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }",
+            (1, 32),
+            "prism: quadratic_spline sub-curve 1 starting at point 1 is not closed (repeat its second point: the first is a control point)",
+        ),
+        (
+            "prism { cubic_spline 0, 1, 4, <0, 0>, <1, 0>, <1, 0>, <2, 2> }",
+            (1, 28),
+            "prism: cubic_spline sub-curve 1 starting at point 1 has 4 points; it needs at least 5",
+        ),
+        (
+            "prism { bezier_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <1, 1> }",
+            (1, 29),
+            "prism: bezier_spline sub-curve 1 starting at point 1 is not closed (end a segment of 4 points on its first point)",
+        ),
+        (
+            "prism { quadric_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }",
+            (1, 9),
+            "unknown keyword `quadric_spline` in prism (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline, linear_sweep, conic_sweep)",
+        ),
+        ("prism { 1, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }", (1, 12), "prism heights must differ"),
+        ("prism { linear_spline }", (1, 23), "prism needs two heights, the number of points, then the points"),
+    ] {
+        let (l, c, m) = err("bad_prism", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

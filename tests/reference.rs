@@ -101,6 +101,11 @@ fn tori_match_povray() {
 }
 
 #[test]
+fn prisms_match_povray() {
+    check_psnr("prisms", &scene("prisms"), 35.0);
+}
+
+#[test]
 fn flat_seed_variant_matches_povray() {
     check_psnr("flat", &scene("flat"), 35.0);
 }

@@ -11,9 +11,11 @@ pub mod cuboid;
 pub mod disc;
 pub mod plane;
 pub mod polygon;
+pub mod prism;
 pub mod ray;
 pub mod roots;
 pub mod sphere;
+pub mod spline;
 pub mod torus;
 pub mod triangle;
 

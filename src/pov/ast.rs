@@ -311,6 +311,8 @@ pub enum ShapeKind {
     Cone,
     Disc,
     Torus,
+    /// `prism`: leading spline/sweep keywords come first in its arguments, as `Ident`s.
+    Prism,
 }
 
 #[derive(Clone, Debug, PartialEq)]

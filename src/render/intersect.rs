@@ -42,6 +42,7 @@ impl Scene {
             ShapeKind::Cone => self.cones[i].hit(ray, zero, t_max),
             ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
             ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
+            ShapeKind::Prism => self.prisms[i].hit(ray, zero, t_max),
             ShapeKind::Plane => L::splat(MISS),
         }
     }
@@ -168,6 +169,7 @@ impl Scene {
                     ShapeKind::Cone => self.cones[k].normal(p),
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
+                    ShapeKind::Prism => self.prisms[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

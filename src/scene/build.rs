@@ -16,7 +16,9 @@ use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
 use crate::geometry::plane::Plane;
 use crate::geometry::polygon::Polygon;
+use crate::geometry::prism::Prism;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::spline::{closed_pieces, Piece};
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
@@ -38,22 +40,25 @@ pub enum ShapeKind {
     Cone = 6,
     Disc = 7,
     Torus = 8,
+    /// `prism` (and each glyph of `text`).
+    Prism = 9,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 8] = [
+    pub const ALL: [ShapeKind; 9] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Disc,
         ShapeKind::Plane,
         ShapeKind::Polygon,
+        ShapeKind::Prism,
         ShapeKind::Sphere,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 9;
+    pub const COUNT: usize = 10;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -65,6 +70,7 @@ impl ShapeKind {
             ShapeKind::Cone => "Cone/Cylinder",
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
+            ShapeKind::Prism => "Prism",
         }
     }
 }
@@ -109,6 +115,7 @@ pub struct Scene {
     pub cones: Vec<Cone>,
     pub discs: Vec<Disc>,
     pub tori: Vec<Torus>,
+    pub prisms: Vec<Prism>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -222,6 +229,16 @@ pub(crate) enum RenderShape {
         render_from_object: DAffine3,
         minor: f64,
     },
+    /// Closed curves in the xz-plane of object space, swept along y from `h1` to `h2` (or
+    /// towards the origin: `conic`).
+    Prism {
+        render_from_object: DAffine3,
+        pieces: Vec<Piece>,
+        h1: f64,
+        h2: f64,
+        conic: bool,
+        open: bool,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -283,6 +300,15 @@ impl RenderFrame {
             ShapeDesc::Torus { major, minor } => RenderShape::Torus {
                 render_from_object: render_from_object() * DAffine3::from_scale(DVec3::splat(*major)),
                 minor: minor / major,
+            },
+            ShapeDesc::Prism { spline, conic, h1, h2, points, open } => RenderShape::Prism {
+                render_from_object: render_from_object(),
+                // Checked when lowered: a bad outline never gets here.
+                pieces: closed_pieces(*spline, points).map(|p| p.0).unwrap_or_default(),
+                h1: *h1,
+                h2: *h2,
+                conic: *conic,
+                open: *open,
             },
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Plane { normal, distance } => {
@@ -384,6 +410,7 @@ impl Scene {
             cones: Vec::new(),
             discs: Vec::new(),
             tori: Vec::new(),
+            prisms: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -464,6 +491,10 @@ impl Scene {
                 self.tori.push(Torus::new(affine_f32(&render_from_object), minor as f32));
                 push(ShapeKind::Torus, self.tori.len() - 1, &mut self.prims);
             }
+            RenderShape::Prism { render_from_object, pieces, h1, h2, conic, open } => {
+                self.prisms.push(Prism::new(render_from_object, &pieces, h1, h2, conic, open));
+                push(ShapeKind::Prism, self.prisms.len() - 1, &mut self.prims);
+            }
             RenderShape::Plane { normal, distance } => {
                 self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                 self.plane_materials.push(material);
@@ -506,6 +537,7 @@ impl Scene {
                     ShapeKind::Cone => self.cones[p.index as usize].bounds(),
                     ShapeKind::Disc => self.discs[p.index as usize].bounds(),
                     ShapeKind::Torus => self.tori[p.index as usize].bounds(),
+                    ShapeKind::Prism => self.prisms[p.index as usize].bounds(),
                     ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
                 };
                 Aabb::new(lo, hi)

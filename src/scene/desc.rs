@@ -4,7 +4,9 @@
 //! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
 //! that `build` can fold them into render-ready f32 data relative to the camera.
 
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec2, DVec3};
+
+pub use crate::geometry::spline::SplineKind;
 
 /// A POV-Ray colour: red, green, blue, filter, transmit.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -257,6 +259,17 @@ pub enum ShapeDesc {
         major: f64,
         minor: f64,
     },
+    /// Closed curves through `points` (x, z) swept along y from `h1` to `h2`, or towards the
+    /// origin (`conic`); checked to close when lowered.
+    Prism {
+        spline: SplineKind,
+        conic: bool,
+        h1: f64,
+        h2: f64,
+        points: Vec<DVec2>,
+        /// No caps.
+        open: bool,
+    },
 }
 
 impl ShapeDesc {
@@ -272,6 +285,7 @@ impl ShapeDesc {
             ShapeDesc::Cone { .. } => "cone",
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
+            ShapeDesc::Prism { .. } => "prism",
         }
     }
 }

@@ -300,7 +300,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             other @ (ShapeDesc::Polygon { .. }
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
-            | ShapeDesc::Torus { .. }) => {
+            | ShapeDesc::Torus { .. }
+            | ShapeDesc::Prism { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

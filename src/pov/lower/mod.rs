@@ -8,6 +8,7 @@ mod eval;
 mod fileio;
 mod functions;
 mod objects;
+mod sweeps;
 mod textures;
 
 use std::rc::Rc;

@@ -77,12 +77,12 @@ impl Lowerer<'_> {
                 Modifier::NoShadow => obj.no_shadow = true,
                 Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
                 Modifier::Open(span) => match &mut obj.shape {
-                    ShapeDesc::Cone { open, .. } => *open = true,
-                    other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
+                    ShapeDesc::Cone { open, .. } | ShapeDesc::Prism { open, .. } => *open = true,
+                    other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
                 },
                 Modifier::Sturm(span) => {
-                    if !matches!(obj.shape, ShapeDesc::Torus { .. }) {
-                        return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), "torus"));
+                    if !matches!(obj.shape, ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. }) {
+                        return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), STURM_TAKERS));
                     }
                 }
             }
@@ -150,8 +150,8 @@ impl Lowerer<'_> {
                         part.desc.no_shadow = true;
                     }
                 }
-                Modifier::Open(span) => return Err(flag_not_taken(*span, "open", "union", "cylinder and cone")),
-                Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", "union", "torus")),
+                Modifier::Open(span) => return Err(flag_not_taken(*span, "open", "union", OPEN_TAKERS)),
+                Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", "union", STURM_TAKERS)),
                 // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
                 Modifier::Hollow(on) => {
                     let hollow = self.hollow(on.as_ref())?;
@@ -251,6 +251,7 @@ impl Lowerer<'_> {
                 }
                 ShapeDesc::Torus { major, minor }
             }
+            ShapeKind::Prism => self.prism(args, span)?,
         })
     }
 
@@ -318,6 +319,10 @@ fn collinear(points: &[DVec3]) -> bool {
     let dir = (far - a) / scale;
     points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
 }
+
+/// The shapes that take `open` and `sturm`, for messages.
+const OPEN_TAKERS: &str = "cylinder, cone and prism";
+const STURM_TAKERS: &str = "torus and prism";
 
 /// `flag` written on a shape that does not take it.
 fn flag_not_taken(span: Span, flag: &str, on: &str, takes: &str) -> Diag {

@@ -27,8 +27,12 @@ const TOP_LEVEL: &[&str] = &[
     "cone",
     "disc",
     "torus",
+    "prism",
 ];
-const SHAPES: &str = "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, union, merge, object";
+const SHAPES: &str = "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, union, merge, object";
+/// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
+pub const PRISM_ITEMS: &[&str] =
+    &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
@@ -65,6 +69,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "cone" => ShapeKind::Cone,
         "disc" => ShapeKind::Disc,
         "torus" => ShapeKind::Torus,
+        "prism" => ShapeKind::Prism,
         _ => return None,
     })
 }
@@ -81,6 +86,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Cone => &["base", "base radius", "cap", "cap radius"],
         ShapeKind::Disc => &["center", "normal", "radius"],
         ShapeKind::Torus => &["major radius", "minor radius"],
+        ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
     }
 }
 
@@ -316,7 +322,7 @@ impl Parser<'_, '_> {
                 }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {
-                        Some(s) if s != ShapeKind::Polygon => {
+                        Some(s) if !matches!(s, ShapeKind::Polygon | ShapeKind::Prism) => {
                             let names = shape_args(s);
                             format!("{word} takes {} arguments ({}); found an extra `,`", names.len(), names.join(", "))
                         }
@@ -327,8 +333,10 @@ impl Parser<'_, '_> {
                 _ => {
                     // Name only the flags this shape takes.
                     let takes = |m: &&str| match *m {
-                        "open" => matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone)),
-                        "sturm" => shape_kind(&word) == Some(ShapeKind::Torus),
+                        "open" => {
+                            matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism))
+                        }
+                        "sturm" => matches!(shape_kind(&word), Some(ShapeKind::Torus | ShapeKind::Prism)),
                         _ => true,
                     };
                     let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();
@@ -345,9 +353,35 @@ impl Parser<'_, '_> {
     fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
         let names = shape_args(shape);
         let mut args = Vec::new();
-        if shape == ShapeKind::Polygon {
+        let leading = match shape {
+            ShapeKind::Prism => PRISM_ITEMS,
+            _ => &[],
+        };
+        if !leading.is_empty() {
+            // Keywords first, kept as words for lowering; a misspelt one is named here.
+            while let Some(w) = self.peek_ident() {
+                let span = self.peek().span;
+                if leading.contains(&&*w) {
+                    self.bump();
+                    args.push(crate::pov::ast::Expr { kind: crate::pov::ast::ExprKind::Ident(w.to_string()), span });
+                } else if (w.ends_with("_spline") || w.ends_with("_sweep")) && self.low.lookup(&w).is_none() {
+                    return Err(Diag::new(
+                        span,
+                        format!("unknown keyword `{w}` in {word} (expected one of: {})", leading.join(", ")),
+                    ));
+                } else {
+                    break;
+                }
+            }
+        }
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism) {
             if !self.starts_expr(MODIFIERS) {
-                return Err(Diag::new(self.peek().span, "polygon needs the number of points, then the points"));
+                let what = if shape == ShapeKind::Polygon {
+                    "polygon needs the number of points, then the points"
+                } else {
+                    "prism needs two heights, the number of points, then the points"
+                };
+                return Err(Diag::new(self.peek().span, what));
             }
             args.push(self.expr()?);
             loop {

@@ -236,7 +236,7 @@ fn error_unsupported_keywords() {
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, \
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, \
          union, merge, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -924,6 +924,49 @@ fn bad_prisms_are_located_errors() {
         ("prism { linear_spline }", (1, 23), "prism needs two heights, the number of points, then the points"),
     ] {
         let (l, c, m) = err("bad_prism", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Text from POV-Ray's fonts, found through the include path as POV-Ray finds them; skips with
+/// the reason where fonts-povray is not installed.
+#[test]
+fn text_loads_glyphs_from_the_include_path() {
+    if !Path::new("/usr/share/povray-3.7/include/timrom.ttf").is_file() {
+        println!("skipped: timrom.ttf is not in /usr/share/povray-3.7/include (install fonts-povray)");
+        return;
+    }
+    let scene = write(&dir("text"), "scene.pov", "text { ttf \"timrom.ttf\" \"AV i\" 0.25, <0.1, 0, 0> }");
+    let s = load_scene(&scene, &strahl::headless::include_path(&[])).unwrap();
+    let ShapeDesc::Text { glyphs, thickness, string, .. } = &s.objects[0].shape else {
+        panic!("{:?}", s.objects[0].shape)
+    };
+    // A, V and i have outlines; the space has none.
+    assert_eq!((glyphs.len(), *thickness, string.as_str()), (3, 0.25, "AV i"));
+    let x_range = |g: &strahl::scene::desc::TextGlyph| {
+        g.quads.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)))
+    };
+    // The first glyph's ink starts at 0; the em is one unit (capitals about 0.66 high).
+    assert!(x_range(&glyphs[0]).0.abs() < 1e-9, "{:?}", x_range(&glyphs[0]));
+    let top = glyphs[0].quads.iter().flatten().fold(0.0f64, |m, p| m.max(p.y));
+    assert!((0.6..0.75).contains(&top), "{top}");
+    // AV is kerned (timrom's pair: -0.187 em): V starts left of where A ends.
+    assert!(x_range(&glyphs[1]).0 < x_range(&glyphs[0]).1);
+}
+
+#[test]
+fn bad_text_is_a_located_error() {
+    for (text, at, message) in [
+        (
+            "text { ttf \"nosuchfont.ttf\" \"A\" 1, 0 }",
+            (1, 12),
+            "font \"nosuchfont.ttf\" not found (searched as written, the scene's folder and the include path)",
+        ),
+        ("text { \"timrom.ttf\" \"A\" 1, 0 }", (1, 8), "text needs `ttf` and a font file first"),
+        ("text { ttf \"x.ttf\" \"A\" 0, 0 }", (1, 24), "text thickness must not be 0"),
+        ("text { ttf 3 \"A\" 1, 0 }", (1, 12), "expected a string, found a float"),
+    ] {
+        let (l, c, m) = err("bad_text", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

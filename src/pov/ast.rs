@@ -313,6 +313,8 @@ pub enum ShapeKind {
     Torus,
     /// `prism`: leading spline/sweep keywords come first in its arguments, as `Ident`s.
     Prism,
+    /// `text`: `ttf` first, as an `Ident`, then font, string, thickness and offset.
+    Text,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -21,7 +21,7 @@ use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::spline::{closed_pieces, Piece};
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
-use crate::scene::desc::{SceneDesc, ShapeDesc, Transform};
+use crate::scene::desc::{SceneDesc, ShapeDesc, TextGlyph, Transform};
 use crate::scene::material::Material;
 use crate::shading::pattern::Rgbft;
 
@@ -239,6 +239,12 @@ pub(crate) enum RenderShape {
         conic: bool,
         open: bool,
     },
+    /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
+    Glyphs {
+        render_from_object: DAffine3,
+        glyphs: Vec<Vec<Piece>>,
+        thickness: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -310,6 +316,30 @@ impl RenderFrame {
                 conic: *conic,
                 open: *open,
             },
+            ShapeDesc::Text { thickness, glyphs, .. } => {
+                // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
+                // along z: swap y and z.
+                let swap = DAffine3::from_cols(DVec3::X, DVec3::Z, DVec3::Y, DVec3::ZERO);
+                let pieces = |g: &TextGlyph| {
+                    g.quads
+                        .iter()
+                        .map(
+                            |&[a, c, b]| {
+                                if c == 0.5 * (a + b) {
+                                    Piece::line(a, b)
+                                } else {
+                                    Piece::quadratic_bezier(a, c, b)
+                                }
+                            },
+                        )
+                        .collect()
+                };
+                RenderShape::Glyphs {
+                    render_from_object: render_from_object() * swap,
+                    glyphs: glyphs.iter().map(pieces).collect(),
+                    thickness: *thickness,
+                }
+            }
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Plane { normal, distance } => {
                 // n·p = d in object space; a point on it maps through the transform and the normal
@@ -494,6 +524,12 @@ impl Scene {
             RenderShape::Prism { render_from_object, pieces, h1, h2, conic, open } => {
                 self.prisms.push(Prism::new(render_from_object, &pieces, h1, h2, conic, open));
                 push(ShapeKind::Prism, self.prisms.len() - 1, &mut self.prims);
+            }
+            RenderShape::Glyphs { render_from_object, glyphs, thickness } => {
+                for pieces in glyphs {
+                    self.prisms.push(Prism::new(render_from_object, &pieces, 0.0, thickness, false, false));
+                    push(ShapeKind::Prism, self.prisms.len() - 1, &mut self.prims);
+                }
             }
             RenderShape::Plane { normal, distance } => {
                 self.planes.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });

@@ -270,6 +270,24 @@ pub enum ShapeDesc {
         /// No caps.
         open: bool,
     },
+    /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
+    /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
+    /// `thickness`.
+    Text {
+        /// The font file as found (for printing and messages).
+        font: String,
+        string: String,
+        thickness: f64,
+        offset: DVec3,
+        glyphs: Vec<TextGlyph>,
+    },
+}
+
+/// One glyph's closed outlines in text space (x, y): quadratic Bézier pieces `[start, control,
+/// end]`; a straight piece has its control point exactly halfway.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextGlyph {
+    pub quads: Vec<[DVec2; 3]>,
 }
 
 impl ShapeDesc {
@@ -286,6 +304,7 @@ impl ShapeDesc {
             ShapeDesc::Disc { .. } => "disc",
             ShapeDesc::Torus { .. } => "torus",
             ShapeDesc::Prism { .. } => "prism",
+            ShapeDesc::Text { .. } => "text",
         }
     }
 }

@@ -301,7 +301,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
             | ShapeDesc::Torus { .. }
-            | ShapeDesc::Prism { .. }) => {
+            | ShapeDesc::Prism { .. }
+            | ShapeDesc::Text { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

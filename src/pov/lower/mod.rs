@@ -9,6 +9,7 @@ mod fileio;
 mod functions;
 mod objects;
 mod sweeps;
+mod text;
 mod textures;
 
 use std::rc::Rc;

@@ -252,6 +252,7 @@ impl Lowerer<'_> {
                 ShapeDesc::Torus { major, minor }
             }
             ShapeKind::Prism => self.prism(args, span)?,
+            ShapeKind::Text => self.text(args, span)?,
         })
     }
 

@@ -28,8 +28,10 @@ const TOP_LEVEL: &[&str] = &[
     "disc",
     "torus",
     "prism",
+    "text",
 ];
-const SHAPES: &str = "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, union, merge, object";
+const SHAPES: &str =
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, union, merge, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -70,6 +72,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "disc" => ShapeKind::Disc,
         "torus" => ShapeKind::Torus,
         "prism" => ShapeKind::Prism,
+        "text" => ShapeKind::Text,
         _ => return None,
     })
 }
@@ -87,6 +90,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Disc => &["center", "normal", "radius"],
         ShapeKind::Torus => &["major radius", "minor radius"],
         ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
+        ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
     }
 }
 
@@ -322,7 +326,7 @@ impl Parser<'_, '_> {
                 }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {
-                        Some(s) if !matches!(s, ShapeKind::Polygon | ShapeKind::Prism) => {
+                        Some(s) if !matches!(s, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text) => {
                             let names = shape_args(s);
                             format!("{word} takes {} arguments ({}); found an extra `,`", names.len(), names.join(", "))
                         }
@@ -355,6 +359,7 @@ impl Parser<'_, '_> {
         let mut args = Vec::new();
         let leading = match shape {
             ShapeKind::Prism => PRISM_ITEMS,
+            ShapeKind::Text => &["ttf"],
             _ => &[],
         };
         if !leading.is_empty() {
@@ -374,12 +379,12 @@ impl Parser<'_, '_> {
                 }
             }
         }
-        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism) {
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text) {
             if !self.starts_expr(MODIFIERS) {
-                let what = if shape == ShapeKind::Polygon {
-                    "polygon needs the number of points, then the points"
-                } else {
-                    "prism needs two heights, the number of points, then the points"
+                let what = match shape {
+                    ShapeKind::Polygon => "polygon needs the number of points, then the points",
+                    ShapeKind::Prism => "prism needs two heights, the number of points, then the points",
+                    _ => "text needs: ttf \"font.ttf\" \"string\" thickness, offset",
                 };
                 return Err(Diag::new(self.peek().span, what));
             }

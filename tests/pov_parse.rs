@@ -236,7 +236,7 @@ fn error_unsupported_keywords() {
     assert_eq!((l, c), (2, 2));
     assert_eq!(
         m,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, \
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, lathe, \
          union, merge, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -868,7 +868,7 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
         ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone and prism)"),
-        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus and prism)"),
+        ("cylinder { 0, y, 1 sturm }", (1, 20), "`sturm` does not apply to cylinder (only to torus, prism and lathe)"),
     ] {
         let (l, c, m) = err("bad_round", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
@@ -967,6 +967,30 @@ fn bad_text_is_a_located_error() {
         ("text { ttf 3 \"A\" 1, 0 }", (1, 12), "expected a string, found a float"),
     ] {
         let (l, c, m) = err("bad_text", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Lathes: the spline keyword first, counts and spline rules checked where written.
+#[test]
+fn lathes_load_and_bad_ones_are_located_errors() {
+    let s = load_text("lathes", "lathe { cubic_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> sturm }").unwrap();
+    assert!(matches!(&s.objects[0].shape, ShapeDesc::Lathe { spline: SplineKind::Cubic, points } if points.len() == 4));
+    for (text, at, message) in [
+        ("lathe { 3, <0, 0>, <1, 0> }", (1, 9), "lathe says it has 3 points, but 2 are given"),
+        (
+            "lathe { bezier_spline 3, <0, 0>, <1, 0>, <1, 1> }",
+            (1, 23),
+            "lathe: bezier_spline needs 4 points per segment, found 3",
+        ),
+        (
+            "lathe { cubik_spline 2, <0, 0>, <1, 0> }",
+            (1, 9),
+            "unknown keyword `cubik_spline` in lathe (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline)",
+        ),
+        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone and prism)"),
+    ] {
+        let (l, c, m) = err("bad_lathe", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

@@ -101,6 +101,11 @@ fn tori_match_povray() {
 }
 
 #[test]
+fn lathes_match_povray() {
+    check_psnr("lathes", &scene("lathes"), 35.0);
+}
+
+#[test]
 fn prisms_match_povray() {
     check_psnr("prisms", &scene("prisms"), 35.0);
 }

@@ -9,6 +9,7 @@
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+pub mod lathe;
 pub mod plane;
 pub mod polygon;
 pub mod prism;

@@ -19,7 +19,7 @@ use glam::{Affine3A, DAffine3, DVec2, DVec3, Vec3};
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{RayLanes, MISS};
 use super::roots::{roots_in, MAX_DEGREE};
-use super::spline::Piece;
+use super::spline::{closest_t, even_odd, Piece};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
@@ -96,30 +96,8 @@ impl Prism {
         }
     }
 
-    /// Even-odd: crossings of the ray from `q` towards +u.
     fn inside_2d(&self, q: DVec2) -> bool {
-        let mut inside = false;
-        for p in &self.pieces {
-            if q.y < p.lo.y || q.y > p.hi.y || q.x > p.hi.x {
-                continue;
-            }
-            let (a, b) = (p.at(0.0), p.at(1.0));
-            if q.x < p.lo.x {
-                // Wholly to the right: the parity is whether the ends lie on opposite sides.
-                inside ^= (a.y < q.y) != (b.y < q.y);
-                continue;
-            }
-            let (c, n) = p.combine(0.0, 1.0, -q.y);
-            let mut roots = [0.0; MAX_DEGREE];
-            let k = roots_in(&c[..n], 0.0, 1.0, &mut roots);
-            for &t in &roots[..k] {
-                // Half-open in t, so a joint is counted once.
-                if t < 1.0 && p.at(t).x > q.x {
-                    inside = !inside;
-                }
-            }
-        }
-        inside
+        even_odd(&self.pieces, q)
     }
 
     fn inside_point(&self, q: DVec3) -> bool {
@@ -253,35 +231,6 @@ impl Prism {
         }
         normal
     }
-}
-
-/// The parameter in [0, 1] of the point of `p` nearest `w`.
-pub(crate) fn closest_t(p: &Piece, w: DVec2) -> f64 {
-    // (C(t) − w)·C'(t) = 0: degree 2·deg − 1.
-    let deg = p.degree;
-    let du = |k: usize| if k == 0 { p.u[0] - w.x } else { p.u[k] };
-    let dv = |k: usize| if k == 0 { p.v[0] - w.y } else { p.v[k] };
-    let mut prod = [0.0; 6]; // lowest power first
-    for i in 0..=deg {
-        for j in 1..=deg {
-            prod[i + j - 1] += j as f64 * (du(i) * p.u[j] + dv(i) * p.v[j]);
-        }
-    }
-    let n = 2 * deg; // coefficients: powers 0..2·deg − 1
-    let mut c = [0.0; 6];
-    for (i, slot) in c[..n].iter_mut().enumerate() {
-        *slot = prod[n - 1 - i];
-    }
-    let mut roots = [0.0; MAX_DEGREE];
-    let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
-    let dist = |t: f64| (p.at(t) - w).length_squared();
-    let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
-    for &t in &roots[..m] {
-        if dist(t) < dist(best) {
-            best = t;
-        }
-    }
-    best
 }
 
 impl Shape for Prism {

@@ -315,6 +315,8 @@ pub enum ShapeKind {
     Prism,
     /// `text`: `ttf` first, as an `Ident`, then font, string, thickness and offset.
     Text,
+    /// `lathe`: an optional spline keyword first, as an `Ident`.
+    Lathe,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -43,6 +43,7 @@ impl Scene {
             ShapeKind::Disc => self.discs[i].hit(ray, zero, t_max),
             ShapeKind::Torus => self.tori[i].hit(ray, zero, t_max),
             ShapeKind::Prism => self.prisms[i].hit(ray, zero, t_max),
+            ShapeKind::Lathe => self.lathes[i].hit(ray, zero, t_max),
             ShapeKind::Plane => L::splat(MISS),
         }
     }
@@ -170,6 +171,7 @@ impl Scene {
                     ShapeKind::Disc => self.discs[k].normal(p),
                     ShapeKind::Torus => self.tori[k].normal(p),
                     ShapeKind::Prism => self.prisms[k].normal(p),
+                    ShapeKind::Lathe => self.lathes[k].normal(p),
                     ShapeKind::Plane => V3::splat(Vec3::Y),
                 }
             }

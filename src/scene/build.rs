@@ -14,11 +14,12 @@ pub use crate::accel::AccelKind;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::lathe::Lathe;
 use crate::geometry::plane::Plane;
 use crate::geometry::polygon::Polygon;
 use crate::geometry::prism::Prism;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
-use crate::geometry::spline::{closed_pieces, Piece};
+use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::desc::{SceneDesc, ShapeDesc, TextGlyph, Transform};
@@ -42,14 +43,16 @@ pub enum ShapeKind {
     Torus = 8,
     /// `prism` (and each glyph of `text`).
     Prism = 9,
+    Lathe = 10,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 9] = [
+    pub const ALL: [ShapeKind; 10] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Disc,
+        ShapeKind::Lathe,
         ShapeKind::Plane,
         ShapeKind::Polygon,
         ShapeKind::Prism,
@@ -58,7 +61,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 10;
+    pub const COUNT: usize = 11;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -71,6 +74,7 @@ impl ShapeKind {
             ShapeKind::Disc => "Disc",
             ShapeKind::Torus => "Torus",
             ShapeKind::Prism => "Prism",
+            ShapeKind::Lathe => "Lathe",
         }
     }
 }
@@ -116,6 +120,7 @@ pub struct Scene {
     pub discs: Vec<Disc>,
     pub tori: Vec<Torus>,
     pub prisms: Vec<Prism>,
+    pub lathes: Vec<Lathe>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -239,6 +244,11 @@ pub(crate) enum RenderShape {
         conic: bool,
         open: bool,
     },
+    /// (r, y) pieces revolved around the object's y axis.
+    Lathe {
+        render_from_object: DAffine3,
+        pieces: Vec<Piece>,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -315,6 +325,10 @@ impl RenderFrame {
                 h2: *h2,
                 conic: *conic,
                 open: *open,
+            },
+            ShapeDesc::Lathe { spline, points } => RenderShape::Lathe {
+                render_from_object: render_from_object(),
+                pieces: open_pieces(*spline, points).unwrap_or_default(),
             },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
@@ -441,6 +455,7 @@ impl Scene {
             discs: Vec::new(),
             tori: Vec::new(),
             prisms: Vec::new(),
+            lathes: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -525,6 +540,10 @@ impl Scene {
                 self.prisms.push(Prism::new(render_from_object, &pieces, h1, h2, conic, open));
                 push(ShapeKind::Prism, self.prisms.len() - 1, &mut self.prims);
             }
+            RenderShape::Lathe { render_from_object, pieces } => {
+                self.lathes.push(Lathe::new(render_from_object, &pieces));
+                push(ShapeKind::Lathe, self.lathes.len() - 1, &mut self.prims);
+            }
             RenderShape::Glyphs { render_from_object, glyphs, thickness } => {
                 for pieces in glyphs {
                     self.prisms.push(Prism::new(render_from_object, &pieces, 0.0, thickness, false, false));
@@ -574,6 +593,7 @@ impl Scene {
                     ShapeKind::Disc => self.discs[p.index as usize].bounds(),
                     ShapeKind::Torus => self.tori[p.index as usize].bounds(),
                     ShapeKind::Prism => self.prisms[p.index as usize].bounds(),
+                    ShapeKind::Lathe => self.lathes[p.index as usize].bounds(),
                     ShapeKind::Plane => unreachable!("planes are never bounded primitives"),
                 };
                 Aabb::new(lo, hi)

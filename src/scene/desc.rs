@@ -270,6 +270,11 @@ pub enum ShapeDesc {
         /// No caps.
         open: bool,
     },
+    /// The spline through (r, y) `points` revolved around the y axis; checked when lowered.
+    Lathe {
+        spline: SplineKind,
+        points: Vec<DVec2>,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -305,6 +310,7 @@ impl ShapeDesc {
             ShapeDesc::Torus { .. } => "torus",
             ShapeDesc::Prism { .. } => "prism",
             ShapeDesc::Text { .. } => "text",
+            ShapeDesc::Lathe { .. } => "lathe",
         }
     }
 }

@@ -302,7 +302,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Disc { .. }
             | ShapeDesc::Torus { .. }
             | ShapeDesc::Prism { .. }
-            | ShapeDesc::Text { .. }) => {
+            | ShapeDesc::Text { .. }
+            | ShapeDesc::Lathe { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

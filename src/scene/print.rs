@@ -77,6 +77,9 @@ fn object(s: &mut String, o: &ObjectDesc) {
             let (kw, a, b) = (spline.keyword(), num(*h1), num(*h2));
             write!(s, "prism {{ {kw} {sweep} {a}, {b}, {}, {}{open}", points.len(), vec2s(points))
         }
+        ShapeDesc::Lathe { spline, points } => {
+            write!(s, "lathe {{ {} {}, {}", spline.keyword(), points.len(), vec2s(points))
+        }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
             write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))

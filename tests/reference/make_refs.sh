@@ -19,6 +19,6 @@ render "$root/scenes/seed.pov" seed
 for s in flat reflection refraction shadows legacy gamma22 noversion cones tori; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in prisms text; do
+for s in prisms text lathes; do
     render "$here/scenes/$s.pov" "$s"
 done

@@ -81,7 +81,8 @@ impl Lowerer<'_> {
                     other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
                 },
                 Modifier::Sturm(span) => {
-                    if !matches!(obj.shape, ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. }) {
+                    if !matches!(obj.shape, ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. })
+                    {
                         return Err(flag_not_taken(*span, "sturm", obj.shape.keyword(), STURM_TAKERS));
                     }
                 }
@@ -253,6 +254,7 @@ impl Lowerer<'_> {
             }
             ShapeKind::Prism => self.prism(args, span)?,
             ShapeKind::Text => self.text(args, span)?,
+            ShapeKind::Lathe => self.lathe(args, span)?,
         })
     }
 
@@ -323,7 +325,7 @@ fn collinear(points: &[DVec3]) -> bool {
 
 /// The shapes that take `open` and `sturm`, for messages.
 const OPEN_TAKERS: &str = "cylinder, cone and prism";
-const STURM_TAKERS: &str = "torus and prism";
+const STURM_TAKERS: &str = "torus, prism and lathe";
 
 /// `flag` written on a shape that does not take it.
 fn flag_not_taken(span: Span, flag: &str, on: &str, takes: &str) -> Diag {

@@ -5,7 +5,7 @@
 use glam::DVec2;
 
 use super::Lowerer;
-use crate::geometry::spline::{closed_pieces, SplineKind};
+use crate::geometry::spline::{closed_pieces, open_pieces, SplineKind};
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::ShapeDesc;
@@ -64,5 +64,17 @@ impl Lowerer<'_> {
             self.warn(Diag::new(span, "prism: linear outline not closed; closed with a line (as POV-Ray does)"));
         }
         Ok(ShapeDesc::Prism { spline, conic, h1, h2, points, open: false })
+    }
+
+    /// `lathe { [spline] N, points }` (POV-Ray 3.4.6.x Lathe): (r, y) points around the y axis.
+    pub(super) fn lathe(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
+        let (words, rest) = split_words(args);
+        let spline = words.last().and_then(|(w, _)| SplineKind::from_keyword(w)).unwrap_or(SplineKind::Linear);
+        if rest.is_empty() {
+            return Err(Diag::new(span, "lathe needs the number of points, then the points"));
+        }
+        let points: Vec<DVec2> = self.counted_points("lathe", rest, span)?.into_iter().map(|p| p.0).collect();
+        open_pieces(spline, &points).map_err(|m| Diag::new(rest[0].span, format!("lathe: {m}")))?;
+        Ok(ShapeDesc::Lathe { spline, points })
     }
 }

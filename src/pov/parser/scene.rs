@@ -29,9 +29,10 @@ const TOP_LEVEL: &[&str] = &[
     "torus",
     "prism",
     "text",
+    "lathe",
 ];
 const SHAPES: &str =
-    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, union, merge, object";
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, lathe, union, merge, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -73,6 +74,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "torus" => ShapeKind::Torus,
         "prism" => ShapeKind::Prism,
         "text" => ShapeKind::Text,
+        "lathe" => ShapeKind::Lathe,
         _ => return None,
     })
 }
@@ -91,6 +93,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Torus => &["major radius", "minor radius"],
         ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
         ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
+        ShapeKind::Lathe => &["number of points", "points"],
     }
 }
 
@@ -326,7 +329,12 @@ impl Parser<'_, '_> {
                 }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {
-                        Some(s) if !matches!(s, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text) => {
+                        Some(s)
+                            if !matches!(
+                                s,
+                                ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe
+                            ) =>
+                        {
                             let names = shape_args(s);
                             format!("{word} takes {} arguments ({}); found an extra `,`", names.len(), names.join(", "))
                         }
@@ -340,7 +348,9 @@ impl Parser<'_, '_> {
                         "open" => {
                             matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism))
                         }
-                        "sturm" => matches!(shape_kind(&word), Some(ShapeKind::Torus | ShapeKind::Prism)),
+                        "sturm" => {
+                            matches!(shape_kind(&word), Some(ShapeKind::Torus | ShapeKind::Prism | ShapeKind::Lathe))
+                        }
                         _ => true,
                     };
                     let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();
@@ -360,6 +370,7 @@ impl Parser<'_, '_> {
         let leading = match shape {
             ShapeKind::Prism => PRISM_ITEMS,
             ShapeKind::Text => &["ttf"],
+            ShapeKind::Lathe => &PRISM_ITEMS[..4],
             _ => &[],
         };
         if !leading.is_empty() {
@@ -379,11 +390,12 @@ impl Parser<'_, '_> {
                 }
             }
         }
-        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text) {
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe) {
             if !self.starts_expr(MODIFIERS) {
                 let what = match shape {
                     ShapeKind::Polygon => "polygon needs the number of points, then the points",
                     ShapeKind::Prism => "prism needs two heights, the number of points, then the points",
+                    ShapeKind::Lathe => "lathe needs the number of points, then the points",
                     _ => "text needs: ttf \"font.ttf\" \"string\" thickness, offset",
                 };
                 return Err(Diag::new(self.peek().span, what));

@@ -42,7 +42,7 @@ fn unsupported_shape_is_named() {
     let e = parse_str("blob { threshold 0.5 }").unwrap_err();
     assert_eq!(
         e,
-        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, \
+        "`blob` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, prism, text, lathe, \
          union, merge, object)"
     );
 }

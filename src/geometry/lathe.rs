@@ -109,9 +109,9 @@ impl Lathe {
                 mul(&r[..=deg], &r[..=deg], &mut rr);
                 let len = 2 * deg + 1;
                 let mut c = [0.0; 7];
-                for i in 0..len {
+                for (i, slot) in c[..len].iter_mut().enumerate() {
                     let k = len - 1 - i;
-                    c[i] = aa[k] + bb[k] - rr[k];
+                    *slot = aa[k] + bb[k] - rr[k];
                 }
                 let m = roots_in(&c[..len], 0.0, 1.0, &mut roots);
                 for &t in &roots[..m] {

@@ -9,7 +9,7 @@ use strahl::pov::{
     load_scene, load_scene_with_messages, load_scene_with_options, load_scene_with_warnings, IncludePath, Message,
     ParseOptions,
 };
-use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc};
+use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -237,7 +237,8 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, union, merge, intersection, difference, object)"
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, union, merge, intersection, difference, \
+         object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -870,11 +871,11 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
-        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder and cone)"),
+        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone and prism)"),
         (
             "cylinder { 0, y, 1 sturm }",
             (1, 20),
-            "`sturm` does not apply to cylinder (only to torus, cubic, quartic and poly)",
+            "`sturm` does not apply to cylinder (only to torus, cubic, quartic, poly, prism and lathe)",
         ),
     ] {
         let (l, c, m) = err("bad_round", text);
@@ -915,7 +916,7 @@ fn csg_nodes_keep_their_structure_and_pass_textures_down() {
 fn csg_errors_are_located() {
     let (l, c, m) = err("csg_open", "intersection { sphere { 0, 1 } box { -1, 1 }\n open }");
     assert_eq!((l, c), (2, 2));
-    assert_eq!(m, "`open` does not apply to intersection (only to cylinder and cone)");
+    assert_eq!(m, "`open` does not apply to intersection (only to cylinder, cone and prism)");
     let (l, c, m) = err("csg_clip", "sphere { 0, 1 clipped_by { bounded_by } }");
     assert_eq!((l, c), (1, 28));
     assert!(m.contains("needs a `bounded_by` with objects"), "{m}");
@@ -983,11 +984,107 @@ fn bad_polynomial_surfaces_are_located_errors() {
         (
             "quadric { <1, 1, 1>, 0, 0, -1 sturm }",
             (1, 31),
-            "`sturm` does not apply to quadric (only to torus, cubic, quartic and poly)",
+            "`sturm` does not apply to quadric (only to torus, cubic, quartic, poly, prism and lathe)",
         ),
         ("quartic { <1, 2> open }", (1, 11), "quartic takes 35 coefficients, found 2"),
     ] {
         let (l, c, m) = err("bad_poly", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Prisms as POV-Ray writes them: spline and sweep keywords in any order, `open`, `sturm`.
+#[test]
+fn prisms_load() {
+    let s = load_text(
+        "prisms",
+        "prism { 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }\n\
+         prism { conic_sweep quadratic_spline 0.5, 1, 5, <0, -1>, <1, 0>, <0, 1>, <-1, 0>, <1, 0> open sturm }\n\
+         prism { bezier_spline linear_sweep -1, 1, 4, <0, 0>, <1, 1>, <1, -1>, <0, 0> }",
+    )
+    .unwrap();
+    assert!(
+        matches!(&s.objects[0].shape, ShapeDesc::Prism { spline: SplineKind::Linear, conic: false, open: false, points, .. } if points.len() == 4)
+    );
+    assert!(matches!(
+        s.objects[1].shape,
+        ShapeDesc::Prism { spline: SplineKind::Quadratic, conic: true, open: true, h1: 0.5, h2: 1.0, .. }
+    ));
+    assert!(matches!(s.objects[2].shape, ShapeDesc::Prism { spline: SplineKind::Bezier, h1: -1.0, .. }));
+}
+
+/// Bad prisms are located errors naming what is wrong: counts, unclosed splines, keywords.
+#[test]
+fn bad_prisms_are_located_errors() {
+    for (text, at, message) in [
+        ("prism { 0, 1, 5, <0, 0>, <1, 0>, <0, 1>, <0, 0> }", (1, 15), "prism says it has 5 points, but 4 are given"),
+        (
+            "prism { quadratic_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }",
+            (1, 32),
+            "prism: quadratic_spline sub-curve 1 starting at point 1 is not closed (repeat its second point: the first is a control point)",
+        ),
+        (
+            "prism { cubic_spline 0, 1, 4, <0, 0>, <1, 0>, <1, 0>, <2, 2> }",
+            (1, 28),
+            "prism: cubic_spline sub-curve 1 starting at point 1 has 4 points; it needs at least 5",
+        ),
+        (
+            "prism { bezier_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <1, 1> }",
+            (1, 29),
+            "prism: bezier_spline sub-curve 1 starting at point 1 is not closed (end a segment of 4 points on its first point)",
+        ),
+        (
+            "prism { quadric_spline 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }",
+            (1, 9),
+            "unknown keyword `quadric_spline` in prism (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline, linear_sweep, conic_sweep)",
+        ),
+        ("prism { 1, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }", (1, 12), "prism heights must differ"),
+        ("prism { linear_spline }", (1, 23), "prism needs two heights, the number of points, then the points"),
+    ] {
+        let (l, c, m) = err("bad_prism", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Text from POV-Ray's fonts, found through the include path as POV-Ray finds them; skips with
+/// the reason where fonts-povray is not installed.
+#[test]
+fn text_loads_glyphs_from_the_include_path() {
+    if !Path::new("/usr/share/povray-3.7/include/timrom.ttf").is_file() {
+        println!("skipped: timrom.ttf is not in /usr/share/povray-3.7/include (install fonts-povray)");
+        return;
+    }
+    let scene = write(&dir("text"), "scene.pov", "text { ttf \"timrom.ttf\" \"AV i\" 0.25, <0.1, 0, 0> }");
+    let s = load_scene(&scene, &strahl::headless::include_path(&[])).unwrap();
+    let ShapeDesc::Text { glyphs, thickness, string, .. } = &s.objects[0].shape else {
+        panic!("{:?}", s.objects[0].shape)
+    };
+    // A, V and i have outlines; the space has none.
+    assert_eq!((glyphs.len(), *thickness, string.as_str()), (3, 0.25, "AV i"));
+    let x_range = |g: &strahl::scene::desc::TextGlyph| {
+        g.quads.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)))
+    };
+    // The first glyph's ink starts at 0; the em is one unit (capitals about 0.66 high).
+    assert!(x_range(&glyphs[0]).0.abs() < 1e-9, "{:?}", x_range(&glyphs[0]));
+    let top = glyphs[0].quads.iter().flatten().fold(0.0f64, |m, p| m.max(p.y));
+    assert!((0.6..0.75).contains(&top), "{top}");
+    // AV is kerned (timrom's pair: -0.187 em): V starts left of where A ends.
+    assert!(x_range(&glyphs[1]).0 < x_range(&glyphs[0]).1);
+}
+
+#[test]
+fn bad_text_is_a_located_error() {
+    for (text, at, message) in [
+        (
+            "text { ttf \"nosuchfont.ttf\" \"A\" 1, 0 }",
+            (1, 12),
+            "font \"nosuchfont.ttf\" not found (searched as written, the scene's folder and the include path)",
+        ),
+        ("text { \"timrom.ttf\" \"A\" 1, 0 }", (1, 8), "text needs `ttf` and a font file first"),
+        ("text { ttf \"x.ttf\" \"A\" 0, 0 }", (1, 24), "text thickness must not be 0"),
+        ("text { ttf 3 \"A\" 1, 0 }", (1, 12), "expected a string, found a float"),
+    ] {
+        let (l, c, m) = err("bad_text", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }
@@ -1003,6 +1100,30 @@ fn superellipsoids_load_and_bad_ones_are_located_errors() {
         ("superellipsoid { }", (1, 18), "superellipsoid needs 1 arguments (<e, n>), found 0"),
     ] {
         let (l, c, m) = err("bad_superell", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Lathes: the spline keyword first, counts and spline rules checked where written.
+#[test]
+fn lathes_load_and_bad_ones_are_located_errors() {
+    let s = load_text("lathes", "lathe { cubic_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> sturm }").unwrap();
+    assert!(matches!(&s.objects[0].shape, ShapeDesc::Lathe { spline: SplineKind::Cubic, points } if points.len() == 4));
+    for (text, at, message) in [
+        ("lathe { 3, <0, 0>, <1, 0> }", (1, 9), "lathe says it has 3 points, but 2 are given"),
+        (
+            "lathe { bezier_spline 3, <0, 0>, <1, 0>, <1, 1> }",
+            (1, 23),
+            "lathe: bezier_spline needs 4 points per segment, found 3",
+        ),
+        (
+            "lathe { cubik_spline 2, <0, 0>, <1, 0> }",
+            (1, 9),
+            "unknown keyword `cubik_spline` in lathe (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline)",
+        ),
+        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone and prism)"),
+    ] {
+        let (l, c, m) = err("bad_lathe", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

@@ -240,6 +240,20 @@ fn shape_soup(n: u64) -> String {
                 c(7) * 9.0,
                 c(8) * 9.0
             ),
+            5 if i % 20 == 15 => {
+                let quadratic = i % 40 == 15;
+                format!(
+                    "prism {{ {} {r}, {}, {}, <0, 0>, <{r}, 0>, <{r}, {r}>, <0, {}>, <0, 0>{} \
+                     rotate <{}, 0, {}> translate <{x}, {y}, {z}> }}",
+                    if quadratic { "quadratic_spline" } else { "linear_spline" },
+                    2.0 * r,
+                    if quadratic { 6 } else { 5 },
+                    1.5 * r,
+                    if quadratic { format!(", <{r}, 0>") } else { String::new() },
+                    c(5) * 9.0,
+                    c(6) * 9.0
+                )
+            }
             _ => format!(
                 "polygon {{ 4, <{x}, {y}, {z}>, <{}, {y}, {z}>, <{}, {}, {z}>, <{x}, {}, {z}> }}",
                 x + r,

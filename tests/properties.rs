@@ -7,7 +7,7 @@
 
 use std::path::PathBuf;
 
-use glam::{DMat4, DVec3, Vec3};
+use glam::{DMat4, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use strahl::camera::Camera;
 use strahl::geometry::ray::Ray;
@@ -20,7 +20,8 @@ use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 use strahl::scene::desc::{
     CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc, NormalPattern, ObjectDesc,
-    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform, Turbulence,
+    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, SplineKind, TextureDesc, Transform,
+    Turbulence,
 };
 use strahl::scene::print::to_pov;
 
@@ -135,7 +136,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(11) {
+    match r.pick(13) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -187,6 +188,7 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
             ShapeDesc::Poly { order: 4, coefficients, sturm: r.pick(2) == 0, written: PolyForm::Quartic }
         }
         10 => ShapeDesc::Superellipsoid { e: r.f(0.1, 2.5), n: r.f(0.1, 2.5) },
+        11 => random_prism(r),
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
             let u = n.any_orthonormal_vector();
@@ -201,6 +203,35 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
             ShapeDesc::Polygon { points }
         }
     }
+}
+
+/// A star-shaped outline of 3 to 6 points around a centre, as each spline type closes it,
+/// swept linearly or conically, sometimes open.
+fn random_prism(r: &mut Rng) -> ShapeDesc {
+    let c = DVec2::new(r.f(-3.0, 3.0), r.f(-3.0, 3.0));
+    let k = 3 + r.pick(4) as usize;
+    let ring: Vec<DVec2> = (0..k)
+        .map(|i| {
+            let a = std::f64::consts::TAU * i as f64 / k as f64;
+            c + DVec2::new(a.cos(), a.sin()) * r.f(0.4, 1.5)
+        })
+        .collect();
+    let spline = [SplineKind::Linear, SplineKind::Quadratic, SplineKind::Cubic, SplineKind::Bezier][r.pick(4) as usize];
+    let points: Vec<DVec2> = match spline {
+        SplineKind::Linear => ring.iter().chain(&ring[..1]).copied().collect(),
+        SplineKind::Quadratic => ring[k - 1..].iter().chain(&ring).chain(&ring[..1]).copied().collect(),
+        SplineKind::Cubic => ring[k - 1..].iter().chain(&ring).chain(&ring[..2]).copied().collect(),
+        SplineKind::Bezier => (0..k)
+            .flat_map(|i| {
+                let (a, b) = (ring[i], ring[(i + 1) % k]);
+                [a, a + (b - a) / 3.0 + (c - a) * 0.2, b - (b - a) / 3.0, b]
+            })
+            .collect(),
+    };
+    let conic = r.pick(3) == 0;
+    let h1 = if conic { r.f(0.3, 1.0) } else { r.f(-3.0, 3.0) };
+    let h2 = h1 + r.f(0.1, 2.0);
+    ShapeDesc::Prism { spline, conic, h1, h2, points, open: r.pick(4) == 0 }
 }
 
 fn random_scene(seed: u64, objects: usize) -> SceneDesc {
@@ -411,6 +442,25 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (ShapeDesc::Superellipsoid { e: e1, n: n1 }, ShapeDesc::Superellipsoid { e: e2, n: n2 }) => {
             close(*e1, *e2) && close(*n1, *n2)
         }
+        (
+            ShapeDesc::Prism { spline: s1, conic: c1, h1: a1, h2: b1, points: p1, open: o1 },
+            ShapeDesc::Prism { spline: s2, conic: c2, h1: a2, h2: b2, points: p2, open: o2 },
+        ) => {
+            s1 == s2
+                && c1 == c2
+                && o1 == o2
+                && close(*a1, *a2)
+                && close(*b1, *b2)
+                && p1.len() == p2.len()
+                && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
+        }
+        (ShapeDesc::Lathe { spline: s1, points: p1 }, ShapeDesc::Lathe { spline: s2, points: p2 }) => {
+            s1 == s2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
+        }
+        (
+            ShapeDesc::Text { font: f1, string: s1, thickness: t1, offset: o1, .. },
+            ShapeDesc::Text { font: f2, string: s2, thickness: t2, offset: o2, .. },
+        ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(*o1, *o2),
         (ShapeDesc::Csg { op: o1, children: c1 }, ShapeDesc::Csg { op: o2, children: c2 }) => {
             check(
                 o1 == o2 && c1.len() == c2.len(),
@@ -640,7 +690,7 @@ fn inside_agrees_with_crossing_parity() {
         let flat =
             matches!(leaf.shape, ShapeDesc::Triangle { .. } | ShapeDesc::Polygon { .. } | ShapeDesc::Disc { .. });
         // An open cone is a solid with holes in its surface: no parity to count.
-        if matches!(leaf.shape, ShapeDesc::Cone { open: true, .. }) {
+        if matches!(leaf.shape, ShapeDesc::Cone { open: true, .. } | ShapeDesc::Prism { open: true, .. }) {
             continue;
         }
         let scene = csg_scene(ObjectDesc { inverse: false, ..leaf });

@@ -121,6 +121,28 @@ fn superellipsoids_match_povray() {
 }
 
 #[test]
+fn lathes_match_povray() {
+    check_psnr("lathes", &scene("lathes"), 35.0);
+}
+
+#[test]
+fn prisms_match_povray() {
+    check_psnr("prisms", &scene("prisms"), 35.0);
+}
+
+/// Needs POV-Ray's fonts (Debian's fonts-povray, found through the include path); skips
+/// with the reason without them.
+#[test]
+fn text_matches_povray() {
+    let font = Path::new("/usr/share/povray-3.7/include/timrom.ttf");
+    if !font.is_file() {
+        println!("skipped: {} is missing (install fonts-povray)", font.display());
+        return;
+    }
+    check_psnr("text", &scene("text"), 35.0);
+}
+
+#[test]
 fn flat_seed_variant_matches_povray() {
     check_psnr("flat", &scene("flat"), 35.0);
 }

@@ -9,12 +9,15 @@
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+pub mod lathe;
 pub mod plane;
 pub mod poly;
 pub mod polygon;
+pub mod prism;
 pub mod ray;
 pub mod roots;
 pub mod sphere;
+pub mod spline;
 pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;

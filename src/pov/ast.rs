@@ -317,6 +317,12 @@ pub enum ShapeKind {
     Quartic,
     Poly,
     Superellipsoid,
+    /// `prism`: leading spline/sweep keywords come first in its arguments, as `Ident`s.
+    Prism,
+    /// `text`: `ttf` first, as an `Ident`, then font, string, thickness and offset.
+    Text,
+    /// `lathe`: an optional spline keyword first, as an `Ident`.
+    Lathe,
 }
 
 #[derive(Clone, Debug, PartialEq)]

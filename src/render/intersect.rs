@@ -51,6 +51,8 @@ impl Scene {
             ShapeKind::Torus => self.tori[i].hit(ray, t_min, t_max),
             ShapeKind::Poly => self.polys[i].hit(ray, t_min, t_max),
             ShapeKind::Superellipsoid => self.superellipsoids[i].hit(ray, t_min, t_max),
+            ShapeKind::Prism => self.prisms[i].hit(ray, t_min, t_max),
+            ShapeKind::Lathe => self.lathes[i].hit(ray, t_min, t_max),
             // Only CSG leaves are planes among the primitives.
             ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
             ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
@@ -72,6 +74,8 @@ impl Scene {
             ShapeKind::Torus => self.tori[i].inside(q),
             ShapeKind::Poly => self.polys[i].inside(q),
             ShapeKind::Superellipsoid => self.superellipsoids[i].inside(q),
+            ShapeKind::Prism => self.prisms[i].inside(q),
+            ShapeKind::Lathe => self.lathes[i].inside(q),
             ShapeKind::Plane => self.half_spaces[i].inside(q),
             ShapeKind::Csg => self.inside_node(p.index, q),
         }
@@ -232,6 +236,8 @@ impl Scene {
                     ShapeKind::Torus => self.tori[k].normal(p),
                     ShapeKind::Poly => self.polys[k].normal(p),
                     ShapeKind::Superellipsoid => self.superellipsoids[k].normal(p),
+                    ShapeKind::Prism => self.prisms[k].normal(p),
+                    ShapeKind::Lathe => self.lathes[k].normal(p),
                     ShapeKind::Plane => self.half_spaces[k].normal(p),
                     // Hits are resolved to leaves before anything asks for a normal.
                     ShapeKind::Csg => V3::splat(Vec3::Y),

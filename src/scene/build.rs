@@ -26,16 +26,19 @@ pub use crate::accel::AccelKind;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::lathe::Lathe;
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
+use crate::geometry::prism::Prism;
 use crate::geometry::roots::Solver;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
+use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
 use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
-use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgTarget, EVERYWHERE};
-use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc, Transform};
+use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
+use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc, TextGlyph, Transform};
 use crate::scene::material::Material;
 use crate::shading::pattern::Rgbft;
 
@@ -59,25 +62,30 @@ pub enum ShapeKind {
     Superellipsoid = 10,
     /// A CSG node (`intersection`, `difference`, `merge`, `clipped_by`) over leaf primitives.
     Csg = 11,
+    /// `prism` (and each glyph of `text`).
+    Prism = 12,
+    Lathe = 13,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 11] = [
+    pub const ALL: [ShapeKind; 13] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
+        ShapeKind::Lathe,
         ShapeKind::Plane,
         ShapeKind::Poly,
         ShapeKind::Polygon,
+        ShapeKind::Prism,
         ShapeKind::Sphere,
         ShapeKind::Superellipsoid,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 12;
+    pub const COUNT: usize = 14;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -92,6 +100,8 @@ impl ShapeKind {
             ShapeKind::Csg => "CSG",
             ShapeKind::Poly => "Quadric/Poly",
             ShapeKind::Superellipsoid => "Superellipsoid",
+            ShapeKind::Prism => "Prism",
+            ShapeKind::Lathe => "Lathe",
         }
     }
 }
@@ -140,6 +150,8 @@ pub struct Scene {
     pub tori: Vec<Torus>,
     pub polys: Vec<Poly>,
     pub superellipsoids: Vec<Superellipsoid>,
+    pub prisms: Vec<Prism>,
+    pub lathes: Vec<Lathe>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -277,6 +289,27 @@ pub(crate) enum RenderShape {
         e: f64,
         n: f64,
     },
+    /// Closed curves in the xz-plane of object space, swept along y from `h1` to `h2` (or
+    /// towards the origin: `conic`).
+    Prism {
+        render_from_object: DAffine3,
+        pieces: Vec<Piece>,
+        h1: f64,
+        h2: f64,
+        conic: bool,
+        open: bool,
+    },
+    /// (r, y) pieces revolved around the object's y axis.
+    Lathe {
+        render_from_object: DAffine3,
+        pieces: Vec<Piece>,
+    },
+    /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
+    Glyphs {
+        render_from_object: DAffine3,
+        glyphs: Vec<Vec<Piece>>,
+        thickness: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -347,6 +380,43 @@ impl RenderFrame {
             },
             ShapeDesc::Superellipsoid { e, n } => {
                 RenderShape::Superellipsoid { render_from_object: render_from_object(), e: *e, n: *n }
+            }
+            ShapeDesc::Prism { spline, conic, h1, h2, points, open } => RenderShape::Prism {
+                render_from_object: render_from_object(),
+                // Checked when lowered: a bad outline never gets here.
+                pieces: closed_pieces(*spline, points).map(|p| p.0).unwrap_or_default(),
+                h1: *h1,
+                h2: *h2,
+                conic: *conic,
+                open: *open,
+            },
+            ShapeDesc::Lathe { spline, points } => RenderShape::Lathe {
+                render_from_object: render_from_object(),
+                pieces: open_pieces(*spline, points).unwrap_or_default(),
+            },
+            ShapeDesc::Text { thickness, glyphs, .. } => {
+                // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
+                // along z: swap y and z.
+                let swap = DAffine3::from_cols(DVec3::X, DVec3::Z, DVec3::Y, DVec3::ZERO);
+                let pieces = |g: &TextGlyph| {
+                    g.quads
+                        .iter()
+                        .map(
+                            |&[a, c, b]| {
+                                if c == 0.5 * (a + b) {
+                                    Piece::line(a, b)
+                                } else {
+                                    Piece::quadratic_bezier(a, c, b)
+                                }
+                            },
+                        )
+                        .collect()
+                };
+                RenderShape::Glyphs {
+                    render_from_object: render_from_object() * swap,
+                    glyphs: glyphs.iter().map(pieces).collect(),
+                    thickness: *thickness,
+                }
             }
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Csg { .. } => unreachable!("CSG nodes are built by `Scene::add_object`"),
@@ -451,6 +521,8 @@ impl Scene {
             tori: Vec::new(),
             polys: Vec::new(),
             superellipsoids: Vec::new(),
+            prisms: Vec::new(),
+            lathes: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -515,6 +587,12 @@ impl Scene {
                     self.plane_materials.push(material);
                     self.plane_casts_shadow.push(!object.no_shadow);
                 }
+                RenderShape::Glyphs { render_from_object, glyphs, thickness } => {
+                    for index in self.store_glyphs(render_from_object, glyphs, thickness) {
+                        let (kind, casts_shadow, flip) = (ShapeKind::Prism, !object.no_shadow, object.inverse);
+                        self.prims.push(PrimRef { kind, casts_shadow, index, material, flip });
+                    }
+                }
                 placed => {
                     let (kind, index) = self.store(placed);
                     let casts_shadow = !object.no_shadow;
@@ -559,6 +637,24 @@ impl Scene {
                     self.half_spaces.push(Plane { normal: normal.as_vec3(), distance: distance as f32 });
                     (ShapeKind::Plane, self.half_spaces.len() as u32 - 1)
                 }
+                // Text in CSG: a union of its glyphs.
+                RenderShape::Glyphs { render_from_object, glyphs, thickness } => {
+                    let first = self.csg_children.len() as u32;
+                    let mut surface = Aabb::EMPTY;
+                    for index in self.store_glyphs(render_from_object, glyphs, thickness) {
+                        let prim =
+                            PrimRef { kind: ShapeKind::Prism, casts_shadow: !object.no_shadow, index, material, flip };
+                        surface.grow(&self.bounds_of(&prim));
+                        leaves.push(prim);
+                        let target = CsgTarget::Leaf(leaves.len() as u32 - 1);
+                        self.csg_children.push(CsgChild { target, inverse: false });
+                    }
+                    let count = self.csg_children.len() as u32 - first;
+                    let (min, max) = (surface.min, surface.max);
+                    self.csg.push(CsgNode { rule: CsgRule::Union, first, count, surfaces: count, min, max });
+                    let node = CsgTarget::Node(self.csg.len() as u32 - 1);
+                    return (node, ChildBounds::of_leaf(surface, object.inverse));
+                }
                 placed => self.store(placed),
             };
             let prim = PrimRef { kind, casts_shadow: !object.no_shadow, index, material, flip };
@@ -589,6 +685,17 @@ impl Scene {
             max: b.surface.max,
         });
         (CsgTarget::Node(self.csg.len() as u32 - 1), b)
+    }
+
+    /// `text`'s glyphs as prisms sharing one frame: their indices in `prisms`.
+    fn store_glyphs(&mut self, render_from_object: DAffine3, glyphs: Vec<Vec<Piece>>, thickness: f64) -> Vec<u32> {
+        glyphs
+            .into_iter()
+            .map(|pieces| {
+                self.prisms.push(Prism::new(render_from_object, &pieces, 0.0, thickness, false, false));
+                self.prisms.len() as u32 - 1
+            })
+            .collect()
     }
 
     /// Puts a placed (non-plane) shape into its array: its kind and index there.
@@ -639,11 +746,21 @@ impl Scene {
                 self.polys.push(Poly::new(affine_f32(&render_from_object), order, &coefficients, solver));
                 (ShapeKind::Poly, at(self.polys.len()))
             }
+            RenderShape::Prism { render_from_object, pieces, h1, h2, conic, open } => {
+                self.prisms.push(Prism::new(render_from_object, &pieces, h1, h2, conic, open));
+                (ShapeKind::Prism, at(self.prisms.len()))
+            }
+            RenderShape::Lathe { render_from_object, pieces } => {
+                self.lathes.push(Lathe::new(render_from_object, &pieces));
+                (ShapeKind::Lathe, at(self.lathes.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
             }
-            RenderShape::Plane { .. } => unreachable!("planes are stored by the caller"),
+            RenderShape::Plane { .. } | RenderShape::Glyphs { .. } => {
+                unreachable!("planes and text are stored by the caller")
+            }
         }
     }
 
@@ -693,6 +810,8 @@ impl Scene {
             ShapeKind::Torus => self.tori[i].bounds(),
             ShapeKind::Poly => self.polys[i].bounds(),
             ShapeKind::Superellipsoid => self.superellipsoids[i].bounds(),
+            ShapeKind::Prism => self.prisms[i].bounds(),
+            ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

@@ -4,7 +4,9 @@
 //! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
 //! that `build` can fold them into render-ready f32 data relative to the camera.
 
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec2, DVec3};
+
+pub use crate::geometry::spline::SplineKind;
 
 /// A POV-Ray colour: red, green, blue, filter, transmit.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -278,6 +280,33 @@ pub enum ShapeDesc {
         op: CsgOp,
         children: Vec<ObjectDesc>,
     },
+    /// Closed curves through `points` (x, z) swept along y from `h1` to `h2`, or towards the
+    /// origin (`conic`); checked to close when lowered.
+    Prism {
+        spline: SplineKind,
+        conic: bool,
+        h1: f64,
+        h2: f64,
+        points: Vec<DVec2>,
+        /// No caps.
+        open: bool,
+    },
+    /// The spline through (r, y) `points` revolved around the y axis; checked when lowered.
+    Lathe {
+        spline: SplineKind,
+        points: Vec<DVec2>,
+    },
+    /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
+    /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
+    /// `thickness`.
+    Text {
+        /// The font file as found (for printing and messages).
+        font: String,
+        string: String,
+        thickness: f64,
+        offset: DVec3,
+        glyphs: Vec<TextGlyph>,
+    },
 }
 
 /// How a polynomial surface was written.
@@ -328,6 +357,13 @@ impl CsgOp {
     }
 }
 
+/// One glyph's closed outlines in text space (x, y): quadratic Bézier pieces `[start, control,
+/// end]`; a straight piece has its control point exactly halfway.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextGlyph {
+    pub quads: Vec<[DVec2; 3]>,
+}
+
 impl ShapeDesc {
     /// The keyword POV-Ray uses for this shape, for statistics and messages.
     pub fn keyword(&self) -> &'static str {
@@ -344,6 +380,9 @@ impl ShapeDesc {
             ShapeDesc::Csg { op, .. } => op.keyword(),
             ShapeDesc::Poly { written, .. } => written.keyword(),
             ShapeDesc::Superellipsoid { .. } => "superellipsoid",
+            ShapeDesc::Prism { .. } => "prism",
+            ShapeDesc::Text { .. } => "text",
+            ShapeDesc::Lathe { .. } => "lathe",
         }
     }
 }

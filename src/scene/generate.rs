@@ -304,7 +304,10 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Torus { .. }
             | ShapeDesc::Csg { .. }
             | ShapeDesc::Poly { .. }
-            | ShapeDesc::Superellipsoid { .. }) => {
+            | ShapeDesc::Superellipsoid { .. }
+            | ShapeDesc::Prism { .. }
+            | ShapeDesc::Text { .. }
+            | ShapeDesc::Lathe { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

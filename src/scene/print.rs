@@ -116,6 +116,19 @@ fn object(s: &mut String, o: &ObjectDesc) {
                 other => write!(s, "{} {{ <{}>{sturm}", other.keyword(), list(c)),
             }
         }
+        ShapeDesc::Prism { spline, conic, h1, h2, points, open } => {
+            let sweep = if *conic { "conic_sweep" } else { "linear_sweep" };
+            let open = if *open { " open" } else { "" };
+            let (kw, a, b) = (spline.keyword(), num(*h1), num(*h2));
+            write!(s, "prism {{ {kw} {sweep} {a}, {b}, {}, {}{open}", points.len(), vec2s(points))
+        }
+        ShapeDesc::Lathe { spline, points } => {
+            write!(s, "lathe {{ {} {}, {}", spline.keyword(), points.len(), vec2s(points))
+        }
+        ShapeDesc::Text { font, string, thickness, offset, .. } => {
+            let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
+            write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))
+        }
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
@@ -308,6 +321,12 @@ fn num(v: f64) -> String {
         // Not expressible in the scene language; 0 keeps the output parseable.
         "0".to_string()
     }
+}
+
+/// 2-D points as `<u, v>, ...`.
+fn vec2s(points: &[glam::DVec2]) -> String {
+    let pts: Vec<String> = points.iter().map(|p| format!("<{}, {}>", num(p.x), num(p.y))).collect();
+    pts.join(", ")
 }
 
 fn vec(v: DVec3) -> String {

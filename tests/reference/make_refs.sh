@@ -25,3 +25,6 @@ done
 for s in superellipsoids; do
     render "$here/scenes/$s.pov" "$s"
 done
+for s in prisms text lathes; do
+    render "$here/scenes/$s.pov" "$s"
+done

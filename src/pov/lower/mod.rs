@@ -8,6 +8,8 @@ mod eval;
 mod fileio;
 mod functions;
 mod objects;
+mod sweeps;
+mod text;
 mod textures;
 
 use std::rc::Rc;

@@ -136,11 +136,11 @@ impl Lowerer<'_> {
             Modifier::NoShadow => obj.no_shadow = true,
             Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
             Modifier::Open(span) => match &mut obj.shape {
-                ShapeDesc::Cone { open, .. } => *open = true,
-                other => return Err(flag_not_taken(*span, "open", other.keyword(), "cylinder and cone")),
+                ShapeDesc::Cone { open, .. } | ShapeDesc::Prism { open, .. } => *open = true,
+                other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
             },
             Modifier::Sturm(span) => match &mut obj.shape {
-                ShapeDesc::Torus { .. } => {}
+                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } => {}
                 ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
                 other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
             },
@@ -219,7 +219,7 @@ impl Lowerer<'_> {
                 }
             }
             Modifier::NoShadow => each(parts, &mut |leaf| leaf.desc.no_shadow = true),
-            Modifier::Open(span) => return Err(flag_not_taken(*span, "open", word, "cylinder and cone")),
+            Modifier::Open(span) => return Err(flag_not_taken(*span, "open", word, OPEN_TAKERS)),
             Modifier::Sturm(span) => return Err(flag_not_taken(*span, "sturm", word, STURM_SHAPES)),
             // As in POV-Ray, `hollow` on a CSG object applies to all its parts.
             Modifier::Hollow(on) => {
@@ -352,6 +352,9 @@ impl Lowerer<'_> {
                 }
                 ShapeDesc::Superellipsoid { e: v.x, n: v.y }
             }
+            ShapeKind::Prism => self.prism(args, span)?,
+            ShapeKind::Text => self.text(args, span)?,
+            ShapeKind::Lathe => self.lathe(args, span)?,
         })
     }
 
@@ -453,8 +456,9 @@ fn collinear(points: &[DVec3]) -> bool {
     points.iter().all(|p| dir.cross(*p - a).length() <= 1e-9 * scale)
 }
 
-/// The shapes `sturm` applies to.
-const STURM_SHAPES: &str = "torus, cubic, quartic and poly";
+/// The shapes that take `open` and `sturm`, for messages.
+const OPEN_TAKERS: &str = "cylinder, cone and prism";
+const STURM_SHAPES: &str = "torus, cubic, quartic, poly, prism and lathe";
 /// A CSG object's texture and interior, given to its children without one at the end of its
 /// modifiers.
 #[derive(Default)]

@@ -35,10 +35,16 @@ const TOP_LEVEL: &[&str] = &[
     "quartic",
     "poly",
     "superellipsoid",
+    "prism",
+    "text",
+    "lathe",
 ];
 const SHAPES: &str =
-    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, superellipsoid, union, \
-     merge, intersection, difference, object";
+    "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
+     superellipsoid, prism, text, lathe, union, merge, intersection, difference, object";
+/// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
+pub const PRISM_ITEMS: &[&str] =
+    &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
@@ -93,6 +99,9 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "quartic" => ShapeKind::Quartic,
         "poly" => ShapeKind::Poly,
         "superellipsoid" => ShapeKind::Superellipsoid,
+        "prism" => ShapeKind::Prism,
+        "text" => ShapeKind::Text,
+        "lathe" => ShapeKind::Lathe,
         _ => return None,
     })
 }
@@ -114,6 +123,9 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Quartic => &["<35 coefficients>"],
         ShapeKind::Poly => &["order", "<coefficients>"],
         ShapeKind::Superellipsoid => &["<e, n>"],
+        ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
+        ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
+        ShapeKind::Lathe => &["number of points", "points"],
     }
 }
 
@@ -355,7 +367,12 @@ impl Parser<'_, '_> {
                 }
                 None if self.is_punct(',') => {
                     let message = match shape_kind(&word) {
-                        Some(s) if s != ShapeKind::Polygon => {
+                        Some(s)
+                            if !matches!(
+                                s,
+                                ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe
+                            ) =>
+                        {
                             let names = shape_args(s);
                             format!("{word} takes {} arguments ({}); found an extra `,`", names.len(), names.join(", "))
                         }
@@ -366,10 +383,19 @@ impl Parser<'_, '_> {
                 _ => {
                     // Name only the flags this shape takes.
                     let takes = |m: &&str| match *m {
-                        "open" => matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone)),
+                        "open" => {
+                            matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism))
+                        }
                         "sturm" => matches!(
                             shape_kind(&word),
-                            Some(ShapeKind::Torus | ShapeKind::Cubic | ShapeKind::Quartic | ShapeKind::Poly)
+                            Some(
+                                ShapeKind::Torus
+                                    | ShapeKind::Cubic
+                                    | ShapeKind::Quartic
+                                    | ShapeKind::Poly
+                                    | ShapeKind::Prism
+                                    | ShapeKind::Lathe
+                            )
                         ),
                         _ => true,
                     };
@@ -404,9 +430,38 @@ impl Parser<'_, '_> {
     fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
         let names = shape_args(shape);
         let mut args = Vec::new();
-        if shape == ShapeKind::Polygon {
+        let leading = match shape {
+            ShapeKind::Prism => PRISM_ITEMS,
+            ShapeKind::Text => &["ttf"],
+            ShapeKind::Lathe => &PRISM_ITEMS[..4],
+            _ => &[],
+        };
+        if !leading.is_empty() {
+            // Keywords first, kept as words for lowering; a misspelt one is named here.
+            while let Some(w) = self.peek_ident() {
+                let span = self.peek().span;
+                if leading.contains(&&*w) {
+                    self.bump();
+                    args.push(crate::pov::ast::Expr { kind: crate::pov::ast::ExprKind::Ident(w.to_string()), span });
+                } else if (w.ends_with("_spline") || w.ends_with("_sweep")) && self.low.lookup(&w).is_none() {
+                    return Err(Diag::new(
+                        span,
+                        format!("unknown keyword `{w}` in {word} (expected one of: {})", leading.join(", ")),
+                    ));
+                } else {
+                    break;
+                }
+            }
+        }
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe) {
             if !self.starts_expr(MODIFIERS) {
-                return Err(Diag::new(self.peek().span, "polygon needs the number of points, then the points"));
+                let what = match shape {
+                    ShapeKind::Polygon => "polygon needs the number of points, then the points",
+                    ShapeKind::Prism => "prism needs two heights, the number of points, then the points",
+                    ShapeKind::Lathe => "lathe needs the number of points, then the points",
+                    _ => "text needs: ttf \"font.ttf\" \"string\" thickness, offset",
+                };
+                return Err(Diag::new(self.peek().span, what));
             }
             args.push(self.expr()?);
             loop {

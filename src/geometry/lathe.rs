@@ -1,0 +1,237 @@
+//! POV-Ray's `lathe` (3.4.6.x Lathe): a 2-D spline (`spline` pieces in (r, y)) revolved around
+//! the y axis. Per piece the ray meets the surface where `x² + z² = r(t)²` at height `y(t)`:
+//! with `s = (y(t) − o.y) / d.y` that is one polynomial in `t` of degree up to 6, solved in f64
+//! per lane by `roots` (no 8-wide arithmetic, as the torus). A ray level with the axis
+//! (`d.y ≈ 0`) meets it where `y(t) = o.y` instead, then the circle there. Inside is even-odd of
+//! (√(x² + z²), y) against the outline, as POV-Ray's parity test; `sturm` changes nothing.
+
+use glam::{DAffine3, DVec2, DVec3, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::{RayLanes, MISS};
+use super::roots::{roots_in, MAX_DEGREE};
+use super::spline::{closest_t, even_odd, Piece};
+use super::{transformed_bounds, Shape};
+use crate::lanes::{Lane, V3};
+
+#[derive(Clone, Debug)]
+pub struct Lathe {
+    pub frame: BoxFrame,
+    /// (r, y) pieces, scaled to unit size.
+    pieces: Vec<Piece>,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+/// `a·b` of two polynomials, lowest power first.
+fn mul(a: &[f64], b: &[f64], out: &mut [f64; 7]) {
+    *out = [0.0; 7];
+    for (i, x) in a.iter().enumerate() {
+        for (j, y) in b.iter().enumerate() {
+            out[i + j] += x * y;
+        }
+    }
+}
+
+impl Lathe {
+    pub fn new(render_from_object: DAffine3, pieces: &[Piece]) -> Lathe {
+        let r = pieces.iter().fold(0.0f64, |m, p| m.max(p.lo.x.abs()).max(p.hi.x.abs()));
+        let (ylo, yhi) =
+            pieces.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.lo.y), b.max(p.hi.y)));
+        let cy = 0.5 * (ylo + yhi);
+        let s = r.max(0.5 * (yhi - ylo));
+        let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
+        let local = DAffine3::from_translation(DVec3::new(0.0, cy, 0.0)) * DAffine3::from_scale(DVec3::splat(s));
+        let pieces: Vec<Piece> = pieces.iter().map(|p| p.map(|q| DVec2::new(q.x / s, (q.y - cy) / s))).collect();
+        let xf = render_from_object * local;
+        let xf = glam::Affine3A::from_cols_array(&xf.to_cols_array().map(|v| v as f32));
+        let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
+        let (min, max) = transformed_bounds(&xf, Vec3::new(-r, -h, -r), Vec3::new(r, h, r));
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        Lathe { frame: frame_for(xf), pieces, min: min - pad, max: max + pad }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
+        let mut best = s_max;
+        let dh2 = d.x * d.x + d.z * d.z;
+        let level = d.y.abs() <= 1e-9 * dh2.sqrt();
+        let mut roots = [0.0; MAX_DEGREE];
+        for p in &self.pieces {
+            // The piece's height slab along the ray.
+            if level {
+                if o.y < p.lo.y || o.y > p.hi.y {
+                    continue;
+                }
+            } else {
+                let (a, b) = ((p.lo.y - o.y) / d.y, (p.hi.y - o.y) / d.y);
+                if a.max(b) <= s_min || a.min(b) >= best {
+                    continue;
+                }
+            }
+            let mut hits = [f64::NAN; 2 * MAX_DEGREE];
+            let mut n = 0;
+            if level {
+                // y(t) = o.y, then |o_h + s·d_h|² = r(t)².
+                let (c, k) = p.combine(0.0, 1.0, -o.y);
+                let m = roots_in(&c[..k], 0.0, 1.0, &mut roots);
+                for &t in &roots[..m] {
+                    let r = p.at(t).x;
+                    let b = o.x * d.x + o.z * d.z;
+                    let c = o.x * o.x + o.z * o.z - r * r;
+                    let disc = b * b - dh2 * c;
+                    if disc >= 0.0 {
+                        let q = -(b + b.signum() * disc.sqrt());
+                        for s in [q / dh2, c / q] {
+                            hits[n] = s;
+                            n += 1;
+                        }
+                    }
+                }
+            } else {
+                // A(t) = o.x·d.y + (y(t) − o.y)·d.x, B likewise in z, R = r(t)·d.y.
+                let deg = p.degree;
+                let mut a = [0.0; 4];
+                let mut b = [0.0; 4];
+                let mut r = [0.0; 4];
+                for k in 0..=deg {
+                    let y = p.v[k] - if k == 0 { o.y } else { 0.0 };
+                    a[k] = y * d.x + if k == 0 { o.x * d.y } else { 0.0 };
+                    b[k] = y * d.z + if k == 0 { o.z * d.y } else { 0.0 };
+                    r[k] = p.u[k] * d.y;
+                }
+                let (mut aa, mut bb, mut rr) = ([0.0; 7], [0.0; 7], [0.0; 7]);
+                mul(&a[..=deg], &a[..=deg], &mut aa);
+                mul(&b[..=deg], &b[..=deg], &mut bb);
+                mul(&r[..=deg], &r[..=deg], &mut rr);
+                let len = 2 * deg + 1;
+                let mut c = [0.0; 7];
+                for (i, slot) in c[..len].iter_mut().enumerate() {
+                    let k = len - 1 - i;
+                    *slot = aa[k] + bb[k] - rr[k];
+                }
+                let m = roots_in(&c[..len], 0.0, 1.0, &mut roots);
+                for &t in &roots[..m] {
+                    hits[n] = (p.at(t).y - o.y) / d.y;
+                    n += 1;
+                }
+            }
+            for &s in &hits[..n] {
+                if s > s_min && s < best {
+                    best = s;
+                }
+            }
+        }
+        (best < s_max).then_some(best)
+    }
+
+    fn profile(q: DVec3) -> DVec2 {
+        DVec2::new((q.x * q.x + q.z * q.z).sqrt(), q.y)
+    }
+
+    fn normal_object(&self, q: DVec3) -> DVec3 {
+        let w = Lathe::profile(q);
+        let mut best: Option<(f64, &Piece, f64)> = None;
+        for p in &self.pieces {
+            let gap = (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length();
+            if best.is_some_and(|b| gap >= b.0) {
+                continue;
+            }
+            let t = closest_t(p, w);
+            let dist = (p.at(t) - w).length();
+            if best.is_none_or(|b| dist < b.0) {
+                best = Some((dist, p, t));
+            }
+        }
+        let Some((_, p, t)) = best else { return DVec3::Y };
+        let tan = p.tangent(t);
+        let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
+        let at = p.at(t);
+        let eps = 1e-6 * (1.0 + at.abs().max_element());
+        if even_odd(&self.pieces, at + eps * n2) {
+            n2 = -n2;
+        }
+        let (ux, uz) = if w.x > 0.0 { (q.x / w.x, q.z / w.x) } else { (1.0, 0.0) };
+        DVec3::new(n2.x * ux, n2.y, n2.x * uz)
+    }
+}
+
+impl Shape for Lathe {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        L::from_fn_f64(|i| {
+            let v = |v: V3<L>| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+            self.solve(v(o), v(d), t_min.get_f64(i), t_max.get_f64(i)).unwrap_or(MISS as f64)
+        })
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        let q = p.transform_point(&self.frame.object_from_render);
+        let n: [DVec3; 8] = std::array::from_fn(|i| {
+            if i < L::WIDTH {
+                self.normal_object(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)))
+            } else {
+                DVec3::Y
+            }
+        });
+        let n = V3 { x: L::from_fn_f64(|i| n[i].x), y: L::from_fn_f64(|i| n[i].y), z: L::from_fn_f64(|i| n[i].z) };
+        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        L::mask_from_fn(|i| {
+            even_odd(&self.pieces, Lathe::profile(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i))))
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+    use crate::geometry::spline::{open_pieces, SplineKind};
+
+    /// A cylinder of radius 1 from y = 0 to 2 as a closed linear outline.
+    fn can(xf: DAffine3) -> Lathe {
+        let p = |r: f64, y: f64| DVec2::new(r, y);
+        let pts = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 2.0), p(0.0, 2.0)];
+        Lathe::new(xf, &open_pieces(SplineKind::Linear, &pts).expect("lathe"))
+    }
+
+    #[test]
+    fn walls_level_rays_axis_rays_and_extremes() {
+        let l = can(DAffine3::IDENTITY);
+        let hit = |o: Vec3, d: Vec3| l.intersect(&Ray::new(o, d.normalize()), 0.0, f32::INFINITY);
+        // Level ray (d.y = 0): the wall at x = -1.
+        assert!((hit(Vec3::new(-5.0, 1.0, 0.0), Vec3::X).expect("level") - 4.0).abs() < 1e-5);
+        assert!((l.normal_at(Vec3::new(-1.0, 1.0, 0.0)) - -Vec3::X).length() < 1e-5);
+        // Slanted: enters the wall at y = 1.5.
+        let t = hit(Vec3::new(0.0, 2.5, -2.0), Vec3::new(0.0, -1.0, 1.0)).expect("slant");
+        assert!((t - 2f32.sqrt()).abs() < 1e-4, "{t}");
+        // Down the axis: the top disc of the outline.
+        assert!((hit(Vec3::new(0.0, 5.0, 0.0), -Vec3::Y).expect("axis") - 3.0).abs() < 1e-5);
+        assert!((l.normal_at(Vec3::new(0.3, 2.0, 0.0)) - Vec3::Y).length() < 1e-5);
+        // Beside it, parallel to the axis: a miss.
+        assert_eq!(hit(Vec3::new(1.5, 5.0, 0.0), -Vec3::Y), None);
+        // Grazing the wall: a miss or a hit on it.
+        let g = hit(Vec3::new(-5.0, 1.0, 1.0), Vec3::X);
+        assert!(g.is_none_or(|t| (t - 5.0).abs() < 1e-2), "{g:?}");
+        assert!(
+            l.inside(V3::from_vec3(Vec3::new(0.5, 1.0, 0.2))) && !l.inside(V3::from_vec3(Vec3::new(1.5, 1.0, 0.0)))
+        );
+        for (s, at) in [(1e-4, 0.0), (1e5, 0.0), (1.0, 1e6)] {
+            let xf = DAffine3::from_translation(DVec3::splat(at)) * DAffine3::from_scale(DVec3::splat(s));
+            let l = can(xf);
+            let o = Vec3::new(-5.0, 1.0, 0.0) * s as f32 + Vec3::splat(at as f32);
+            let t = l.intersect(&Ray::new(o, Vec3::X), 0.0, f32::INFINITY).expect("far");
+            let want = 4.0 * s as f32;
+            assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
+        }
+    }
+}

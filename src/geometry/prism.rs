@@ -1,0 +1,370 @@
+//! POV-Ray's `prism` (3.4.6.x Prism): closed 2-D curves in the xz-plane (pieces from
+//! `spline`), swept along y from `h1` to `h2` (`linear_sweep`), or scaled by y towards the
+//! origin (`conic_sweep`: the point (x, y, z) lies on the sweep of (x/y, z/y)). Inside is even-odd
+//! over all sub-curves, so where an even number overlap there is a hole; the caps are the
+//! inside at `h1` and `h2`, left off when `open`. TrueType glyphs (`text`) are prisms too.
+//!
+//! A side is solved per piece: its points satisfy one polynomial in the piece's parameter `t`
+//! (degree 1 to 3), solved by `roots` in f64 per lane, as the torus is (no 8-wide arithmetic).
+//! Pieces are skipped without solving when the ray's line (in the plane of the curve) misses
+//! the box of their control points, which holds the piece. `sturm` changes nothing: the roots
+//! are isolated robustly already (`roots`).
+//!
+//! Object space is the prism as written, moved to its centre and scaled to unit size in f64
+//! (only scaled for `conic_sweep`, whose apex is the origin), so a prism written at 1e6 or
+//! 1e-4 keeps its digits before the frame becomes f32.
+
+use glam::{Affine3A, DAffine3, DVec2, DVec3, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::{RayLanes, MISS};
+use super::roots::{roots_in, MAX_DEGREE};
+use super::spline::{closest_t, even_odd, Piece};
+use super::{transformed_bounds, Shape};
+use crate::lanes::{Lane, V3};
+
+#[derive(Clone, Debug)]
+pub struct Prism {
+    pub frame: BoxFrame,
+    pieces: Vec<Piece>,
+    /// Heights in object space, `h1 < h2`.
+    h1: f64,
+    h2: f64,
+    conic: bool,
+    open: bool,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+/// The cast every shape's frame goes through once, after composing in f64.
+fn affine_f32(a: &DAffine3) -> Affine3A {
+    Affine3A::from_cols_array(&a.to_cols_array().map(|v| v as f32))
+}
+
+impl Prism {
+    /// The prism of `pieces` (xz-plane, as written) between heights `h1` and `h2` under
+    /// `render_from_object` (composed in f64).
+    pub fn new(render_from_object: DAffine3, pieces: &[Piece], h1: f64, h2: f64, conic: bool, open: bool) -> Prism {
+        let (h1, h2) = (h1.min(h2), h1.max(h2));
+        let lo = pieces.iter().fold(DVec2::splat(f64::INFINITY), |m, p| m.min(p.lo));
+        let hi = pieces.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, p| m.max(p.hi));
+        let (local, pieces, h1, h2) = if conic {
+            // Uniform scale keeps x/y and z/y: the curves stay as written, the heights scale.
+            let s = h1.abs().max(h2.abs()) * (1.0 + lo.abs().max(hi.abs()).max_element());
+            let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
+            (DAffine3::from_scale(DVec3::splat(s)), pieces.to_vec(), h1 / s, h2 / s)
+        } else {
+            let c = 0.5 * (lo + hi);
+            let cy = 0.5 * (h1 + h2);
+            let s = 0.5 * (hi - lo).max_element().max(h2 - h1);
+            let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
+            let local = DAffine3::from_translation(DVec3::new(c.x, cy, c.y)) * DAffine3::from_scale(DVec3::splat(s));
+            let moved = pieces.iter().map(|p| p.map(|q| (q - c) / s)).collect();
+            (local, moved, (h1 - cy) / s, (h2 - cy) / s)
+        };
+        let xf = affine_f32(&(render_from_object * local));
+        let lo = pieces.iter().fold(DVec2::splat(f64::INFINITY), |m, p| m.min(p.lo));
+        let hi = pieces.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, p| m.max(p.hi));
+        let (blo, bhi) = if conic {
+            // The curves scaled by each end height (and by 0 where the apex lies between).
+            let mut b = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+            for h in [h1, h2] {
+                for q in [lo * h, hi * h] {
+                    b = (b.0.min(DVec3::new(q.x, h, q.y)), b.1.max(DVec3::new(q.x, h, q.y)));
+                }
+            }
+            b
+        } else {
+            (DVec3::new(lo.x, h1, lo.y), DVec3::new(hi.x, h2, hi.y))
+        };
+        let (min, max) = transformed_bounds(&xf, blo.as_vec3(), bhi.as_vec3());
+        // Widened by a few f32 ulps: the box's corners were rounded.
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        Prism { frame: frame_for(xf), pieces, h1, h2, conic, open, min: min - pad, max: max + pad }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    /// The 2-D point whose sweep holds `q` (object space): (x, z), or (x/y, z/y) for a cone.
+    fn section(&self, q: DVec3) -> DVec2 {
+        if self.conic {
+            DVec2::new(q.x / q.y, q.z / q.y)
+        } else {
+            DVec2::new(q.x, q.z)
+        }
+    }
+
+    fn inside_2d(&self, q: DVec2) -> bool {
+        even_odd(&self.pieces, q)
+    }
+
+    fn inside_point(&self, q: DVec3) -> bool {
+        if !(q.y >= self.h1 && q.y <= self.h2) || (self.conic && q.y == 0.0) {
+            return false;
+        }
+        self.inside_2d(self.section(q))
+    }
+
+    /// The nearest `s` in `(s_min, s_max)` where `o + s·d` (object space) meets the prism.
+    fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
+        let mut best = s_max;
+        // Caps: the inside at each end height.
+        if !self.open && d.y != 0.0 {
+            for h in [self.h1, self.h2] {
+                let s = (h - o.y) / d.y;
+                if s > s_min && s < best && !(self.conic && h == 0.0) {
+                    let q = o + s * d;
+                    let q = DVec3::new(q.x, h, q.z);
+                    if self.inside_2d(self.section(q)) {
+                        best = s;
+                    }
+                }
+            }
+        }
+        // The span of s inside the height slab.
+        let (mut lo, mut hi) = (s_min, best);
+        if d.y != 0.0 {
+            let (a, b) = ((self.h1 - o.y) / d.y, (self.h2 - o.y) / d.y);
+            lo = lo.max(a.min(b));
+            hi = hi.min(a.max(b));
+        } else if !(o.y >= self.h1 && o.y <= self.h2) {
+            return (best < s_max).then_some(best);
+        }
+        if lo.is_nan() || hi.is_nan() || lo >= hi {
+            return (best < s_max).then_some(best);
+        }
+        // The side: (a, b, k) with a·u + b·v + k = 0 on the ray's plane through the sweep axis
+        // direction (linear: the vertical plane of the ray; conic: the plane of ray and apex).
+        let (a, b, k) = if self.conic {
+            (o.z * d.y - o.y * d.z, o.y * d.x - o.x * d.y, o.x * d.z - o.z * d.x)
+        } else {
+            (d.z, -d.x, o.z * d.x - o.x * d.z)
+        };
+        if a == 0.0 && b == 0.0 {
+            return (best < s_max).then_some(best);
+        }
+        let mut roots = [0.0; MAX_DEGREE];
+        for p in &self.pieces {
+            // The line misses the box of the control points: all four corners on one side.
+            let f = |x: f64, y: f64| a * x + b * y + k;
+            let corners = [f(p.lo.x, p.lo.y), f(p.hi.x, p.lo.y), f(p.lo.x, p.hi.y), f(p.hi.x, p.hi.y)];
+            if corners.iter().all(|&c| c > 0.0) || corners.iter().all(|&c| c < 0.0) {
+                continue;
+            }
+            let (c, n) = p.combine(a, b, k);
+            let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+            for &t in &roots[..m] {
+                let w = p.at(t);
+                let s = if self.conic {
+                    // o + s·d = y·(u, 1, v) for the y it reaches: s from the better-conditioned axis.
+                    let (nx, dx) = (w.x * o.y - o.x, d.x - w.x * d.y);
+                    let (nz, dz) = (w.y * o.y - o.z, d.z - w.y * d.y);
+                    if dx.abs() >= dz.abs() {
+                        nx / dx
+                    } else {
+                        nz / dz
+                    }
+                } else {
+                    ((w.x - o.x) * d.x + (w.y - o.z) * d.z) / (d.x * d.x + d.z * d.z)
+                };
+                if s > lo && s < hi {
+                    let y = o.y + s * d.y;
+                    if y >= self.h1 && y <= self.h2 {
+                        hi = s;
+                        best = s;
+                    }
+                }
+            }
+        }
+        (best < s_max).then_some(best)
+    }
+
+    /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
+    fn normal_object(&self, q: DVec3) -> DVec3 {
+        let w = self.section(q);
+        // Cap distance in object units.
+        let mut best = f64::INFINITY;
+        let mut normal = DVec3::Y;
+        if !self.open {
+            for (h, n) in [(self.h1, -DVec3::Y), (self.h2, DVec3::Y)] {
+                let dist = (q.y - h).abs();
+                if dist < best {
+                    best = dist;
+                    normal = n;
+                }
+            }
+        }
+        // Side distances are measured in the section, scaled back to object units for a cone.
+        let scale = if self.conic { q.y.abs() } else { 1.0 };
+        let mut side: Option<(f64, &Piece, f64)> = None;
+        for p in &self.pieces {
+            let gap = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length() * scale;
+            if gap >= best {
+                continue;
+            }
+            let t = closest_t(p, w);
+            let dist = (p.at(t) - w).length() * scale;
+            if dist < best {
+                best = dist;
+                side = Some((dist, p, t));
+            }
+        }
+        if let Some((_, p, t)) = side {
+            let tan = p.tangent(t);
+            let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
+            if n2 == DVec2::ZERO {
+                return normal;
+            }
+            // Outward: the side of the curve where the section is not inside.
+            let at = p.at(t);
+            let eps = 1e-6 * (1.0 + at.abs().max_element());
+            if self.inside_2d(at + eps * n2) {
+                n2 = -n2;
+            }
+            normal = if self.conic {
+                DVec3::new(n2.x, -n2.dot(at), n2.y) * q.y.signum()
+            } else {
+                DVec3::new(n2.x, 0.0, n2.y)
+            };
+        }
+        normal
+    }
+}
+
+impl Shape for Prism {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        L::from_fn_f64(|i| {
+            let v = |v: V3<L>| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+            self.solve(v(o), v(d), t_min.get_f64(i), t_max.get_f64(i)).unwrap_or(MISS as f64)
+        })
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        let q = p.transform_point(&self.frame.object_from_render);
+        let n: [DVec3; 8] = std::array::from_fn(|i| {
+            if i < L::WIDTH {
+                self.normal_object(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)))
+            } else {
+                DVec3::Y
+            }
+        });
+        let n = V3 { x: L::from_fn_f64(|i| n[i].x), y: L::from_fn_f64(|i| n[i].y), z: L::from_fn_f64(|i| n[i].z) };
+        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        L::mask_from_fn(|i| self.inside_point(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+    use crate::geometry::spline::{closed_pieces, SplineKind};
+    use crate::lanes::F8;
+
+    fn square(kind: SplineKind) -> Vec<Piece> {
+        let p = |x: f64, z: f64| DVec2::new(x, z);
+        let pts: Vec<DVec2> = match kind {
+            SplineKind::Linear => vec![p(-1.0, -1.0), p(1.0, -1.0), p(1.0, 1.0), p(-1.0, 1.0), p(-1.0, -1.0)],
+            _ => unreachable!(),
+        };
+        closed_pieces(kind, &pts).expect("square").0
+    }
+
+    fn prism(xf: DAffine3, conic: bool, open: bool) -> Prism {
+        Prism::new(xf, &square(SplineKind::Linear), if conic { 1.0 } else { 0.0 }, 2.0, conic, open)
+    }
+
+    fn inside(p: &Prism, q: Vec3) -> bool {
+        p.inside(V3::from_vec3(q))
+    }
+
+    fn hit(p: &Prism, o: Vec3, d: Vec3) -> Option<f32> {
+        p.intersect(&Ray::new(o, d.normalize()), 0.0, f32::INFINITY)
+    }
+
+    #[test]
+    fn sides_caps_open_and_conic() {
+        let p = prism(DAffine3::IDENTITY, false, false);
+        assert!((hit(&p, Vec3::new(0.0, 1.0, -5.0), Vec3::Z).expect("side") - 4.0).abs() < 1e-5);
+        assert!((p.normal_at(Vec3::new(0.0, 1.0, -1.0)) - -Vec3::Z).length() < 1e-5);
+        assert!((hit(&p, Vec3::new(0.2, 5.0, 0.1), -Vec3::Y).expect("cap") - 3.0).abs() < 1e-5);
+        assert!((p.normal_at(Vec3::new(0.2, 2.0, 0.1)) - Vec3::Y).length() < 1e-5);
+        // Along the sweep axis outside the outline: a miss.
+        assert_eq!(hit(&p, Vec3::new(1.5, 5.0, 0.0), -Vec3::Y), None);
+        let open = prism(DAffine3::IDENTITY, false, true);
+        // Open: down through the top hits the bottom... no: no caps at all, the inside of a wall.
+        assert_eq!(hit(&open, Vec3::new(0.2, 5.0, 0.1), -Vec3::Y), None);
+        assert!((hit(&open, Vec3::new(0.0, 1.0, 0.0), Vec3::Z).expect("wall from inside") - 1.0).abs() < 1e-5);
+        // Conic: the square scaled by y, from y = 1 to 2; at y = 1.5 the half-width is 1.5.
+        let c = prism(DAffine3::IDENTITY, true, false);
+        assert!((hit(&c, Vec3::new(0.0, 1.5, -5.0), Vec3::Z).expect("conic side") - 3.5).abs() < 1e-5);
+        let n = c.normal_at(Vec3::new(0.0, 1.5, -1.5));
+        assert!((n - Vec3::new(0.0, -1.0, -1.0).normalize()).length() < 1e-5, "{n}");
+        assert!((hit(&c, Vec3::new(1.8, 5.0, 0.0), -Vec3::Y).expect("top cap reaches 2") - 3.0).abs() < 1e-5);
+        assert!(inside(&c, Vec3::new(1.4, 1.5, 0.0)) && !inside(&c, Vec3::new(1.6, 1.5, 0.0)));
+    }
+
+    #[test]
+    fn grazing_scaled_moved_and_packets() {
+        // Grazing the wall z = -1 along it: either no hit or one on the wall's line.
+        let p = prism(DAffine3::IDENTITY, false, false);
+        let g = hit(&p, Vec3::new(-5.0, 1.0, -1.0), Vec3::X);
+        assert!(g.is_none_or(|t| (3.9..=6.1).contains(&t)), "{g:?}");
+        // Scaled 1e-4 and 1e5, moved 1e6: the same hit in proportion.
+        for (s, at) in [(1e-4, 0.0), (1e5, 0.0), (1.0, 1e6)] {
+            let xf = DAffine3::from_translation(DVec3::splat(at)) * DAffine3::from_scale(DVec3::splat(s));
+            let p = prism(xf, false, false);
+            // Render space puts the camera near the shape: rays start close to it.
+            let o = Vec3::new(0.0, 1.0, -5.0) * s as f32 + Vec3::splat(at as f32);
+            let t = hit(&p, o, Vec3::Z).expect("hit");
+            let want = 4.0 * s as f32;
+            assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
+        }
+        let rays: [Ray; 8] = std::array::from_fn(|i| {
+            let o = Vec3::new(i as f32 * 0.3 - 1.2, 3.0, -4.0);
+            Ray::new(o, (Vec3::new(0.1 * i as f32, 1.0, 0.0) - o).normalize())
+        });
+        let packet = RayLanes::<F8> {
+            o: V3::from_lanes(|i| rays[i].origin),
+            d: V3::from_lanes(|i| rays[i].dir),
+            inv: V3::from_lanes(|i| rays[i].inv_dir),
+        };
+        let wide = p.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+        for (i, r) in rays.iter().enumerate() {
+            assert_eq!(wide.get(i).to_bits(), p.hit(&r.lanes(), 0.0, MISS).to_bits());
+        }
+    }
+
+    #[test]
+    fn curved_sides_holes_and_the_nearest_point() {
+        // A circle-ish cubic outline with a square hole (even-odd).
+        let q = |x: f64, z: f64| DVec2::new(x, z);
+        let mut pts =
+            vec![q(0.0, -2.0), q(2.0, 0.0), q(0.0, 2.0), q(-2.0, 0.0), q(0.0, -2.0), q(2.0, 0.0), q(0.0, 2.0)];
+        pts.extend([q(-0.5, -0.5), q(0.5, -0.5), q(0.5, 0.5), q(-0.5, 0.5), q(-0.5, -0.5)].map(|p| p * 1.0));
+        let cubic = closed_pieces(SplineKind::Cubic, &pts[..7]).expect("cubic").0;
+        let hole = closed_pieces(SplineKind::Linear, &pts[7..]).expect("hole").0;
+        let all: Vec<Piece> = cubic.into_iter().chain(hole).collect();
+        let p = Prism::new(DAffine3::IDENTITY, &all, 0.0, 1.0, false, false);
+        assert!(inside(&p, Vec3::new(1.0, 0.5, 0.0)));
+        assert!(!inside(&p, Vec3::new(0.0, 0.5, 0.0)), "the hole");
+        assert!(!inside(&p, Vec3::new(2.5, 0.5, 0.0)));
+        // From the hole's middle along x: the hole's wall at 0.5.
+        let t = hit(&p, Vec3::new(0.0, 0.5, 0.0), Vec3::X).expect("hole wall");
+        assert!((t - 0.5).abs() < 1e-5, "{t}");
+        assert!((p.normal_at(Vec3::new(0.5, 0.5, 0.0)) - -Vec3::X).length() < 1e-4);
+        // The outer wall at x = 2 (a point of the spline), normal +x.
+        let t = hit(&p, Vec3::new(5.0, 0.5, 0.0), -Vec3::X).expect("outer");
+        assert!((t - 3.0).abs() < 1e-4, "{t}");
+        assert!((p.normal_at(Vec3::new(2.0, 0.5, 0.0)) - Vec3::X).length() < 1e-3);
+    }
+}

@@ -1,0 +1,358 @@
+//! POV-Ray's 2-D splines for `prism` and `lathe` (and TrueType glyph outlines), turned into
+//! pieces that the shapes solve: each piece is a polynomial curve of degree ≤ 3 in `t ∈ [0, 1]`
+//! with the box of its Bézier control points (the curve lies inside it: convex hull).
+//!
+//! Which points are control points (POV-Ray 3.7 reference, 3.4.6.x Prism and Lathe):
+//! - `linear_spline`: every point lies on the curve; each pair is a straight piece.
+//! - `quadratic_spline`: the first point is a control point; the piece from `P[i]` to `P[i+1]`
+//!   is the quadratic through both whose tangent at `P[i]` is `(P[i+1] − P[i−1]) / 2`
+//!   (measured against `povray` renders of a closed quadratic prism: within a pixel).
+//! - `cubic_spline`: the first and last points are control points; the piece from `P[i]` to
+//!   `P[i+1]` is the Catmull-Rom cubic (tangents `(P[i+1] − P[i−1]) / 2`, `(P[i+2] − P[i]) / 2`).
+//! - `bezier_spline`: four points per piece, the cubic Bézier of them.
+//!
+//! A prism's sub-curve closes where a point repeats its first on-curve point (the first point
+//! for linear, the second for quadratic and cubic, the first of a Bézier group's end points).
+
+use glam::DVec2;
+
+use super::roots::{roots_in, MAX_DEGREE};
+
+/// How points connect, as POV-Ray's spline keywords name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SplineKind {
+    Linear,
+    Quadratic,
+    Cubic,
+    Bezier,
+}
+
+impl SplineKind {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            SplineKind::Linear => "linear_spline",
+            SplineKind::Quadratic => "quadratic_spline",
+            SplineKind::Cubic => "cubic_spline",
+            SplineKind::Bezier => "bezier_spline",
+        }
+    }
+
+    pub fn from_keyword(word: &str) -> Option<SplineKind> {
+        Some(match word {
+            "linear_spline" => SplineKind::Linear,
+            "quadratic_spline" => SplineKind::Quadratic,
+            "cubic_spline" => SplineKind::Cubic,
+            "bezier_spline" => SplineKind::Bezier,
+            _ => return None,
+        })
+    }
+}
+
+/// One piece: `(u(t), v(t)) = Σ c[k] tᵏ` for `t ∈ [0, 1]` (lowest power first), with the box
+/// of its control points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Piece {
+    pub u: [f64; 4],
+    pub v: [f64; 4],
+    /// Highest power with a nonzero coefficient as built (1 for lines, 2, 3).
+    pub degree: usize,
+    pub lo: DVec2,
+    pub hi: DVec2,
+}
+
+impl Piece {
+    /// The straight piece from `a` to `b`.
+    pub fn line(a: DVec2, b: DVec2) -> Piece {
+        let d = b - a;
+        Piece::from_power([a, d, DVec2::ZERO, DVec2::ZERO], 1, &[a, b])
+    }
+
+    /// The quadratic Bézier of `p0, p1, p2`.
+    pub fn quadratic_bezier(p0: DVec2, p1: DVec2, p2: DVec2) -> Piece {
+        let c1 = 2.0 * (p1 - p0);
+        let c2 = p0 - 2.0 * p1 + p2;
+        Piece::from_power([p0, c1, c2, DVec2::ZERO], 2, &[p0, p1, p2])
+    }
+
+    /// The cubic Bézier of `p0..p3`.
+    pub fn cubic_bezier(p: [DVec2; 4]) -> Piece {
+        let c1 = 3.0 * (p[1] - p[0]);
+        let c2 = 3.0 * (p[0] - 2.0 * p[1] + p[2]);
+        let c3 = p[3] - p[0] + 3.0 * (p[1] - p[2]);
+        Piece::from_power([p[0], c1, c2, c3], 3, &p)
+    }
+
+    /// The cubic Hermite piece from `a` to `b` with end tangents `ta`, `tb`.
+    fn hermite(a: DVec2, ta: DVec2, b: DVec2, tb: DVec2) -> Piece {
+        Piece::cubic_bezier([a, a + ta / 3.0, b - tb / 3.0, b])
+    }
+
+    fn from_power(c: [DVec2; 4], degree: usize, hull: &[DVec2]) -> Piece {
+        let lo = hull.iter().fold(DVec2::splat(f64::INFINITY), |m, p| m.min(*p));
+        let hi = hull.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, p| m.max(*p));
+        Piece { u: c.map(|p| p.x), v: c.map(|p| p.y), degree, lo, hi }
+    }
+
+    pub fn at(&self, t: f64) -> DVec2 {
+        let h = |c: &[f64; 4]| ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+        DVec2::new(h(&self.u), h(&self.v))
+    }
+
+    pub fn tangent(&self, t: f64) -> DVec2 {
+        let h = |c: &[f64; 4]| (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+        DVec2::new(h(&self.u), h(&self.v))
+    }
+
+    /// `a·u(t) + b·v(t) + k`, highest power first (for `geometry::roots`), trimmed to the
+    /// piece's degree.
+    pub fn combine(&self, a: f64, b: f64, k: f64) -> ([f64; 4], usize) {
+        let mut c = [0.0; 4];
+        for (i, slot) in c.iter_mut().enumerate().take(self.degree + 1) {
+            let p = self.degree - i;
+            *slot = a * self.u[p] + b * self.v[p] + if p == 0 { k } else { 0.0 };
+        }
+        (c, self.degree + 1)
+    }
+
+    /// The same piece with every point mapped by `f` (affine maps only).
+    pub fn map(&self, f: impl Fn(DVec2) -> DVec2) -> Piece {
+        let o = f(DVec2::ZERO);
+        let p = |k: usize| DVec2::new(self.u[k], self.v[k]);
+        let lin = |q: DVec2| f(q) - o;
+        let c = [f(p(0)), lin(p(1)), lin(p(2)), lin(p(3))];
+        let corners = [self.lo, self.hi, DVec2::new(self.lo.x, self.hi.y), DVec2::new(self.hi.x, self.lo.y)];
+        let mut piece = Piece::from_power(c, self.degree, &corners.map(f));
+        piece.degree = self.degree;
+        piece
+    }
+}
+
+/// Why points do not make a spline, for a located error.
+pub type SplineError = String;
+
+/// Tangent of the quadratic and cubic splines at `b` from its neighbours.
+fn tangent(prev: DVec2, next: DVec2) -> DVec2 {
+    0.5 * (next - prev)
+}
+
+/// The pieces of the open spline through `points` (a lathe's outline).
+pub fn open_pieces(kind: SplineKind, points: &[DVec2]) -> Result<Vec<Piece>, SplineError> {
+    let n = points.len();
+    let (least, rule) = match kind {
+        SplineKind::Linear => (2, "at least 2 points"),
+        SplineKind::Quadratic => (3, "at least 3 points (the first is a control point)"),
+        SplineKind::Cubic => (4, "at least 4 points (the first and last are control points)"),
+        SplineKind::Bezier => (4, "4 points per segment"),
+    };
+    if n < least || (kind == SplineKind::Bezier && !n.is_multiple_of(4)) {
+        return Err(format!("{} needs {rule}, found {n}", kind.keyword()));
+    }
+    Ok(match kind {
+        SplineKind::Linear => points.windows(2).map(|w| Piece::line(w[0], w[1])).collect(),
+        SplineKind::Quadratic => points.windows(3).map(|w| quadratic(w[0], w[1], w[2])).collect(),
+        SplineKind::Cubic => points.windows(4).map(|w| cubic(w[0], w[1], w[2], w[3])).collect(),
+        SplineKind::Bezier => points.chunks(4).map(|c| Piece::cubic_bezier([c[0], c[1], c[2], c[3]])).collect(),
+    })
+}
+
+fn quadratic(prev: DVec2, a: DVec2, b: DVec2) -> Piece {
+    let d = tangent(prev, b);
+    Piece::quadratic_bezier(a, a + 0.5 * d, b)
+}
+
+fn cubic(prev: DVec2, a: DVec2, b: DVec2, next: DVec2) -> Piece {
+    Piece::hermite(a, tangent(prev, b), b, tangent(a, next))
+}
+
+/// The pieces of a prism's closed sub-curves, in order; every sub-curve must close, except
+/// that a linear spline's last one is closed by a line as POV-Ray does (with a warning: the
+/// flag returned says so).
+pub fn closed_pieces(kind: SplineKind, points: &[DVec2]) -> Result<(Vec<Piece>, bool), SplineError> {
+    let n = points.len();
+    let mut pieces = Vec::new();
+    let mut start = 0;
+    let mut curves = 0;
+    // Points a sub-curve needs before it can close: first on-curve point, two more, the repeat.
+    let (lead, trail, least) = match kind {
+        SplineKind::Linear => (0, 0, 3),
+        SplineKind::Quadratic => (1, 0, 4),
+        SplineKind::Cubic => (1, 1, 5),
+        SplineKind::Bezier => (0, 0, 4),
+    };
+    while start < n {
+        let first = start + lead;
+        let close = match kind {
+            SplineKind::Bezier => (start..n).skip(3).step_by(4).find(|&i| points[i] == points[start]),
+            _ => (first + 1..n).find(|&i| points[i] == points[first]),
+        };
+        let close = close.filter(|&c| c + trail < n);
+        if close.is_none() && kind == SplineKind::Linear && n - start >= 3 {
+            pieces.extend(points[start..].windows(2).map(|w| Piece::line(w[0], w[1])));
+            pieces.push(Piece::line(points[n - 1], points[start]));
+            return Ok((pieces, true));
+        }
+        let Some(close) = close else {
+            return Err(format!(
+                "{} sub-curve {} starting at point {} is not closed{}",
+                kind.keyword(),
+                curves + 1,
+                start + 1,
+                match kind {
+                    SplineKind::Linear => " (repeat its first point)",
+                    SplineKind::Quadratic => " (repeat its second point: the first is a control point)",
+                    SplineKind::Cubic => {
+                        " (repeat its second point, then one control point: the first and last are control points)"
+                    }
+                    SplineKind::Bezier => " (end a segment of 4 points on its first point)",
+                }
+            ));
+        };
+        let end = close + trail;
+        if end + 1 - start < least {
+            return Err(format!(
+                "{} sub-curve {} starting at point {} has {} points; it needs at least {least}",
+                kind.keyword(),
+                curves + 1,
+                start + 1,
+                end + 1 - start
+            ));
+        }
+        let sub = &points[start..=end];
+        match kind {
+            SplineKind::Linear => pieces.extend(sub.windows(2).map(|w| Piece::line(w[0], w[1]))),
+            SplineKind::Quadratic => pieces.extend(sub.windows(3).map(|w| quadratic(w[0], w[1], w[2]))),
+            SplineKind::Cubic => pieces.extend(sub.windows(4).map(|w| cubic(w[0], w[1], w[2], w[3]))),
+            SplineKind::Bezier => pieces.extend(sub.chunks(4).map(|c| Piece::cubic_bezier([c[0], c[1], c[2], c[3]]))),
+        }
+        curves += 1;
+        start = end + 1;
+    }
+    if pieces.is_empty() {
+        return Err(format!("{} needs points", kind.keyword()));
+    }
+    Ok((pieces, false))
+}
+
+/// Even-odd: whether `q` lies inside the curves `pieces`, by the crossings of the ray from `q`
+/// towards +u (prism sections, lathe outlines).
+pub fn even_odd(pieces: &[Piece], q: DVec2) -> bool {
+    let mut inside = false;
+    for p in pieces {
+        if q.y < p.lo.y || q.y > p.hi.y || q.x > p.hi.x {
+            continue;
+        }
+        let (a, b) = (p.at(0.0), p.at(1.0));
+        if q.x < p.lo.x {
+            // Wholly to the right: the parity is whether the ends lie on opposite sides.
+            inside ^= (a.y < q.y) != (b.y < q.y);
+            continue;
+        }
+        let (c, n) = p.combine(0.0, 1.0, -q.y);
+        let mut roots = [0.0; MAX_DEGREE];
+        let k = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+        for &t in &roots[..k] {
+            // Half-open in t, so a joint is counted once.
+            if t < 1.0 && p.at(t).x > q.x {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// The parameter in [0, 1] of the point of `p` nearest `w`.
+pub fn closest_t(p: &Piece, w: DVec2) -> f64 {
+    // (C(t) − w)·C'(t) = 0: degree 2·deg − 1.
+    let deg = p.degree;
+    let du = |k: usize| if k == 0 { p.u[0] - w.x } else { p.u[k] };
+    let dv = |k: usize| if k == 0 { p.v[0] - w.y } else { p.v[k] };
+    let mut prod = [0.0; 6]; // lowest power first
+    for i in 0..=deg {
+        for j in 1..=deg {
+            prod[i + j - 1] += j as f64 * (du(i) * p.u[j] + dv(i) * p.v[j]);
+        }
+    }
+    let n = 2 * deg; // coefficients: powers 0..2·deg − 1
+    let mut c = [0.0; 6];
+    for (i, slot) in c[..n].iter_mut().enumerate() {
+        *slot = prod[n - 1 - i];
+    }
+    let mut roots = [0.0; MAX_DEGREE];
+    let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+    let dist = |t: f64| (p.at(t) - w).length_squared();
+    let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
+    for &t in &roots[..m] {
+        if dist(t) < dist(best) {
+            best = t;
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(x: f64, y: f64) -> DVec2 {
+        DVec2::new(x, y)
+    }
+
+    #[test]
+    fn pieces_pass_through_their_points_with_the_documented_tangents() {
+        let pts = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(1.0, 0.0)];
+        let (q, _) = closed_pieces(SplineKind::Quadratic, &pts).expect("closed");
+        assert_eq!(q.len(), 3);
+        assert_eq!(q[0].at(0.0), pts[1]);
+        assert!((q[0].at(1.0) - pts[2]).length() < 1e-15);
+        assert!((q[0].tangent(0.0) - 0.5 * (pts[2] - pts[0])).length() < 1e-15);
+        // The bulge measured from povray: x = 1.1245 at z = 0.345 (t = 0.4695).
+        assert!((q[0].at(0.4695).x - 1.1245).abs() < 1e-3);
+
+        let cubic_pts = [p(3.0, -5.0), p(3.0, 5.0), p(-5.0, 0.0), p(3.0, -5.0), p(3.0, 5.0), p(-5.0, 0.0)];
+        let (c, _) = closed_pieces(SplineKind::Cubic, &cubic_pts).expect("closed");
+        assert_eq!(c.len(), 3);
+        for (i, piece) in c.iter().enumerate() {
+            assert!((piece.at(0.0) - cubic_pts[i + 1]).length() < 1e-12);
+            assert!((piece.at(1.0) - cubic_pts[i + 2]).length() < 1e-12);
+            assert!((piece.tangent(0.0) - 0.5 * (cubic_pts[i + 2] - cubic_pts[i])).length() < 1e-12);
+        }
+        // C1 across joints.
+        assert!((c[0].tangent(1.0) - c[1].tangent(0.0)).length() < 1e-12);
+    }
+
+    #[test]
+    fn sub_curves_close_where_the_documents_say() {
+        let square = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 0.0)];
+        let two: Vec<DVec2> = square.iter().chain(square.iter()).map(|q| *q * 2.0 + p(5.0, 0.0)).collect();
+        assert_eq!(closed_pieces(SplineKind::Linear, &two).map(|v| v.0.len()), Ok(6));
+        // An open linear outline is closed by a line (POV-Ray warns); two points are too few.
+        assert_eq!(closed_pieces(SplineKind::Linear, &square[..3]).map(|v| (v.0.len(), v.1)), Ok((3, true)));
+        let err = closed_pieces(SplineKind::Linear, &square[..2]).expect_err("open");
+        assert!(err.contains("not closed"), "{err}");
+        let err = closed_pieces(SplineKind::Quadratic, &square).expect_err("open");
+        assert!(err.contains("repeat its second point"), "{err}");
+        let bez =
+            [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0), p(0.0, 1.0), p(-1.0, 1.0), p(-1.0, 0.0), p(0.0, 0.0)];
+        assert_eq!(closed_pieces(SplineKind::Bezier, &bez).map(|v| v.0.len()), Ok(2));
+        let err = closed_pieces(SplineKind::Bezier, &bez[..6]).expect_err("open");
+        assert!(err.contains("bezier_spline sub-curve 1"), "{err}");
+        let err = open_pieces(SplineKind::Cubic, &square[..3]).expect_err("few");
+        assert_eq!(err, "cubic_spline needs at least 4 points (the first and last are control points), found 3");
+        assert_eq!(open_pieces(SplineKind::Quadratic, &square).map(|v| v.len()), Ok(2));
+    }
+
+    #[test]
+    fn pieces_lie_inside_their_boxes_and_combine_evaluates_them() {
+        let b = Piece::cubic_bezier([p(0.0, 0.0), p(2.0, 3.0), p(-1.0, 3.0), p(1.0, 0.0)]);
+        for i in 0..=100 {
+            let t = i as f64 / 100.0;
+            let q = b.at(t);
+            assert!(q.cmpge(b.lo - 1e-12).all() && q.cmple(b.hi + 1e-12).all(), "{q}");
+            let (c, n) = b.combine(2.0, -1.0, 0.5);
+            let e = c[..n].iter().fold(0.0, |acc, k| acc * t + k);
+            assert!((e - (2.0 * q.x - q.y + 0.5)).abs() < 1e-12);
+        }
+        let line = Piece::line(p(1.0, 1.0), p(3.0, 2.0));
+        assert_eq!(line.combine(1.0, 0.0, 0.0), ([2.0, 1.0, 0.0, 0.0], 2));
+    }
+}

@@ -8,7 +8,7 @@
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
+use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
 use super::{transformed_bounds, Shape};
@@ -162,25 +162,11 @@ impl Lathe {
 impl Shape for Lathe {
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let o = ray.o.transform_point(&self.frame.object_from_render);
-        let d = ray.d.transform_vector(&self.frame.object_from_render);
-        L::from_fn_f64(|i| {
-            let v = |v: V3<L>| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
-            self.solve(v(o), v(d), t_min.get_f64(i), t_max.get_f64(i)).unwrap_or(MISS as f64)
-        })
+        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        let q = p.transform_point(&self.frame.object_from_render);
-        let n: [DVec3; 8] = std::array::from_fn(|i| {
-            if i < L::WIDTH {
-                self.normal_object(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)))
-            } else {
-                DVec3::Y
-            }
-        });
-        let n = V3 { x: L::from_fn_f64(|i| n[i].x), y: L::from_fn_f64(|i| n[i].y), z: L::from_fn_f64(|i| n[i].z) };
-        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
     }
 
     fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
@@ -194,6 +180,7 @@ impl Shape for Lathe {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::ray::MISS;
     use crate::geometry::ray::Ray;
     use crate::geometry::spline::{open_pieces, SplineKind};
 

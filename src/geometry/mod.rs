@@ -44,6 +44,54 @@ pub fn transformed_bounds(render_from_object: &glam::Affine3A, lo: Vec3, hi: Vec
     (min, max)
 }
 
+/// The hit of a shape solved lane by lane in f64 in its object space (`frame`): `solve(o, d,
+/// t_min, t_max)` answers the nearest root in the open interval. Each root is compared with
+/// `t_min` as the lane will hold it (`Lane::round_f64`), and one that rounds onto `t_min` is
+/// stepped past, so CSG searching on from a crossing finds the next one, not that one again.
+#[inline(always)]
+pub fn hit_lanes_f64<L: Lane>(
+    frame: &cuboid::BoxFrame,
+    ray: &RayLanes<L>,
+    t_min: L,
+    t_max: L,
+    solve: impl Fn(glam::DVec3, glam::DVec3, f64, f64) -> Option<f64>,
+) -> L {
+    let o = ray.o.transform_point(&frame.object_from_render);
+    let d = ray.d.transform_vector(&frame.object_from_render);
+    L::from_fn_f64(|i| {
+        let v = |v: V3<L>| glam::DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+        let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
+        let mut from = lo;
+        for _ in 0..4 {
+            let Some(t) = solve(v(o), v(d), from, hi) else { break };
+            if L::round_f64(t) > lo {
+                return L::round_f64(t).min(hi);
+            }
+            from = t;
+        }
+        MISS as f64
+    })
+}
+
+/// `normal` of a shape that computes its object-space normal per point in f64.
+#[inline(always)]
+pub fn normal_lanes_f64<L: Lane>(
+    frame: &cuboid::BoxFrame,
+    p: V3<L>,
+    normal: impl Fn(glam::DVec3) -> glam::DVec3,
+) -> V3<L> {
+    let q = p.transform_point(&frame.object_from_render);
+    let n: [glam::DVec3; 8] = std::array::from_fn(|i| {
+        if i < L::WIDTH {
+            normal(glam::DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)))
+        } else {
+            glam::DVec3::Y
+        }
+    });
+    let n = V3 { x: L::from_fn_f64(|i| n[i].x), y: L::from_fn_f64(|i| n[i].y), z: L::from_fn_f64(|i| n[i].z) };
+    n.mat3_mul(&frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+}
+
 /// A surface rays can hit.
 pub trait Shape {
     /// The nearest hit in `(t_min, t_max)` for each lane, `MISS` where there is none.

@@ -180,7 +180,6 @@ impl Shape for Lathe {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::MISS;
     use crate::geometry::ray::Ray;
     use crate::geometry::spline::{open_pieces, SplineKind};
 

@@ -92,6 +92,12 @@ pub fn normal_lanes_f64<L: Lane>(
     n.mat3_mul(&frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
 }
 
+/// An f64 affine map as f32: the cast every shape's frame goes through once, after composing
+/// in f64.
+pub fn affine_f32(a: &glam::DAffine3) -> glam::Affine3A {
+    glam::Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
+}
+
 /// A surface rays can hit.
 pub trait Shape {
     /// The nearest hit in `(t_min, t_max)` for each lane, `MISS` where there is none.

@@ -14,13 +14,13 @@
 //! (only scaled for `conic_sweep`, whose apex is the origin), so a prism written at 1e6 or
 //! 1e-4 keeps its digits before the frame becomes f32.
 
-use glam::{Affine3A, DAffine3, DVec2, DVec3, Vec3};
+use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
-use super::{transformed_bounds, Shape};
+use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Debug)]
@@ -34,11 +34,6 @@ pub struct Prism {
     open: bool,
     pub min: Vec3,
     pub max: Vec3,
-}
-
-/// The cast every shape's frame goes through once, after composing in f64.
-fn affine_f32(a: &DAffine3) -> Affine3A {
-    Affine3A::from_cols_array(&a.to_cols_array().map(|v| v as f32))
 }
 
 impl Prism {

@@ -7,4 +7,5 @@ pub mod desc;
 pub mod fixtures;
 pub mod generate;
 pub mod material;
+pub mod place;
 pub mod print;

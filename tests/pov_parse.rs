@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, union, merge, intersection, difference, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, \
          object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -871,11 +871,11 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
-        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone and prism)"),
+        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone, prism and sor)"),
         (
             "cylinder { 0, y, 1 sturm }",
             (1, 20),
-            "`sturm` does not apply to cylinder (only to torus, cubic, quartic, poly, prism and lathe)",
+            "`sturm` does not apply to cylinder (only to torus, cubic, quartic, poly, prism, lathe and sor)",
         ),
     ] {
         let (l, c, m) = err("bad_round", text);
@@ -916,7 +916,7 @@ fn csg_nodes_keep_their_structure_and_pass_textures_down() {
 fn csg_errors_are_located() {
     let (l, c, m) = err("csg_open", "intersection { sphere { 0, 1 } box { -1, 1 }\n open }");
     assert_eq!((l, c), (2, 2));
-    assert_eq!(m, "`open` does not apply to intersection (only to cylinder, cone and prism)");
+    assert_eq!(m, "`open` does not apply to intersection (only to cylinder, cone, prism and sor)");
     let (l, c, m) = err("csg_clip", "sphere { 0, 1 clipped_by { bounded_by } }");
     assert_eq!((l, c), (1, 28));
     assert!(m.contains("needs a `bounded_by` with objects"), "{m}");
@@ -984,7 +984,7 @@ fn bad_polynomial_surfaces_are_located_errors() {
         (
             "quadric { <1, 1, 1>, 0, 0, -1 sturm }",
             (1, 31),
-            "`sturm` does not apply to quadric (only to torus, cubic, quartic, poly, prism and lathe)",
+            "`sturm` does not apply to quadric (only to torus, cubic, quartic, poly, prism, lathe and sor)",
         ),
         ("quartic { <1, 2> open }", (1, 11), "quartic takes 35 coefficients, found 2"),
     ] {
@@ -1104,6 +1104,26 @@ fn superellipsoids_load_and_bad_ones_are_located_errors() {
     }
 }
 
+/// Surfaces of revolution: counts, rising heights and radii checked where written.
+#[test]
+fn sors_load_and_bad_ones_are_located_errors() {
+    let s = load_text("sors", "sor { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> open sturm }").unwrap();
+    assert!(matches!(&s.objects[0].shape, ShapeDesc::Sor { open: true, points } if points.len() == 4));
+    for (text, at, message) in [
+        ("sor { 3, <0, 0>, <1, 0> }", (1, 7), "sor says it has 3 points, but 2 are given"),
+        ("sor { 3, <0, 0>, <1, 0>, <1, 1> }", (1, 7), "sor: needs at least 4 points, found 3"),
+        (
+            "sor { 4, <0, 0>, <1, 1>, <1, 1>, <0, 2> }",
+            (1, 7),
+            "sor: point 3 (height 1) is not above point 2 (height 1): heights must increase",
+        ),
+        ("sor { 4, <0, 0>, <-1, 1>, <1, 2>, <0, 3> }", (1, 7), "sor: point 2 has a negative radius -1"),
+    ] {
+        let (l, c, m) = err("bad_sor", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
 /// Lathes: the spline keyword first, counts and spline rules checked where written.
 #[test]
 fn lathes_load_and_bad_ones_are_located_errors() {
@@ -1121,7 +1141,7 @@ fn lathes_load_and_bad_ones_are_located_errors() {
             (1, 9),
             "unknown keyword `cubik_spline` in lathe (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline)",
         ),
-        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone and prism)"),
+        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone, prism and sor)"),
     ] {
         let (l, c, m) = err("bad_lathe", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");

@@ -136,7 +136,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(13) {
+    match r.pick(14) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -189,6 +189,7 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
         }
         10 => ShapeDesc::Superellipsoid { e: r.f(0.1, 2.5), n: r.f(0.1, 2.5) },
         11 => random_prism(r),
+        12 => random_sor(r),
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
             let u = n.any_orthonormal_vector();
@@ -203,6 +204,18 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
             ShapeDesc::Polygon { points }
         }
     }
+}
+
+/// A surface of revolution through 4 to 7 points at rising heights, sometimes open.
+fn random_sor(r: &mut Rng) -> ShapeDesc {
+    let mut y = r.f(-2.0, 1.0);
+    let points = (0..4 + r.pick(4))
+        .map(|_| {
+            y += r.f(0.1, 1.0);
+            DVec2::new(r.f(0.05, 1.5), y)
+        })
+        .collect();
+    ShapeDesc::Sor { points, open: r.pick(4) == 0 }
 }
 
 /// A star-shaped outline of 3 to 6 points around a centre, as each spline type closes it,
@@ -457,6 +470,9 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (ShapeDesc::Lathe { spline: s1, points: p1 }, ShapeDesc::Lathe { spline: s2, points: p2 }) => {
             s1 == s2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
         }
+        (ShapeDesc::Sor { points: p1, open: o1 }, ShapeDesc::Sor { points: p2, open: o2 }) => {
+            o1 == o2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
+        }
         (
             ShapeDesc::Text { font: f1, string: s1, thickness: t1, offset: o1, .. },
             ShapeDesc::Text { font: f2, string: s2, thickness: t2, offset: o2, .. },
@@ -690,7 +706,10 @@ fn inside_agrees_with_crossing_parity() {
         let flat =
             matches!(leaf.shape, ShapeDesc::Triangle { .. } | ShapeDesc::Polygon { .. } | ShapeDesc::Disc { .. });
         // An open cone is a solid with holes in its surface: no parity to count.
-        if matches!(leaf.shape, ShapeDesc::Cone { open: true, .. } | ShapeDesc::Prism { open: true, .. }) {
+        if matches!(
+            leaf.shape,
+            ShapeDesc::Cone { open: true, .. } | ShapeDesc::Prism { open: true, .. } | ShapeDesc::Sor { open: true, .. }
+        ) {
             continue;
         }
         let scene = csg_scene(ObjectDesc { inverse: false, ..leaf });

@@ -126,6 +126,11 @@ fn lathes_match_povray() {
 }
 
 #[test]
+fn sors_match_povray() {
+    check_psnr("sors", &scene("sors"), 35.0);
+}
+
+#[test]
 fn prisms_match_povray() {
     check_psnr("prisms", &scene("prisms"), 35.0);
 }

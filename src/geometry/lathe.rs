@@ -11,7 +11,7 @@ use super::cuboid::{frame_for, BoxFrame};
 use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
-use super::{transformed_bounds, Shape};
+use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 
 #[derive(Clone, Debug)]
@@ -44,7 +44,7 @@ impl Lathe {
         let local = DAffine3::from_translation(DVec3::new(0.0, cy, 0.0)) * DAffine3::from_scale(DVec3::splat(s));
         let pieces: Vec<Piece> = pieces.iter().map(|p| p.map(|q| DVec2::new(q.x / s, (q.y - cy) / s))).collect();
         let xf = render_from_object * local;
-        let xf = glam::Affine3A::from_cols_array(&xf.to_cols_array().map(|v| v as f32));
+        let xf = affine_f32(&xf);
         let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
         let (min, max) = transformed_bounds(&xf, Vec3::new(-r, -h, -r), Vec3::new(r, h, r));
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;

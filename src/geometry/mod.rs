@@ -16,6 +16,7 @@ pub mod polygon;
 pub mod prism;
 pub mod ray;
 pub mod roots;
+pub mod sor;
 pub mod sphere;
 pub mod spline;
 pub mod superellipsoid;

@@ -323,6 +323,7 @@ pub enum ShapeKind {
     Text,
     /// `lathe`: an optional spline keyword first, as an `Ident`.
     Lathe,
+    Sor,
 }
 
 #[derive(Clone, Debug, PartialEq)]

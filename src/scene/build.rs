@@ -33,6 +33,7 @@ use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
 use crate::geometry::prism::Prism;
 use crate::geometry::roots::Solver;
+use crate::geometry::sor::Sor;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::spline::Piece;
 use crate::geometry::superellipsoid::Superellipsoid;
@@ -67,11 +68,12 @@ pub enum ShapeKind {
     /// `prism` (and each glyph of `text`).
     Prism = 12,
     Lathe = 13,
+    Sor = 14,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 13] = [
+    pub const ALL: [ShapeKind; 14] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
@@ -81,13 +83,14 @@ impl ShapeKind {
         ShapeKind::Poly,
         ShapeKind::Polygon,
         ShapeKind::Prism,
+        ShapeKind::Sor,
         ShapeKind::Sphere,
         ShapeKind::Superellipsoid,
         ShapeKind::Torus,
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 14;
+    pub const COUNT: usize = 15;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -104,6 +107,7 @@ impl ShapeKind {
             ShapeKind::Superellipsoid => "Superellipsoid",
             ShapeKind::Prism => "Prism",
             ShapeKind::Lathe => "Lathe",
+            ShapeKind::Sor => "Sor",
         }
     }
 }
@@ -154,6 +158,7 @@ pub struct Scene {
     pub superellipsoids: Vec<Superellipsoid>,
     pub prisms: Vec<Prism>,
     pub lathes: Vec<Lathe>,
+    pub sors: Vec<Sor>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -203,6 +208,7 @@ impl Scene {
             superellipsoids: Vec::new(),
             prisms: Vec::new(),
             lathes: Vec::new(),
+            sors: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -434,6 +440,10 @@ impl Scene {
                 self.lathes.push(Lathe::new(render_from_object, &pieces));
                 (ShapeKind::Lathe, at(self.lathes.len()))
             }
+            RenderShape::Sor { render_from_object, points, open } => {
+                self.sors.push(Sor::new(render_from_object, &points, open));
+                (ShapeKind::Sor, at(self.sors.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -492,6 +502,7 @@ impl Scene {
             ShapeKind::Superellipsoid => self.superellipsoids[i].bounds(),
             ShapeKind::Prism => self.prisms[i].bounds(),
             ShapeKind::Lathe => self.lathes[i].bounds(),
+            ShapeKind::Sor => self.sors[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

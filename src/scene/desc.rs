@@ -296,6 +296,12 @@ pub enum ShapeDesc {
         spline: SplineKind,
         points: Vec<DVec2>,
     },
+    /// `sor`: `r² = f(y)` through (r, y) `points` (checked when lowered), revolved around the
+    /// y axis; `open` drops the end caps.
+    Sor {
+        points: Vec<DVec2>,
+        open: bool,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -383,6 +389,7 @@ impl ShapeDesc {
             ShapeDesc::Prism { .. } => "prism",
             ShapeDesc::Text { .. } => "text",
             ShapeDesc::Lathe { .. } => "lathe",
+            ShapeDesc::Sor { .. } => "sor",
         }
     }
 }

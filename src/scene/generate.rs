@@ -307,7 +307,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Superellipsoid { .. }
             | ShapeDesc::Prism { .. }
             | ShapeDesc::Text { .. }
-            | ShapeDesc::Lathe { .. }) => {
+            | ShapeDesc::Lathe { .. }
+            | ShapeDesc::Sor { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

@@ -128,6 +128,11 @@ pub(crate) enum RenderShape {
         render_from_object: DAffine3,
         pieces: Vec<Piece>,
     },
+    Sor {
+        render_from_object: DAffine3,
+        points: Vec<glam::DVec2>,
+        open: bool,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -218,6 +223,9 @@ impl RenderFrame {
                 render_from_object: render_from_object(),
                 pieces: open_pieces(*spline, points).unwrap_or_default(),
             },
+            ShapeDesc::Sor { points, open } => {
+                RenderShape::Sor { render_from_object: render_from_object(), points: points.clone(), open: *open }
+            }
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
                 // along z: swap y and z.

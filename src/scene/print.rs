@@ -125,6 +125,10 @@ fn object(s: &mut String, o: &ObjectDesc) {
         ShapeDesc::Lathe { spline, points } => {
             write!(s, "lathe {{ {} {}, {}", spline.keyword(), points.len(), vec2s(points))
         }
+        ShapeDesc::Sor { points, open } => {
+            let open = if *open { " open" } else { "" };
+            write!(s, "sor {{ {}, {}{open}", points.len(), vec2s(points))
+        }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
             write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))

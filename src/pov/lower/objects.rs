@@ -17,10 +17,14 @@ use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureD
 
 impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
+        let shape = match &o.kind {
+            ObjectKind::Shape(kind, args) => Some(self.shape(*kind, args, o.span)?),
+            _ => None,
+        };
         let mut group = match &o.kind {
-            ObjectKind::Shape(kind, args) => Group {
+            ObjectKind::Shape(..) => Group {
                 parts: vec![Part::leaf(ObjectDesc {
-                    shape: self.shape(*kind, args, o.span)?,
+                    shape: shape.expect("a shape was lowered above"),
                     transform: Transform::default(),
                     texture: TextureDesc::default(),
                     interior: InteriorDesc::default(),
@@ -136,11 +140,13 @@ impl Lowerer<'_> {
             Modifier::NoShadow => obj.no_shadow = true,
             Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
             Modifier::Open(span) => match &mut obj.shape {
-                ShapeDesc::Cone { open, .. } | ShapeDesc::Prism { open, .. } => *open = true,
+                ShapeDesc::Cone { open, .. } | ShapeDesc::Prism { open, .. } | ShapeDesc::Sor { open, .. } => {
+                    *open = true
+                }
                 other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
             },
             Modifier::Sturm(span) => match &mut obj.shape {
-                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } => {}
+                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } | ShapeDesc::Sor { .. } => {}
                 ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
                 other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
             },
@@ -355,6 +361,7 @@ impl Lowerer<'_> {
             ShapeKind::Prism => self.prism(args, span)?,
             ShapeKind::Text => self.text(args, span)?,
             ShapeKind::Lathe => self.lathe(args, span)?,
+            ShapeKind::Sor => self.sor(args, span)?,
         })
     }
 
@@ -457,8 +464,8 @@ fn collinear(points: &[DVec3]) -> bool {
 }
 
 /// The shapes that take `open` and `sturm`, for messages.
-const OPEN_TAKERS: &str = "cylinder, cone and prism";
-const STURM_SHAPES: &str = "torus, cubic, quartic, poly, prism and lathe";
+const OPEN_TAKERS: &str = "cylinder, cone, prism and sor";
+const STURM_SHAPES: &str = "torus, cubic, quartic, poly, prism, lathe and sor";
 /// A CSG object's texture and interior, given to its children without one at the end of its
 /// modifiers.
 #[derive(Default)]

@@ -5,6 +5,7 @@
 use glam::DVec2;
 
 use super::Lowerer;
+use crate::geometry::sor::check_points;
 use crate::geometry::spline::{closed_pieces, open_pieces, SplineKind};
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::source::{Diag, PResult, Span};
@@ -76,5 +77,15 @@ impl Lowerer<'_> {
         let points: Vec<DVec2> = self.counted_points("lathe", rest, span)?.into_iter().map(|p| p.0).collect();
         open_pieces(spline, &points).map_err(|m| Diag::new(rest[0].span, format!("lathe: {m}")))?;
         Ok(ShapeDesc::Lathe { spline, points })
+    }
+
+    /// `sor { N, points }` (POV-Ray 3.4.5.1.15): (r, y) points, heights increasing.
+    pub(super) fn sor(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
+        if args.is_empty() {
+            return Err(Diag::new(span, "sor needs the number of points, then the points"));
+        }
+        let points: Vec<DVec2> = self.counted_points("sor", args, span)?.into_iter().map(|p| p.0).collect();
+        check_points(&points).map_err(|m| Diag::new(args[0].span, format!("sor: {m}")))?;
+        Ok(ShapeDesc::Sor { points, open: false })
     }
 }

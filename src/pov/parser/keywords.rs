@@ -129,7 +129,6 @@ pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "height_field",
     "isosurface",
     "julia_fractal",
-    "sor",
     "bicubic_patch",
     "sphere_sweep",
     "parametric",

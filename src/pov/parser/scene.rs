@@ -38,10 +38,11 @@ const TOP_LEVEL: &[&str] = &[
     "prism",
     "text",
     "lathe",
+    "sor",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -102,6 +103,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "prism" => ShapeKind::Prism,
         "text" => ShapeKind::Text,
         "lathe" => ShapeKind::Lathe,
+        "sor" => ShapeKind::Sor,
         _ => return None,
     })
 }
@@ -125,7 +127,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Superellipsoid => &["<e, n>"],
         ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
         ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
-        ShapeKind::Lathe => &["number of points", "points"],
+        ShapeKind::Lathe | ShapeKind::Sor => &["number of points", "points"],
     }
 }
 
@@ -370,7 +372,7 @@ impl Parser<'_, '_> {
                         Some(s)
                             if !matches!(
                                 s,
-                                ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe
+                                ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe | ShapeKind::Sor
                             ) =>
                         {
                             let names = shape_args(s);
@@ -384,7 +386,10 @@ impl Parser<'_, '_> {
                     // Name only the flags this shape takes.
                     let takes = |m: &&str| match *m {
                         "open" => {
-                            matches!(shape_kind(&word), Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism))
+                            matches!(
+                                shape_kind(&word),
+                                Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism | ShapeKind::Sor)
+                            )
                         }
                         "sturm" => matches!(
                             shape_kind(&word),
@@ -395,6 +400,7 @@ impl Parser<'_, '_> {
                                     | ShapeKind::Poly
                                     | ShapeKind::Prism
                                     | ShapeKind::Lathe
+                                    | ShapeKind::Sor
                             )
                         ),
                         _ => true,
@@ -453,12 +459,13 @@ impl Parser<'_, '_> {
                 }
             }
         }
-        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe) {
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe | ShapeKind::Sor) {
             if !self.starts_expr(MODIFIERS) {
                 let what = match shape {
                     ShapeKind::Polygon => "polygon needs the number of points, then the points",
                     ShapeKind::Prism => "prism needs two heights, the number of points, then the points",
                     ShapeKind::Lathe => "lathe needs the number of points, then the points",
+                    ShapeKind::Sor => "sor needs the number of points, then the points",
                     _ => "text needs: ttf \"font.ttf\" \"string\" thickness, offset",
                 };
                 return Err(Diag::new(self.peek().span, what));

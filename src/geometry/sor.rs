@@ -1,0 +1,317 @@
+//! POV-Ray's `sor` (3.4.5.1.15 Surface of Revolution): the graph of `r² = f(y)` revolved
+//! around the y axis, `f` a cubic `A·y³ + B·y² + C·y + D` per segment. Segment `j` runs from
+//! point `j` to `j + 1` (of `1 ..= n − 2`): it passes through both points' `r²`, and its slopes
+//! there are those POV-Ray's documentation gives, `2·r(j)·(r(j+1) − r(j−1)) / (h(j+1) − h(j−1))`
+//! (from the neighbours, so the first and last points only shape the ends). Unless `open`, discs
+//! close the bottom (`h(1)`) and top (`h(n−2)`).
+//!
+//! A ray meets segment `j` where `x² + z² = f(y)` with `y` linear in `t`: a cubic in `t`, solved in
+//! f64 per lane by `roots` on the span of `t` where `y` is inside the segment (no 8-wide
+//! arithmetic, as the lathe). Inside is `x² + z² < f(y)` between the caps.
+
+use glam::{DAffine3, DVec2, DVec3, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::RayLanes;
+use super::roots::{roots_in, MAX_DEGREE};
+use super::{affine_f32, transformed_bounds, Shape};
+use crate::lanes::{Lane, V3};
+
+/// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
+#[derive(Clone, Copy, Debug)]
+struct Segment {
+    lo: f64,
+    hi: f64,
+    k: [f64; 4],
+}
+
+impl Segment {
+    fn f(&self, y: f64) -> f64 {
+        ((self.k[0] * y + self.k[1]) * y + self.k[2]) * y + self.k[3]
+    }
+
+    fn slope(&self, y: f64) -> f64 {
+        (3.0 * self.k[0] * y + 2.0 * self.k[1]) * y + self.k[2]
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Sor {
+    pub frame: BoxFrame,
+    /// Ascending in height, scaled to unit size.
+    segments: Vec<Segment>,
+    open: bool,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+/// Why a list of (r, h) points is not a surface of revolution, if it is not.
+pub fn check_points(points: &[DVec2]) -> Result<(), String> {
+    if points.len() < 4 {
+        return Err(format!("needs at least 4 points, found {}", points.len()));
+    }
+    // As POV-Ray checks: the curve's own points rise strictly; the two that only set the end
+    // slopes may be level with their neighbours, not below (above) them.
+    let last = points.len() - 2;
+    if let Some(i) = points.windows(2).enumerate().position(|(i, w)| {
+        if i == 0 || i == last {
+            w[1].y < w[0].y
+        } else {
+            !(w[1].y > w[0].y)
+        }
+    }) {
+        return Err(format!(
+            "point {} (height {}) is not above point {} (height {}): heights must increase",
+            i + 2,
+            points[i + 1].y,
+            i + 1,
+            points[i].y
+        ));
+    }
+    if let Some(i) = points.iter().position(|p| p.x < 0.0) {
+        return Err(format!("point {} has a negative radius {}", i + 1, points[i].x));
+    }
+    Ok(())
+}
+
+/// The segments' cubics, by solving the 4×4 system of POV-Ray's documentation for each.
+fn segments(p: &[DVec2]) -> Vec<Segment> {
+    (1..p.len() - 2)
+        .map(|j| {
+            let (r, h) = (|i: usize| p[i].x, |i: usize| p[i].y);
+            let b = [
+                r(j) * r(j),
+                r(j + 1) * r(j + 1),
+                2.0 * r(j) * (r(j + 1) - r(j - 1)) / (h(j + 1) - h(j - 1)),
+                2.0 * r(j + 1) * (r(j + 2) - r(j)) / (h(j + 2) - h(j)),
+            ];
+            let row = |y: f64| [y * y * y, y * y, y, 1.0];
+            let slope = |y: f64| [3.0 * y * y, 2.0 * y, 1.0, 0.0];
+            let m = [row(h(j)), row(h(j + 1)), slope(h(j)), slope(h(j + 1))];
+            Segment { lo: h(j), hi: h(j + 1), k: solve4(m, b) }
+        })
+        .collect()
+}
+
+/// `m·x = b` by Gaussian elimination with partial pivoting (the matrix is regular when the
+/// heights differ).
+fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
+    for c in 0..4 {
+        let p = (c..4).max_by(|&i, &j| m[i][c].abs().total_cmp(&m[j][c].abs())).unwrap_or(c);
+        m.swap(c, p);
+        b.swap(c, p);
+        for r in c + 1..4 {
+            let f = m[r][c] / m[c][c];
+            for k in c..4 {
+                m[r][k] -= f * m[c][k];
+            }
+            b[r] -= f * b[c];
+        }
+    }
+    let mut x = [0.0; 4];
+    for c in (0..4).rev() {
+        let s: f64 = (c + 1..4).map(|k| m[c][k] * x[k]).sum();
+        x[c] = (b[c] - s) / m[c][c];
+    }
+    x
+}
+
+/// The largest `r²` a segment reaches: at an end or where its slope is zero.
+fn max_r2(s: &Segment) -> f64 {
+    let mut m = s.f(s.lo).max(s.f(s.hi));
+    let mut roots = [0.0; MAX_DEGREE];
+    let n = roots_in(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
+    for &y in &roots[..n] {
+        m = m.max(s.f(y));
+    }
+    m
+}
+
+impl Sor {
+    /// The surface through `points` ((r, h), as written; `check_points` holds) under
+    /// `render_from_object`.
+    pub fn new(render_from_object: DAffine3, points: &[DVec2], open: bool) -> Sor {
+        let raw = segments(points);
+        let r = raw.iter().fold(0.0f64, |m, s| m.max(max_r2(s))).max(0.0).sqrt();
+        let (ylo, yhi) = (points[1].y, points[points.len() - 2].y);
+        let cy = 0.5 * (ylo + yhi);
+        let s = r.max(0.5 * (yhi - ylo));
+        let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
+        // Scaled to unit size: f(y) in the new units is f(cy + s·y) / s².
+        let scaled: Vec<DVec2> = points.iter().map(|p| DVec2::new(p.x / s, (p.y - cy) / s)).collect();
+        let segments = self::segments(&scaled);
+        let local = DAffine3::from_translation(DVec3::new(0.0, cy, 0.0)) * DAffine3::from_scale(DVec3::splat(s));
+        let xf = affine_f32(&(render_from_object * local));
+        let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
+        let (min, max) = transformed_bounds(&xf, Vec3::new(-r, -h, -r), Vec3::new(r, h, r));
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        Sor { frame: frame_for(xf), segments, open, min: min - pad, max: max + pad }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    fn bottom(&self) -> &Segment {
+        &self.segments[0]
+    }
+
+    fn top(&self) -> &Segment {
+        &self.segments[self.segments.len() - 1]
+    }
+
+    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+        let mut best = t_max;
+        let (dh2, odh, oh2) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z, o.x * o.x + o.z * o.z);
+        let mut roots = [0.0; MAX_DEGREE];
+        for s in &self.segments {
+            // The span of t where the ray is within the segment's heights.
+            let (lo, hi) = if d.y != 0.0 {
+                let (a, b) = ((s.lo - o.y) / d.y, (s.hi - o.y) / d.y);
+                (a.min(b).max(t_min), a.max(b).min(best))
+            } else if o.y >= s.lo && o.y <= s.hi {
+                // Level: a circle; the cubic drops to a quadratic with finite roots.
+                (t_min, best)
+            } else {
+                continue;
+            };
+            if !(lo < hi) {
+                continue;
+            }
+            // f(o.y + t·d.y) − (|o_h|² + 2t·o_h·d_h + t²·|d_h|²), highest power first.
+            let [a, b, c, _] = s.k;
+            let (y, v) = (o.y, d.y);
+            let poly = [
+                a * v * v * v,
+                3.0 * a * y * v * v + b * v * v - dh2,
+                3.0 * a * y * y * v + 2.0 * b * y * v + c * v - 2.0 * odh,
+                s.f(y) - oh2,
+            ];
+            let (lo, hi) = (lo.max(-1e30), hi.min(1e30));
+            let n = roots_in(&poly, lo, hi, &mut roots);
+            if let Some(&t) = roots[..n].iter().find(|&&t| t > t_min && t < best) {
+                best = t;
+            }
+        }
+        if !self.open && d.y != 0.0 {
+            for (h, r2) in [(self.bottom().lo, self.bottom().f(self.bottom().lo)), (self.top().hi, self.top().f(self.top().hi))] {
+                let t = (h - o.y) / d.y;
+                if t > t_min && t < best {
+                    let p = o + t * d;
+                    if p.x * p.x + p.z * p.z <= r2 {
+                        best = t;
+                    }
+                }
+            }
+        }
+        (best < t_max).then_some(best)
+    }
+
+    /// The segment holding height `y`, clamped to the ends.
+    fn segment_at(&self, y: f64) -> &Segment {
+        let i = self.segments.partition_point(|s| s.hi < y).min(self.segments.len() - 1);
+        &self.segments[i]
+    }
+
+    fn normal_object(&self, q: DVec3) -> DVec3 {
+        let s = self.segment_at(q.y);
+        let w2 = q.x * q.x + q.z * q.z;
+        let side = DVec3::new(2.0 * q.x, -s.slope(q.y), 2.0 * q.z);
+        if self.open {
+            return side;
+        }
+        // The nearer of the side (its residual over the gradient's length) and a cap.
+        let to_side = (w2 - s.f(q.y)).abs() / side.length().max(1e-300);
+        let (bottom, top) = ((q.y - self.bottom().lo).abs(), (q.y - self.top().hi).abs());
+        if bottom.min(top) < to_side {
+            return if bottom < top { -DVec3::Y } else { DVec3::Y };
+        }
+        side
+    }
+
+    fn inside_object(&self, q: DVec3) -> bool {
+        if !(q.y > self.bottom().lo && q.y < self.top().hi) {
+            return false;
+        }
+        q.x * q.x + q.z * q.z < self.segment_at(q.y).f(q.y)
+    }
+}
+
+impl Shape for Sor {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let q = p.transform_point(&self.frame.object_from_render);
+        L::mask_from_fn(|i| self.inside_object(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i))))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+
+    /// Radius 1 from height 0 to 2 with straight ends: a cylinder (slopes 0 everywhere).
+    fn can(xf: DAffine3, open: bool) -> Sor {
+        let p = |r: f64, y: f64| DVec2::new(r, y);
+        Sor::new(xf, &[p(1.0, -1.0), p(1.0, 0.0), p(1.0, 2.0), p(1.0, 3.0)], open)
+    }
+
+    #[test]
+    fn segments_pass_through_their_points_with_the_documented_slopes() {
+        let p = [DVec2::new(0.2, -0.5), DVec2::new(0.5, 0.0), DVec2::new(1.0, 1.0), DVec2::new(0.3, 2.0), DVec2::new(0.8, 2.5)];
+        let segs = segments(&p);
+        assert_eq!(segs.len(), 2);
+        for (j, s) in segs.iter().enumerate() {
+            let j = j + 1;
+            assert!((s.f(p[j].y) - p[j].x * p[j].x).abs() < 1e-12);
+            assert!((s.f(p[j + 1].y) - p[j + 1].x * p[j + 1].x).abs() < 1e-12);
+            let want = 2.0 * p[j].x * (p[j + 1].x - p[j - 1].x) / (p[j + 1].y - p[j - 1].y);
+            assert!((s.slope(p[j].y) - want).abs() < 1e-12, "{j}");
+        }
+        assert!(check_points(&p).is_ok());
+        assert!(check_points(&p[..3]).is_err());
+        assert!(check_points(&[p[0], p[2], p[1], p[3]]).is_err());
+        // Level end points are allowed (the documentation's vase), a level segment is not.
+        let level = |a: f64, b: f64, c: f64, d: f64| [DVec2::new(0.1, a), DVec2::new(0.2, b), DVec2::new(0.3, c), DVec2::new(0.1, d)];
+        assert!(check_points(&level(0.0, 0.0, 1.0, 1.0)).is_ok());
+        assert!(check_points(&level(0.0, 0.5, 0.5, 1.0)).is_err());
+        assert!(check_points(&level(1.0, 0.0, 1.0, 2.0)).is_err());
+    }
+
+    #[test]
+    fn walls_caps_level_rays_and_extremes() {
+        let l = can(DAffine3::IDENTITY, false);
+        let hit = |l: &Sor, o: Vec3, d: Vec3| l.intersect(&Ray::new(o, d.normalize()), 0.0, f32::INFINITY);
+        assert!((hit(&l, Vec3::new(-5.0, 1.0, 0.0), Vec3::X).expect("level") - 4.0).abs() < 1e-5);
+        assert!((l.normal_at(Vec3::new(-1.0, 1.0, 0.0)) - -Vec3::X).length() < 1e-5);
+        let t = hit(&l, Vec3::new(0.0, 2.5, -2.0), Vec3::new(0.0, -1.0, 1.0)).expect("slant");
+        assert!((t - 2f32.sqrt()).abs() < 1e-4, "past the cap to the wall: {t}");
+        assert!((hit(&l, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y).expect("axis") - 3.0).abs() < 1e-5);
+        assert!((l.normal_at(Vec3::new(0.3, 2.0, 0.0)) - Vec3::Y).length() < 1e-5);
+        let steep = Vec3::new(0.0, -1.0, 0.5);
+        let t = hit(&l, Vec3::new(0.0, 2.5, 0.0), steep).expect("cap");
+        assert!((t - 0.5 * 1.25f32.sqrt()).abs() < 1e-4, "{t}");
+        // Open: down the axis goes through; the steep ray meets the inner wall.
+        let open = can(DAffine3::IDENTITY, true);
+        assert_eq!(hit(&open, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y), None);
+        let t = hit(&open, Vec3::new(0.0, 2.5, 0.0), steep).expect("inner wall");
+        assert!((t - 2.0 * 1.25f32.sqrt()).abs() < 1e-4, "{t}");
+        assert!(l.inside(V3::from_vec3(Vec3::new(0.5, 1.0, 0.2))) && !l.inside(V3::from_vec3(Vec3::new(0.5, 2.5, 0.0))));
+        for (s, at) in [(1e-4, 0.0), (1e5, 0.0), (1.0, 1e6)] {
+            let xf = DAffine3::from_translation(DVec3::splat(at)) * DAffine3::from_scale(DVec3::splat(s));
+            let l = can(xf, false);
+            let o = Vec3::new(-5.0, 1.0, 0.0) * s as f32 + Vec3::splat(at as f32);
+            let t = l.intersect(&Ray::new(o, Vec3::X), 0.0, f32::INFINITY).expect("far");
+            let want = 4.0 * s as f32;
+            assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
+        }
+    }
+}

@@ -57,7 +57,7 @@ pub fn check_points(points: &[DVec2]) -> Result<(), String> {
         if i == 0 || i == last {
             w[1].y < w[0].y
         } else {
-            !(w[1].y > w[0].y)
+            w[1].y <= w[0].y || w[1].y.is_nan()
         }
     }) {
         return Err(format!(
@@ -102,8 +102,9 @@ fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
         b.swap(c, p);
         for r in c + 1..4 {
             let f = m[r][c] / m[c][c];
-            for k in c..4 {
-                m[r][k] -= f * m[c][k];
+            let pivot = m[c];
+            for (x, p) in m[r][c..].iter_mut().zip(&pivot[c..]) {
+                *x -= f * p;
             }
             b[r] -= f * b[c];
         }
@@ -175,7 +176,7 @@ impl Sor {
             } else {
                 continue;
             };
-            if !(lo < hi) {
+            if lo >= hi || lo.is_nan() || hi.is_nan() {
                 continue;
             }
             // f(o.y + t·d.y) − (|o_h|² + 2t·o_h·d_h + t²·|d_h|²), highest power first.

@@ -708,7 +708,9 @@ fn inside_agrees_with_crossing_parity() {
         // An open cone is a solid with holes in its surface: no parity to count.
         if matches!(
             leaf.shape,
-            ShapeDesc::Cone { open: true, .. } | ShapeDesc::Prism { open: true, .. } | ShapeDesc::Sor { open: true, .. }
+            ShapeDesc::Cone { open: true, .. }
+                | ShapeDesc::Prism { open: true, .. }
+                | ShapeDesc::Sor { open: true, .. }
         ) {
             continue;
         }

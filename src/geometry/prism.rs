@@ -247,8 +247,8 @@ impl Shape for Prism {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::MISS;
     use crate::geometry::ray::Ray;
+    use crate::geometry::ray::MISS;
     use crate::geometry::spline::{closed_pieces, SplineKind};
     use crate::lanes::F8;
 

@@ -195,7 +195,9 @@ impl Sor {
             }
         }
         if !self.open && d.y != 0.0 {
-            for (h, r2) in [(self.bottom().lo, self.bottom().f(self.bottom().lo)), (self.top().hi, self.top().f(self.top().hi))] {
+            for (h, r2) in
+                [(self.bottom().lo, self.bottom().f(self.bottom().lo)), (self.top().hi, self.top().f(self.top().hi))]
+            {
                 let t = (h - o.y) / d.y;
                 if t > t_min && t < best {
                     let p = o + t * d;
@@ -267,7 +269,13 @@ mod tests {
 
     #[test]
     fn segments_pass_through_their_points_with_the_documented_slopes() {
-        let p = [DVec2::new(0.2, -0.5), DVec2::new(0.5, 0.0), DVec2::new(1.0, 1.0), DVec2::new(0.3, 2.0), DVec2::new(0.8, 2.5)];
+        let p = [
+            DVec2::new(0.2, -0.5),
+            DVec2::new(0.5, 0.0),
+            DVec2::new(1.0, 1.0),
+            DVec2::new(0.3, 2.0),
+            DVec2::new(0.8, 2.5),
+        ];
         let segs = segments(&p);
         assert_eq!(segs.len(), 2);
         for (j, s) in segs.iter().enumerate() {
@@ -281,7 +289,9 @@ mod tests {
         assert!(check_points(&p[..3]).is_err());
         assert!(check_points(&[p[0], p[2], p[1], p[3]]).is_err());
         // Level end points are allowed (the documentation's vase), a level segment is not.
-        let level = |a: f64, b: f64, c: f64, d: f64| [DVec2::new(0.1, a), DVec2::new(0.2, b), DVec2::new(0.3, c), DVec2::new(0.1, d)];
+        let level = |a: f64, b: f64, c: f64, d: f64| {
+            [DVec2::new(0.1, a), DVec2::new(0.2, b), DVec2::new(0.3, c), DVec2::new(0.1, d)]
+        };
         assert!(check_points(&level(0.0, 0.0, 1.0, 1.0)).is_ok());
         assert!(check_points(&level(0.0, 0.5, 0.5, 1.0)).is_err());
         assert!(check_points(&level(1.0, 0.0, 1.0, 2.0)).is_err());
@@ -305,7 +315,9 @@ mod tests {
         assert_eq!(hit(&open, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y), None);
         let t = hit(&open, Vec3::new(0.0, 2.5, 0.0), steep).expect("inner wall");
         assert!((t - 2.0 * 1.25f32.sqrt()).abs() < 1e-4, "{t}");
-        assert!(l.inside(V3::from_vec3(Vec3::new(0.5, 1.0, 0.2))) && !l.inside(V3::from_vec3(Vec3::new(0.5, 2.5, 0.0))));
+        assert!(
+            l.inside(V3::from_vec3(Vec3::new(0.5, 1.0, 0.2))) && !l.inside(V3::from_vec3(Vec3::new(0.5, 2.5, 0.0)))
+        );
         for (s, at) in [(1e-4, 0.0), (1e5, 0.0), (1.0, 1e6)] {
             let xf = DAffine3::from_translation(DVec3::splat(at)) * DAffine3::from_scale(DVec3::splat(s));
             let l = can(xf, false);

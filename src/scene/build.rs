@@ -39,10 +39,10 @@ use crate::geometry::spline::Piece;
 use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
-use crate::scene::place::{RenderFrame, RenderShape};
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
 use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc};
 use crate::scene::material::Material;
+use crate::scene::place::{RenderFrame, RenderShape};
 use crate::shading::pattern::Rgbft;
 
 /// The kinds of shape, in the order the statistics report them.

@@ -311,7 +311,6 @@ fn perpendiculars(w: DVec3) -> (DVec3, DVec3) {
     (u, w.cross(u))
 }
 
-
 /// Whether `m`'s linear part is a rotation times a uniform scale (a sphere stays a sphere).
 fn uniform_scale(m: &DMat4) -> Option<f64> {
     let c = [m.x_axis.truncate(), m.y_axis.truncate(), m.z_axis.truncate()];

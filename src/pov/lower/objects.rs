@@ -146,7 +146,8 @@ impl Lowerer<'_> {
                 other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
             },
             Modifier::Sturm(span) => match &mut obj.shape {
-                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } | ShapeDesc::Sor { .. } => {}
+                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } | ShapeDesc::Sor { .. } => {
+                }
                 ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
                 other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
             },

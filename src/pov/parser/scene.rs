@@ -372,7 +372,11 @@ impl Parser<'_, '_> {
                         Some(s)
                             if !matches!(
                                 s,
-                                ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe | ShapeKind::Sor
+                                ShapeKind::Polygon
+                                    | ShapeKind::Prism
+                                    | ShapeKind::Text
+                                    | ShapeKind::Lathe
+                                    | ShapeKind::Sor
                             ) =>
                         {
                             let names = shape_args(s);
@@ -459,7 +463,8 @@ impl Parser<'_, '_> {
                 }
             }
         }
-        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe | ShapeKind::Sor) {
+        if matches!(shape, ShapeKind::Polygon | ShapeKind::Prism | ShapeKind::Text | ShapeKind::Lathe | ShapeKind::Sor)
+        {
             if !self.starts_expr(MODIFIERS) {
                 let what = match shape {
                     ShapeKind::Polygon => "polygon needs the number of points, then the points",

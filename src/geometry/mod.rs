@@ -93,6 +93,13 @@ pub fn normal_lanes_f64<L: Lane>(
     n.mat3_mul(&frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
 }
 
+/// `inside` of a shape that answers per point in f64 in its object space (`frame`).
+#[inline(always)]
+pub fn inside_lanes_f64<L: Lane>(frame: &cuboid::BoxFrame, p: V3<L>, inside: impl Fn(glam::DVec3) -> bool) -> L::Mask {
+    let q = p.transform_point(&frame.object_from_render);
+    L::mask_from_fn(|i| inside(glam::DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i))))
+}
+
 /// An f64 affine map as f32: the cast every shape's frame goes through once, after composing
 /// in f64.
 pub fn affine_f32(a: &glam::DAffine3) -> glam::Affine3A {

@@ -239,8 +239,7 @@ impl Shape for Prism {
     }
 
     fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        let q = p.transform_point(&self.frame.object_from_render);
-        L::mask_from_fn(|i| self.inside_point(DVec3::new(q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i))))
+        super::inside_lanes_f64(&self.frame, p, |q| self.inside_point(q))
     }
 }
 

@@ -9,7 +9,7 @@ use strahl::pov::{
     load_scene, load_scene_with_messages, load_scene_with_options, load_scene_with_warnings, IncludePath, Message,
     ParseOptions,
 };
-use strahl::scene::desc::{PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
+use strahl::scene::desc::{BlobShape, PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, union, merge, intersection, difference, \
          object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -1120,6 +1120,44 @@ fn sors_load_and_bad_ones_are_located_errors() {
         ("sor { 4, <0, 0>, <-1, 1>, <1, 2>, <0, 3> }", (1, 7), "sor: point 2 has a negative radius -1"),
     ] {
         let (l, c, m) = err("bad_sor", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Blobs: components in both syntaxes with their own transforms; bad numbers and unknown
+/// items are located errors.
+#[test]
+fn blobs_load_and_bad_ones_are_located_errors() {
+    let s = load_text(
+        "blobs",
+        "blob { threshold 0.5 sphere { <0, 0, 0>, 1, strength 2 scale 2 } cylinder { 0, x, 0.5, -1 } \
+         component 1, 0.5, <1, 0, 0> hierarchy off sturm pigment { rgb 1 } translate y }",
+    )
+    .unwrap();
+    let ShapeDesc::Blob { components, threshold } = &s.objects[0].shape else { panic!("{:?}", s.objects[0].shape) };
+    assert_eq!(*threshold, 0.5);
+    assert_eq!(components.len(), 3);
+    assert_eq!((components[0].strength, components[0].radius), (2.0, 1.0));
+    assert!(!components[0].transform.is_identity() && components[1].transform.is_identity());
+    assert!(matches!(components[1].shape, BlobShape::Cylinder { .. }) && components[1].strength == -1.0);
+    assert!(matches!(components[2].shape, BlobShape::Sphere { center } if center.x == 1.0));
+    for (text, at, message) in [
+        ("blob { }", (1, 1), "blob needs at least one component (sphere, cylinder or component)"),
+        ("blob { threshold 0 sphere { 0, 1, 1 } }", (1, 18), "blob threshold must be positive, found 0"),
+        ("blob { sphere { 0, -1, 1 } }", (1, 20), "blob component radius must be positive, found -1"),
+        ("blob { sphere { 0, 1 } }", (1, 22), "a blob's sphere needs centre, radius and strength, found `}`"),
+        (
+            "blob { cylinder { x, x, 1, 1 } }",
+            (1, 8),
+            "blob cylinder component has the same point at both ends",
+        ),
+        (
+            "blob { sphere { 0, 1, 1 open } }",
+            (1, 25),
+            "`open` is not supported in a blob's sphere component (supported: rotate, scale, translate, pigment, normal, finish, texture)",
+        ),
+    ] {
+        let (l, c, m) = err("bad_blob", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

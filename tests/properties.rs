@@ -19,9 +19,9 @@ use strahl::render::stats::RenderStats;
 use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 use strahl::scene::desc::{
-    CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc, NormalPattern, ObjectDesc,
-    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, SplineKind, TextureDesc, Transform,
-    Turbulence,
+    BlobComponent, BlobShape, CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc,
+    NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, SplineKind,
+    TextureDesc, Transform, Turbulence,
 };
 use strahl::scene::print::to_pov;
 
@@ -136,7 +136,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(14) {
+    match r.pick(15) {
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -190,6 +190,7 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
         10 => ShapeDesc::Superellipsoid { e: r.f(0.1, 2.5), n: r.f(0.1, 2.5) },
         11 => random_prism(r),
         12 => random_sor(r),
+        13 => random_blob(r),
         _ => {
             let (c, n) = (r.v(-3.0, 3.0), r.unit());
             let u = n.any_orthonormal_vector();
@@ -204,6 +205,35 @@ fn random_shape(r: &mut Rng) -> ShapeDesc {
             ShapeDesc::Polygon { points }
         }
     }
+}
+
+/// A blob of 1 to 5 sphere and cylinder components near a centre, some negative, some under a
+/// scale and rotation of their own.
+fn random_blob(r: &mut Rng) -> ShapeDesc {
+    let c = r.v(-3.0, 3.0);
+    let components = (0..1 + r.pick(5))
+        .map(|i| {
+            let at = c + r.v(-0.8, 0.8);
+            let shape = if r.pick(3) == 0 {
+                BlobShape::Cylinder { base: at, cap: at + r.v(-1.0, 1.0) }
+            } else {
+                BlobShape::Sphere { center: at }
+            };
+            let transform = if r.pick(3) == 0 {
+                let m = DMat4::from_translation(at)
+                    * DMat4::from_rotation_y(r.f(0.0, 3.0))
+                    * DMat4::from_scale(DVec3::new(r.f(0.5, 1.5), r.f(0.5, 1.5), r.f(0.5, 1.5)))
+                    * DMat4::from_translation(-at);
+                Transform { matrix: m, inverse: m.inverse() }
+            } else {
+                Transform::default()
+            };
+            // The first is positive, so the blob is never empty.
+            let strength = if i > 0 && r.pick(4) == 0 { -r.f(0.5, 2.0) } else { r.f(0.5, 2.0) };
+            BlobComponent { shape, radius: r.f(0.4, 1.5), strength, transform }
+        })
+        .collect();
+    ShapeDesc::Blob { components, threshold: r.f(0.2, 0.8) }
 }
 
 /// A surface of revolution through 4 to 7 points at rising heights, sometimes open.
@@ -470,6 +500,23 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (ShapeDesc::Lathe { spline: s1, points: p1 }, ShapeDesc::Lathe { spline: s2, points: p2 }) => {
             s1 == s2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
         }
+        (ShapeDesc::Blob { components: c1, threshold: t1 }, ShapeDesc::Blob { components: c2, threshold: t2 }) => {
+            close(*t1, *t2)
+                && c1.len() == c2.len()
+                && c1.iter().zip(c2).all(|(a, b)| {
+                    let shapes = match (a.shape, b.shape) {
+                        (BlobShape::Sphere { center: p }, BlobShape::Sphere { center: q }) => close3(p, q),
+                        (BlobShape::Cylinder { base: p, cap: q }, BlobShape::Cylinder { base: u, cap: v }) => {
+                            close3(p, u) && close3(q, v)
+                        }
+                        _ => false,
+                    };
+                    shapes
+                        && close(a.radius, b.radius)
+                        && close(a.strength, b.strength)
+                        && a.transform.matrix.abs_diff_eq(b.transform.matrix, 1e-6)
+                })
+        }
         (ShapeDesc::Sor { points: p1, open: o1 }, ShapeDesc::Sor { points: p2, open: o2 }) => {
             o1 == o2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
         }
@@ -703,6 +750,8 @@ fn inside_agrees_with_crossing_parity() {
     let (mut checked, mut inside_count) = (0, 0);
     for _ in 0..400 {
         let leaf = csg_leaf(r);
+        let leaf_shape = leaf.shape.clone();
+        let leaf_transform = leaf.transform;
         let flat =
             matches!(leaf.shape, ShapeDesc::Triangle { .. } | ShapeDesc::Polygon { .. } | ShapeDesc::Disc { .. });
         // An open cone is a solid with holes in its surface: no parity to count.
@@ -751,7 +800,15 @@ fn inside_agrees_with_crossing_parity() {
                 assert!(!inside, "a flat shape has no inside");
                 continue;
             }
-            assert_eq!(inside, crossings.len() % 2 == 1, "{:?} at {origin} along {}: {crossings:?}", p.kind, ray.dir);
+            assert_eq!(
+                inside,
+                crossings.len() % 2 == 1,
+                "{:?} at {origin} along {}: {crossings:?} {:?} {:?}",
+                p.kind,
+                ray.dir,
+                leaf_shape,
+                leaf_transform
+            );
             checked += 1;
             inside_count += inside as usize;
         }
@@ -818,7 +875,7 @@ fn csg_surfaces_match_a_crossing_reference() {
     use strahl::scene::csg::CsgTarget;
     let r = &mut Rng(0xC5C);
     let (mut compared, mut hits) = (0, 0);
-    for _ in 0..300 {
+    for _ in 0..400 {
         let scene = csg_scene(csg_tree(r, 3));
         let Some(&node) = scene.prims.first() else { continue };
         if node.kind != strahl::scene::build::ShapeKind::Csg {
@@ -865,8 +922,15 @@ fn csg_surfaces_match_a_crossing_reference() {
                     );
                     assert!(leaf as usize >= scene.first_leaf as usize, "the hit names a leaf");
                     // Relative too: a plane met at a grazing angle far away is ill-conditioned.
+                    // The solids lie within 10 of the origin, so a hit far beyond is such a
+                    // plane, whose f32 `t` is off by f32's epsilon over the cosine of the angle:
+                    // no bound of rounding holds there.
                     let tol = 1e-3 * scale as f64 + 1e-5 * e as f64;
-                    assert!((t64 - e as f64).abs() <= tol, "f64 {t64} against {e}");
+                    assert!(
+                        e > 100.0 * scale || (t64 - e as f64).abs() <= tol,
+                        "f64 {t64} against {e}: {:?}",
+                        scene.prims[leaf as usize]
+                    );
                     hits += 1;
                 }
                 None => assert_eq!(t, MISS, "node hit {t} where the reference has none: {crossings:?}"),

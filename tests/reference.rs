@@ -130,6 +130,13 @@ fn sors_match_povray() {
     check_psnr("sors", &scene("sors"), 35.0);
 }
 
+/// Sphere and cylinder components, negative strength, a scaled component, the old
+/// `component` syntax, and a blob in an intersection.
+#[test]
+fn blobs_match_povray() {
+    check_psnr("blobs", &scene("blobs"), 35.0);
+}
+
 #[test]
 fn prisms_match_povray() {
     check_psnr("prisms", &scene("prisms"), 35.0);

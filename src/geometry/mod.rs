@@ -6,6 +6,7 @@
 //! geometric normal, computed afterwards, only for the winning hit. The lane arithmetic is
 //! `crate::lanes`; what every test shares (rays, `MISS`, root picking, offsets) is `ray`.
 
+pub mod blob;
 pub mod cone;
 pub mod cuboid;
 pub mod disc;

@@ -337,6 +337,33 @@ pub enum ObjectKind {
     /// `union`, `merge`, `intersection` or `difference { ... }`: child objects and the
     /// directives that make them.
     Csg { op: CsgOp, children: Vec<Stmt> },
+    /// `blob { threshold T  sphere { .. }  cylinder { .. }  component S, R, C ... }`.
+    Blob(Blob),
+}
+
+/// A blob's own items; the object modifiers follow them as for any shape.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Blob {
+    pub threshold: Option<Expr>,
+    pub components: Vec<BlobComponent>,
+}
+
+/// `sphere { C, R, [strength] S  modifiers }`, `cylinder { A, B, R, [strength] S  modifiers }`
+/// or the old `component S, R, C` inside a blob.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlobComponent {
+    pub shape: BlobShape,
+    pub radius: Expr,
+    pub strength: Expr,
+    /// Transforms, and textures (which strahl does not blend per component).
+    pub modifiers: Vec<Modifier>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum BlobShape {
+    Sphere { center: Expr },
+    Cylinder { base: Expr, cap: Expr },
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -24,6 +24,7 @@ use crate::accel::aabb::Aabb;
 use crate::accel::Accel;
 pub use crate::accel::AccelKind;
 use crate::geometry::affine_f32;
+use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
@@ -69,11 +70,13 @@ pub enum ShapeKind {
     Prism = 12,
     Lathe = 13,
     Sor = 14,
+    Blob = 15,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 14] = [
+    pub const ALL: [ShapeKind; 15] = [
+        ShapeKind::Blob,
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
@@ -90,7 +93,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 15;
+    pub const COUNT: usize = 16;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -108,6 +111,7 @@ impl ShapeKind {
             ShapeKind::Prism => "Prism",
             ShapeKind::Lathe => "Lathe",
             ShapeKind::Sor => "Sor",
+            ShapeKind::Blob => "Blob",
         }
     }
 }
@@ -159,6 +163,7 @@ pub struct Scene {
     pub prisms: Vec<Prism>,
     pub lathes: Vec<Lathe>,
     pub sors: Vec<Sor>,
+    pub blobs: Vec<Blob>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -209,6 +214,7 @@ impl Scene {
             prisms: Vec::new(),
             lathes: Vec::new(),
             sors: Vec::new(),
+            blobs: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -444,6 +450,10 @@ impl Scene {
                 self.sors.push(Sor::new(render_from_object, &points, open));
                 (ShapeKind::Sor, at(self.sors.len()))
             }
+            RenderShape::Blob { render_from_object, components, threshold } => {
+                self.blobs.push(Blob::new(render_from_object, &components, threshold));
+                (ShapeKind::Blob, at(self.blobs.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -503,6 +513,7 @@ impl Scene {
             ShapeKind::Prism => self.prisms[i].bounds(),
             ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Sor => self.sors[i].bounds(),
+            ShapeKind::Blob => self.blobs[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

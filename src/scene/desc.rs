@@ -302,6 +302,11 @@ pub enum ShapeDesc {
         points: Vec<DVec2>,
         open: bool,
     },
+    /// `blob`: the surface where the components' fields sum to `threshold`.
+    Blob {
+        components: Vec<BlobComponent>,
+        threshold: f64,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -370,6 +375,28 @@ pub struct TextGlyph {
     pub quads: Vec<[DVec2; 3]>,
 }
 
+/// One component of a `blob`: `strength · (1 − d²/radius²)²` within `radius` of a point or a
+/// segment, in its own space under `transform` (within the blob's space).
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlobComponent {
+    pub shape: BlobShape,
+    pub radius: f64,
+    pub strength: f64,
+    pub transform: Transform,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum BlobShape {
+    Sphere {
+        center: DVec3,
+    },
+    /// Hemispheres close both ends.
+    Cylinder {
+        base: DVec3,
+        cap: DVec3,
+    },
+}
+
 impl ShapeDesc {
     /// The keyword POV-Ray uses for this shape, for statistics and messages.
     pub fn keyword(&self) -> &'static str {
@@ -390,6 +417,7 @@ impl ShapeDesc {
             ShapeDesc::Text { .. } => "text",
             ShapeDesc::Lathe { .. } => "lathe",
             ShapeDesc::Sor { .. } => "sor",
+            ShapeDesc::Blob { .. } => "blob",
         }
     }
 }

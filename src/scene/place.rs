@@ -4,8 +4,9 @@
 
 use glam::{DAffine3, DMat4, DVec3};
 
+use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
-use crate::scene::desc::{SceneDesc, ShapeDesc, TextGlyph, Transform};
+use crate::scene::desc::{BlobComponent, BlobShape, SceneDesc, ShapeDesc, TextGlyph, Transform};
 
 /// Where render space sits in world space: `render = (world − origin) / unit`.
 ///
@@ -133,6 +134,12 @@ pub(crate) enum RenderShape {
         points: Vec<glam::DVec2>,
         open: bool,
     },
+    /// Components in the blob's object space.
+    Blob {
+        render_from_object: DAffine3,
+        components: Vec<blob::Component>,
+        threshold: f64,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -226,6 +233,11 @@ impl RenderFrame {
             ShapeDesc::Sor { points, open } => {
                 RenderShape::Sor { render_from_object: render_from_object(), points: points.clone(), open: *open }
             }
+            ShapeDesc::Blob { components, threshold } => RenderShape::Blob {
+                render_from_object: render_from_object(),
+                components: components.iter().map(blob_component).collect(),
+                threshold: *threshold,
+            },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
                 // along z: swap y and z.
@@ -330,4 +342,14 @@ fn is_axis_aligned(m: &DMat4) -> bool {
         && m.y_axis.z == 0.0
         && m.z_axis.x == 0.0
         && m.z_axis.y == 0.0
+}
+
+/// A blob component for the geometry: its form and strength, and its own transform as an
+/// affine map into the blob's space.
+fn blob_component(c: &BlobComponent) -> blob::Component {
+    let shape = match c.shape {
+        BlobShape::Sphere { center } => blob::ComponentShape::Sphere { center, radius: c.radius },
+        BlobShape::Cylinder { base, cap } => blob::ComponentShape::Cylinder { base, cap, radius: c.radius },
+    };
+    blob::Component { shape, strength: c.strength, blob_from_component: DAffine3::from_mat4(c.transform.matrix) }
 }

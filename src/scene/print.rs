@@ -14,8 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc,
-    ShapeDesc, Transform, Turbulence,
+    BlobShape, Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm,
+    SceneDesc, ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -128,6 +128,20 @@ fn object(s: &mut String, o: &ObjectDesc) {
         ShapeDesc::Sor { points, open } => {
             let open = if *open { " open" } else { "" };
             write!(s, "sor {{ {}, {}{open}", points.len(), vec2s(points))
+        }
+        ShapeDesc::Blob { components, threshold } => {
+            let _ = write!(s, "blob {{ threshold {}", num(*threshold));
+            for c in components {
+                let (r, k) = (num(c.radius), num(c.strength));
+                let _ = match c.shape {
+                    BlobShape::Sphere { center } => write!(s, "\n  sphere {{ {}, {r}, strength {k}", vec(center)),
+                    BlobShape::Cylinder { base, cap } => {
+                        write!(s, "\n  cylinder {{ {}, {}, {r}, strength {k}", vec(base), vec(cap))
+                    }
+                };
+                let _ = write!(s, "{} }}", modifiers(&c.transform.matrix));
+            }
+            Ok(())
         }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");

@@ -3,6 +3,7 @@
 //! composes transforms the way POV-Ray does. Split by topic: `eval` (expressions, colours,
 //! transforms), `camera`, `textures`, `objects`.
 
+mod blob;
 mod camera;
 mod eval;
 mod fileio;

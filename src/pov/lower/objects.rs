@@ -19,10 +19,11 @@ impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
         let shape = match &o.kind {
             ObjectKind::Shape(kind, args) => Some(self.shape(*kind, args, o.span)?),
+            ObjectKind::Blob(blob) => Some(self.blob(blob, o.span)?),
             _ => None,
         };
         let mut group = match &o.kind {
-            ObjectKind::Shape(..) => Group {
+            ObjectKind::Shape(..) | ObjectKind::Blob(_) => Group {
                 parts: vec![Part::leaf(ObjectDesc {
                     shape: shape.expect("a shape was lowered above"),
                     transform: Transform::default(),
@@ -146,8 +147,11 @@ impl Lowerer<'_> {
                 other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
             },
             Modifier::Sturm(span) => match &mut obj.shape {
-                ShapeDesc::Torus { .. } | ShapeDesc::Prism { .. } | ShapeDesc::Lathe { .. } | ShapeDesc::Sor { .. } => {
-                }
+                ShapeDesc::Torus { .. }
+                | ShapeDesc::Prism { .. }
+                | ShapeDesc::Lathe { .. }
+                | ShapeDesc::Sor { .. }
+                | ShapeDesc::Blob { .. } => {}
                 ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
                 other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
             },

@@ -3,6 +3,7 @@
 
 use std::rc::Rc;
 
+use super::blob::BLOB_ITEMS;
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, Clip, CsgOp, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
@@ -39,10 +40,11 @@ const TOP_LEVEL: &[&str] = &[
     "text",
     "lathe",
     "sor",
+    "blob",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, blob, union, merge, intersection, difference, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -71,7 +73,7 @@ pub const MODIFIERS: &[&str] = &[
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || word == "object" || csg_op(word).is_some()
+    shape_kind(word).is_some() || word == "object" || word == "blob" || csg_op(word).is_some()
 }
 
 fn csg_op(word: &str) -> Option<CsgOp> {
@@ -302,7 +304,8 @@ impl Parser<'_, '_> {
         let word = word.to_string();
         self.bump();
         self.open_block(&word, kw)?;
-        let kind = match shape_kind(&word) {
+        let mut kind = match shape_kind(&word) {
+            None if word == "blob" => ObjectKind::Blob(self.blob_items()?),
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
@@ -327,6 +330,12 @@ impl Parser<'_, '_> {
         let mut modifiers = Vec::new();
         while !self.at_block_end() {
             let m = match self.peek_ident().as_deref() {
+                Some(w) if BLOB_ITEMS.contains(&w) && matches!(kind, ObjectKind::Blob(_)) => {
+                    if let ObjectKind::Blob(blob) = &mut kind {
+                        self.blob_item(blob)?;
+                    }
+                    continue;
+                }
                 Some("pigment") => Modifier::Pigment(self.pigment()?),
                 Some("normal") => Modifier::Normal(self.normal()?),
                 Some("finish") => Modifier::Finish(self.finish()?),
@@ -395,21 +404,25 @@ impl Parser<'_, '_> {
                                 Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism | ShapeKind::Sor)
                             )
                         }
-                        "sturm" => matches!(
-                            shape_kind(&word),
-                            Some(
-                                ShapeKind::Torus
-                                    | ShapeKind::Cubic
-                                    | ShapeKind::Quartic
-                                    | ShapeKind::Poly
-                                    | ShapeKind::Prism
-                                    | ShapeKind::Lathe
-                                    | ShapeKind::Sor
-                            )
-                        ),
+                        "sturm" => {
+                            word == "blob"
+                                || matches!(
+                                    shape_kind(&word),
+                                    Some(
+                                        ShapeKind::Torus
+                                            | ShapeKind::Cubic
+                                            | ShapeKind::Quartic
+                                            | ShapeKind::Poly
+                                            | ShapeKind::Prism
+                                            | ShapeKind::Lathe
+                                            | ShapeKind::Sor
+                                    )
+                                )
+                        }
                         _ => true,
                     };
-                    let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();
+                    let items: &[&str] = if word == "blob" { BLOB_ITEMS } else { &[] };
+                    let allowed: Vec<&str> = items.iter().chain(MODIFIERS).copied().filter(takes).collect();
                     return Err(self.unknown_in(&word, &allowed));
                 }
             };

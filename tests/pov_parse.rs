@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, union, merge, intersection, difference, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, union, merge, intersection, difference, \
          object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
@@ -1158,6 +1158,51 @@ fn blobs_load_and_bad_ones_are_located_errors() {
         ),
     ] {
         let (l, c, m) = err("bad_blob", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+}
+
+/// Julia fractals: POV-Ray's defaults, items among the modifiers, and located errors for
+/// what POV-Ray refuses.
+#[test]
+fn julia_fractals_load_and_bad_ones_are_located_errors() {
+    use strahl::scene::desc::{ComplexFn, JuliaFunction};
+    let s = load_text("julia", "julia_fractal { <-0.083, 0, -0.83, -0.025> translate y precision 15 }").unwrap();
+    let ShapeDesc::Julia { param, function, max_iteration, precision, slice } = &s.objects[0].shape else {
+        panic!("{:?}", s.objects[0].shape)
+    };
+    assert_eq!((param.z, *function, *max_iteration, *precision), (-0.83, JuliaFunction::QuaternionSqr, 20, 15.0));
+    assert_eq!(*slice, (glam::DVec4::W, 0.0));
+    let s = load_text("julia", "julia_fractal { <0.2, 0.1, 0.59, -0.2> max_iteration 7 pwr(2, 0.5) hypercomplex }")
+        .unwrap();
+    assert!(matches!(
+        s.objects[0].shape,
+        ShapeDesc::Julia { function: JuliaFunction::Hypercomplex(ComplexFn::Pwr(x, y)), max_iteration: 7, .. } if x == 2.0 && y == 0.5
+    ));
+    for (text, at, message) in [
+        (
+            "julia_fractal { quaternion }",
+            (1, 17),
+            "julia_fractal needs its 4-D parameter <a, b, c, d> first, found `quaternion`",
+        ),
+        (
+            "julia_fractal { <1, 0, 0, 0> sin }",
+            (1, 30),
+            "julia_fractal: quaternions take only sqr and cube; add `hypercomplex` for this function",
+        ),
+        (
+            "julia_fractal { <1, 0, 0, 0> slice <0, 0, 1, 0>, 0 }",
+            (1, 36),
+            "julia_fractal slice: the normal's fourth component must not be 0",
+        ),
+        (
+            "julia_fractal { <1, 0, 0, 0> max_iteration 0 }",
+            (1, 44),
+            "julia_fractal max_iteration must be from 1 to 10000, found 0",
+        ),
+        ("julia_fractal { <1, 0, 0, 0, 1> }", (1, 17), "expected a 4-component vector, found 5 components"),
+    ] {
+        let (l, c, m) = err("bad_julia", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
 }

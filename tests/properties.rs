@@ -517,6 +517,13 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
                         && a.transform.matrix.abs_diff_eq(b.transform.matrix, 1e-6)
                 })
         }
+        (
+            ShapeDesc::Julia { param: p1, function: f1, max_iteration: m1, precision: q1, slice: s1 },
+            ShapeDesc::Julia { param: p2, function: f2, max_iteration: m2, precision: q2, slice: s2 },
+        ) => {
+            let close4 = |a: glam::DVec4, b: glam::DVec4| (0..4).all(|i| close(a[i], b[i]));
+            f1 == f2 && m1 == m2 && close(*q1, *q2) && close4(*p1, *p2) && close4(s1.0, s2.0) && close(s1.1, s2.1)
+        }
         (ShapeDesc::Sor { points: p1, open: o1 }, ShapeDesc::Sor { points: p2, open: o2 }) => {
             o1 == o2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
         }

@@ -10,6 +10,7 @@ pub mod blob;
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+pub mod julia;
 pub mod lathe;
 pub mod plane;
 pub mod poly;

@@ -339,6 +339,30 @@ pub enum ObjectKind {
     Csg { op: CsgOp, children: Vec<Stmt> },
     /// `blob { threshold T  sphere { .. }  cylinder { .. }  component S, R, C ... }`.
     Blob(Blob),
+    /// `julia_fractal { <p> items }`.
+    Julia(JuliaFractal),
+}
+
+/// A `julia_fractal`'s parameter and items as written; the object modifiers follow as for any
+/// shape.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JuliaFractal {
+    pub param: Expr,
+    pub items: Vec<JuliaItem>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum JuliaItem {
+    /// `quaternion` or `hypercomplex`.
+    Algebra(Rc<str>, Span),
+    /// `sqr`, `cube`, `exp`, ... (the keyword).
+    Function(Rc<str>, Span),
+    /// `pwr(x, y)`.
+    Pwr(Expr, Expr, Span),
+    MaxIteration(Expr),
+    Precision(Expr),
+    /// `slice <4-D normal>, distance`.
+    Slice(Expr, Expr),
 }
 
 /// A blob's own items; the object modifiers follow them as for any shape.

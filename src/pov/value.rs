@@ -247,6 +247,21 @@ impl Value {
         }
     }
 
+    /// A 4-D vector (julia_fractal's parameter and slice): floats promote to all four
+    /// components, shorter vectors are padded with zeros.
+    pub fn as_vec4(&self, span: Span) -> PResult<glam::DVec4> {
+        match self {
+            Value::Float(_) | Value::Vector(_) if self.width().is_some_and(|w| w <= 4) => {
+                let c = self.components(4);
+                Ok(glam::DVec4::new(c[0], c[1], c[2], c[3]))
+            }
+            Value::Vector(c) => {
+                Err(Diag::new(span, format!("expected a 4-component vector, found {} components", c.len())))
+            }
+            other => Err(other.wrong_kind(span, "a 4-D vector")),
+        }
+    }
+
     /// A colour: a float sets all five components, a vector sets r, g, b[, filter[, transmit]].
     pub fn as_color(&self, span: Span) -> PResult<Color> {
         match self {

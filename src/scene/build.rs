@@ -28,6 +28,7 @@ use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::julia::Julia;
 use crate::geometry::lathe::Lathe;
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
@@ -71,16 +72,18 @@ pub enum ShapeKind {
     Lathe = 13,
     Sor = 14,
     Blob = 15,
+    Julia = 20,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 15] = [
+    pub const ALL: [ShapeKind; 16] = [
         ShapeKind::Blob,
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
+        ShapeKind::Julia,
         ShapeKind::Lathe,
         ShapeKind::Plane,
         ShapeKind::Poly,
@@ -93,7 +96,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 16;
+    pub const COUNT: usize = 21;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -112,6 +115,7 @@ impl ShapeKind {
             ShapeKind::Lathe => "Lathe",
             ShapeKind::Sor => "Sor",
             ShapeKind::Blob => "Blob",
+            ShapeKind::Julia => "Julia Fractal",
         }
     }
 }
@@ -164,6 +168,7 @@ pub struct Scene {
     pub lathes: Vec<Lathe>,
     pub sors: Vec<Sor>,
     pub blobs: Vec<Blob>,
+    pub julias: Vec<Julia>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -215,6 +220,7 @@ impl Scene {
             lathes: Vec::new(),
             sors: Vec::new(),
             blobs: Vec::new(),
+            julias: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -454,6 +460,10 @@ impl Scene {
                 self.blobs.push(Blob::new(render_from_object, &components, threshold));
                 (ShapeKind::Blob, at(self.blobs.len()))
             }
+            RenderShape::Julia { render_from_object, param, function, max_iteration, precision, slice } => {
+                self.julias.push(Julia::new(render_from_object, param, function, max_iteration, precision, slice));
+                (ShapeKind::Julia, at(self.julias.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -514,6 +524,7 @@ impl Scene {
             ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Sor => self.sors[i].bounds(),
             ShapeKind::Blob => self.blobs[i].bounds(),
+            ShapeKind::Julia => self.julias[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

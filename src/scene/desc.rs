@@ -4,7 +4,9 @@
 //! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
 //! that `build` can fold them into render-ready f32 data relative to the camera.
 
-use glam::{DMat4, DVec2, DVec3};
+use glam::{DMat4, DVec2, DVec3, DVec4};
+
+pub use crate::geometry::julia::{ComplexFn, JuliaFunction};
 
 pub use crate::geometry::spline::SplineKind;
 
@@ -307,6 +309,15 @@ pub enum ShapeDesc {
         components: Vec<BlobComponent>,
         threshold: f64,
     },
+    /// `julia_fractal`: the slice `slice.0 · h = slice.1` of the 4-D set whose orbits under
+    /// `function` plus `param` stay bounded for `max_iteration` steps.
+    Julia {
+        param: DVec4,
+        function: JuliaFunction,
+        max_iteration: u32,
+        precision: f64,
+        slice: (DVec4, f64),
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -418,6 +429,7 @@ impl ShapeDesc {
             ShapeDesc::Lathe { .. } => "lathe",
             ShapeDesc::Sor { .. } => "sor",
             ShapeDesc::Blob { .. } => "blob",
+            ShapeDesc::Julia { .. } => "julia_fractal",
         }
     }
 }

@@ -134,6 +134,14 @@ pub(crate) enum RenderShape {
         points: Vec<glam::DVec2>,
         open: bool,
     },
+    Julia {
+        render_from_object: DAffine3,
+        param: glam::DVec4,
+        function: crate::geometry::julia::JuliaFunction,
+        max_iteration: u32,
+        precision: f64,
+        slice: (glam::DVec4, f64),
+    },
     /// Components in the blob's object space.
     Blob {
         render_from_object: DAffine3,
@@ -233,6 +241,14 @@ impl RenderFrame {
             ShapeDesc::Sor { points, open } => {
                 RenderShape::Sor { render_from_object: render_from_object(), points: points.clone(), open: *open }
             }
+            ShapeDesc::Julia { param, function, max_iteration, precision, slice } => RenderShape::Julia {
+                render_from_object: render_from_object(),
+                param: *param,
+                function: *function,
+                max_iteration: *max_iteration,
+                precision: *precision,
+                slice: *slice,
+            },
             ShapeDesc::Blob { components, threshold } => RenderShape::Blob {
                 render_from_object: render_from_object(),
                 components: components.iter().map(blob_component).collect(),

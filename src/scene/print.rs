@@ -14,8 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    BlobShape, Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm,
-    SceneDesc, ShapeDesc, Transform, Turbulence,
+    BlobShape, Color, ComplexFn, CsgOp, FinishDesc, JuliaFunction, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc,
+    PigmentPattern, PolyForm, SceneDesc, ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -128,6 +128,25 @@ fn object(s: &mut String, o: &ObjectDesc) {
         ShapeDesc::Sor { points, open } => {
             let open = if *open { " open" } else { "" };
             write!(s, "sor {{ {}, {}{open}", points.len(), vec2s(points))
+        }
+        ShapeDesc::Julia { param, function, max_iteration, precision, slice } => {
+            let v4 = |v: glam::DVec4| format!("<{}, {}, {}, {}>", num(v.x), num(v.y), num(v.z), num(v.w));
+            let f = match function {
+                JuliaFunction::QuaternionSqr => "quaternion sqr".to_string(),
+                JuliaFunction::QuaternionCube => "quaternion cube".to_string(),
+                JuliaFunction::Hypercomplex(ComplexFn::Pwr(x, y)) => {
+                    format!("hypercomplex pwr({}, {})", num(*x), num(*y))
+                }
+                JuliaFunction::Hypercomplex(g) => format!("hypercomplex {}", g.keyword().unwrap_or("sqr")),
+            };
+            write!(
+                s,
+                "julia_fractal {{ {} {f} max_iteration {max_iteration} precision {} slice {}, {}",
+                v4(*param),
+                num(*precision),
+                v4(slice.0),
+                num(slice.1)
+            )
         }
         ShapeDesc::Blob { components, threshold } => {
             let _ = write!(s, "blob {{ threshold {}", num(*threshold));

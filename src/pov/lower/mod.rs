@@ -8,6 +8,7 @@ mod camera;
 mod eval;
 mod fileio;
 mod functions;
+mod julia;
 mod objects;
 mod sweeps;
 mod text;

@@ -20,10 +20,11 @@ impl Lowerer<'_> {
         let shape = match &o.kind {
             ObjectKind::Shape(kind, args) => Some(self.shape(*kind, args, o.span)?),
             ObjectKind::Blob(blob) => Some(self.blob(blob, o.span)?),
+            ObjectKind::Julia(julia) => Some(self.julia(julia, o.span)?),
             _ => None,
         };
         let mut group = match &o.kind {
-            ObjectKind::Shape(..) | ObjectKind::Blob(_) => Group {
+            ObjectKind::Shape(..) | ObjectKind::Blob(_) | ObjectKind::Julia(_) => Group {
                 parts: vec![Part::leaf(ObjectDesc {
                     shape: shape.expect("a shape was lowered above"),
                     transform: Transform::default(),

@@ -11,6 +11,7 @@ mod blob;
 mod declarations;
 mod directives;
 mod expr;
+mod julia;
 mod keywords;
 mod macros;
 mod scene;

@@ -4,6 +4,7 @@
 use std::rc::Rc;
 
 use super::blob::BLOB_ITEMS;
+use super::julia::JULIA_ITEMS;
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
     CameraItem, Clip, CsgOp, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
@@ -41,10 +42,11 @@ const TOP_LEVEL: &[&str] = &[
     "lathe",
     "sor",
     "blob",
+    "julia_fractal",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, blob, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, union, merge, intersection, difference, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -73,7 +75,16 @@ pub const MODIFIERS: &[&str] = &[
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || word == "object" || word == "blob" || csg_op(word).is_some()
+    shape_kind(word).is_some() || matches!(word, "object" | "blob" | "julia_fractal") || csg_op(word).is_some()
+}
+
+/// The items a shape parsed by a file of its own takes, which may stand among its modifiers.
+fn own_items(kind: &ObjectKind) -> &'static [&'static str] {
+    match kind {
+        ObjectKind::Blob(_) => BLOB_ITEMS,
+        ObjectKind::Julia(_) => JULIA_ITEMS,
+        _ => &[],
+    }
 }
 
 fn csg_op(word: &str) -> Option<CsgOp> {
@@ -306,6 +317,7 @@ impl Parser<'_, '_> {
         self.open_block(&word, kw)?;
         let mut kind = match shape_kind(&word) {
             None if word == "blob" => ObjectKind::Blob(self.blob_items()?),
+            None if word == "julia_fractal" => ObjectKind::Julia(self.julia_items()?),
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
@@ -330,9 +342,12 @@ impl Parser<'_, '_> {
         let mut modifiers = Vec::new();
         while !self.at_block_end() {
             let m = match self.peek_ident().as_deref() {
-                Some(w) if BLOB_ITEMS.contains(&w) && matches!(kind, ObjectKind::Blob(_)) => {
-                    if let ObjectKind::Blob(blob) = &mut kind {
-                        self.blob_item(blob)?;
+                // A shape's own items may stand among its modifiers.
+                Some(w) if own_items(&kind).contains(&w) => {
+                    match &mut kind {
+                        ObjectKind::Blob(blob) => self.blob_item(blob)?,
+                        ObjectKind::Julia(julia) => self.julia_item(julia)?,
+                        _ => {}
                     }
                     continue;
                 }
@@ -421,8 +436,7 @@ impl Parser<'_, '_> {
                         }
                         _ => true,
                     };
-                    let items: &[&str] = if word == "blob" { BLOB_ITEMS } else { &[] };
-                    let allowed: Vec<&str> = items.iter().chain(MODIFIERS).copied().filter(takes).collect();
+                    let allowed: Vec<&str> = own_items(&kind).iter().chain(MODIFIERS).copied().filter(takes).collect();
                     return Err(self.unknown_in(&word, &allowed));
                 }
             };

@@ -1,0 +1,474 @@
+//! POV-Ray's `julia_fractal` (3.4.5.1.7 Julia Fractal): the points `h(0)` of a 3-D slice of
+//! 4-D space whose orbit `h(n+1) = f(h(n)) + p` stays within radius 4 for `max_iteration`
+//! steps, `f` a function of quaternions (`sqr`, `cube`) or of hypercomplex numbers (those and
+//! the complex functions POV-Ray lists). A point `(x, y, z)` of the object lies on the slice
+//! `N·h = D`: `h = (x, y, z, (D − N.xyz·(x, y, z)) / N.w)`.
+//!
+//! Hypercomplex numbers multiply commutatively with `k² = 1` (as Fractint's, whose algebra
+//! POV-Ray follows), so `a + b·i + c·j + d·k` splits into the two complex numbers
+//! `(a − d) + (b + c)·i` and `(a + d) + (b − c)·i`, on which every function acts one by one.
+//!
+//! A ray is marched through the bounding ball in steps of `1 / precision` (object units), each
+//! sample iterated, and the step where inside and outside swap is bisected to f64 rounding.
+//! Thin parts shorter than a step can be missed, which is what POV-Ray's `precision` trades.
+//! The normal is the gradient of `|h(k)|²` at the iteration `k` where the point just outside
+//! escapes, by central differences. Lanes are solved one by one in f64.
+
+use glam::{DAffine3, DVec3, DVec4, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::RayLanes;
+use super::{affine_f32, transformed_bounds, Shape};
+use crate::lanes::{Lane, V3};
+
+/// The escape radius POV-Ray documents, squared.
+const BAILOUT2: f64 = 16.0;
+
+/// Which algebra and function the iteration uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum JuliaFunction {
+    QuaternionSqr,
+    QuaternionCube,
+    Hypercomplex(ComplexFn),
+}
+
+/// The functions of hypercomplex numbers, each a complex function applied to both halves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ComplexFn {
+    Sqr,
+    Cube,
+    Exp,
+    Reciprocal,
+    Sin,
+    Asin,
+    Sinh,
+    Asinh,
+    Cos,
+    Acos,
+    Cosh,
+    Acosh,
+    Tan,
+    Atan,
+    Tanh,
+    Atanh,
+    Ln,
+    /// `h` to the complex power `x + y·i`.
+    Pwr(f64, f64),
+}
+
+/// The functions with a keyword of their own, and the keywords.
+const NAMED: [(ComplexFn, &str); 17] = [
+    (ComplexFn::Sqr, "sqr"),
+    (ComplexFn::Cube, "cube"),
+    (ComplexFn::Exp, "exp"),
+    (ComplexFn::Reciprocal, "reciprocal"),
+    (ComplexFn::Sin, "sin"),
+    (ComplexFn::Asin, "asin"),
+    (ComplexFn::Sinh, "sinh"),
+    (ComplexFn::Asinh, "asinh"),
+    (ComplexFn::Cos, "cos"),
+    (ComplexFn::Acos, "acos"),
+    (ComplexFn::Cosh, "cosh"),
+    (ComplexFn::Acosh, "acosh"),
+    (ComplexFn::Tan, "tan"),
+    (ComplexFn::Atan, "atan"),
+    (ComplexFn::Tanh, "tanh"),
+    (ComplexFn::Atanh, "atanh"),
+    (ComplexFn::Ln, "ln"),
+];
+
+impl ComplexFn {
+    /// The function named by POV-Ray's keyword (`pwr` takes its exponent separately).
+    pub fn from_keyword(word: &str) -> Option<ComplexFn> {
+        NAMED.iter().find(|n| n.1 == word).map(|n| n.0)
+    }
+
+    /// The keyword `from_keyword` reads, `None` for `pwr` (written with its exponent).
+    pub fn keyword(self) -> Option<&'static str> {
+        NAMED.iter().find(|n| n.0 == self).map(|n| n.1)
+    }
+}
+
+/// A complex number, just what the hypercomplex functions need.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct C(f64, f64);
+
+impl C {
+    fn add(self, o: C) -> C {
+        C(self.0 + o.0, self.1 + o.1)
+    }
+    fn sub(self, o: C) -> C {
+        C(self.0 - o.0, self.1 - o.1)
+    }
+    fn mul(self, o: C) -> C {
+        C(self.0 * o.0 - self.1 * o.1, self.0 * o.1 + self.1 * o.0)
+    }
+    fn div(self, o: C) -> C {
+        let n = o.0 * o.0 + o.1 * o.1;
+        C((self.0 * o.0 + self.1 * o.1) / n, (self.1 * o.0 - self.0 * o.1) / n)
+    }
+    fn exp(self) -> C {
+        let m = self.0.exp();
+        C(m * self.1.cos(), m * self.1.sin())
+    }
+    fn ln(self) -> C {
+        C(self.0.hypot(self.1).ln(), self.1.atan2(self.0))
+    }
+    fn sqrt(self) -> C {
+        let r = self.0.hypot(self.1);
+        let re = (0.5 * (r + self.0)).max(0.0).sqrt();
+        let im = (0.5 * (r - self.0)).max(0.0).sqrt();
+        C(re, if self.1 < 0.0 { -im } else { im })
+    }
+    fn times_i(self) -> C {
+        C(-self.1, self.0)
+    }
+
+    fn apply(self, f: ComplexFn) -> C {
+        const ONE: C = C(1.0, 0.0);
+        let z = self;
+        match f {
+            ComplexFn::Sqr => z.mul(z),
+            ComplexFn::Cube => z.mul(z).mul(z),
+            ComplexFn::Exp => z.exp(),
+            ComplexFn::Reciprocal => ONE.div(z),
+            ComplexFn::Sin => C(z.0.sin() * z.1.cosh(), z.0.cos() * z.1.sinh()),
+            ComplexFn::Cos => C(z.0.cos() * z.1.cosh(), -z.0.sin() * z.1.sinh()),
+            ComplexFn::Sinh => C(z.0.sinh() * z.1.cos(), z.0.cosh() * z.1.sin()),
+            ComplexFn::Cosh => C(z.0.cosh() * z.1.cos(), z.0.sinh() * z.1.sin()),
+            ComplexFn::Tan => z.apply(ComplexFn::Sin).div(z.apply(ComplexFn::Cos)),
+            ComplexFn::Tanh => z.apply(ComplexFn::Sinh).div(z.apply(ComplexFn::Cosh)),
+            ComplexFn::Ln => z.ln(),
+            // asin z = −i·ln(i·z + sqrt(1 − z²)), acos z = −i·ln(z + i·sqrt(1 − z²)).
+            ComplexFn::Asin => {
+                let w = z.times_i().add(ONE.sub(z.mul(z)).sqrt()).ln();
+                C(w.1, -w.0)
+            }
+            ComplexFn::Acos => {
+                let w = z.add(ONE.sub(z.mul(z)).sqrt().times_i()).ln();
+                C(w.1, -w.0)
+            }
+            // atan z = (i/2)·ln((i + z)/(i − z)).
+            ComplexFn::Atan => {
+                let i = C(0.0, 1.0);
+                let w = i.add(z).div(i.sub(z)).ln();
+                C(-0.5 * w.1, 0.5 * w.0)
+            }
+            ComplexFn::Asinh => z.add(z.mul(z).add(ONE).sqrt()).ln(),
+            ComplexFn::Acosh => z.add(z.add(ONE).sqrt().mul(z.sub(ONE).sqrt())).ln(),
+            ComplexFn::Atanh => {
+                let w = ONE.add(z).div(ONE.sub(z)).ln();
+                C(0.5 * w.0, 0.5 * w.1)
+            }
+            ComplexFn::Pwr(x, y) => {
+                if z == C(0.0, 0.0) {
+                    z
+                } else {
+                    z.ln().mul(C(x, y)).exp()
+                }
+            }
+        }
+    }
+}
+
+/// `f(h)` for one step of the iteration.
+fn step(f: JuliaFunction, h: DVec4) -> DVec4 {
+    let (a, b, c, d) = (h.x, h.y, h.z, h.w);
+    match f {
+        JuliaFunction::QuaternionSqr => {
+            DVec4::new(a * a - b * b - c * c - d * d, 2.0 * a * b, 2.0 * a * c, 2.0 * a * d)
+        }
+        JuliaFunction::QuaternionCube => {
+            let v2 = b * b + c * c + d * d;
+            let s = 3.0 * a * a - v2;
+            DVec4::new(a * a * a - 3.0 * a * v2, s * b, s * c, s * d)
+        }
+        JuliaFunction::Hypercomplex(g) => {
+            let z1 = C(a - d, b + c).apply(g);
+            let z2 = C(a + d, b - c).apply(g);
+            DVec4::new(0.5 * (z1.0 + z2.0), 0.5 * (z1.1 + z2.1), 0.5 * (z1.1 - z2.1), 0.5 * (z2.0 - z1.0))
+        }
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct Julia {
+    pub frame: BoxFrame,
+    param: DVec4,
+    function: JuliaFunction,
+    max_iteration: u32,
+    /// March step, object units.
+    step: f64,
+    /// Of the bounding ball.
+    radius: f64,
+    /// The slice: `w = slice_w.w − slice_w.xyz·(x, y, z)`.
+    slice_w: DVec4,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+/// Radius of a ball the object lies in. Beyond the escape radius nothing stays; quaternions
+/// are a normed algebra, so `|f(h) + p| ≥ |h|^k − |p|` (k = 2 for sqr, 3 for cube) and the
+/// smallest radius from which that bound passes the escape radius within `max_iteration`
+/// steps bounds the object tighter (hypercomplex numbers have no such norm).
+fn radius(function: JuliaFunction, param: DVec4, max_iteration: u32) -> f64 {
+    let power = match function {
+        JuliaFunction::QuaternionSqr => 2,
+        JuliaFunction::QuaternionCube => 3,
+        JuliaFunction::Hypercomplex(_) => return BAILOUT2.sqrt(),
+    };
+    let (c, escape) = (param.length(), BAILOUT2.sqrt());
+    let escapes = |mut r: f64| {
+        for _ in 0..max_iteration {
+            r = (r.powi(power) - c).max(0.0);
+            if r > escape {
+                return true;
+            }
+        }
+        false
+    };
+    let (mut lo, mut hi) = (0.0, escape);
+    for _ in 0..60 {
+        let m = 0.5 * (lo + hi);
+        if escapes(m) {
+            hi = m;
+        } else {
+            lo = m;
+        }
+    }
+    // A sliver of margin over the bisection's last step.
+    (hi * (1.0 + 1e-9)).min(escape)
+}
+
+impl Julia {
+    /// `slice` is the 4-D normal and distance; its normal's w is not zero (checked when lowered).
+    pub fn new(
+        render_from_object: DAffine3,
+        param: DVec4,
+        function: JuliaFunction,
+        max_iteration: u32,
+        precision: f64,
+        slice: (DVec4, f64),
+    ) -> Julia {
+        let (n, dist) = slice;
+        let slice_w = DVec4::new(n.x / n.w, n.y / n.w, n.z / n.w, dist / n.w);
+        let xf = affine_f32(&render_from_object);
+        let radius = radius(function, param, max_iteration.max(1));
+        let r = radius as f32;
+        let (min, max) = transformed_bounds(&xf, Vec3::splat(-r), Vec3::splat(r));
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        Julia {
+            frame: frame_for(xf),
+            param,
+            function,
+            max_iteration: max_iteration.max(1),
+            step: 1.0 / precision.max(1.0),
+            slice_w,
+            radius,
+            min: min - pad,
+            max: max + pad,
+        }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    fn lift(&self, p: DVec3) -> DVec4 {
+        let s = self.slice_w;
+        DVec4::new(p.x, p.y, p.z, s.w - s.x * p.x - s.y * p.y - s.z * p.z)
+    }
+
+    /// How many steps of the iteration decide inside: `max_iteration` for quaternions, one
+    /// fewer for hypercomplex numbers, which is what matches POV-Ray 3.7's renders (silhouettes
+    /// of both algebras compared pixel by pixel against its orthographic renders).
+    fn steps(&self) -> u32 {
+        match self.function {
+            JuliaFunction::Hypercomplex(_) => (self.max_iteration - 1).max(1),
+            _ => self.max_iteration,
+        }
+    }
+
+    /// The iteration at which the orbit of `p` escapes, `None` if it stays (inside).
+    fn escape(&self, p: DVec3) -> Option<u32> {
+        let mut h = self.lift(p);
+        if h.length_squared() > BAILOUT2 {
+            return Some(0);
+        }
+        for k in 1..=self.steps() {
+            h = step(self.function, h) + self.param;
+            // NaN (a function's pole) counts as escaped.
+            if !(h.length_squared() <= BAILOUT2) {
+                return Some(k);
+            }
+        }
+        None
+    }
+
+    fn inside_object(&self, p: DVec3) -> bool {
+        self.escape(p).is_none()
+    }
+
+    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+        // The span of t within the bounding ball.
+        let (a, b, c) = (d.dot(d), o.dot(d), o.dot(o) - self.radius * self.radius);
+        let disc = b * b - a * c;
+        if !(disc > 0.0 && a > 0.0) {
+            return None;
+        }
+        let root = disc.sqrt();
+        let (lo, hi) = (((-b - root) / a).max(t_min), ((-b + root) / a).min(t_max));
+        if !(lo < hi) {
+            return None;
+        }
+        let dt = self.step / a.sqrt();
+        let start = self.inside_object(o + lo * d);
+        let mut t0 = lo;
+        loop {
+            let t1 = (t0 + dt).min(hi);
+            if self.inside_object(o + t1 * d) != start {
+                // Bisect the crossing down to rounding.
+                let (mut a, mut b) = (t0, t1);
+                for _ in 0..64 {
+                    let m = 0.5 * (a + b);
+                    if m <= a || m >= b {
+                        break;
+                    }
+                    if self.inside_object(o + m * d) == start {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+                return (b > t_min && b < t_max).then_some(b);
+            }
+            if t1 >= hi {
+                return None;
+            }
+            t0 = t1;
+        }
+    }
+
+    fn normal_object(&self, p: DVec3) -> DVec3 {
+        // The surface near p is |h(k)|² = bailout for the k where the outside escapes; step
+        // out along the rough gradient until a point escapes, then take |h(k)|²'s gradient.
+        let e = 1e-6 * (1.0 + p.length());
+        let k = [p, p + DVec3::splat(e), p - DVec3::splat(e)]
+            .iter()
+            .filter_map(|&q| self.escape(q))
+            .max()
+            .unwrap_or(self.steps())
+            .max(1);
+        let f = |q: DVec3| {
+            let mut h = self.lift(q);
+            for _ in 0..k {
+                h = step(self.function, h) + self.param;
+            }
+            h.length_squared()
+        };
+        let g = DVec3::new(
+            f(p + DVec3::X * e) - f(p - DVec3::X * e),
+            f(p + DVec3::Y * e) - f(p - DVec3::Y * e),
+            f(p + DVec3::Z * e) - f(p - DVec3::Z * e),
+        );
+        if g.is_finite() && g != DVec3::ZERO {
+            g
+        } else {
+            p
+        }
+    }
+}
+
+impl Shape for Julia {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        super::inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::ray::Ray;
+
+    fn q(a: f64, b: f64, c: f64, d: f64) -> DVec4 {
+        DVec4::new(a, b, c, d)
+    }
+
+    /// Hamilton's product, written out from ij = k, jk = i, ki = j.
+    fn hamilton(p: DVec4, r: DVec4) -> DVec4 {
+        q(
+            p.x * r.x - p.y * r.y - p.z * r.z - p.w * r.w,
+            p.x * r.y + p.y * r.x + p.z * r.w - p.w * r.z,
+            p.x * r.z - p.y * r.w + p.z * r.x + p.w * r.y,
+            p.x * r.w + p.y * r.z - p.z * r.y + p.w * r.x,
+        )
+    }
+
+    /// The hypercomplex product from its basis rules: ij = k, jk = −i, ki = −j, k² = 1.
+    fn hyper(p: DVec4, r: DVec4) -> DVec4 {
+        q(
+            p.x * r.x - p.y * r.y - p.z * r.z + p.w * r.w,
+            p.x * r.y + p.y * r.x - p.z * r.w - p.w * r.z,
+            p.x * r.z + p.z * r.x - p.y * r.w - p.w * r.y,
+            p.x * r.w + p.w * r.x + p.y * r.z + p.z * r.y,
+        )
+    }
+
+    #[test]
+    fn steps_are_the_algebras_products() {
+        let h = q(0.3, -0.7, 0.2, 0.5);
+        let close = |a: DVec4, b: DVec4| (a - b).length() < 1e-12;
+        assert!(close(step(JuliaFunction::QuaternionSqr, h), hamilton(h, h)));
+        assert!(close(step(JuliaFunction::QuaternionCube, h), hamilton(hamilton(h, h), h)));
+        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Sqr), h), hyper(h, h)));
+        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Cube), h), hyper(hyper(h, h), h)));
+        // reciprocal(h)·h = 1, and pwr(2, 0) is sqr.
+        let r = step(JuliaFunction::Hypercomplex(ComplexFn::Reciprocal), h);
+        assert!(close(hyper(r, h), q(1.0, 0.0, 0.0, 0.0)));
+        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Pwr(2.0, 0.0)), h), hyper(h, h)));
+        // The inverse functions undo their functions near 0.
+        let small = q(0.1, 0.05, -0.02, 0.03);
+        for (f, g) in [
+            (ComplexFn::Sin, ComplexFn::Asin),
+            (ComplexFn::Cos, ComplexFn::Acos),
+            (ComplexFn::Tan, ComplexFn::Atan),
+            (ComplexFn::Sinh, ComplexFn::Asinh),
+            (ComplexFn::Tanh, ComplexFn::Atanh),
+            (ComplexFn::Exp, ComplexFn::Ln),
+        ] {
+            let back = step(JuliaFunction::Hypercomplex(g), step(JuliaFunction::Hypercomplex(f), small));
+            assert!(close(back, small), "{f:?} then {g:?}: {back}");
+        }
+        let z = C(1.5, 0.4);
+        let w = z.apply(ComplexFn::Acosh).apply(ComplexFn::Cosh);
+        assert!((w.0 - z.0).abs() < 1e-12 && (w.1 - z.1).abs() < 1e-12);
+    }
+
+    #[test]
+    fn with_no_parameter_the_sqr_set_is_the_unit_ball() {
+        // h → h² stays bounded exactly for |h| ≤ 1 (a slow escape just outside needs many
+        // iterations, so the edge is at 1 to within max_iteration's reach).
+        let j = Julia::new(DAffine3::IDENTITY, DVec4::ZERO, JuliaFunction::QuaternionSqr, 40, 50.0, (DVec4::W, 0.0));
+        let t = j.intersect(&Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), 1e-4, 100.0).unwrap();
+        assert!((t - 2.0).abs() < 2e-3, "{t}");
+        let n = j.normal_at(Vec3::new(0.0, 0.0, -(3.0 - t)));
+        assert!((n - Vec3::new(0.0, 0.0, -1.0)).length() < 1e-3, "{n}");
+        assert!(j.inside_object(DVec3::new(0.5, 0.2, 0.1)) && !j.inside_object(DVec3::new(0.9, 0.5, 0.0)));
+        // Leaving it from inside.
+        let t = j.intersect(&Ray::new(Vec3::ZERO, Vec3::Y), 1e-4, 100.0).unwrap();
+        assert!((t - 1.0).abs() < 2e-3, "{t}");
+        // The slice moves through the fourth dimension: at w = 0.6 the ball's radius is 0.8.
+        let s = Julia::new(DAffine3::IDENTITY, DVec4::ZERO, JuliaFunction::QuaternionSqr, 40, 50.0, (DVec4::W, 0.6));
+        let t = s.intersect(&Ray::new(Vec3::ZERO, Vec3::X), 1e-4, 100.0).unwrap();
+        assert!((t - 0.8).abs() < 2e-3, "{t}");
+    }
+}

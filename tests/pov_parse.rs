@@ -638,6 +638,28 @@ fn error_control_flow() {
     assert_eq!(m, "`#break` outside `#switch`, `#while` or `#for`");
 }
 
+/// A light written inside a CSG object moves with it, also when the object is declared and
+/// placed twice, as POV-Ray's lamps made of unions are.
+#[test]
+fn lights_inside_csg_move_with_the_object() {
+    let s = load_text(
+        "lamps",
+        "light_source { <0, 9, 0> rgb 1 }\n\
+         #declare Lamp = union { sphere { 0, 0.2 } light_source { <0, 1, 0> rgb <1, 0.5, 0> } translate x }\n\
+         object { Lamp translate z * 2 }\n\
+         union { object { Lamp scale 2 } cylinder { 0, y, 0.1 } rotate y * 90 }",
+    )
+    .unwrap();
+    let at: Vec<glam::DVec3> = s.lights.iter().map(|l| l.position).collect();
+    assert_eq!(at.len(), 3, "{at:?}");
+    assert_eq!(at[0], glam::DVec3::new(0.0, 9.0, 0.0));
+    assert_eq!(at[1], glam::DVec3::new(1.0, 1.0, 2.0));
+    // (x + (0, 1, 0)) · 2 = (2, 2, 0), turned by 90° about y: (0, 2, -2).
+    assert!((at[2] - glam::DVec3::new(0.0, 2.0, -2.0)).length() < 1e-12, "{}", at[2]);
+    assert_eq!(s.lights[1].color, glam::DVec3::new(1.0, 0.5, 0.0));
+    assert_eq!(s.objects.len(), 3, "two lamp spheres and a cylinder");
+}
+
 #[test]
 fn error_csg() {
     let (l, c, m) = err("e_diff", "union {\n  sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n}");

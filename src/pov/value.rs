@@ -185,6 +185,9 @@ pub struct Group {
     pub parts: Vec<Part>,
     /// A `union` (modifiers apply to each child) rather than a single object.
     pub csg: bool,
+    /// `light_source`s written inside (as in a lamp made of a union): they move with the
+    /// object's transforms and light the scene wherever it is placed.
+    pub lights: Vec<LightDesc>,
 }
 
 impl Value {

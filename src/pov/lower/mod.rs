@@ -93,6 +93,8 @@ pub struct Lowerer<'f> {
     options: ParseOptions,
     /// The children gathered so far by each open `union`/`merge`, innermost last.
     csg_stack: Vec<Vec<Part>>,
+    /// Lights met inside the CSG objects being lowered, for the innermost object to take.
+    child_lights: Vec<LightDesc>,
     /// For each open CSG object: whether a union among its children stays whole (one child,
     /// in anything but a union).
     csg_whole_unions: Vec<bool>,
@@ -119,6 +121,7 @@ impl<'f> Lowerer<'f> {
             output: Vec::new(),
             options: options.clone(),
             csg_stack: Vec::new(),
+            child_lights: Vec::new(),
             csg_whole_unions: Vec::new(),
             loop_iterations: 0,
             default_texture: TextureDesc::default(),
@@ -331,9 +334,13 @@ impl<'f> Lowerer<'f> {
                 self.scene.camera = self.camera(items, *span)?
             }
             Stmt::Light(l) => {
-                self.not_in_csg("light_source", l.span)?;
                 let light = self.light(l)?;
-                self.scene.lights.push(light);
+                if self.csg_stack.is_empty() {
+                    self.scene.lights.push(light);
+                } else {
+                    // It moves with the object it is written in.
+                    self.child_lights.push(light);
+                }
             }
             Stmt::Background { color, span } => {
                 self.not_in_csg("background", *span)?;
@@ -370,6 +377,11 @@ impl<'f> Lowerer<'f> {
                 if before + group.parts.iter().map(Part::leaf_count).sum::<usize>() > MAX_OBJECTS {
                     let place = if self.csg_stack.is_empty() { "the scene" } else { "a union" };
                     return Err(Diag::new(o.span, format!("{place} would have more than {MAX_OBJECTS} objects")));
+                }
+                if self.csg_stack.is_empty() {
+                    self.scene.lights.extend(group.lights.iter().copied());
+                } else {
+                    self.child_lights.extend(group.lights.iter().copied());
                 }
                 let whole = group.csg && self.csg_whole_unions.last() == Some(&true);
                 let source = self.files.source_ref(o.span);

@@ -17,6 +17,9 @@ use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureD
 
 impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
+        // The lights written inside this object's children are collected apart from those of
+        // the objects around it.
+        let outer_lights = std::mem::take(&mut self.child_lights);
         let shape = match &o.kind {
             ObjectKind::Shape(kind, args) => Some(self.shape(*kind, args, o.span)?),
             ObjectKind::Blob(blob) => Some(self.blob(blob, o.span)?),
@@ -36,6 +39,7 @@ impl Lowerer<'_> {
                     source: self.files.source_ref(o.span),
                 })],
                 csg: false,
+                lights: Vec::new(),
             },
             ObjectKind::Inner(inner) => self.object(inner)?,
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
@@ -43,17 +47,33 @@ impl Lowerer<'_> {
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
             ObjectKind::Csg { op: CsgOp::Union, children } => {
-                Group { parts: self.children(children, "union", o.span)?, csg: true }
+                Group { parts: self.children(children, "union", o.span)?, csg: true, lights: Vec::new() }
             }
             ObjectKind::Csg { op, children } => {
                 let parts = self.children(children, op.keyword(), o.span)?;
-                Group { parts: vec![Part::node(*op, parts, self.files.source_ref(o.span))], csg: false }
+                Group {
+                    parts: vec![Part::node(*op, parts, self.files.source_ref(o.span))],
+                    csg: false,
+                    lights: Vec::new(),
+                }
             }
         };
+        group.lights.append(&mut std::mem::replace(&mut self.child_lights, outer_lights));
         // A union flattens into its children unless something needs it whole.
         if group.csg && o.modifiers.iter().any(|m| matches!(m, Modifier::Inverse | Modifier::ClippedBy(_))) {
             let parts = std::mem::take(&mut group.parts);
-            group = Group { parts: vec![Part::node(CsgOp::Union, parts, self.files.source_ref(o.span))], csg: false };
+            let node = Part::node(CsgOp::Union, parts, self.files.source_ref(o.span));
+            group = Group { parts: vec![node], csg: false, lights: std::mem::take(&mut group.lights) };
+        }
+        if !group.lights.is_empty() {
+            for m in &o.modifiers {
+                if let Modifier::Transform(t) = m {
+                    let t = self.transform(t)?;
+                    for light in &mut group.lights {
+                        light.position = t.matrix.transform_point3(light.position);
+                    }
+                }
+            }
         }
         if group.csg {
             self.csg_modifiers(&mut group.parts, &o.modifiers, "union")?;

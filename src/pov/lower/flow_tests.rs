@@ -181,14 +181,16 @@ fn nested_and_declared_unions() {
 }
 
 #[test]
-fn scene_items_inside_union_are_rejected() {
+fn scene_items_but_lights_inside_union_are_rejected() {
     for csg in ["union", "difference", "intersection"] {
         assert_eq!(
             lower(&format!("{csg} {{ sphere {{ 0, 1 }} camera {{ }} }}")).unwrap_err(),
             "`camera` is not supported inside a CSG object (`union`, `merge`, `intersection`, `difference`, `clipped_by`)"
         );
     }
-    assert!(lower("sphere { 0, 1 clipped_by { light_source { 0, 1 } } }").unwrap_err().starts_with("`light_source`"));
+    assert!(lower("sphere { 0, 1 clipped_by { background { rgb 1 } } }").unwrap_err().starts_with("`background`"));
+    // Lights are welcome: they move with the object (POV-Ray's lamps).
+    assert_eq!(lower("union { sphere { 0, 1 } light_source { y, 1 } translate x }").unwrap().0.lights.len(), 1);
 }
 
 #[test]

@@ -9,7 +9,9 @@
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+pub mod height_field;
 pub mod lathe;
+pub mod mesh;
 pub mod plane;
 pub mod poly;
 pub mod polygon;

@@ -18,6 +18,9 @@
 //! them has an empty range and pays one empty loop per query. Planes keep their own arrays,
 //! since their shadow test is by side, not by intersection.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use glam::{DAffine3, DVec3, Vec3};
 
 use crate::accel::aabb::Aabb;
@@ -27,7 +30,9 @@ use crate::geometry::affine_f32;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::height_field;
 use crate::geometry::lathe::Lathe;
+use crate::geometry::mesh::{Mesh, MeshData};
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
@@ -40,7 +45,7 @@ use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
-use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc};
+use crate::scene::desc::{CsgOp, MeshDesc, ObjectDesc, SceneDesc, ShapeDesc};
 use crate::scene::material::Material;
 use crate::scene::place::{RenderFrame, RenderShape};
 use crate::shading::pattern::Rgbft;
@@ -69,16 +74,21 @@ pub enum ShapeKind {
     Prism = 12,
     Lathe = 13,
     Sor = 14,
+    /// `mesh` and `mesh2`.
+    Mesh = 16,
+    HeightField = 17,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 14] = [
+    pub const ALL: [ShapeKind; 16] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
+        ShapeKind::HeightField,
         ShapeKind::Lathe,
+        ShapeKind::Mesh,
         ShapeKind::Plane,
         ShapeKind::Poly,
         ShapeKind::Polygon,
@@ -90,7 +100,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 15;
+    pub const COUNT: usize = 18;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -108,6 +118,8 @@ impl ShapeKind {
             ShapeKind::Prism => "Prism",
             ShapeKind::Lathe => "Lathe",
             ShapeKind::Sor => "Sor",
+            ShapeKind::Mesh => "Mesh",
+            ShapeKind::HeightField => "Height Field",
         }
     }
 }
@@ -159,6 +171,12 @@ pub struct Scene {
     pub prisms: Vec<Prism>,
     pub lathes: Vec<Lathe>,
     pub sors: Vec<Sor>,
+    /// Meshes and height fields (`ShapeKind::Mesh` and `HeightField` index this), each placing
+    /// shared `MeshData`.
+    pub meshes: Vec<Mesh>,
+    /// The `MeshData` built for each mesh description (by address) or height field (address,
+    /// `smooth`, water level bits) during `build`, so instances share one copy.
+    mesh_cache: HashMap<(usize, bool, u64), Arc<MeshData>>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -209,6 +227,8 @@ impl Scene {
             prisms: Vec::new(),
             lathes: Vec::new(),
             sors: Vec::new(),
+            meshes: Vec::new(),
+            mesh_cache: HashMap::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -248,6 +268,7 @@ impl Scene {
             }
         }
         scene.prims.extend(leaves);
+        scene.mesh_cache.clear();
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
@@ -448,6 +469,32 @@ impl Scene {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
             }
+            RenderShape::Mesh { render_from_object, mesh, inside_vector } => {
+                let key = (Arc::as_ptr(&mesh) as usize, false, 0);
+                let data = self.mesh_cache.entry(key).or_insert_with(|| Arc::new(mesh_data(&mesh))).clone();
+                let inside = inside_vector.map(|v| v.as_vec3());
+                self.meshes.push(Mesh::new(data, affine_f32(&render_from_object), inside));
+                (ShapeKind::Mesh, at(self.meshes.len()))
+            }
+            RenderShape::HeightField { render_from_object, field, smooth, water_level } => {
+                let key = (Arc::as_ptr(&field) as usize, smooth, water_level.to_bits());
+                let data = self.mesh_cache.entry(key).or_insert_with(|| {
+                    let water = water_level as f32;
+                    let faces = height_field::faces(
+                        field.width as usize,
+                        field.height as usize,
+                        &field.heights,
+                        smooth,
+                        water,
+                    );
+                    let data = MeshData::new(faces);
+                    Arc::new(if water_level > 0.0 { data.with_floor(water) } else { data })
+                });
+                // Solid below its surface, as POV-Ray's: odd crossings going up.
+                let data = data.clone();
+                self.meshes.push(Mesh::new(data, affine_f32(&render_from_object), Some(Vec3::Y)));
+                (ShapeKind::HeightField, at(self.meshes.len()))
+            }
             RenderShape::Plane { .. } | RenderShape::Glyphs { .. } => {
                 unreachable!("planes and text are stored by the caller")
             }
@@ -503,11 +550,19 @@ impl Scene {
             ShapeKind::Prism => self.prisms[i].bounds(),
             ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Sor => self.sors[i].bounds(),
+            ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };
         Aabb::new(lo, hi)
     }
+}
+
+/// A mesh description's triangles (object space, f32) with their BVH.
+fn mesh_data(mesh: &MeshDesc) -> MeshData {
+    let v = |i: u32| mesh.vertices[i as usize].as_vec3();
+    let n = |i: u32| mesh.normals[i as usize].as_vec3();
+    MeshData::new(mesh.faces.iter().map(|f| (f.vertices.map(v), f.normals.map(|k| k.map(n)))))
 }
 
 /// Whether any shape of `object` may let light through (so a `merge`'s inner surfaces show).

@@ -124,9 +124,6 @@ pub(crate) const RESERVED: &[&str] = &[
 /// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
 pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "blob",
-    "mesh",
-    "mesh2",
-    "height_field",
     "isosurface",
     "julia_fractal",
     "bicubic_patch",

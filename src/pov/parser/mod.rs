@@ -12,6 +12,7 @@ mod directives;
 mod expr;
 mod keywords;
 mod macros;
+mod mesh;
 mod scene;
 mod stream;
 mod textures;

@@ -39,10 +39,16 @@ const TOP_LEVEL: &[&str] = &[
     "text",
     "lathe",
     "sor",
+    "mesh",
+    "mesh2",
+    "height_field",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, mesh, mesh2, height_field, union, merge, intersection, difference, \
+     object";
+/// Shapes whose bodies the parser reads and evaluates itself (`parser::mesh`).
+const BUILT: &[&str] = &["mesh", "mesh2", "height_field"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -68,10 +74,12 @@ pub const MODIFIERS: &[&str] = &[
     "inverse",
     "clipped_by",
     "bounded_by",
+    "inside_vector",
+    "hierarchy",
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || word == "object" || csg_op(word).is_some()
+    shape_kind(word).is_some() || word == "object" || csg_op(word).is_some() || BUILT.contains(&word)
 }
 
 fn csg_op(word: &str) -> Option<CsgOp> {
@@ -304,6 +312,9 @@ impl Parser<'_, '_> {
         self.open_block(&word, kw)?;
         let kind = match shape_kind(&word) {
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
+            None if word == "mesh" => ObjectKind::Built(self.mesh_body(kw)?),
+            None if word == "mesh2" => ObjectKind::Built(self.mesh2_body(kw)?),
+            None if word == "height_field" => ObjectKind::Built(self.height_field_body(kw)?),
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
                 let children = self.children();
@@ -345,6 +356,23 @@ impl Parser<'_, '_> {
                 Some("clipped_by") => Modifier::ClippedBy(self.clip("clipped_by", "bounded_by")?),
                 Some("bounded_by") => Modifier::BoundedBy(self.clip("bounded_by", "clipped_by")?),
                 Some("sturm") => Modifier::Sturm(self.bump().span),
+                Some("inside_vector") if matches!(&*word, "mesh" | "mesh2" | "object") => {
+                    self.bump();
+                    Modifier::InsideVector(self.expr()?)
+                }
+                // A hint for POV-Ray's own mesh bounding; strahl always builds a BVH.
+                Some("hierarchy") if BUILT.contains(&&*word) || word == "object" => {
+                    self.bump();
+                    let starts_value = match &self.peek().kind {
+                        TokenKind::Number(_) => true,
+                        TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
+                        _ => false,
+                    };
+                    if starts_value {
+                        self.expr()?;
+                    }
+                    continue;
+                }
                 Some("hollow") => {
                     self.bump();
                     // `hollow` alone means on; a boolean may follow (`hollow off`, `hollow 0`).
@@ -407,6 +435,8 @@ impl Parser<'_, '_> {
                                     | ShapeKind::Sor
                             )
                         ),
+                        "inside_vector" => matches!(&*word, "mesh" | "mesh2"),
+                        "hierarchy" => BUILT.contains(&&*word),
                         _ => true,
                     };
                     let allowed: Vec<&str> = MODIFIERS.iter().copied().filter(takes).collect();

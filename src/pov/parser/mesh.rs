@@ -46,19 +46,7 @@ impl Parser<'_, '_> {
             let smooth = &*word == "smooth_triangle";
             let tkw = self.bump().span;
             self.open_block(&word, tkw)?;
-            let count = if smooth { 6 } else { 3 };
-            let mut v = [DVec3::ZERO; 6];
-            for (i, slot) in v.iter_mut().take(count).enumerate() {
-                if i > 0 {
-                    self.eat_punct(',');
-                }
-                if !self.starts_expr(TRIANGLE_ITEMS) {
-                    let what = if smooth { "three corners, each followed by its normal" } else { "three corners" };
-                    return Err(Diag::new(self.peek().span, format!("{word} needs {what}: found {i} vectors")));
-                }
-                let e = self.expr()?;
-                *slot = self.low.vec3(&e)?;
-            }
+            let v = self.triangle_vectors(&word, smooth)?;
             while !self.at_block_end() {
                 match self.peek_ident().as_deref() {
                     Some("texture") => {
@@ -96,6 +84,36 @@ impl Parser<'_, '_> {
         }
         self.warn_unmodelled("mesh", &unmodelled);
         let _ = kw;
+        Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
+    }
+
+    /// A `triangle`'s three corners, or a `smooth_triangle`'s corners each followed by its
+    /// normal (`[a, na, b, nb, c, nc]`).
+    fn triangle_vectors(&mut self, word: &str, smooth: bool) -> PResult<[DVec3; 6]> {
+        let count = if smooth { 6 } else { 3 };
+        let mut v = [DVec3::ZERO; 6];
+        for (i, slot) in v.iter_mut().take(count).enumerate() {
+            if i > 0 {
+                self.eat_punct(',');
+            }
+            if !self.starts_expr(super::scene::MODIFIERS) || self.peek_ident().as_deref() == Some("uv_vectors") {
+                let what = if smooth { "three corners, each followed by its normal" } else { "three corners" };
+                return Err(Diag::new(self.peek().span, format!("{word} needs {what}: found {i} vectors")));
+            }
+            let e = self.expr()?;
+            *slot = self.low.vec3(&e)?;
+        }
+        Ok(v)
+    }
+
+    /// A `smooth_triangle` object: a mesh of one smooth face, up to the modifiers.
+    pub(super) fn smooth_triangle_body(&mut self) -> PResult<ShapeDesc> {
+        let v = self.triangle_vectors("smooth_triangle", true)?;
+        let mesh = MeshDesc {
+            vertices: vec![v[0], v[2], v[4]],
+            normals: vec![v[1], v[3], v[5]],
+            faces: vec![MeshFace { vertices: [0, 1, 2], normals: Some([0, 1, 2]) }],
+        };
         Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
     }
 

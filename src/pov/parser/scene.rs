@@ -39,16 +39,17 @@ const TOP_LEVEL: &[&str] = &[
     "text",
     "lathe",
     "sor",
+    "smooth_triangle",
     "mesh",
     "mesh2",
     "height_field",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, mesh, mesh2, height_field, union, merge, intersection, difference, \
+     superellipsoid, prism, text, lathe, sor, smooth_triangle, mesh, mesh2, height_field, union, merge, intersection, difference, \
      object";
 /// Shapes whose bodies the parser reads and evaluates itself (`parser::mesh`).
-const BUILT: &[&str] = &["mesh", "mesh2", "height_field"];
+const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -314,6 +315,7 @@ impl Parser<'_, '_> {
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
             None if word == "mesh" => ObjectKind::Built(self.mesh_body(kw)?),
             None if word == "mesh2" => ObjectKind::Built(self.mesh2_body(kw)?),
+            None if word == "smooth_triangle" => ObjectKind::Built(self.smooth_triangle_body()?),
             None if word == "height_field" => ObjectKind::Built(self.height_field_body(kw)?),
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);

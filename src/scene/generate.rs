@@ -420,8 +420,14 @@ mod tests {
         for kind in Kind::ALL {
             let a = generate(kind, 300, 640, 480);
             assert_eq!(a, generate(kind, 300, 640, 480), "{kind:?}");
-            // The floor plus n objects.
-            assert_eq!(a.objects.len(), 301);
+            // The floor plus n objects (one mesh of about n triangles).
+            match (kind, &a.objects[1].shape) {
+                (Kind::Mesh, ShapeDesc::Mesh { mesh, .. }) => {
+                    assert_eq!(a.objects.len(), 2);
+                    assert!(mesh.faces.len().abs_diff(300) < 30, "{}", mesh.faces.len());
+                }
+                _ => assert_eq!(a.objects.len(), 301),
+            }
             assert_eq!(a.lights.len(), 2);
         }
         assert_eq!(generate(Kind::Spheres, 0, 640, 480).objects.len(), 1);

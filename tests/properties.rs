@@ -511,6 +511,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (ShapeDesc::Mesh { mesh: m1, inside_vector: i1 }, ShapeDesc::Mesh { mesh: m2, inside_vector: i2 }) => {
             m1 == m2 && i1 == i2
         }
+        (a @ ShapeDesc::HeightField { .. }, b @ ShapeDesc::HeightField { .. }) => a == b,
         (ShapeDesc::Csg { op: o1, children: c1 }, ShapeDesc::Csg { op: o2, children: c2 }) => {
             check(
                 o1 == o2 && c1.len() == c2.len(),
@@ -664,7 +665,11 @@ proptest! {
 fn shipped_scenes_print_and_load_back() {
     let mut scenes = vec![root().join("scenes/seed.pov"), root().join("tests/extremes/scene.pov")];
     for e in std::fs::read_dir(root().join("tests/reference/scenes")).expect("reference scenes") {
-        scenes.push(e.expect("dir entry").path());
+        let path = e.expect("dir entry").path();
+        // Scenes only, not the images they read (hf.pgm).
+        if path.extension().is_some_and(|x| x == "pov") {
+            scenes.push(path);
+        }
     }
     for path in scenes {
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
@@ -922,7 +927,7 @@ fn csg_surfaces_match_a_crossing_reference() {
 #[test]
 fn mesh_packets_single_rays_and_brute_force_agree() {
     use strahl::geometry::ray::{RayLanes, MISS};
-    use strahl::lanes::{F8, V3};
+    use strahl::lanes::{Lane, F8, V3};
     use strahl::render::intersect::HitShape;
     use strahl::scene::desc::{MeshDesc, MeshFace};
     let r = &mut Rng(0x3E54);

@@ -161,7 +161,7 @@ fn bumpy_sphere(n: usize, edge: f64) -> ShapeDesc {
         let theta = std::f64::consts::PI * r as f64 / rows as f64;
         for c in 0..cols {
             let phi = std::f64::consts::TAU * c as f64 / cols as f64;
-            let bump = 1.0 + 0.04 * (7.0 * theta).sin() * (9.0 * phi).sin() + 0.01 * unit(r as u64, c as u64);
+            let bump = 1.0 + 0.04 * (7.0 * theta).sin() * (9.0 * phi).sin() + 0.001 * unit(r as u64, c as u64);
             let dir = DVec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
             vertices.push(qv(center + dir * radius * bump));
         }

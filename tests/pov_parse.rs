@@ -1247,8 +1247,10 @@ fn error_mesh2_located() {
     assert_eq!((l, c, m.as_str()), (1, 34, "vertex_vectors declares 3 entries, found 2"));
     let (l, c, m) = err("e_m2_range", "mesh2 { vertex_vectors { 3, 0, x, y }\n face_indices { 1, <0,1,3> } }");
     assert_eq!((l, c, m.as_str()), (2, 20, "face_indices: index 3 out of range (0 to 2)"));
-    let (l, c, m) =
-        err("e_m2_order", "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,2> } normal_vectors { 1, y } }");
+    let (l, c, m) = err(
+        "e_m2_order",
+        "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,2> } normal_vectors { 1, y } }",
+    );
     assert_eq!((l, c), (1, 67));
     assert!(m.starts_with("`normal_vectors` out of order in mesh2"), "{m}");
     let (l, c, m) = err("e_m2_nofaces", "mesh2 { vertex_vectors { 3, 0, x, y } }");

@@ -955,7 +955,11 @@ fn mesh_packets_single_rays_and_brute_force_agree() {
             inverse: false,
             ..object(ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector: None })
         };
-        let one = Scene::build(&SceneDesc { objects: vec![mesh_object], ..SceneDesc::default() }, DVec3::ZERO, AccelKind::Bvh);
+        let one = Scene::build(
+            &SceneDesc { objects: vec![mesh_object], ..SceneDesc::default() },
+            DVec3::ZERO,
+            AccelKind::Bvh,
+        );
         let brute =
             Scene::build(&SceneDesc { objects: triangles, ..SceneDesc::default() }, DVec3::ZERO, AccelKind::None);
         let prim = one.prims[0];

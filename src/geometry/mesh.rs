@@ -46,7 +46,8 @@ impl MeshData {
     /// normals, each in object space) and stores them in its order.
     pub fn new(faces: impl IntoIterator<Item = ([Vec3; 3], Option<[Vec3; 3]>)>) -> MeshData {
         let faces: Vec<([Vec3; 3], Option<[Vec3; 3]>)> = faces.into_iter().collect();
-        let bounds: Vec<Aabb> = faces.iter().map(|(v, _)| Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))).collect();
+        let bounds: Vec<Aabb> =
+            faces.iter().map(|(v, _)| Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))).collect();
         let mut bvh = Bvh::build(&bounds);
         let mut triangles = Vec::with_capacity(faces.len());
         let mut smooth_of = Vec::with_capacity(faces.len());

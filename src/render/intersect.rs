@@ -21,7 +21,10 @@ pub enum HitShape {
     Plane(u32),
     /// A hit on a mesh or height field (`prim`) resolved to its face (`Scene::resolve`), whose
     /// normal shades it.
-    Face { prim: u32, face: u32 },
+    Face {
+        prim: u32,
+        face: u32,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]

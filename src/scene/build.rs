@@ -480,13 +480,8 @@ impl Scene {
                 let key = (Arc::as_ptr(&field) as usize, smooth, water_level.to_bits());
                 let data = self.mesh_cache.entry(key).or_insert_with(|| {
                     let water = water_level as f32;
-                    let faces = height_field::faces(
-                        field.width as usize,
-                        field.height as usize,
-                        &field.heights,
-                        smooth,
-                        water,
-                    );
+                    let faces =
+                        height_field::faces(field.width as usize, field.height as usize, &field.heights, smooth, water);
                     let data = MeshData::new(faces);
                     Arc::new(if water_level > 0.0 { data.with_floor(water) } else { data })
                 });

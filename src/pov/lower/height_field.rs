@@ -137,7 +137,9 @@ fn pnm_heights(bytes: &[u8]) -> Result<Heights, String> {
     let channels = if color { 3 } else { 1 };
     let n = w * h * channels;
     let samples: Vec<u32> = if ascii {
-        (0..n).map(|_| pnm_number(bytes, &mut pos).map(|v| v as u32).ok_or("too few pixels")).collect::<Result<_, _>>()?
+        (0..n)
+            .map(|_| pnm_number(bytes, &mut pos).map(|v| v as u32).ok_or("too few pixels"))
+            .collect::<Result<_, _>>()?
     } else {
         pos += 1;
         let size = if maxval > 255 { 2 } else { 1 };

@@ -15,15 +15,8 @@ use crate::scene::desc::{MeshDesc, MeshFace, ShapeDesc};
 /// What may follow a triangle's vectors.
 const TRIANGLE_ITEMS: &[&str] = &["texture", "uv_vectors"];
 /// mesh2's sections, in the order POV-Ray requires.
-const MESH2_SECTIONS: &[&str] = &[
-    "vertex_vectors",
-    "normal_vectors",
-    "uv_vectors",
-    "texture_list",
-    "face_indices",
-    "normal_indices",
-    "uv_indices",
-];
+const MESH2_SECTIONS: &[&str] =
+    &["vertex_vectors", "normal_vectors", "uv_vectors", "texture_list", "face_indices", "normal_indices", "uv_indices"];
 /// Image types a height field reads.
 pub const HF_TYPES: &[&str] = &["png", "pgm", "ppm", "tga"];
 /// Types POV-Ray reads that strahl does not.

@@ -237,8 +237,8 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, union, merge, intersection, difference, \
-         object)"
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
+         smooth_triangle, mesh, mesh2, height_field, union, merge, intersection, difference, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -1251,4 +1251,144 @@ fn lathes_load_and_bad_ones_are_located_errors() {
         let (l, c, m) = err("bad_lathe", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
     }
+}
+
+// ---- mesh, mesh2, smooth_triangle, height_field ------------------------------------------
+
+fn mesh_of(s: &SceneDesc, i: usize) -> (&strahl::scene::desc::MeshDesc, Option<DVec3>) {
+    match &s.objects[i].shape {
+        ShapeDesc::Mesh { mesh, inside_vector } => (mesh, *inside_vector),
+        other => panic!("expected a mesh, found {}", other.keyword()),
+    }
+}
+
+#[test]
+fn mesh_triangles_smooth_triangles_and_inside_vector() {
+    let s = load_text(
+        "mesh_ok",
+        "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> }\n\
+         smooth_triangle { <0,0,1> <0,0,-1> <1,0,1> <0,0,-1> <0,1,1> <0,1,-1> }\n\
+         #for (I, 0, 2) triangle { <I,0,2>, <I+1,0,2>, <I,1,2> } #end\n\
+         inside_vector <0, 0, 1> hierarchy off pigment { rgb 1 } }",
+    )
+    .unwrap();
+    let (m, inside) = mesh_of(&s, 0);
+    assert_eq!(m.faces.len(), 5);
+    assert_eq!(m.vertices.len(), 15);
+    assert_eq!(m.faces[1].normals, Some([0, 1, 2]));
+    assert_eq!(m.normals[2], DVec3::new(0.0, 1.0, -1.0));
+    assert_eq!(m.faces[4].normals, None);
+    assert_eq!(inside, Some(DVec3::Z));
+}
+
+#[test]
+fn mesh2_sections_and_shared_normals() {
+    let s = load_text(
+        "mesh2_ok",
+        "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> }\n\
+         normal_vectors { 4, -z, -z, <0,0.1,-1>, -z }\n\
+         uv_vectors { 4, <0,0>, <1,0>, <1,1>, <0,1> }\n\
+         texture_list { 2, texture { pigment { rgb 1 } } texture { pigment { rgb x } } }\n\
+         face_indices { 2, <0,1,2>, 0, <0,2,3>, 0, 1, 1 } }",
+    )
+    .unwrap();
+    let (m, inside) = mesh_of(&s, 0);
+    assert_eq!(m.faces.len(), 2);
+    // Without normal_indices, the face indices index the normals.
+    assert_eq!(m.faces[1].normals, Some([0, 2, 3]));
+    assert_eq!(inside, None);
+}
+
+#[test]
+fn per_triangle_textures_and_uv_warn_by_name() {
+    let d = dir("mesh_warn");
+    let path = write(
+        &d,
+        "scene.pov",
+        "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { pigment { rgb x } } } }\n\
+         mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 1, <0,0> } face_indices { 1, <0,1,2> } uv_indices { 1, <0,0,0> } }",
+    );
+    let (_, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
+    let text: Vec<String> = warnings.iter().map(|w| w.to_string()).collect();
+    assert!(text.iter().any(|w| w.contains("scene.pov:1:45") && w.contains("per-triangle textures")), "{text:?}");
+    assert!(text.iter().any(|w| w.contains("uv coordinates are not modelled")), "{text:?}");
+}
+
+#[test]
+fn declared_mesh_is_shared_by_its_instances() {
+    let s = load_text(
+        "mesh_shared",
+        "#declare M = mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> } }\n\
+         object { M translate x } object { M rotate y*90 }",
+    )
+    .unwrap();
+    let (a, b) = (mesh_of(&s, 0).0, mesh_of(&s, 1).0);
+    assert!(std::ptr::eq(a, b), "one MeshDesc behind both objects");
+    let scene = strahl::scene::build::Scene::build(&s, DVec3::ZERO, Default::default());
+    assert_eq!(scene.meshes.len(), 2);
+    assert!(std::sync::Arc::ptr_eq(&scene.meshes[0].data, &scene.meshes[1].data), "one MeshData built");
+}
+
+#[test]
+fn error_mesh_located() {
+    let (l, c, m) = err("e_mesh_empty", "mesh {\n  pigment { rgb 1 } }");
+    assert_eq!((l, c, m.as_str()), (2, 3, "mesh needs at least one triangle or smooth_triangle"));
+    let (l, c, m) = err("e_mesh_short", "mesh { triangle { <0,0,0>, <1,0,0> } }");
+    assert_eq!((l, c, m.as_str()), (1, 36, "triangle needs three corners: found 2 vectors"));
+    let (l, c, m) = err("e_smooth_short", "smooth_triangle { 0, y, x, y, z }");
+    assert_eq!((l, c), (1, 33));
+    assert_eq!(m, "smooth_triangle needs three corners, each followed by its normal: found 5 vectors");
+    let (l, c, m) = err("e_mesh_kw", "mesh { triangle { 0, x, y } trinagle { 0, x, y } }");
+    assert_eq!((l, c), (1, 29));
+    assert!(m.starts_with("unknown keyword `trinagle` in mesh"), "{m}");
+    let (l, c, m) = err("e_iv", "sphere { 0, 1 inside_vector y }");
+    assert_eq!((l, c), (1, 15));
+    assert!(m.starts_with("`inside_vector` is not supported in sphere"), "{m}");
+}
+
+#[test]
+fn error_mesh2_located() {
+    let (l, c, m) = err("e_m2_count", "mesh2 { vertex_vectors { 3, 0, x } face_indices { 1, <0,1,2> } }");
+    assert_eq!((l, c, m.as_str()), (1, 34, "vertex_vectors declares 3 entries, found 2"));
+    let (l, c, m) = err("e_m2_range", "mesh2 { vertex_vectors { 3, 0, x, y }\n face_indices { 1, <0,1,3> } }");
+    assert_eq!((l, c, m.as_str()), (2, 20, "face_indices: index 3 out of range (0 to 2)"));
+    let (l, c, m) = err(
+        "e_m2_order",
+        "mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0,1,2> } normal_vectors { 1, y } }",
+    );
+    assert_eq!((l, c), (1, 67));
+    assert!(m.starts_with("`normal_vectors` out of order in mesh2"), "{m}");
+    let (l, c, m) = err("e_m2_nofaces", "mesh2 { vertex_vectors { 3, 0, x, y } }");
+    assert_eq!((l, c, m.as_str()), (1, 39, "mesh2 needs face_indices"));
+    let (_, _, m) = err(
+        "e_m2_normals",
+        "mesh2 { vertex_vectors { 3, 0, x, y } normal_vectors { 1, y } face_indices { 1, <0,1,2> } \
+         normal_indices { 1, <0,0,1> } }",
+    );
+    assert_eq!(m, "normal_indices: index 1 out of range (0 to 0)");
+    let (l, c, m) = err("e_m2_more", "mesh2 { vertex_vectors { 1, 0, x } }");
+    assert_eq!((l, c, m.as_str()), (1, 32, "vertex_vectors: more than the 1 entries it declares"));
+}
+
+#[test]
+fn height_field_reads_pgm_and_locates_a_missing_file() {
+    let d = dir("hf");
+    std::fs::write(d.join("f.pgm"), "P2 3 2 255 255 0 0 0 0 128").unwrap();
+    let path = write(&d, "scene.pov", "height_field { pgm \"f.pgm\" smooth water_level 0.25 scale 2 }");
+    let s = load_scene(&path, &std_include()).unwrap();
+    let ShapeDesc::HeightField { field, smooth, water_level } = &s.objects[0].shape else { panic!("height field") };
+    assert_eq!((field.width, field.height, *smooth, *water_level), (3, 2, true, 0.25));
+    assert_eq!(field.heights[0], 1.0);
+    let (l, c, m) = err("hf_missing", "\nheight_field { png \"nowhere.png\" }");
+    assert_eq!((l, c), (2, 20));
+    assert!(m.starts_with("height_field image \"nowhere.png\" not found"), "{m}");
+    let (l, c, m) = err("hf_type", "height_field { jpeg \"a.jpg\" }");
+    assert_eq!((l, c), (1, 16));
+    assert!(m.contains("`jpeg` images are not supported"), "{m}");
+    let d = dir("hf_bad");
+    std::fs::write(d.join("bad.pgm"), "P5 3 2 255\n\x01").unwrap();
+    let path = write(&d, "scene.pov", "height_field { pgm \"bad.pgm\" }");
+    let e = load_scene(&path, &std_include()).expect_err("truncated image");
+    assert_eq!((e.line, e.col), (1, 20));
+    assert!(e.message.ends_with("as pgm: too few pixels"), "{}", e.message);
 }

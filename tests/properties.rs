@@ -136,7 +136,8 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
-    match r.pick(15) {
+    match r.pick(16) {
+        14 => random_mesh(r),
         0 => ShapeDesc::Sphere { center: r.v(-4.0, 4.0), radius: r.f(0.05, 2.0) },
         1 => {
             let (a, b) = (r.v(-4.0, 4.0), r.v(-4.0, 4.0));
@@ -234,6 +235,35 @@ fn random_blob(r: &mut Rng) -> ShapeDesc {
         })
         .collect();
     ShapeDesc::Blob { components, threshold: r.f(0.2, 0.8) }
+}
+
+/// A mesh: a closed star-shaped octahedron (solid through a random `inside_vector`, its
+/// faces sometimes smooth), or an open soup of 2 to 12 triangles (not solid).
+fn random_mesh(r: &mut Rng) -> ShapeDesc {
+    use strahl::scene::desc::{MeshDesc, MeshFace};
+    let c = r.v(-3.0, 3.0);
+    let mut mesh = MeshDesc::default();
+    let inside_vector = if r.pick(3) > 0 {
+        let axes = [DVec3::X, DVec3::Y, DVec3::Z];
+        mesh.vertices = axes.iter().flat_map(|&a| [c + a * r.f(0.3, 2.0), c - a * r.f(0.3, 2.0)]).collect();
+        let smooth = r.pick(2) == 0;
+        if smooth {
+            mesh.normals = mesh.vertices.iter().map(|&v| v - c + r.v(-0.3, 0.3)).collect();
+        }
+        for (x, y, z) in [(0, 2, 4), (2, 1, 4), (1, 3, 4), (3, 0, 4), (2, 0, 5), (1, 2, 5), (3, 1, 5), (0, 3, 5)] {
+            let v = [x, y, z];
+            mesh.faces.push(MeshFace { vertices: v, normals: smooth.then_some(v) });
+        }
+        Some(r.unit())
+    } else {
+        for _ in 0..2 + r.pick(11) {
+            let k = mesh.vertices.len() as u32;
+            mesh.vertices.extend([c + r.v(-1.5, 1.5), c + r.v(-1.5, 1.5), c + r.v(-1.5, 1.5)]);
+            mesh.faces.push(MeshFace { vertices: [k, k + 1, k + 2], normals: None });
+        }
+        None
+    };
+    ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector }
 }
 
 /// A surface of revolution through 4 to 7 points at rising heights, sometimes open.
@@ -531,6 +561,11 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
             ShapeDesc::Text { font: f1, string: s1, thickness: t1, offset: o1, .. },
             ShapeDesc::Text { font: f2, string: s2, thickness: t2, offset: o2, .. },
         ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(*o1, *o2),
+        // Vertices are written in shortest round-trip form and stay in object space: exact.
+        (ShapeDesc::Mesh { mesh: m1, inside_vector: i1 }, ShapeDesc::Mesh { mesh: m2, inside_vector: i2 }) => {
+            m1 == m2 && i1 == i2
+        }
+        (a @ ShapeDesc::HeightField { .. }, b @ ShapeDesc::HeightField { .. }) => a == b,
         (ShapeDesc::Csg { op: o1, children: c1 }, ShapeDesc::Csg { op: o2, children: c2 }) => {
             check(
                 o1 == o2 && c1.len() == c2.len(),
@@ -684,7 +719,11 @@ proptest! {
 fn shipped_scenes_print_and_load_back() {
     let mut scenes = vec![root().join("scenes/seed.pov"), root().join("tests/extremes/scene.pov")];
     for e in std::fs::read_dir(root().join("tests/reference/scenes")).expect("reference scenes") {
-        scenes.push(e.expect("dir entry").path());
+        let path = e.expect("dir entry").path();
+        // Scenes only, not the images they read (hf.pgm).
+        if path.extension().is_some_and(|x| x == "pov") {
+            scenes.push(path);
+        }
     }
     for path in scenes {
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
@@ -759,8 +798,13 @@ fn inside_agrees_with_crossing_parity() {
         let leaf = csg_leaf(r);
         let leaf_shape = leaf.shape.clone();
         let leaf_transform = leaf.transform;
-        let flat =
-            matches!(leaf.shape, ShapeDesc::Triangle { .. } | ShapeDesc::Polygon { .. } | ShapeDesc::Disc { .. });
+        let flat = matches!(
+            leaf.shape,
+            ShapeDesc::Triangle { .. }
+                | ShapeDesc::Polygon { .. }
+                | ShapeDesc::Disc { .. }
+                | ShapeDesc::Mesh { inside_vector: None, .. }
+        );
         // An open cone is a solid with holes in its surface: no parity to count.
         if matches!(
             leaf.shape,
@@ -946,4 +990,80 @@ fn csg_surfaces_match_a_crossing_reference() {
         }
     }
     assert!(compared > 3000 && hits > 250, "{compared} rays compared, {hits} hits");
+}
+
+/// Meshes: eight-lane packets give the single-ray distances bit for bit, and both agree with
+/// brute force over the same triangles placed one by one as `triangle` objects (the mesh's own
+/// BVH, its object-space transform and the face it reports, against no accelerator at all).
+#[test]
+fn mesh_packets_single_rays_and_brute_force_agree() {
+    use strahl::geometry::ray::{RayLanes, MISS};
+    use strahl::lanes::{Lane, F8, V3};
+    use strahl::render::intersect::HitShape;
+    use strahl::scene::desc::{MeshDesc, MeshFace};
+    let r = &mut Rng(0x3E54);
+    let (mut hits, mut rays, mut disagree) = (0, 0, 0);
+    for case in 0..24 {
+        let mut mesh = MeshDesc::default();
+        for _ in 0..50 + r.pick(300) {
+            let k = mesh.vertices.len() as u32;
+            let c = r.v(-3.0, 3.0);
+            mesh.vertices.extend([c + r.v(-0.7, 0.7), c + r.v(-0.7, 0.7), c + r.v(-0.7, 0.7)]);
+            mesh.faces.push(MeshFace { vertices: [k, k + 1, k + 2], normals: None });
+        }
+        let transform = random_transform(r);
+        let object = |shape| ObjectDesc { shape, transform, ..csg_leaf(&mut Rng(case)) };
+        let triangles: Vec<ObjectDesc> = mesh
+            .faces
+            .iter()
+            .map(|f| {
+                let [a, b, c] = f.vertices.map(|i| mesh.vertices[i as usize]);
+                object(ShapeDesc::Triangle { a, b, c })
+            })
+            .map(|o| ObjectDesc { inverse: false, ..o })
+            .collect();
+        let mesh_object = ObjectDesc {
+            inverse: false,
+            ..object(ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector: None })
+        };
+        let one = Scene::build(
+            &SceneDesc { objects: vec![mesh_object], ..SceneDesc::default() },
+            DVec3::ZERO,
+            AccelKind::Bvh,
+        );
+        let brute =
+            Scene::build(&SceneDesc { objects: triangles, ..SceneDesc::default() }, DVec3::ZERO, AccelKind::None);
+        let prim = one.prims[0];
+        let mut stats = RenderStats::default();
+        for _ in 0..40 {
+            let origin = r.v(-8.0, 8.0).as_vec3();
+            let aim = r.v(-3.0, 3.0).as_vec3();
+            let dirs: [Vec3; 8] = std::array::from_fn(|_| (aim + r.v(-0.5, 0.5).as_vec3() - origin).normalize());
+            let packet = RayLanes::<F8>::new(V3::splat(origin), V3::from_lanes(|i| dirs[i]));
+            let t8 = one.hit_prim(&prim, &packet, F8::splat(MISS));
+            for (i, d) in dirs.iter().enumerate() {
+                let ray = Ray::new(origin, *d);
+                let t1 = one.hit_prim(&prim, &ray.lanes(), MISS);
+                assert_eq!(t8.0[i].to_bits(), t1.to_bits(), "case {case}: lane {i} of the packet");
+                let hit = one.intersect(&ray, f32::INFINITY, &mut stats);
+                let truth = brute.intersect(&ray, f32::INFINITY, &mut stats);
+                rays += 1;
+                match (hit, truth) {
+                    (None, None) => {}
+                    (Some(h), Some(b)) if (h.t - b.t).abs() <= 1e-4 * b.t.max(1.0) => {
+                        hits += 1;
+                        let HitShape::Face { face, .. } = h.shape else { panic!("a mesh hit names its face") };
+                        let p = ray.at(h.t);
+                        let (n, m) = (one.normal_at(h.shape, p), brute.normal_at(b.shape, p));
+                        // Coplanar faces can tie; a different face at the same t must lie in the same plane.
+                        assert!(n.dot(m).abs() > 0.999, "case {case}: face {face}'s normal {n} vs {m}");
+                    }
+                    // Rays through an edge shared in f32 by one side and not the other.
+                    _ => disagree += 1,
+                }
+            }
+        }
+    }
+    assert!(hits > 1000, "{hits} of {rays} rays hit");
+    assert!(disagree * 1000 < rays, "{disagree} of {rays} rays disagree with brute force");
 }

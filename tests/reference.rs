@@ -88,6 +88,20 @@ fn scene(name: &str) -> PathBuf {
     root().join("tests/reference/scenes").join(format!("{name}.pov"))
 }
 
+/// Meshes: a declared `mesh` used twice (one carved by CSG through its `inside_vector`), a
+/// smooth `mesh` of smooth_triangles made by loops, a transformed `mesh2` with normal indices,
+/// and a lone `smooth_triangle`.
+#[test]
+fn meshes_match_povray() {
+    check_psnr("meshes", &scene("meshes"), 35.0);
+}
+
+/// Height fields from a PGM: flat and `smooth`, one cut by `water_level`, transformed.
+#[test]
+fn height_fields_match_povray() {
+    check_psnr("heightfields", &scene("heightfields"), 35.0);
+}
+
 /// Cylinders and cones (capped, open, under a non-uniform scale) and discs (with a hole).
 #[test]
 fn cylinders_cones_and_discs_match_povray() {
@@ -206,7 +220,7 @@ fn regions(r: &Rendered) -> Vec<Option<u32>> {
         for x in 0..W {
             let ray = primary_ray(&r.scene, &r.camera, W, H, x, y);
             out.push(r.scene.intersect(&ray, f32::INFINITY, &mut stats).map(|h| match h.shape {
-                HitShape::Plane(_) | HitShape::Prim(_) => r.scene.material_of(h.shape),
+                HitShape::Plane(_) | HitShape::Prim(_) | HitShape::Face { .. } => r.scene.material_of(h.shape),
             }));
         }
     }

@@ -33,7 +33,8 @@ use crate::scene::desc::SceneDesc;
 use crate::scene::generate::{generate, write_generated, Kind};
 
 fn parse_kind(s: &str) -> Result<Kind, String> {
-    Kind::parse(s).ok_or_else(|| format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed)"))
+    Kind::parse(s)
+        .ok_or_else(|| format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed, mesh)"))
 }
 
 /// `strahl gen KIND N -o FILE`: writes a generated scene as POV-Ray text.

@@ -330,6 +330,9 @@ pub enum ShapeKind {
 pub enum ObjectKind {
     /// A shape and its arguments as written (checked for count by the parser).
     Shape(ShapeKind, Vec<Expr>),
+    /// A shape the parser evaluated as it read it (`mesh`, `mesh2`, `height_field`: too
+    /// large to hold as expressions).
+    Built(crate::scene::desc::ShapeDesc),
     /// `object { Name ... }`.
     Ref(Expr),
     /// `object { sphere { ... } ... }`: an object written inside `object`.
@@ -407,6 +410,8 @@ pub enum Modifier {
     Sturm(Span),
     /// `inverse`: inside and outside swap (for CSG).
     Inverse,
+    /// `inside_vector <v>` on a mesh: its inside test casts along `v`.
+    InsideVector(Expr),
     /// `clipped_by { objects }`: only the surface inside all of them remains.
     ClippedBy(Clip),
     /// `bounded_by { objects }`: a hint for the renderer, which changes no picture.

@@ -19,6 +19,12 @@ const REFINE_WINDOW: f64 = 1e-4;
 pub enum HitShape {
     Prim(u32),
     Plane(u32),
+    /// A hit on a mesh or height field (`prim`) resolved to its face (`Scene::resolve`), whose
+    /// normal shades it.
+    Face {
+        prim: u32,
+        face: u32,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,6 +62,7 @@ impl Scene {
             ShapeKind::Sor => self.sors[i].hit(ray, t_min, t_max),
             ShapeKind::Blob => self.blobs[i].hit(ray, t_min, t_max),
             ShapeKind::Julia => self.julias[i].hit(ray, t_min, t_max),
+            ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].hit(ray, t_min, t_max),
             // Only CSG leaves are planes among the primitives.
             ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
             ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
@@ -82,6 +89,7 @@ impl Scene {
             ShapeKind::Sor => self.sors[i].inside(q),
             ShapeKind::Blob => self.blobs[i].inside(q),
             ShapeKind::Julia => self.julias[i].inside(q),
+            ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].inside(q),
             ShapeKind::Plane => self.half_spaces[i].inside(q),
             ShapeKind::Csg => self.inside_node(p.index, q),
         }
@@ -126,14 +134,26 @@ impl Scene {
         best.map(|hit| self.resolve(ray, hit))
     }
 
-    /// A hit on a CSG node as the hit on its leaf (whose normal and material shade it).
+    /// A hit on a CSG node as the hit on its leaf (whose normal and material shade it), and a
+    /// hit on a mesh as the hit on its face.
     #[inline]
     pub fn resolve(&self, ray: &Ray, hit: Hit) -> Hit {
-        match hit.shape {
+        let hit = match hit.shape {
             HitShape::Prim(i) if self.prims[i as usize].kind == ShapeKind::Csg => {
                 let (t, leaf) = self.hit_csg(self.prims[i as usize].index, &ray.lanes(), 0.0, f32::INFINITY);
                 debug_assert_eq!(t, hit.t, "the node's nearest surface, found again");
                 Hit { t: hit.t, shape: HitShape::Prim(leaf as u32) }
+            }
+            _ => hit,
+        };
+        match hit.shape {
+            HitShape::Prim(i) if matches!(self.prims[i as usize].kind, ShapeKind::Mesh | ShapeKind::HeightField) => {
+                // The face at exactly this `t`: the mesh searched again in (t⁻, t⁺), which its
+                // BVH culls to the few boxes around the hit.
+                let mesh = &self.meshes[self.prims[i as usize].index as usize];
+                let found = mesh.hit_face(&ray.lanes(), hit.t.next_down(), hit.t.next_up());
+                debug_assert!(found.is_some_and(|(t, _)| t == hit.t), "the mesh's hit, found again");
+                Hit { t: hit.t, shape: HitShape::Face { prim: i, face: found.map_or(0, |(_, f)| f) } }
             }
             _ => hit,
         }
@@ -147,6 +167,9 @@ impl Scene {
         let t32 = hit.t as f64;
         let t = match hit.shape {
             HitShape::Plane(i) => self.planes[i as usize].hit(&r, 0.0, f64::INFINITY),
+            HitShape::Face { prim, face } => {
+                self.meshes[self.prims[prim as usize].index as usize].refine_face(face, &r)
+            }
             // A CSG leaf's nearest root may lie outside the node: look only near the hit.
             HitShape::Prim(i) if i >= self.first_leaf => {
                 self.hit_prim_in(&self.prims[i as usize], &r, t32 * (1.0 - REFINE_WINDOW), f64::INFINITY)
@@ -228,6 +251,15 @@ impl Scene {
     pub fn normal_lanes<L: Lane>(&self, shape: HitShape, p: V3<L>) -> V3<L> {
         match shape {
             HitShape::Plane(i) => V3::splat(self.planes[i as usize].normal),
+            HitShape::Face { prim, face } => {
+                let r = &self.prims[prim as usize];
+                let n = self.meshes[r.index as usize].normal(face, p);
+                if r.flip {
+                    n.neg()
+                } else {
+                    n
+                }
+            }
             HitShape::Prim(i) => {
                 let r = &self.prims[i as usize];
                 let k = r.index as usize;
@@ -248,6 +280,8 @@ impl Scene {
                     ShapeKind::Blob => self.blobs[k].normal(p),
                     ShapeKind::Julia => self.julias[k].normal(p),
                     ShapeKind::Plane => self.half_spaces[k].normal(p),
+                    // Hits are resolved to faces before anything asks for a normal.
+                    ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[k].normal(0, p),
                     // Hits are resolved to leaves before anything asks for a normal.
                     ShapeKind::Csg => V3::splat(Vec3::Y),
                 };
@@ -263,14 +297,14 @@ impl Scene {
     pub fn casts_shadow(&self, shape: HitShape) -> bool {
         match shape {
             HitShape::Plane(i) => self.plane_casts_shadow[i as usize],
-            HitShape::Prim(i) => self.prims[i as usize].casts_shadow,
+            HitShape::Prim(i) | HitShape::Face { prim: i, .. } => self.prims[i as usize].casts_shadow,
         }
     }
 
     pub fn material_of(&self, shape: HitShape) -> u32 {
         match shape {
             HitShape::Plane(i) => self.plane_materials[i as usize],
-            HitShape::Prim(i) => self.prims[i as usize].material,
+            HitShape::Prim(i) | HitShape::Face { prim: i, .. } => self.prims[i as usize].material,
         }
     }
 }
@@ -278,8 +312,9 @@ impl Scene {
 impl PartialOrd for HitShape {
     fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
         let key = |s: &HitShape| match s {
-            HitShape::Plane(i) => (0, *i),
-            HitShape::Prim(i) => (1, *i),
+            HitShape::Plane(i) => (0, *i, 0),
+            HitShape::Prim(i) => (1, *i, 0),
+            HitShape::Face { prim, face } => (2, *prim, *face),
         };
         key(self).partial_cmp(&key(other))
     }

@@ -79,11 +79,13 @@ fn lane_ray(rays: &Ray8, i: usize) -> Ray {
     Ray { origin: rays.o.lane(i), dir: rays.d.lane(i), inv_dir: rays.inv.lane(i) }
 }
 
+/// What lane's hit `id` (and `face`, `NO_HIT` unless the hit is on a mesh) is.
 #[inline(always)]
-fn hit_shape(id: u32) -> Option<HitShape> {
+fn hit_shape(id: u32, face: u32) -> Option<HitShape> {
     match id {
         NO_HIT => None,
         id if id >= PLANE_ID => Some(HitShape::Plane(id - PLANE_ID)),
+        prim if face != NO_HIT => Some(HitShape::Face { prim, face }),
         id => Some(HitShape::Prim(id)),
     }
 }
@@ -93,17 +95,20 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     let scene = tracer.scene;
     let mut t = [F8::splat(MISS); 8];
     let mut ids = [[NO_HIT; 8]; 8];
+    // The face of each lane's hit on a mesh (`NO_HIT` elsewhere).
+    let mut faces = [[NO_HIT; 8]; 8];
     let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
     intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
-    if !scene.csg.is_empty() {
-        // Hits on CSG nodes become hits on their leaves, one ray at a time (`Scene::resolve`).
+    if !scene.csg.is_empty() || !scene.meshes.is_empty() {
+        // Hits on CSG nodes become hits on their leaves, and hits on meshes hits on their
+        // faces, one ray at a time (`Scene::resolve`).
         for r in 0..rows {
             for i in 0..lanes {
-                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i]) {
-                    if let HitShape::Prim(leaf) =
-                        scene.resolve(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).shape
-                    {
-                        ids[r][i] = leaf;
+                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i], NO_HIT) {
+                    match scene.resolve(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).shape {
+                        HitShape::Prim(leaf) => ids[r][i] = leaf,
+                        HitShape::Face { prim, face } => (ids[r][i], faces[r][i]) = (prim, face),
+                        HitShape::Plane(_) => {}
                     }
                 }
             }
@@ -112,7 +117,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     if tracer.refines() {
         for r in 0..rows {
             for i in 0..lanes {
-                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
                 t[r].0[i] = scene.refine(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).t;
             }
         }
@@ -127,7 +132,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         let mut colors = [[background; 8]; 8];
         for r in 0..rows {
             for i in 0..lanes {
-                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
                 let ray = lane_ray(&rays[r], i);
                 let s = tracer.surface(&ray, &Hit { t: t[r].0[i], shape });
                 colors[r][i] = tracer.shade_surface(&ray, &s, 1, 1.0, Shadows::Trace);
@@ -146,7 +151,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         if !hit.any() {
             continue;
         }
-        let material_of = |i: usize| hit_shape(ids[r][i]).map(|s| scene.material_of(s));
+        let material_of = |i: usize| hit_shape(ids[r][i], faces[r][i]).map(|s| scene.material_of(s));
         let first = (0..lanes).find_map(material_of);
         let uniform = (0..lanes).all(|i| material_of(i).is_none() || material_of(i) == first);
         let material = &scene.materials[first.unwrap_or(0) as usize];
@@ -154,12 +159,13 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
             let ray = &rays[r];
             let p = ray.o.add(ray.d.scale(F8::select(hit, t[r], F8::splat(0.0))));
-            let first_id = ids[r][(0..lanes).find(|&i| ids[r][i] != NO_HIT).unwrap_or(0)];
-            let geometric = match hit_shape(first_id) {
-                Some(shape) if (0..lanes).all(|i| ids[r][i] == first_id || ids[r][i] == NO_HIT) => {
+            let first = (0..lanes).find(|&i| ids[r][i] != NO_HIT).unwrap_or(0);
+            let first_hit = (ids[r][first], faces[r][first]);
+            let geometric = match hit_shape(first_hit.0, first_hit.1) {
+                Some(shape) if (0..lanes).all(|i| (ids[r][i], faces[r][i]) == first_hit || ids[r][i] == NO_HIT) => {
                     scene.normal_lanes(shape, p)
                 }
-                _ => V3::from_lanes(|i| match hit_shape(ids[r][i]) {
+                _ => V3::from_lanes(|i| match hit_shape(ids[r][i], faces[r][i]) {
                     Some(shape) if i < lanes => scene.normal_at(shape, p.lane(i)),
                     _ => Vec3::Y,
                 }),
@@ -177,7 +183,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             shading[r] = RowShading::Lanes(material, eval_pigment_lanes(&material.pigment, p, q));
         } else {
             for i in 0..lanes {
-                let Some(shape) = hit_shape(ids[r][i]) else { continue };
+                let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
                 let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
                 soa.set_lane(r, i, &s);
                 surfaces[r][i] = Some(s);

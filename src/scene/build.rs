@@ -18,6 +18,9 @@
 //! them has an empty range and pays one empty loop per query. Planes keep their own arrays,
 //! since their shadow test is by side, not by intersection.
 
+use std::collections::HashMap;
+use std::sync::Arc;
+
 use glam::{DAffine3, DVec3, Vec3};
 
 use crate::accel::aabb::Aabb;
@@ -28,8 +31,10 @@ use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::height_field;
 use crate::geometry::julia::Julia;
 use crate::geometry::lathe::Lathe;
+use crate::geometry::mesh::{Mesh, MeshData};
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
@@ -42,7 +47,7 @@ use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
-use crate::scene::desc::{CsgOp, ObjectDesc, SceneDesc, ShapeDesc};
+use crate::scene::desc::{CsgOp, MeshDesc, ObjectDesc, SceneDesc, ShapeDesc};
 use crate::scene::material::Material;
 use crate::scene::place::{RenderFrame, RenderShape};
 use crate::shading::pattern::Rgbft;
@@ -73,18 +78,23 @@ pub enum ShapeKind {
     Sor = 14,
     Blob = 15,
     Julia = 20,
+    /// `mesh` and `mesh2`.
+    Mesh = 16,
+    HeightField = 17,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 16] = [
+    pub const ALL: [ShapeKind; 18] = [
         ShapeKind::Blob,
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
+        ShapeKind::HeightField,
         ShapeKind::Julia,
         ShapeKind::Lathe,
+        ShapeKind::Mesh,
         ShapeKind::Plane,
         ShapeKind::Poly,
         ShapeKind::Polygon,
@@ -116,6 +126,8 @@ impl ShapeKind {
             ShapeKind::Sor => "Sor",
             ShapeKind::Blob => "Blob",
             ShapeKind::Julia => "Julia Fractal",
+            ShapeKind::Mesh => "Mesh",
+            ShapeKind::HeightField => "Height Field",
         }
     }
 }
@@ -169,6 +181,12 @@ pub struct Scene {
     pub sors: Vec<Sor>,
     pub blobs: Vec<Blob>,
     pub julias: Vec<Julia>,
+    /// Meshes and height fields (`ShapeKind::Mesh` and `HeightField` index this), each placing
+    /// shared `MeshData`.
+    pub meshes: Vec<Mesh>,
+    /// The `MeshData` built for each mesh description (by address) or height field (address,
+    /// `smooth`, water level bits) during `build`, so instances share one copy.
+    mesh_cache: HashMap<(usize, bool, u64), Arc<MeshData>>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -221,6 +239,8 @@ impl Scene {
             sors: Vec::new(),
             blobs: Vec::new(),
             julias: Vec::new(),
+            meshes: Vec::new(),
+            mesh_cache: HashMap::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -260,6 +280,7 @@ impl Scene {
             }
         }
         scene.prims.extend(leaves);
+        scene.mesh_cache.clear();
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
@@ -468,6 +489,27 @@ impl Scene {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
             }
+            RenderShape::Mesh { render_from_object, mesh, inside_vector } => {
+                let key = (Arc::as_ptr(&mesh) as usize, false, 0);
+                let data = self.mesh_cache.entry(key).or_insert_with(|| Arc::new(mesh_data(&mesh))).clone();
+                let inside = inside_vector.map(|v| v.as_vec3());
+                self.meshes.push(Mesh::new(data, affine_f32(&render_from_object), inside));
+                (ShapeKind::Mesh, at(self.meshes.len()))
+            }
+            RenderShape::HeightField { render_from_object, field, smooth, water_level } => {
+                let key = (Arc::as_ptr(&field) as usize, smooth, water_level.to_bits());
+                let data = self.mesh_cache.entry(key).or_insert_with(|| {
+                    let water = water_level as f32;
+                    let faces =
+                        height_field::faces(field.width as usize, field.height as usize, &field.heights, smooth, water);
+                    let data = MeshData::new(faces);
+                    Arc::new(if water_level > 0.0 { data.with_floor(water) } else { data })
+                });
+                // Solid below its surface, as POV-Ray's: odd crossings going up.
+                let data = data.clone();
+                self.meshes.push(Mesh::new(data, affine_f32(&render_from_object), Some(Vec3::Y)));
+                (ShapeKind::HeightField, at(self.meshes.len()))
+            }
             RenderShape::Plane { .. } | RenderShape::Glyphs { .. } => {
                 unreachable!("planes and text are stored by the caller")
             }
@@ -525,11 +567,19 @@ impl Scene {
             ShapeKind::Sor => self.sors[i].bounds(),
             ShapeKind::Blob => self.blobs[i].bounds(),
             ShapeKind::Julia => self.julias[i].bounds(),
+            ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };
         Aabb::new(lo, hi)
     }
+}
+
+/// A mesh description's triangles (object space, f32) with their BVH.
+fn mesh_data(mesh: &MeshDesc) -> MeshData {
+    let v = |i: u32| mesh.vertices[i as usize].as_vec3();
+    let n = |i: u32| mesh.normals[i as usize].as_vec3();
+    MeshData::new(mesh.faces.iter().map(|f| (f.vertices.map(v), f.normals.map(|k| k.map(n)))))
 }
 
 /// Whether any shape of `object` may let light through (so a `merge`'s inner surfaces show).

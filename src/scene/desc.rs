@@ -4,10 +4,11 @@
 //! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
 //! that `build` can fold them into render-ready f32 data relative to the camera.
 
+use std::sync::Arc;
+
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
 pub use crate::geometry::julia::{ComplexFn, JuliaFunction};
-
 pub use crate::geometry::spline::SplineKind;
 
 /// A POV-Ray colour: red, green, blue, filter, transmit.
@@ -329,6 +330,49 @@ pub enum ShapeDesc {
         offset: DVec3,
         glyphs: Vec<TextGlyph>,
     },
+    /// `mesh` or `mesh2` (POV-Ray 3.4.5.2.2–3): triangles in object space, shared (`Arc`) by
+    /// every object made from one declaration, so N instances hold one copy. Without an
+    /// `inside_vector` a mesh is not solid (nothing is inside it), as in POV-Ray.
+    Mesh {
+        mesh: Arc<MeshDesc>,
+        inside_vector: Option<DVec3>,
+    },
+    /// `height_field { png "f.png" smooth water_level w }` (POV-Ray 3.4.5.1.6): the unit
+    /// square x, z in [0, 1] with y the image's value in [0, 1]; parts below `water_level` are
+    /// left out.
+    HeightField {
+        field: Arc<HeightFieldDesc>,
+        smooth: bool,
+        water_level: f64,
+    },
+}
+
+/// A triangle mesh's vertices, normals and faces, as written (f64).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct MeshDesc {
+    pub vertices: Vec<DVec3>,
+    /// Vertex normals of smooth faces (not normalised; POV-Ray normalises them).
+    pub normals: Vec<DVec3>,
+    pub faces: Vec<MeshFace>,
+}
+
+/// One triangle of a mesh: vertex indices, and normal indices for a smooth one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshFace {
+    pub vertices: [u32; 3],
+    pub normals: Option<[u32; 3]>,
+}
+
+/// A height field's image as heights in [0, 1], row 0 the image's top row.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct HeightFieldDesc {
+    /// The file as found, and the type keyword it was read as (`png`, `pgm`, `ppm`, `tga`).
+    pub file: String,
+    pub format: String,
+    pub width: u32,
+    pub height: u32,
+    /// `width * height` values, row by row.
+    pub heights: Vec<f32>,
 }
 
 /// How a polynomial surface was written.
@@ -430,6 +474,8 @@ impl ShapeDesc {
             ShapeDesc::Sor { .. } => "sor",
             ShapeDesc::Blob { .. } => "blob",
             ShapeDesc::Julia { .. } => "julia_fractal",
+            ShapeDesc::Mesh { .. } => "mesh",
+            ShapeDesc::HeightField { .. } => "height_field",
         }
     }
 }

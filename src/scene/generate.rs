@@ -33,10 +33,12 @@ pub enum Kind {
     Cylinders,
     /// Spheres, boxes and triangles in turn.
     Mixed,
+    /// One `mesh2` of N triangles: a bumpy sphere filling the middle of the cube.
+    Mesh,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 5] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed];
+    pub const ALL: [Kind; 6] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed, Kind::Mesh];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -45,6 +47,7 @@ impl Kind {
             Kind::Triangles => "triangles",
             Kind::Cylinders => "cylinders",
             Kind::Mixed => "mixed",
+            Kind::Mesh => "mesh",
         }
     }
 
@@ -52,6 +55,7 @@ impl Kind {
     pub fn plural(self) -> &'static str {
         match self {
             Kind::Mixed => "mixed objects",
+            Kind::Mesh => "mesh triangles",
             k => k.name(),
         }
     }
@@ -131,7 +135,7 @@ fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
             let half = DVec3::new(0.2 + 0.3 * u(10), 0.2 + 0.3 * u(11), 0.2 + 0.3 * u(12));
             ShapeDesc::Box { corner1: qv(center - half), corner2: qv(center + half) }
         }
-        Kind::Triangles | Kind::Mixed => {
+        Kind::Triangles | Kind::Mixed | Kind::Mesh => {
             let corner = |f: u64| qv(center + DVec3::new(u(f) - 0.5, u(f + 1) - 0.5, u(f + 2) - 0.5) * 1.6);
             ShapeDesc::Triangle { a: corner(10), b: corner(13), c: corner(16) }
         }
@@ -142,6 +146,43 @@ fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
             ShapeDesc::Cone { base, base_radius: radius, cap, cap_radius: radius, open: false, cylinder: true }
         }
     }
+}
+
+/// About `n` triangles (at least 8) on a sphere in the middle of the cube of edge `edge`, its
+/// radius rippled by a few percent: rows of latitude by twice as many columns, each square two
+/// triangles, the poles shared vertices.
+fn bumpy_sphere(n: usize, edge: f64) -> ShapeDesc {
+    use crate::scene::desc::{MeshDesc, MeshFace};
+    let rows = ((n as f64 / 4.0).sqrt().round() as usize).max(2);
+    let cols = 2 * rows;
+    let (center, radius) = (DVec3::new(0.0, 0.8 + 0.5 * edge, 0.0), 0.35 * edge);
+    let mut vertices = vec![qv(center + DVec3::Y * radius)];
+    for r in 1..rows {
+        let theta = std::f64::consts::PI * r as f64 / rows as f64;
+        for c in 0..cols {
+            let phi = std::f64::consts::TAU * c as f64 / cols as f64;
+            let bump = 1.0 + 0.04 * (7.0 * theta).sin() * (9.0 * phi).sin() + 0.001 * unit(r as u64, c as u64);
+            let dir = DVec3::new(theta.sin() * phi.cos(), theta.cos(), theta.sin() * phi.sin());
+            vertices.push(qv(center + dir * radius * bump));
+        }
+    }
+    vertices.push(qv(center - DVec3::Y * radius));
+    let bottom = vertices.len() as u32 - 1;
+    let at = |r: usize, c: usize| (1 + (r - 1) * cols + c % cols) as u32;
+    let mut faces = Vec::with_capacity(2 * rows * cols);
+    let mut face = |v: [u32; 3]| faces.push(MeshFace { vertices: v, normals: None });
+    for c in 0..cols {
+        face([0, at(1, c + 1), at(1, c)]);
+        face([bottom, at(rows - 1, c), at(rows - 1, c + 1)]);
+    }
+    for r in 1..rows - 1 {
+        for c in 0..cols {
+            face([at(r, c), at(r, c + 1), at(r + 1, c)]);
+            face([at(r, c + 1), at(r + 1, c + 1), at(r + 1, c)]);
+        }
+    }
+    let mesh = MeshDesc { vertices, normals: Vec::new(), faces };
+    ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector: None }
 }
 
 /// Length of the camera's `direction` for a unit-long `right`: 60° across a 16:9 image. It stays
@@ -163,7 +204,13 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
         FinishDesc::default(),
         0,
     ));
-    for i in 0..n as u64 {
+    if kind == Kind::Mesh {
+        let shape = bumpy_sphere(n, edge);
+        let color = Color::rgb(PALETTE[1][0], PALETTE[1][1], PALETTE[1][2]);
+        let finish = FinishDesc { phong: 0.5, ..FinishDesc::default() };
+        objects.push(object(shape, PigmentPattern::Solid(color), finish, 1));
+    }
+    for i in (0..n as u64).filter(|_| kind != Kind::Mesh) {
         // The cube [-edge/2, edge/2] × [0.8, edge + 0.8] × [-edge/2, edge/2], just above the floor.
         let center = qv(DVec3::new((unit(i, 0) - 0.5) * edge, 0.8 + unit(i, 1) * edge, (unit(i, 2) - 0.5) * edge));
         let [r, g, b] = PALETTE[(mix(i ^ 0xC0105) % PALETTE.len() as u64) as usize];
@@ -298,7 +345,21 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             ShapeDesc::Cone { base, base_radius, cap, cylinder: true, open: false, .. } => {
                 let _ = write!(o, "cylinder {{ {}, {}, {base_radius}", v(*base), v(*cap));
             }
+            ShapeDesc::Mesh { mesh, inside_vector: None } if mesh.normals.is_empty() => {
+                let _ = write!(o, "mesh2 {{\n  vertex_vectors {{ {}", mesh.vertices.len());
+                for p in &mesh.vertices {
+                    let _ = write!(o, ",\n    {}", v(*p));
+                }
+                let _ = write!(o, "\n  }}\n  face_indices {{ {}", mesh.faces.len());
+                for f in &mesh.faces {
+                    let [a, b, c] = f.vertices;
+                    let _ = write!(o, ",\n    <{a}, {b}, {c}>");
+                }
+                let _ = write!(o, "\n  }}\n ");
+            }
             other @ (ShapeDesc::Polygon { .. }
+            | ShapeDesc::Mesh { .. }
+            | ShapeDesc::HeightField { .. }
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
             | ShapeDesc::Torus { .. }
@@ -361,8 +422,14 @@ mod tests {
         for kind in Kind::ALL {
             let a = generate(kind, 300, 640, 480);
             assert_eq!(a, generate(kind, 300, 640, 480), "{kind:?}");
-            // The floor plus n objects.
-            assert_eq!(a.objects.len(), 301);
+            // The floor plus n objects (one mesh of about n triangles).
+            match (kind, &a.objects[1].shape) {
+                (Kind::Mesh, ShapeDesc::Mesh { mesh, .. }) => {
+                    assert_eq!(a.objects.len(), 2);
+                    assert!(mesh.faces.len().abs_diff(300) < 30, "{}", mesh.faces.len());
+                }
+                _ => assert_eq!(a.objects.len(), 301),
+            }
             assert_eq!(a.lights.len(), 2);
         }
         assert_eq!(generate(Kind::Spheres, 0, 640, 480).objects.len(), 1);

@@ -2,11 +2,15 @@
 //! carried into render space (`RenderFrame`) and composed in f64, as `RenderShape`, before
 //! `Scene::build` rounds it into the per-kind f32 arrays.
 
+use std::sync::Arc;
+
 use glam::{DAffine3, DMat4, DVec3};
 
 use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
-use crate::scene::desc::{BlobComponent, BlobShape, SceneDesc, ShapeDesc, TextGlyph, Transform};
+use crate::scene::desc::{
+    BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, SceneDesc, ShapeDesc, TextGlyph, Transform,
+};
 
 /// Where render space sits in world space: `render = (world − origin) / unit`.
 ///
@@ -154,6 +158,19 @@ pub(crate) enum RenderShape {
         glyphs: Vec<Vec<Piece>>,
         thickness: f64,
     },
+    /// A mesh (shared, object space) under `render_from_object`.
+    Mesh {
+        render_from_object: DAffine3,
+        mesh: Arc<MeshDesc>,
+        inside_vector: Option<DVec3>,
+    },
+    /// A height field's grid (shared, the unit square) under `render_from_object`.
+    HeightField {
+        render_from_object: DAffine3,
+        field: Arc<HeightFieldDesc>,
+        smooth: bool,
+        water_level: f64,
+    },
     /// `normal · p = distance`, `normal` of unit length.
     Plane {
         normal: DVec3,
@@ -278,6 +295,17 @@ impl RenderFrame {
                     thickness: *thickness,
                 }
             }
+            ShapeDesc::Mesh { mesh, inside_vector } => RenderShape::Mesh {
+                render_from_object: render_from_object(),
+                mesh: mesh.clone(),
+                inside_vector: *inside_vector,
+            },
+            ShapeDesc::HeightField { field, smooth, water_level } => RenderShape::HeightField {
+                render_from_object: render_from_object(),
+                field: field.clone(),
+                smooth: *smooth,
+                water_level: *water_level,
+            },
             ShapeDesc::Polygon { points } => RenderShape::Polygon(points.iter().map(|p| point(*p)).collect()),
             ShapeDesc::Csg { .. } => unreachable!("CSG nodes are built by `Scene::add_object`"),
             ShapeDesc::Plane { normal, distance } => {

@@ -162,6 +162,19 @@ fn object(s: &mut String, o: &ObjectDesc) {
             }
             Ok(())
         }
+        ShapeDesc::Mesh { mesh, inside_vector } => {
+            mesh_body(s, mesh);
+            match inside_vector {
+                Some(v) => write!(s, " inside_vector {}", vec(*v)),
+                None => Ok(()),
+            }
+        }
+        ShapeDesc::HeightField { field, smooth, water_level } => {
+            let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
+            let smooth = if *smooth { " smooth" } else { "" };
+            let (format, file, water) = (&field.format, quote(&field.file), num(*water_level));
+            write!(s, "height_field {{ {format} \"{file}\"{smooth} water_level {water}")
+        }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
             write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))
@@ -351,6 +364,44 @@ fn euler_degrees(r: &DMat3) -> DVec3 {
 
 /// Shortest decimal that reads back as the same f64, never in exponent form (the lexer's
 /// numbers are plain decimals).
+/// A mesh as `mesh2` when its faces are all flat or all smooth (its indices as they are), else
+/// as `mesh` triangles (each with its own vertices, as `mesh` reads them).
+fn mesh_body(s: &mut String, mesh: &crate::scene::desc::MeshDesc) {
+    let smooth = mesh.faces.iter().filter(|f| f.normals.is_some()).count();
+    let list = |s: &mut String, name: &str, items: &mut dyn Iterator<Item = String>, n: usize| {
+        let _ = write!(s, "\n  {name} {{ {n}");
+        for it in items {
+            let _ = write!(s, ", {it}");
+        }
+        let _ = write!(s, " }}");
+    };
+    let ix = |i: [u32; 3]| format!("<{}, {}, {}>", i[0], i[1], i[2]);
+    if smooth == 0 || smooth == mesh.faces.len() {
+        let _ = write!(s, "mesh2 {{");
+        list(s, "vertex_vectors", &mut mesh.vertices.iter().map(|v| vec(*v)), mesh.vertices.len());
+        if smooth > 0 {
+            list(s, "normal_vectors", &mut mesh.normals.iter().map(|v| vec(*v)), mesh.normals.len());
+        }
+        list(s, "face_indices", &mut mesh.faces.iter().map(|f| ix(f.vertices)), mesh.faces.len());
+        if smooth > 0 {
+            let normals = &mut mesh.faces.iter().filter_map(|f| f.normals.map(ix));
+            list(s, "normal_indices", normals, mesh.faces.len());
+        }
+        return;
+    }
+    let _ = write!(s, "mesh {{");
+    for f in &mesh.faces {
+        let v = |k: usize| vec(mesh.vertices[f.vertices[k] as usize]);
+        let _ = match f.normals {
+            Some(n) => {
+                let n = |k: usize| vec(mesh.normals[n[k] as usize]);
+                write!(s, "\n  smooth_triangle {{ {}, {}, {}, {}, {}, {} }}", v(0), n(0), v(1), n(1), v(2), n(2))
+            }
+            None => write!(s, "\n  triangle {{ {}, {}, {} }}", v(0), v(1), v(2)),
+        };
+    }
+}
+
 fn num(v: f64) -> String {
     if v.is_finite() {
         format!("{v}")

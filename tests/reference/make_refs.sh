@@ -28,3 +28,7 @@ done
 for s in prisms text lathes sors blobs julias; do
     render "$here/scenes/$s.pov" "$s"
 done
+# heightfields.pov reads hf.pgm beside it, made by scripts/make-heightfield.py.
+for s in meshes heightfields; do
+    (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
+done

@@ -219,7 +219,7 @@ impl Lowerer<'_> {
         self.eval(e)?.as_float(e.span)
     }
 
-    pub(super) fn vec3(&self, e: &Expr) -> PResult<DVec3> {
+    pub(crate) fn vec3(&self, e: &Expr) -> PResult<DVec3> {
         self.eval(e)?.as_vec3(e.span)
     }
 

@@ -8,6 +8,7 @@ mod camera;
 mod eval;
 mod fileio;
 mod functions;
+mod height_field;
 mod julia;
 mod objects;
 mod sweeps;
@@ -142,7 +143,7 @@ impl<'f> Lowerer<'f> {
     }
 
     /// Records a warning (POV-Ray's "Scale by 0.0", `#warning`, ...) for the caller to print.
-    fn warn(&mut self, diag: Diag) {
+    pub(crate) fn warn(&mut self, diag: Diag) {
         self.output.push(Output::Warning(diag));
     }
 

@@ -24,10 +24,11 @@ impl Lowerer<'_> {
             ObjectKind::Shape(kind, args) => Some(self.shape(*kind, args, o.span)?),
             ObjectKind::Blob(blob) => Some(self.blob(blob, o.span)?),
             ObjectKind::Julia(julia) => Some(self.julia(julia, o.span)?),
+            ObjectKind::Built(shape) => Some(shape.clone()),
             _ => None,
         };
         let mut group = match &o.kind {
-            ObjectKind::Shape(..) | ObjectKind::Blob(_) | ObjectKind::Julia(_) => Group {
+            ObjectKind::Shape(..) | ObjectKind::Blob(_) | ObjectKind::Julia(_) | ObjectKind::Built(_) => Group {
                 parts: vec![Part::leaf(ObjectDesc {
                     shape: shape.expect("a shape was lowered above"),
                     transform: Transform::default(),
@@ -176,6 +177,15 @@ impl Lowerer<'_> {
                 ShapeDesc::Poly { sturm, written, .. } if *written != PolyForm::Quadric => *sturm = true,
                 other => return Err(flag_not_taken(*span, "sturm", other.keyword(), STURM_SHAPES)),
             },
+            Modifier::InsideVector(e) => match &mut obj.shape {
+                ShapeDesc::Mesh { inside_vector, .. } => *inside_vector = Some(self.vec3(e)?),
+                other => {
+                    return Err(Diag::new(
+                        e.span,
+                        format!("`inside_vector` is for mesh and mesh2, not {}", other.keyword()),
+                    ))
+                }
+            },
             Modifier::Inverse | Modifier::ClippedBy(_) | Modifier::BoundedBy(_) => {
                 unreachable!("handled by `modifiers`")
             }
@@ -262,6 +272,9 @@ impl Lowerer<'_> {
                 self.children(children, "bounded_by", *span)?;
             }
             Modifier::BoundedBy(Clip::Other(_)) => {}
+            Modifier::InsideVector(e) => {
+                return Err(Diag::new(e.span, format!("`inside_vector` is for mesh and mesh2, not {word}")))
+            }
             Modifier::Inverse | Modifier::ClippedBy(_) => unreachable!("a union taking these is made whole first"),
         }
         Ok(())

@@ -126,6 +126,7 @@ pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "mesh",
     "mesh2",
     "height_field",
+    "blob",
     "isosurface",
     "bicubic_patch",
     "sphere_sweep",

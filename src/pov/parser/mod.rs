@@ -14,6 +14,7 @@ mod expr;
 mod julia;
 mod keywords;
 mod macros;
+mod mesh;
 mod scene;
 mod stream;
 mod textures;

@@ -43,10 +43,17 @@ const TOP_LEVEL: &[&str] = &[
     "sor",
     "blob",
     "julia_fractal",
+    "smooth_triangle",
+    "mesh",
+    "mesh2",
+    "height_field",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, smooth_triangle, mesh, mesh2, height_field, union, \
+     merge, intersection, difference, object";
+/// Shapes whose bodies the parser reads and evaluates itself (`parser::mesh`).
+const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -72,10 +79,15 @@ pub const MODIFIERS: &[&str] = &[
     "inverse",
     "clipped_by",
     "bounded_by",
+    "inside_vector",
+    "hierarchy",
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
-    shape_kind(word).is_some() || matches!(word, "object" | "blob" | "julia_fractal") || csg_op(word).is_some()
+    shape_kind(word).is_some()
+        || matches!(word, "object" | "blob" | "julia_fractal")
+        || csg_op(word).is_some()
+        || BUILT.contains(&word)
 }
 
 /// The items a shape parsed by a file of its own takes, which may stand among its modifiers.
@@ -319,6 +331,10 @@ impl Parser<'_, '_> {
             None if word == "blob" => ObjectKind::Blob(self.blob_items()?),
             None if word == "julia_fractal" => ObjectKind::Julia(self.julia_items()?),
             Some(shape) => ObjectKind::Shape(shape, self.shape_args(shape, &word)?),
+            None if word == "mesh" => ObjectKind::Built(self.mesh_body(kw)?),
+            None if word == "mesh2" => ObjectKind::Built(self.mesh2_body(kw)?),
+            None if word == "smooth_triangle" => ObjectKind::Built(self.smooth_triangle_body()?),
+            None if word == "height_field" => ObjectKind::Built(self.height_field_body(kw)?),
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
                 let children = self.children();
@@ -369,6 +385,23 @@ impl Parser<'_, '_> {
                 Some("clipped_by") => Modifier::ClippedBy(self.clip("clipped_by", "bounded_by")?),
                 Some("bounded_by") => Modifier::BoundedBy(self.clip("bounded_by", "clipped_by")?),
                 Some("sturm") => Modifier::Sturm(self.bump().span),
+                Some("inside_vector") if matches!(&*word, "mesh" | "mesh2" | "object") => {
+                    self.bump();
+                    Modifier::InsideVector(self.expr()?)
+                }
+                // A hint for POV-Ray's own mesh bounding; strahl always builds a BVH.
+                Some("hierarchy") if BUILT.contains(&&*word) || word == "object" => {
+                    self.bump();
+                    let starts_value = match &self.peek().kind {
+                        TokenKind::Number(_) => true,
+                        TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
+                        _ => false,
+                    };
+                    if starts_value {
+                        self.expr()?;
+                    }
+                    continue;
+                }
                 Some("hollow") => {
                     self.bump();
                     // `hollow` alone means on; a boolean may follow (`hollow off`, `hollow 0`).
@@ -434,6 +467,8 @@ impl Parser<'_, '_> {
                                     )
                                 )
                         }
+                        "inside_vector" => matches!(&*word, "mesh" | "mesh2"),
+                        "hierarchy" => BUILT.contains(&&*word),
                         _ => true,
                     };
                     let allowed: Vec<&str> = own_items(&kind).iter().chain(MODIFIERS).copied().filter(takes).collect();

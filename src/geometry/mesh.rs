@@ -1,0 +1,319 @@
+//! Triangle meshes (`mesh`, `mesh2`, and the grid of a `height_field`): the triangles in object
+//! space with their own BVH, stored once (`MeshData` behind an `Arc`) and placed by a frame per
+//! object (`Mesh`), so a declared mesh used N times holds one copy.
+//!
+//! The per-triangle test is `triangle::Triangle`'s (Möller–Trumbore); the hierarchy is
+//! `accel::bvh::Bvh`, built over the triangles' boxes and traversed with a closure, as the
+//! scene's own is. A ray is carried into object space once per lane and traced there; the hit
+//! reports which face (`Mesh::hit_face`), and the face's normal is computed afterwards, only for
+//! the winning hit (`Mesh::normal`): interpolated for a smooth triangle, flipped to the side of
+//! the geometric normal as POV-Ray does.
+
+use std::sync::Arc;
+
+use glam::{Affine3A, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::{Ray, RayLanes, MISS};
+use super::triangle::Triangle;
+use super::{transformed_bounds, Shape};
+use crate::accel::aabb::Aabb;
+use crate::accel::bvh::Bvh;
+use crate::lanes::{Lane, V3};
+
+/// `MeshData::smooth_of` for a flat face.
+const FLAT: u32 = u32::MAX;
+
+/// A mesh's triangles in object space, in the BVH's leaf order (so a leaf's faces are
+/// contiguous and `Bvh::prim_order` is the identity), with their vertex normals.
+#[derive(Debug)]
+pub struct MeshData {
+    pub triangles: Vec<Triangle>,
+    /// Per face: its entry in `smooth`, or `FLAT`.
+    smooth_of: Vec<u32>,
+    /// Unit vertex normals of the smooth faces.
+    smooth: Vec<[Vec3; 3]>,
+    bvh: Bvh,
+    pub min: Vec3,
+    pub max: Vec3,
+    /// Hits below this object-space height are not hits (`height_field`'s `water_level`);
+    /// -inf for meshes.
+    floor: f32,
+}
+
+impl MeshData {
+    /// Builds the hierarchy over `faces` (three vertices and, for a smooth face, three
+    /// normals, each in object space) and stores them in its order.
+    pub fn new(faces: impl IntoIterator<Item = ([Vec3; 3], Option<[Vec3; 3]>)>) -> MeshData {
+        let faces: Vec<([Vec3; 3], Option<[Vec3; 3]>)> = faces.into_iter().collect();
+        let bounds: Vec<Aabb> =
+            faces.iter().map(|(v, _)| Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))).collect();
+        let mut bvh = Bvh::build(&bounds);
+        let mut triangles = Vec::with_capacity(faces.len());
+        let mut smooth_of = Vec::with_capacity(faces.len());
+        let mut smooth = Vec::new();
+        let mut all = Aabb::EMPTY;
+        for &f in &bvh.prim_order {
+            let (v, n) = faces[f as usize];
+            triangles.push(Triangle::new(v[0], v[1], v[2]));
+            all.grow(&bounds[f as usize]);
+            match n {
+                Some(n) => {
+                    smooth_of.push(smooth.len() as u32);
+                    smooth.push(n.map(|n| n.normalize_or_zero()));
+                }
+                None => smooth_of.push(FLAT),
+            }
+        }
+        // Faces are stored in leaf order: leaf ranges now index `triangles` directly.
+        bvh.prim_order = (0..triangles.len() as u32).collect();
+        let (min, max) = if triangles.is_empty() { (Vec3::ZERO, Vec3::ZERO) } else { (all.min, all.max) };
+        MeshData { triangles, smooth_of, smooth, bvh, min, max, floor: f32::NEG_INFINITY }
+    }
+
+    /// Hits below object-space height `floor` are left out (`water_level`).
+    pub fn with_floor(mut self, floor: f32) -> MeshData {
+        self.floor = floor;
+        self
+    }
+
+    /// Whether the hit at `t` on `ray` lies above the floor.
+    #[inline(always)]
+    fn above_floor(&self, ray: &Ray, t: f32) -> bool {
+        self.floor == f32::NEG_INFINITY || ray.origin.y + t * ray.dir.y >= self.floor
+    }
+
+    /// The nearest face hit by the object-space `ray` in `(t_min, t_max)`: its distance and
+    /// index. Ties go to the face found first, the same on every path.
+    #[inline]
+    pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, u32)> {
+        // Idle lanes of a packet (a point at infinity, an empty interval): the slab test reads
+        // NaN as "could be anywhere" and would visit every node.
+        if !(t_min < t_max && ray.origin.is_finite() && ray.dir.is_finite()) {
+            return None;
+        }
+        let lanes = ray.lanes();
+        let mut best = None;
+        self.bvh.traverse(ray, t_max, |f, t_max| {
+            let t = self.triangles[f as usize].hit(&lanes, t_min, t_max);
+            (t != MISS && self.above_floor(ray, t)).then(|| {
+                best = Some((t, f));
+                t
+            })
+        });
+        best
+    }
+
+    /// How many faces the object-space `ray` crosses at `t > 0` (the inside test's parity).
+    pub fn crossings(&self, ray: &Ray) -> u32 {
+        if !(ray.origin.is_finite() && ray.dir.is_finite()) {
+            return 0;
+        }
+        let lanes = ray.lanes();
+        let mut n = 0;
+        self.bvh.traverse(ray, f32::INFINITY, |f, _| {
+            let t = self.triangles[f as usize].hit(&lanes, 0.0, f32::INFINITY);
+            n += (t != MISS && self.above_floor(ray, t)) as u32;
+            None
+        });
+        n
+    }
+
+    /// Whether `face` has vertex normals.
+    pub fn is_smooth(&self, face: u32) -> bool {
+        self.smooth_of[face as usize] != FLAT
+    }
+
+    /// Bytes held, for the statistics and docs/perf/meshes.md.
+    pub fn bytes(&self) -> usize {
+        self.triangles.len() * std::mem::size_of::<Triangle>()
+            + self.smooth_of.len() * 4
+            + self.smooth.len() * 36
+            + self.bvh.nodes.len() * std::mem::size_of::<crate::accel::bvh::BvhNode>()
+            + self.bvh.prim_order.len() * 4
+    }
+}
+
+/// One placed mesh: shared triangles under an object transform.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    pub data: Arc<MeshData>,
+    frame: BoxFrame,
+    /// `inside_vector` in object space: points are inside when a ray from them along it crosses
+    /// the surface an odd number of times. `None`: not solid.
+    inside_vector: Option<Vec3>,
+    min: Vec3,
+    max: Vec3,
+}
+
+impl Mesh {
+    pub fn new(data: Arc<MeshData>, render_from_object: Affine3A, inside_vector: Option<Vec3>) -> Mesh {
+        let (min, max) = transformed_bounds(&render_from_object, data.min, data.max);
+        let inside_vector = inside_vector.filter(|v| v.length_squared() > 0.0 && v.is_finite());
+        Mesh { data, frame: frame_for(render_from_object), inside_vector, min, max }
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    /// Lane `i` of a render-space ray as an object-space `Ray` (not normalised: `t` is the
+    /// same along both). Every path (packets, single rays, the face lookup) goes through here,
+    /// so they trace the same numbers.
+    #[inline(always)]
+    fn object_ray<L: Lane>(&self, o: &V3<L>, d: &V3<L>, i: usize) -> Ray {
+        let origin = Vec3::new(o.x.get(i), o.y.get(i), o.z.get(i));
+        let dir = Vec3::new(d.x.get(i), d.y.get(i), d.z.get(i));
+        Ray { origin, dir, inv_dir: dir.recip() }
+    }
+
+    /// The nearest hit of one ray and which face it is on.
+    #[inline]
+    pub fn hit_face(&self, ray: &RayLanes<f32>, t_min: f32, t_max: f32) -> Option<(f32, u32)> {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        self.data.nearest(&self.object_ray(&o, &d, 0), t_min, t_max)
+    }
+
+    /// `face`'s hit re-solved in f64 (`--precision f64`): the triangle kernel on the ray
+    /// carried into object space in f64.
+    pub fn refine_face(&self, face: u32, ray: &RayLanes<f64>) -> f64 {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        self.data.triangles[face as usize].hit(&RayLanes::new(o, d), 0.0, f64::INFINITY)
+    }
+
+    /// The normal of `face` at render-space points on it: the geometric one, or for a smooth
+    /// face the vertex normals interpolated by the point's barycentric coordinates, flipped to
+    /// the geometric normal's side (POV-Ray 3.4.5.2.1: `smooth_triangle`).
+    #[inline(always)]
+    pub fn normal<L: Lane>(&self, face: u32, p: V3<L>) -> V3<L> {
+        let tri = &self.data.triangles[face as usize];
+        let geometric = V3::splat(tri.normal);
+        let n = match self.data.smooth_of[face as usize] {
+            FLAT => geometric,
+            k => {
+                let [n0, n1, n2] = self.data.smooth[k as usize];
+                let q = p.transform_point(&self.frame.object_from_render).sub(V3::splat(tri.v0));
+                let (e1, e2) = (V3::splat(tri.e1), V3::splat(tri.e2));
+                let (d00, d01, d11) = (tri.e1.dot(tri.e1), tri.e1.dot(tri.e2), tri.e2.dot(tri.e2));
+                let inv = 1.0 / (d00 * d11 - d01 * d01);
+                let (d20, d21) = (q.dot(e1), q.dot(e2));
+                let u = (L::splat(d11) * d20 - L::splat(d01) * d21) * L::splat(inv);
+                let v = (L::splat(d00) * d21 - L::splat(d01) * d20) * L::splat(inv);
+                let w = L::splat(1.0) - u - v;
+                let n = V3::splat(n0).scale(w).add(V3::splat(n1).scale(u)).add(V3::splat(n2).scale(v));
+                let n = V3::select(n.dot(geometric).lt(L::splat(0.0)), n.neg(), n);
+                // A zero interpolated normal (opposite vertex normals) falls back to the face's.
+                V3::select(L::lt(L::splat(0.0), n.dot(n)), n, geometric)
+            }
+        };
+        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
+}
+
+impl Shape for Mesh {
+    /// Each lane traced on its own through the mesh's BVH (lanes of a packet part ways inside
+    /// a mesh as soon as they reach different faces).
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        L::from_fn(|i| {
+            let r = self.object_ray(&o, &d, i);
+            self.data.nearest(&r, t_min.get(i), t_max.get(i)).map_or(MISS, |(t, _)| t)
+        })
+    }
+
+    /// Without a face the normal is unknown: hits on meshes are resolved to faces
+    /// (`HitShape::Face`) before anything asks, and `Mesh::normal` answers then.
+    #[inline(always)]
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        self.normal(0, p)
+    }
+
+    /// POV-Ray's `inside_vector` test: odd crossings along it are inside; no vector, not solid.
+    #[inline(always)]
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        let Some(v) = self.inside_vector else { return L::mask_from_fn(|_| false) };
+        let q = p.transform_point(&self.frame.object_from_render);
+        L::mask_from_fn(|i| {
+            let origin = Vec3::new(q.x.get(i), q.y.get(i), q.z.get(i));
+            self.data.crossings(&Ray { origin, dir: v, inv_dir: v.recip() }) % 2 == 1
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::lanes::F8;
+
+    /// The unit cube as 12 triangles.
+    fn cube() -> Vec<([Vec3; 3], Option<[Vec3; 3]>)> {
+        let c = |i: u32| Vec3::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32);
+        let quads = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]];
+        quads.iter().flat_map(|q| [([c(q[0]), c(q[1]), c(q[2])], None), ([c(q[0]), c(q[2]), c(q[3])], None)]).collect()
+    }
+
+    fn placed(inside: bool) -> Mesh {
+        let xf = Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0)) * Affine3A::from_rotation_y(0.3);
+        Mesh::new(Arc::new(MeshData::new(cube())), xf, inside.then_some(Vec3::new(0.1, 0.2, 1.0)))
+    }
+
+    #[test]
+    fn hits_report_their_face() {
+        let m = placed(false);
+        let ray = Ray::new(Vec3::new(0.3, 0.5, -1.0), Vec3::Z);
+        let (t, face) = m.hit_face(&ray.lanes(), 0.0, f32::INFINITY).expect("hit");
+        assert_eq!(m.intersect(&ray, 0.0, f32::INFINITY), Some(t));
+        let n = m.normal(face, V3::from_vec3(ray.at(t))).vec3();
+        // The front face (z = 0 before the turn); its winding, not the mesh, sets the sign.
+        assert!(n.dot(Vec3::Z).abs() > 0.9, "{n}");
+    }
+
+    #[test]
+    fn inside_by_parity_only_with_an_inside_vector() {
+        let p = Affine3A::from_translation(Vec3::new(0.0, 0.0, 3.0)).transform_point3(Vec3::splat(0.5));
+        assert!(placed(true).inside(V3::from_vec3(p)));
+        assert!(!placed(false).inside(V3::from_vec3(p)));
+        assert!(!placed(true).inside(V3::from_vec3(Vec3::new(5.0, 0.0, 0.0))));
+    }
+
+    /// objects/csg/hfclip.pov took 90 s at 64×48: CSG asks `inside` for idle packet lanes at
+    /// infinity, whose NaN slabs entered every node of the mesh's BVH.
+    #[test]
+    fn points_at_infinity_are_outside_without_a_walk() {
+        let m = placed(true);
+        assert!(!m.inside(V3::from_vec3(Vec3::INFINITY)));
+        assert!(!m.inside(V3::from_vec3(Vec3::NAN)));
+        let idle = Ray::new(Vec3::INFINITY, Vec3::Z);
+        assert_eq!(m.hit(&idle.lanes(), 0.0, f32::INFINITY), MISS);
+    }
+
+    #[test]
+    fn eight_lanes_match_one() {
+        let m = placed(true);
+        let dirs: [Vec3; 8] =
+            std::array::from_fn(|i| Vec3::new(0.05 * i as f32 - 0.2, 0.1 - 0.03 * i as f32, 1.0).normalize());
+        let o = Vec3::new(0.4, 0.4, -1.0);
+        let wide = RayLanes::<F8>::new(V3::splat(o), V3::from_lanes(|i| dirs[i]));
+        let t8 = m.hit(&wide, F8::splat(0.0), F8::splat(f32::INFINITY));
+        for (i, d) in dirs.iter().enumerate() {
+            let one = m.hit(&Ray::new(o, *d).lanes(), 0.0, f32::INFINITY);
+            assert_eq!(t8.0[i].to_bits(), one.to_bits());
+        }
+    }
+
+    #[test]
+    fn smooth_normals_interpolate_and_keep_the_geometric_side() {
+        let v = [Vec3::ZERO, Vec3::X, Vec3::Y];
+        // Normals written pointing away from the geometric normal (+z): flipped back.
+        let n = [-Vec3::Z + Vec3::X, -Vec3::Z, -Vec3::Z];
+        let m = Mesh::new(Arc::new(MeshData::new([(v, Some(n))])), Affine3A::IDENTITY, None);
+        let at0 = m.normal(0, V3::from_vec3(Vec3::new(0.0, 0.0, 0.0))).vec3();
+        assert!((at0 - Vec3::new(-1.0, 0.0, 1.0).normalize()).length() < 1e-5, "{at0}");
+        let at1 = m.normal(0, V3::from_vec3(Vec3::new(1.0, 0.0, 0.0))).vec3();
+        assert!((at1 - Vec3::Z).length() < 1e-5, "{at1}");
+    }
+}

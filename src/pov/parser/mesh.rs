@@ -1,0 +1,347 @@
+//! `mesh`, `mesh2` and `height_field` bodies (POV-Ray 3.4.5.2.2, 3.4.5.2.3, 3.4.5.1.6), read
+//! and evaluated as they are parsed: a million triangles held as expressions would take
+//! gigabytes, as numbers they take 36 bytes each. Their modifiers (`inside_vector`,
+//! `hierarchy` and the usual ones) are read by `object`.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use super::Parser;
+use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::Value;
+use crate::scene::desc::{MeshDesc, MeshFace, ShapeDesc};
+
+/// What may follow a triangle's vectors.
+const TRIANGLE_ITEMS: &[&str] = &["texture", "uv_vectors"];
+/// mesh2's sections, in the order POV-Ray requires.
+const MESH2_SECTIONS: &[&str] =
+    &["vertex_vectors", "normal_vectors", "uv_vectors", "texture_list", "face_indices", "normal_indices", "uv_indices"];
+/// Image types a height field reads.
+pub const HF_TYPES: &[&str] = &["png", "pgm", "ppm", "tga"];
+/// Types POV-Ray reads that strahl does not.
+const HF_OTHER_TYPES: &[&str] = &["exr", "gif", "hdr", "iff", "jpeg", "pot", "sys", "tiff", "function"];
+
+/// Per-triangle features read but not modelled, for one warning each.
+#[derive(Default)]
+struct Unmodelled {
+    textures: Option<Span>,
+    uv: Option<Span>,
+}
+
+impl Parser<'_, '_> {
+    /// `mesh { triangle { a, b, c } smooth_triangle { a, na, b, nb, c, nc } ... }`, up to the
+    /// modifiers. Every triangle gets its own three vertices.
+    pub(super) fn mesh_body(&mut self, kw: Span) -> PResult<ShapeDesc> {
+        let mut mesh = MeshDesc::default();
+        let mut unmodelled = Unmodelled::default();
+        while let Some(word) = self.peek_ident().filter(|w| matches!(&**w, "triangle" | "smooth_triangle")) {
+            let smooth = &*word == "smooth_triangle";
+            let tkw = self.bump().span;
+            self.open_block(&word, tkw)?;
+            let v = self.triangle_vectors(&word, smooth)?;
+            while !self.at_block_end() {
+                match self.peek_ident().as_deref() {
+                    Some("texture") => {
+                        let t = self.texture()?;
+                        unmodelled.textures.get_or_insert(t.span);
+                    }
+                    Some("uv_vectors") => {
+                        let span = self.bump().span;
+                        for i in 0..3 {
+                            if i > 0 {
+                                self.eat_punct(',');
+                            }
+                            self.expr()?;
+                        }
+                        unmodelled.uv.get_or_insert(span);
+                    }
+                    _ => return Err(self.unknown_in(&word, TRIANGLE_ITEMS)),
+                }
+            }
+            self.close_block(&word, tkw)?;
+            let first = mesh.vertices.len() as u32;
+            let face = [first, first + 1, first + 2];
+            if smooth {
+                mesh.vertices.extend([v[0], v[2], v[4]]);
+                let n = mesh.normals.len() as u32;
+                mesh.normals.extend([v[1], v[3], v[5]]);
+                mesh.faces.push(MeshFace { vertices: face, normals: Some([n, n + 1, n + 2]) });
+            } else {
+                mesh.vertices.extend(&v[..3]);
+                mesh.faces.push(MeshFace { vertices: face, normals: None });
+            }
+        }
+        if mesh.faces.is_empty() {
+            return Err(Diag::new(self.peek().span, "mesh needs at least one triangle or smooth_triangle"));
+        }
+        self.warn_unmodelled("mesh", &unmodelled);
+        let _ = kw;
+        Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
+    }
+
+    /// A `triangle`'s three corners, or a `smooth_triangle`'s corners each followed by its
+    /// normal (`[a, na, b, nb, c, nc]`).
+    fn triangle_vectors(&mut self, word: &str, smooth: bool) -> PResult<[DVec3; 6]> {
+        let count = if smooth { 6 } else { 3 };
+        let mut v = [DVec3::ZERO; 6];
+        for (i, slot) in v.iter_mut().take(count).enumerate() {
+            if i > 0 {
+                self.eat_punct(',');
+            }
+            if !self.starts_expr(super::scene::MODIFIERS) || self.peek_ident().as_deref() == Some("uv_vectors") {
+                let what = if smooth { "three corners, each followed by its normal" } else { "three corners" };
+                return Err(Diag::new(self.peek().span, format!("{word} needs {what}: found {i} vectors")));
+            }
+            let e = self.expr()?;
+            *slot = self.low.vec3(&e)?;
+        }
+        Ok(v)
+    }
+
+    /// A `smooth_triangle` object: a mesh of one smooth face, up to the modifiers.
+    pub(super) fn smooth_triangle_body(&mut self) -> PResult<ShapeDesc> {
+        let v = self.triangle_vectors("smooth_triangle", true)?;
+        let mesh = MeshDesc {
+            vertices: vec![v[0], v[2], v[4]],
+            normals: vec![v[1], v[3], v[5]],
+            faces: vec![MeshFace { vertices: [0, 1, 2], normals: Some([0, 1, 2]) }],
+        };
+        Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
+    }
+
+    /// `mesh2 { vertex_vectors {..} [normal_vectors {..}] [uv_vectors {..}] [texture_list {..}]
+    /// face_indices {..} [normal_indices {..}] [uv_indices {..}] }`, up to the modifiers.
+    pub(super) fn mesh2_body(&mut self, kw: Span) -> PResult<ShapeDesc> {
+        let mut mesh = MeshDesc::default();
+        let mut unmodelled = Unmodelled::default();
+        let mut normal_indices: Option<(Vec<[u32; 3]>, Span)> = None;
+        let mut faces: Option<(Vec<[u32; 3]>, Span)> = None;
+        let mut last = None::<usize>;
+        while let Some(word) = self.peek_ident().filter(|w| MESH2_SECTIONS.contains(&&**w)) {
+            let order = MESH2_SECTIONS.iter().position(|s| *s == &*word).unwrap_or(0);
+            let skw = self.bump().span;
+            if last.is_some_and(|l| l >= order) {
+                return Err(Diag::new(
+                    skw,
+                    format!("`{word}` out of order in mesh2 (POV-Ray's order: {})", MESH2_SECTIONS.join(", ")),
+                ));
+            }
+            last = Some(order);
+            self.open_block(&word, skw)?;
+            let count = self.section_count(&word, skw)?;
+            match &*word {
+                "vertex_vectors" | "normal_vectors" => {
+                    let mut out = Vec::with_capacity(count.min(1 << 24));
+                    self.section_items(&word, count, |p| {
+                        let e = p.expr()?;
+                        out.push(p.low.vec3(&e)?);
+                        Ok(true)
+                    })?;
+                    if &*word == "vertex_vectors" {
+                        mesh.vertices = out;
+                    } else {
+                        mesh.normals = out;
+                    }
+                }
+                "uv_vectors" => {
+                    self.section_items(&word, count, |p| p.expr().map(|_| true))?;
+                    unmodelled.uv.get_or_insert(skw);
+                }
+                "texture_list" => {
+                    self.section_items(&word, count, |p| {
+                        if p.peek_ident().as_deref() != Some("texture") {
+                            return Err(Diag::new(p.peek().span, "texture_list holds `texture { ... }` blocks"));
+                        }
+                        p.texture().map(|_| true)
+                    })?;
+                    unmodelled.textures.get_or_insert(skw);
+                }
+                "face_indices" | "normal_indices" | "uv_indices" => {
+                    let limit = match &*word {
+                        "face_indices" => mesh.vertices.len(),
+                        "normal_indices" => mesh.normals.len(),
+                        _ => usize::MAX,
+                    };
+                    let mut out = Vec::with_capacity(count.min(1 << 24));
+                    let name = word.clone();
+                    let mut textured = false;
+                    self.section_items(&word, count, |p| {
+                        let e = p.expr()?;
+                        match p.low.eval(&e)? {
+                            // Texture indices after a face (`<a, b, c>, t` or `, t1, t2, t3`).
+                            Value::Float(_) if &*name == "face_indices" && !out.is_empty() => {
+                                textured = true;
+                                Ok(false)
+                            }
+                            Value::Vector(v) if v.len() == 3 => {
+                                let mut ix = [0u32; 3];
+                                for (k, &x) in v.iter().enumerate() {
+                                    if !(x >= 0.0 && (x as usize) < limit) {
+                                        return Err(Diag::new(
+                                            e.span,
+                                            format!("{name}: index {x} out of range (0 to {})", limit as f64 - 1.0),
+                                        ));
+                                    }
+                                    ix[k] = x as u32;
+                                }
+                                out.push(ix);
+                                Ok(true)
+                            }
+                            other => Err(other.wrong_kind(e.span, "a vector of three indices")),
+                        }
+                    })?;
+                    if textured {
+                        unmodelled.textures.get_or_insert(skw);
+                    }
+                    match &*word {
+                        "face_indices" => faces = Some((out, skw)),
+                        "normal_indices" => normal_indices = Some((out, skw)),
+                        _ => {}
+                    }
+                }
+                _ => unreachable!("one of MESH2_SECTIONS"),
+            }
+            self.close_block(&word, skw)?;
+        }
+        if mesh.vertices.is_empty() {
+            return Err(Diag::new(self.peek().span, "mesh2 needs vertex_vectors with at least three vertices"));
+        }
+        let Some((faces, faces_span)) = faces else {
+            return Err(Diag::new(self.peek().span, "mesh2 needs face_indices"));
+        };
+        let normals_of: Option<Vec<[u32; 3]>> = match normal_indices {
+            Some((n, span)) if n.len() != faces.len() => {
+                return Err(Diag::new(
+                    span,
+                    format!("normal_indices has {} entries, face_indices {}: they must match", n.len(), faces.len()),
+                ));
+            }
+            Some((n, _)) => Some(n),
+            // Without normal_indices, the face indices index the normals too.
+            None if mesh.normals.is_empty() => None,
+            None if mesh.normals.len() == mesh.vertices.len() => Some(faces.clone()),
+            None => {
+                return Err(Diag::new(
+                    faces_span,
+                    format!(
+                        "mesh2 without normal_indices needs one normal per vertex: {} normals, {} vertices",
+                        mesh.normals.len(),
+                        mesh.vertices.len()
+                    ),
+                ));
+            }
+        };
+        mesh.faces = faces
+            .iter()
+            .enumerate()
+            .map(|(i, &v)| MeshFace { vertices: v, normals: normals_of.as_ref().map(|n| n[i]) })
+            .collect();
+        self.warn_unmodelled("mesh2", &unmodelled);
+        let _ = kw;
+        Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
+    }
+
+    /// `height_field { TYPE "file" [smooth] [water_level w] ... }`, up to the modifiers.
+    pub(super) fn height_field_body(&mut self, kw: Span) -> PResult<ShapeDesc> {
+        let format = match self.peek_ident() {
+            Some(w) if HF_TYPES.contains(&&*w) => {
+                self.bump();
+                w.to_string()
+            }
+            Some(w) if HF_OTHER_TYPES.contains(&&*w) => {
+                return Err(Diag::unmodelled(
+                    self.peek().span,
+                    format!("height_field: `{w}` images are not supported (supported: {})", HF_TYPES.join(", ")),
+                ));
+            }
+            _ => {
+                return Err(Diag::new(
+                    self.peek().span,
+                    format!("height_field needs the image type ({}) and the file name", HF_TYPES.join(", ")),
+                ));
+            }
+        };
+        let name_expr = self.expr()?;
+        let name = match self.low.eval(&name_expr)? {
+            Value::Str(s) => s.to_string(),
+            other => return Err(other.wrong_kind(name_expr.span, "the image's file name")),
+        };
+        let (mut smooth, mut water_level) = (false, 0.0);
+        loop {
+            match self.peek_ident().as_deref() {
+                Some("smooth") => {
+                    self.bump();
+                    smooth = true;
+                }
+                Some("water_level") => {
+                    self.bump();
+                    let e = self.expr()?;
+                    water_level = self.low.float(&e)?;
+                }
+                Some("gamma" | "premultiplied") => {
+                    let span = self.bump().span;
+                    self.expr()?;
+                    self.low.warn(Diag::new(span, "height_field: `gamma` and `premultiplied` are not modelled"));
+                }
+                _ => break,
+            }
+        }
+        let _ = kw;
+        self.low.height_field(&format, &name, name_expr.span, smooth, water_level)
+    }
+
+    /// A section's entry count, the first thing in it.
+    fn section_count(&mut self, word: &str, kw: Span) -> PResult<usize> {
+        if !self.starts_expr(&[]) {
+            return Err(Diag::new(self.peek().span, format!("{word} needs its number of entries first")));
+        }
+        let e = self.expr()?;
+        let n = self.low.float(&e)?;
+        if !(n >= 0.0 && n.fract() == 0.0 && n < u32::MAX as f64) {
+            return Err(Diag::new(e.span, format!("{word}: the number of entries must be a whole number ≥ 0")));
+        }
+        let _ = kw;
+        Ok(n as usize)
+    }
+
+    /// Reads a section's entries (commas between them optional) to its closing brace; `item`
+    /// reads one and says whether it counts as an entry. Their number must be `count`.
+    fn section_items(
+        &mut self,
+        word: &str,
+        count: usize,
+        mut item: impl FnMut(&mut Self) -> PResult<bool>,
+    ) -> PResult<()> {
+        let mut found = 0usize;
+        loop {
+            self.eat_punct(',');
+            if self.at_block_end() {
+                break;
+            }
+            let span = self.peek().span;
+            if item(self)? {
+                found += 1;
+                if found > count {
+                    return Err(Diag::new(span, format!("{word}: more than the {count} entries it declares")));
+                }
+            }
+        }
+        if found != count {
+            return Err(Diag::new(self.peek().span, format!("{word} declares {count} entries, found {found}")));
+        }
+        Ok(())
+    }
+
+    fn warn_unmodelled(&mut self, word: &str, u: &Unmodelled) {
+        if let Some(span) = u.textures {
+            self.low.warn(Diag::new(
+                span,
+                format!("{word}: per-triangle textures are not modelled; the {word}'s own texture is used"),
+            ));
+        }
+        if let Some(span) = u.uv {
+            self.low.warn(Diag::new(span, format!("{word}: uv coordinates are not modelled (no uv_mapping)")));
+        }
+    }
+}

@@ -10,6 +10,7 @@
 mod declarations;
 mod directives;
 mod expr;
+mod function;
 mod keywords;
 mod macros;
 mod scene;

@@ -130,6 +130,13 @@ fn sors_match_povray() {
     check_psnr("sors", &scene("sors"), 35.0);
 }
 
+/// Isosurfaces: internal and user functions (calls, named parameters), box and sphere
+/// containers, a container wall closing a cut solid, an open one with a threshold.
+#[test]
+fn isosurfaces_match_povray() {
+    check_psnr("isosurfaces", &scene("isosurfaces"), 35.0);
+}
+
 #[test]
 fn prisms_match_povray() {
     check_psnr("prisms", &scene("prisms"), 35.0);

@@ -9,6 +9,7 @@
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+pub mod isosurface;
 pub mod lathe;
 pub mod plane;
 pub mod poly;

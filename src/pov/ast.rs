@@ -324,6 +324,9 @@ pub enum ShapeKind {
     /// `lathe`: an optional spline keyword first, as an `Ident`.
     Lathe,
     Sor,
+    /// `isosurface`: the function first (a `Value::Function`), then its items, each a keyword
+    /// `Ident` followed by its values.
+    Isosurface,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -27,6 +27,7 @@ use crate::geometry::affine_f32;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
+use crate::geometry::isosurface::Isosurface;
 use crate::geometry::lathe::Lathe;
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
@@ -69,15 +70,17 @@ pub enum ShapeKind {
     Prism = 12,
     Lathe = 13,
     Sor = 14,
+    Isosurface = 18,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 14] = [
+    pub const ALL: [ShapeKind; 15] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
+        ShapeKind::Isosurface,
         ShapeKind::Lathe,
         ShapeKind::Plane,
         ShapeKind::Poly,
@@ -90,7 +93,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 15;
+    pub const COUNT: usize = 19;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -108,6 +111,7 @@ impl ShapeKind {
             ShapeKind::Prism => "Prism",
             ShapeKind::Lathe => "Lathe",
             ShapeKind::Sor => "Sor",
+            ShapeKind::Isosurface => "Isosurface",
         }
     }
 }
@@ -159,6 +163,7 @@ pub struct Scene {
     pub prisms: Vec<Prism>,
     pub lathes: Vec<Lathe>,
     pub sors: Vec<Sor>,
+    pub isosurfaces: Vec<Isosurface>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -209,6 +214,7 @@ impl Scene {
             prisms: Vec::new(),
             lathes: Vec::new(),
             sors: Vec::new(),
+            isosurfaces: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -444,6 +450,10 @@ impl Scene {
                 self.sors.push(Sor::new(render_from_object, &points, open));
                 (ShapeKind::Sor, at(self.sors.len()))
             }
+            RenderShape::Isosurface { render_from_object, function, container, params } => {
+                self.isosurfaces.push(Isosurface::new(render_from_object, function, container, params));
+                (ShapeKind::Isosurface, at(self.isosurfaces.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -503,6 +513,7 @@ impl Scene {
             ShapeKind::Prism => self.prisms[i].bounds(),
             ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Sor => self.sors[i].bounds(),
+            ShapeKind::Isosurface => self.isosurfaces[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

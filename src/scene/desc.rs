@@ -302,6 +302,13 @@ pub enum ShapeDesc {
         points: Vec<DVec2>,
         open: bool,
     },
+    /// `isosurface { function {..} contained_by {..} ... }`: where `function` (of x, y, z,
+    /// compiled) equals the threshold, inside the container.
+    Isosurface {
+        function: crate::function::Program,
+        container: Container,
+        params: IsoParams,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -313,6 +320,29 @@ pub enum ShapeDesc {
         offset: DVec3,
         glyphs: Vec<TextGlyph>,
     },
+}
+
+/// An isosurface's `contained_by` shape (object space).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Container {
+    Box { min: DVec3, max: DVec3 },
+    Sphere { center: DVec3, radius: f64 },
+}
+
+/// The search parameters of an `isosurface` (POV-Ray's defaults).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IsoParams {
+    pub threshold: f64,
+    pub accuracy: f64,
+    pub max_gradient: f64,
+    /// No container walls where it cuts the solid.
+    pub open: bool,
+}
+
+impl Default for IsoParams {
+    fn default() -> Self {
+        IsoParams { threshold: 0.0, accuracy: 0.001, max_gradient: 1.1, open: false }
+    }
 }
 
 /// How a polynomial surface was written.
@@ -390,6 +420,7 @@ impl ShapeDesc {
             ShapeDesc::Text { .. } => "text",
             ShapeDesc::Lathe { .. } => "lathe",
             ShapeDesc::Sor { .. } => "sor",
+            ShapeDesc::Isosurface { .. } => "isosurface",
         }
     }
 }

@@ -308,7 +308,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Prism { .. }
             | ShapeDesc::Text { .. }
             | ShapeDesc::Lathe { .. }
-            | ShapeDesc::Sor { .. }) => {
+            | ShapeDesc::Sor { .. }
+            | ShapeDesc::Isosurface { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

@@ -133,6 +133,12 @@ pub(crate) enum RenderShape {
         points: Vec<glam::DVec2>,
         open: bool,
     },
+    Isosurface {
+        render_from_object: DAffine3,
+        function: crate::function::Program,
+        container: crate::scene::desc::Container,
+        params: crate::scene::desc::IsoParams,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -226,6 +232,12 @@ impl RenderFrame {
             ShapeDesc::Sor { points, open } => {
                 RenderShape::Sor { render_from_object: render_from_object(), points: points.clone(), open: *open }
             }
+            ShapeDesc::Isosurface { function, container, params } => RenderShape::Isosurface {
+                render_from_object: render_from_object(),
+                function: function.clone(),
+                container: *container,
+                params: *params,
+            },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept
                 // along z: swap y and z.

@@ -14,6 +14,7 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
+    Container,
     Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc,
     ShapeDesc, Transform, Turbulence,
 };
@@ -128,6 +129,22 @@ fn object(s: &mut String, o: &ObjectDesc) {
         ShapeDesc::Sor { points, open } => {
             let open = if *open { " open" } else { "" };
             write!(s, "sor {{ {}, {}{open}", points.len(), vec2s(points))
+        }
+        ShapeDesc::Isosurface { function, container, params } => {
+            let c = match container {
+                Container::Box { min, max } => format!("box {{ {}, {} }}", vec(*min), vec(*max)),
+                Container::Sphere { center, radius } => format!("sphere {{ {}, {} }}", vec(*center), num(*radius)),
+            };
+            let open = if params.open { " open" } else { "" };
+            write!(
+                s,
+                "isosurface {{ function {{ /* {} instructions */ }} contained_by {{ {c} }} threshold {} accuracy {} \
+                 max_gradient {}{open}",
+                function.len(),
+                num(params.threshold),
+                num(params.accuracy),
+                num(params.max_gradient)
+            )
         }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");

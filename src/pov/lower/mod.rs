@@ -7,6 +7,7 @@ mod camera;
 mod eval;
 mod fileio;
 mod functions;
+mod isosurface;
 mod objects;
 mod sweeps;
 mod text;

@@ -127,7 +127,6 @@ pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "mesh",
     "mesh2",
     "height_field",
-    "isosurface",
     "julia_fractal",
     "bicubic_patch",
     "sphere_sweep",

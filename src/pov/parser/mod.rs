@@ -11,6 +11,7 @@ mod declarations;
 mod directives;
 mod expr;
 mod function;
+mod isosurface;
 mod keywords;
 mod macros;
 mod scene;

@@ -39,10 +39,11 @@ const TOP_LEVEL: &[&str] = &[
     "text",
     "lathe",
     "sor",
+    "isosurface",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, isosurface, union, merge, intersection, difference, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -104,6 +105,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "text" => ShapeKind::Text,
         "lathe" => ShapeKind::Lathe,
         "sor" => ShapeKind::Sor,
+        "isosurface" => ShapeKind::Isosurface,
         _ => return None,
     })
 }
@@ -128,6 +130,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
         ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
         ShapeKind::Lathe | ShapeKind::Sor => &["number of points", "points"],
+        ShapeKind::Isosurface => &["function"],
     }
 }
 
@@ -392,7 +395,13 @@ impl Parser<'_, '_> {
                         "open" => {
                             matches!(
                                 shape_kind(&word),
-                                Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism | ShapeKind::Sor)
+                                Some(
+                                    ShapeKind::Cylinder
+                                        | ShapeKind::Cone
+                                        | ShapeKind::Prism
+                                        | ShapeKind::Sor
+                                        | ShapeKind::Isosurface
+                                )
                             )
                         }
                         "sturm" => matches!(
@@ -438,6 +447,9 @@ impl Parser<'_, '_> {
 
     /// The comma-separated arguments of a shape; commas are optional, as in POV-Ray.
     fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
+        if shape == ShapeKind::Isosurface {
+            return self.isosurface_args();
+        }
         let names = shape_args(shape);
         let mut args = Vec::new();
         let leading = match shape {

@@ -871,7 +871,11 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
-        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone, prism, sor and isosurface)"),
+        (
+            "sphere { 0, 1 open }",
+            (1, 15),
+            "`open` does not apply to sphere (only to cylinder, cone, prism, sor and isosurface)",
+        ),
         (
             "cylinder { 0, y, 1 sturm }",
             (1, 20),

@@ -19,15 +19,40 @@ type Reg = u16;
 
 #[derive(Clone, Debug, PartialEq)]
 enum Instr {
-    Const { d: Reg, v: f64 },
-    Copy { d: Reg, a: Reg },
-    Unary { op: Unary, d: Reg, a: Reg },
-    Binary { op: Binary, d: Reg, a: Reg, b: Reg },
+    Const {
+        d: Reg,
+        v: f64,
+    },
+    Copy {
+        d: Reg,
+        a: Reg,
+    },
+    Unary {
+        op: Unary,
+        d: Reg,
+        a: Reg,
+    },
+    Binary {
+        op: Binary,
+        d: Reg,
+        a: Reg,
+        b: Reg,
+    },
     /// Jump to instruction `to` when register `c` is 0.
-    JumpIfZero { c: Reg, to: u32 },
-    Jump { to: u32 },
+    JumpIfZero {
+        c: Reg,
+        to: u32,
+    },
+    Jump {
+        to: u32,
+    },
     /// `d = f(registers a .. a + n)`.
-    Internal { f: Internal, d: Reg, a: Reg, n: u16 },
+    Internal {
+        f: Internal,
+        d: Reg,
+        a: Reg,
+        n: u16,
+    },
 }
 
 /// A compiled function.

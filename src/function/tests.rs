@@ -150,10 +150,7 @@ fn constants_fold_away() {
         Node::binary(Binary::Mul, Node::binary(Binary::Add, c(1.0), c(2.0)), p(0)),
         Node::unary(Unary::Sqrt, c(16.0)),
     );
-    assert_eq!(
-        f.folded(),
-        Node::binary(Binary::Add, Node::binary(Binary::Mul, c(3.0), p(0)), c(4.0))
-    );
+    assert_eq!(f.folded(), Node::binary(Binary::Add, Node::binary(Binary::Mul, c(3.0), p(0)), c(4.0)));
     let prog = Program::compile(&f, 3);
     assert_eq!(prog.len(), 4);
     assert_eq!(prog.eval(&[2.0, 0.0, 0.0]), 10.0);

@@ -264,10 +264,8 @@ mod tests {
     use crate::geometry::ray::Ray;
 
     fn sphere_fn(r: f64) -> Program {
-        let body = Node::Internal(
-            Internal::Sphere,
-            vec![Node::Param(0), Node::Param(1), Node::Param(2), Node::Const(r)],
-        );
+        let body =
+            Node::Internal(Internal::Sphere, vec![Node::Param(0), Node::Param(1), Node::Param(2), Node::Const(r)]);
         Program::compile(&body, 3)
     }
 

@@ -11,6 +11,7 @@ pub mod cuboid;
 pub mod disc;
 pub mod isosurface;
 pub mod lathe;
+pub mod parametric;
 pub mod plane;
 pub mod poly;
 pub mod polygon;

@@ -327,6 +327,9 @@ pub enum ShapeKind {
     /// `isosurface`: the function first (a `Value::Function`), then its items, each a keyword
     /// `Ident` followed by its values.
     Isosurface,
+    /// `parametric`: its three functions first (`Value::Function`s), the two (u, v) corners,
+    /// then keyword items as for `Isosurface`.
+    Parametric,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -55,6 +55,7 @@ impl Scene {
             ShapeKind::Lathe => self.lathes[i].hit(ray, t_min, t_max),
             ShapeKind::Sor => self.sors[i].hit(ray, t_min, t_max),
             ShapeKind::Isosurface => self.isosurfaces[i].hit(ray, t_min, t_max),
+            ShapeKind::Parametric => self.parametrics[i].hit(ray, t_min, t_max),
             // Only CSG leaves are planes among the primitives.
             ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
             ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
@@ -80,6 +81,7 @@ impl Scene {
             ShapeKind::Lathe => self.lathes[i].inside(q),
             ShapeKind::Sor => self.sors[i].inside(q),
             ShapeKind::Isosurface => self.isosurfaces[i].inside(q),
+            ShapeKind::Parametric => self.parametrics[i].inside(q),
             ShapeKind::Plane => self.half_spaces[i].inside(q),
             ShapeKind::Csg => self.inside_node(p.index, q),
         }
@@ -244,6 +246,7 @@ impl Scene {
                     ShapeKind::Lathe => self.lathes[k].normal(p),
                     ShapeKind::Sor => self.sors[k].normal(p),
                     ShapeKind::Isosurface => self.isosurfaces[k].normal(p),
+                    ShapeKind::Parametric => self.parametrics[k].normal(p),
                     ShapeKind::Plane => self.half_spaces[k].normal(p),
                     // Hits are resolved to leaves before anything asks for a normal.
                     ShapeKind::Csg => V3::splat(Vec3::Y),

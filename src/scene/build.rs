@@ -29,6 +29,7 @@ use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
 use crate::geometry::isosurface::Isosurface;
 use crate::geometry::lathe::Lathe;
+use crate::geometry::parametric::Parametric;
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
@@ -71,17 +72,19 @@ pub enum ShapeKind {
     Lathe = 13,
     Sor = 14,
     Isosurface = 18,
+    Parametric = 19,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 15] = [
+    pub const ALL: [ShapeKind; 16] = [
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
         ShapeKind::Isosurface,
         ShapeKind::Lathe,
+        ShapeKind::Parametric,
         ShapeKind::Plane,
         ShapeKind::Poly,
         ShapeKind::Polygon,
@@ -93,7 +96,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 19;
+    pub const COUNT: usize = 20;
 
     pub fn name(self) -> &'static str {
         match self {
@@ -112,6 +115,7 @@ impl ShapeKind {
             ShapeKind::Lathe => "Lathe",
             ShapeKind::Sor => "Sor",
             ShapeKind::Isosurface => "Isosurface",
+            ShapeKind::Parametric => "Parametric",
         }
     }
 }
@@ -164,6 +168,7 @@ pub struct Scene {
     pub lathes: Vec<Lathe>,
     pub sors: Vec<Sor>,
     pub isosurfaces: Vec<Isosurface>,
+    pub parametrics: Vec<Parametric>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -215,6 +220,7 @@ impl Scene {
             lathes: Vec::new(),
             sors: Vec::new(),
             isosurfaces: Vec::new(),
+            parametrics: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -454,6 +460,10 @@ impl Scene {
                 self.isosurfaces.push(Isosurface::new(render_from_object, function, container, params));
                 (ShapeKind::Isosurface, at(self.isosurfaces.len()))
             }
+            RenderShape::Parametric { render_from_object, functions, container, params } => {
+                self.parametrics.push(Parametric::new(render_from_object, functions, container, params));
+                (ShapeKind::Parametric, at(self.parametrics.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -514,6 +524,7 @@ impl Scene {
             ShapeKind::Lathe => self.lathes[i].bounds(),
             ShapeKind::Sor => self.sors[i].bounds(),
             ShapeKind::Isosurface => self.isosurfaces[i].bounds(),
+            ShapeKind::Parametric => self.parametrics[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

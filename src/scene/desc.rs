@@ -309,6 +309,13 @@ pub enum ShapeDesc {
         container: Container,
         params: IsoParams,
     },
+    /// `parametric { function {x(u, v)} function {y} function {z} <u1, v1>, <u2, v2> ... }`,
+    /// the functions compiled; clipped to the container.
+    Parametric {
+        functions: [crate::function::Program; 3],
+        container: Container,
+        params: ParametricParams,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -343,6 +350,15 @@ impl Default for IsoParams {
     fn default() -> Self {
         IsoParams { threshold: 0.0, accuracy: 0.001, max_gradient: 1.1, open: false }
     }
+}
+
+/// The (u, v) rectangle and search parameters of a `parametric`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParametricParams {
+    pub lo: DVec2,
+    pub hi: DVec2,
+    pub accuracy: f64,
+    pub max_gradient: f64,
 }
 
 /// How a polynomial surface was written.
@@ -421,6 +437,7 @@ impl ShapeDesc {
             ShapeDesc::Lathe { .. } => "lathe",
             ShapeDesc::Sor { .. } => "sor",
             ShapeDesc::Isosurface { .. } => "isosurface",
+            ShapeDesc::Parametric { .. } => "parametric",
         }
     }
 }

@@ -309,7 +309,8 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Text { .. }
             | ShapeDesc::Lathe { .. }
             | ShapeDesc::Sor { .. }
-            | ShapeDesc::Isosurface { .. }) => {
+            | ShapeDesc::Isosurface { .. }
+            | ShapeDesc::Parametric { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

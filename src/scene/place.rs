@@ -139,6 +139,12 @@ pub(crate) enum RenderShape {
         container: crate::scene::desc::Container,
         params: crate::scene::desc::IsoParams,
     },
+    Parametric {
+        render_from_object: DAffine3,
+        functions: [crate::function::Program; 3],
+        container: crate::scene::desc::Container,
+        params: crate::scene::desc::ParametricParams,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -235,6 +241,12 @@ impl RenderFrame {
             ShapeDesc::Isosurface { function, container, params } => RenderShape::Isosurface {
                 render_from_object: render_from_object(),
                 function: function.clone(),
+                container: *container,
+                params: *params,
+            },
+            ShapeDesc::Parametric { functions, container, params } => RenderShape::Parametric {
+                render_from_object: render_from_object(),
+                functions: functions.clone(),
                 container: *container,
                 params: *params,
             },

@@ -14,9 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    Container,
-    Color, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc,
-    ShapeDesc, Transform, Turbulence,
+    Color, Container, CsgOp, FinishDesc, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm,
+    SceneDesc, ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -142,6 +141,24 @@ fn object(s: &mut String, o: &ObjectDesc) {
                  max_gradient {}{open}",
                 function.len(),
                 num(params.threshold),
+                num(params.accuracy),
+                num(params.max_gradient)
+            )
+        }
+        ShapeDesc::Parametric { functions, container, params } => {
+            let c = match container {
+                Container::Box { min, max } => format!("box {{ {}, {} }}", vec(*min), vec(*max)),
+                Container::Sphere { center, radius } => format!("sphere {{ {}, {} }}", vec(*center), num(*radius)),
+            };
+            let lens = functions.iter().map(|f| format!("function {{ /* {} instructions */ }}", f.len()));
+            write!(
+                s,
+                "parametric {{ {} <{}, {}>, <{}, {}> contained_by {{ {c} }} accuracy {} max_gradient {}",
+                lens.collect::<Vec<_>>().join(" "),
+                num(params.lo.x),
+                num(params.lo.y),
+                num(params.hi.x),
+                num(params.hi.y),
                 num(params.accuracy),
                 num(params.max_gradient)
             )

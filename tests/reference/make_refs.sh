@@ -25,6 +25,6 @@ done
 for s in superellipsoids; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in prisms text lathes sors isosurfaces; do
+for s in prisms text lathes sors isosurfaces parametrics; do
     render "$here/scenes/$s.pov" "$s"
 done

@@ -365,6 +365,7 @@ impl Lowerer<'_> {
             ShapeKind::Lathe => self.lathe(args, span)?,
             ShapeKind::Sor => self.sor(args, span)?,
             ShapeKind::Isosurface => self.isosurface(args, span)?,
+            ShapeKind::Parametric => self.parametric(args, span)?,
         })
     }
 

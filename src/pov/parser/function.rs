@@ -55,8 +55,9 @@ impl Parser<'_, '_> {
         }
         let body = self.fn_expr(&params)?;
         self.close_block("function", kw)?;
-        Function::new(params, body)
-            .ok_or_else(|| Diag::new(kw, format!("function calls nest deeper than {}", crate::function::MAX_CALL_DEPTH)))
+        Function::new(params, body).ok_or_else(|| {
+            Diag::new(kw, format!("function calls nest deeper than {}", crate::function::MAX_CALL_DEPTH))
+        })
     }
 
     /// `internal(N) }` of `functions.inc`: the function of x, y, z and its extra parameters.
@@ -337,7 +338,12 @@ impl Parser<'_, '_> {
         if args.len() != f.params.len() {
             return Err(Diag::new(
                 span.to(close),
-                format!("`{word}` takes {} argument(s) ({}), found {}", f.params.len(), f.params.join(", "), args.len()),
+                format!(
+                    "`{word}` takes {} argument(s) ({}), found {}",
+                    f.params.len(),
+                    f.params.join(", "),
+                    args.len()
+                ),
             ));
         }
         Ok(f.eval(&args))

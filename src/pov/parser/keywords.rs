@@ -130,7 +130,6 @@ pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
     "julia_fractal",
     "bicubic_patch",
     "sphere_sweep",
-    "parametric",
     "ovus",
     "lemon",
     "light_group",

@@ -40,10 +40,11 @@ const TOP_LEVEL: &[&str] = &[
     "lathe",
     "sor",
     "isosurface",
+    "parametric",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, isosurface, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, isosurface, parametric, union, merge, intersection, difference, object";
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -106,6 +107,7 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "lathe" => ShapeKind::Lathe,
         "sor" => ShapeKind::Sor,
         "isosurface" => ShapeKind::Isosurface,
+        "parametric" => ShapeKind::Parametric,
         _ => return None,
     })
 }
@@ -131,6 +133,7 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
         ShapeKind::Lathe | ShapeKind::Sor => &["number of points", "points"],
         ShapeKind::Isosurface => &["function"],
+        ShapeKind::Parametric => &["function x", "function y", "function z", "<u1, v1>", "<u2, v2>"],
     }
 }
 
@@ -449,6 +452,9 @@ impl Parser<'_, '_> {
     fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
         if shape == ShapeKind::Isosurface {
             return self.isosurface_args();
+        }
+        if shape == ShapeKind::Parametric {
+            return self.parametric_args();
         }
         let names = shape_args(shape);
         let mut args = Vec::new();

@@ -86,7 +86,7 @@ fn random_tree(r: &mut Rng, depth: usize, inner: &Rc<Function>) -> Node {
             _ => p(r.below(3) as u16),
         };
     }
-    let mut sub = |r: &mut Rng| random_tree(r, depth - 1, inner);
+    let sub = |r: &mut Rng| random_tree(r, depth - 1, inner);
     match r.below(6) {
         0 => Node::unary(UNARY[r.below(UNARY.len())], sub(r)),
         1 | 2 => Node::binary(BINARY[r.below(BINARY.len())], sub(r), sub(r)),

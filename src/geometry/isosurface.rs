@@ -138,7 +138,8 @@ impl Isosurface {
             return None;
         }
         let (a, b) = (enter.max(t_min), exit.min(t_max));
-        if !(a < b) {
+        // NaN ends compare false: no span.
+        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         let g = |t: f64| self.g(o + t * d);

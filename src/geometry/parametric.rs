@@ -186,7 +186,7 @@ impl Parametric {
     pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
         let (enter, exit) = self.container_span(o, d)?;
         let (t_lo, t_hi) = (t_min.max(enter), t_max.min(exit));
-        if !(t_lo < t_hi) {
+        if t_lo.partial_cmp(&t_hi) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         let len = d.length();

@@ -67,7 +67,7 @@ impl Lowerer<'_> {
                 "accuracy" | "max_gradient" => {
                     let e = value(i)?;
                     let v = self.float(e)?;
-                    if !(v > 0.0) {
+                    if v.is_nan() || v <= 0.0 {
                         return Err(Diag::new(e.span, format!("parametric {word} must be positive")));
                     }
                     if word == "accuracy" {
@@ -117,7 +117,7 @@ impl Lowerer<'_> {
                 "accuracy" => {
                     let e = value(i)?;
                     params.accuracy = self.float(e)?;
-                    if !(params.accuracy > 0.0) {
+                    if params.accuracy.is_nan() || params.accuracy <= 0.0 {
                         return Err(Diag::new(e.span, "isosurface accuracy must be positive"));
                     }
                     i += 1;
@@ -125,7 +125,7 @@ impl Lowerer<'_> {
                 "max_gradient" => {
                     let e = value(i)?;
                     params.max_gradient = self.float(e)?;
-                    if !(params.max_gradient > 0.0) {
+                    if params.max_gradient.is_nan() || params.max_gradient <= 0.0 {
                         return Err(Diag::new(e.span, "isosurface max_gradient must be positive"));
                     }
                     i += 1;

@@ -137,20 +137,17 @@ impl Parser<'_, '_> {
     /// is `-(x^2)`). POV-Ray 3.7 itself has no `^` in functions; it is `pow`.
     fn fn_power(&mut self, params: &[String]) -> PResult<Node> {
         let t = self.peek();
-        match t.kind {
-            TokenKind::Punct(c @ ('-' | '+' | '!')) => {
-                self.bump();
-                self.enter(t.span)?;
-                let inner = self.fn_power(params);
-                self.leave();
-                let inner = inner?;
-                return Ok(match c {
-                    '-' => Node::unary(Unary::Neg, inner),
-                    '!' => Node::unary(Unary::Not, inner),
-                    _ => inner,
-                });
-            }
-            _ => {}
+        if let TokenKind::Punct(c @ ('-' | '+' | '!')) = t.kind {
+            self.bump();
+            self.enter(t.span)?;
+            let inner = self.fn_power(params);
+            self.leave();
+            let inner = inner?;
+            return Ok(match c {
+                '-' => Node::unary(Unary::Neg, inner),
+                '!' => Node::unary(Unary::Not, inner),
+                _ => inner,
+            });
         }
         let base = self.fn_primary(params)?;
         if !self.is_punct('^') {

@@ -57,8 +57,7 @@ impl Parser<'_, '_> {
     pub(super) fn isosurface_args(&mut self) -> PResult<Vec<Expr>> {
         let mut args = Vec::new();
         let mut function = None;
-        loop {
-            let Some(word) = self.peek_ident() else { break };
+        while let Some(word) = self.peek_ident() {
             let span = self.peek().span;
             if &*word == "function" {
                 if function.is_some() {

@@ -237,7 +237,7 @@ fn error_unsupported_keywords() {
     assert_eq!(
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, isosurface, union, merge, intersection, difference, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, isosurface, parametric, union, merge, intersection, difference, \
          object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");

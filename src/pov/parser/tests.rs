@@ -43,7 +43,7 @@ fn unsupported_shape_is_named() {
     assert_eq!(
         e,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, union, merge, intersection, difference, \
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, isosurface, parametric, union, merge, intersection, difference, \
          object)"
     );
 }

@@ -3,13 +3,15 @@
 //! Data flows one way: `pov` parses text into `scene::desc`; `scene::build` turns that into
 //! render-ready data; `render` traces it with `geometry`, `accel` and `shading`; `headless` and
 //! `app` drive `render`. Underneath everything, `lanes` is the arithmetic (one f32, eight f32s
-//! or one f64) that shapes, bounds and shading formulas are written in once.
+//! or one f64) that shapes, bounds and shading formulas are written in once; `function` compiles
+//! the scene language's user-defined functions, which `pov` builds and `geometry` runs.
 
 pub mod accel;
 pub mod app;
 pub mod camera;
 pub mod error;
 pub mod fly;
+pub mod function;
 pub mod geometry;
 pub mod headless;
 pub mod lanes;

@@ -238,7 +238,8 @@ fn error_unsupported_keywords() {
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
          torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
-         smooth_triangle, mesh, mesh2, height_field, union, merge, intersection, difference, object)"
+         smooth_triangle, mesh, mesh2, height_field, isosurface, parametric, union, merge, intersection, difference, \
+         object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -893,7 +894,11 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
         ("disc { 0, 0, 1 }", (1, 11), "disc normal must not be zero"),
         ("disc { 0, y, 1, 2 }", (1, 17), "disc hole radius must lie in [0, radius)"),
         ("torus { 1, -0.5 }", (1, 12), "torus radii must be positive"),
-        ("sphere { 0, 1 open }", (1, 15), "`open` does not apply to sphere (only to cylinder, cone, prism and sor)"),
+        (
+            "sphere { 0, 1 open }",
+            (1, 15),
+            "`open` does not apply to sphere (only to cylinder, cone, prism, sor and isosurface)",
+        ),
         (
             "cylinder { 0, y, 1 sturm }",
             (1, 20),
@@ -938,7 +943,7 @@ fn csg_nodes_keep_their_structure_and_pass_textures_down() {
 fn csg_errors_are_located() {
     let (l, c, m) = err("csg_open", "intersection { sphere { 0, 1 } box { -1, 1 }\n open }");
     assert_eq!((l, c), (2, 2));
-    assert_eq!(m, "`open` does not apply to intersection (only to cylinder, cone, prism and sor)");
+    assert_eq!(m, "`open` does not apply to intersection (only to cylinder, cone, prism, sor and isosurface)");
     let (l, c, m) = err("csg_clip", "sphere { 0, 1 clipped_by { bounded_by } }");
     assert_eq!((l, c), (1, 28));
     assert!(m.contains("needs a `bounded_by` with objects"), "{m}");
@@ -1246,7 +1251,7 @@ fn lathes_load_and_bad_ones_are_located_errors() {
             (1, 9),
             "unknown keyword `cubik_spline` in lathe (expected one of: linear_spline, quadratic_spline, cubic_spline, bezier_spline)",
         ),
-        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone, prism and sor)"),
+        ("lathe { 2, <0, 0>, <1, 0> open }", (1, 27), "`open` does not apply to lathe (only to cylinder, cone, prism, sor and isosurface)"),
     ] {
         let (l, c, m) = err("bad_lathe", text);
         assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
@@ -1391,4 +1396,91 @@ fn height_field_reads_pgm_and_locates_a_missing_file() {
     let e = load_scene(&path, &std_include()).expect_err("truncated image");
     assert_eq!((e.line, e.col), (1, 20));
     assert!(e.message.ends_with("as pgm: too few pixels"), "{}", e.message);
+}
+
+/// User-defined functions: declared, called at parse time and inside other functions,
+/// `functions.inc`'s internal ones; unknown names and wrong argument counts are located errors.
+#[test]
+fn functions_parse_call_and_bad_ones_are_located_errors() {
+    // The declarations of POV-Ray's functions.inc that these scenes use (the package's own
+    // file need not be installed).
+    let inc = "#declare f_sphere = function { internal(61) }\n#declare f_torus = function { internal(70) }\n\
+               #declare f_helix1 = function { internal(25) }\n#declare f_agate = function { pattern { agate } }\n";
+    let load = |test: &str, text: &str| {
+        let d = dir(test);
+        write(&d, "functions.inc", inc);
+        load_scene(&write(&d, "scene.pov", text), &std_include())
+    };
+    let err = |test: &str, text: &str| {
+        let e = load(test, text).expect_err("scene should not load");
+        (e.line, e.col, e.message)
+    };
+    let s = load(
+        "functions",
+        "#include \"functions.inc\"\n\
+         #declare Q = function(a, b) { a*10 + b }\n\
+         #declare R = function { Q(x, y) + Q(1, 2) + f_sphere(x, y, z, 1) }\n\
+         #declare S = function(u, v) { x + y * v }\n\
+         #declare T = function { (x < 1) * 2 + (y >= 2 & z != 0) + select(x - 3, 100, 200, 300) + 2^3 - min(4, 5, -1) }\n\
+         sphere { 0, R(3, 4, 0) + S(1, 2) * 1000 + T(0, 2, 1) * 1e6 }",
+    )
+    .unwrap();
+    let ShapeDesc::Sphere { radius, .. } = &s.objects[0].shape else { panic!("a sphere") };
+    // R = 34 + 12 + (5 - 1); S(1, 2) = 1 + 2·2 = 5; T = 2 + 1 + 100 + 8 + 1 = 112.
+    assert_eq!(*radius, 50.0 + 5000.0 + 112e6);
+    for (text, at, message) in [
+        ("#declare F = function { foo(x) }", (1, 25), "unknown function `foo`"),
+        ("#declare F = function { x + w }", (1, 29), "unknown identifier `w` in a function (its parameters: x, y, z)"),
+        (
+            "#declare G = function(a, b) { a + b }\n#declare F = function { G(x) }",
+            (2, 25),
+            "`G` takes 2 argument(s) (a, b), found 1",
+        ),
+        ("#declare F = function { sin(x, y) }", (1, 25), "`sin` takes 1 argument(s), found 2"),
+        ("#declare F = function { x }\nsphere { 0, F(1, 2) }", (2, 13), "`F` takes 3 argument(s) (x, y, z), found 2"),
+        (
+            "#include \"functions.inc\"\n#declare F = function { f_torus(x, y, z) }",
+            (2, 25),
+            "`f_torus` takes 5 argument(s) (x, y, z, P0, P1), found 3",
+        ),
+        ("#declare F = function(a, a) { a }", (1, 26), "parameter `a` is named twice"),
+        ("#declare F = function(x, u) { x }", (1, 26), "parameter `u` is named twice"),
+        ("isosurface { contained_by { box { -1, 1 } } }", (1, 45), "isosurface needs a `function { ... }`"),
+        (
+            "isosurface { function { x } contained_by { cone { 0, 1 } } }",
+            (1, 44),
+            "expected `box` or `sphere` in contained_by, found `cone`",
+        ),
+        ("isosurface { function { x } accuracy 0 }", (1, 38), "isosurface accuracy must be positive"),
+    ] {
+        let (l, c, m) = err("bad_function", text);
+        assert_eq!(((l, c), m.as_str()), (at, message), "{text}");
+    }
+    // An unmodelled internal function is an error where it is used, not where it is declared.
+    let (l, c, m) = err(
+        "helix",
+        "#include \"functions.inc\"\n#declare F = function { f_helix1(x, y, z, 1, 2, 3, 4, 5, 6, 7) }\n\
+         sphere { 0, F(1, 2, 3) }",
+    );
+    assert_eq!((l, c), (3, 13), "{m}");
+    assert!(m.contains("internal function 25 is not supported"), "{m}");
+}
+
+/// Isosurfaces load with their items and POV-Ray's defaults.
+#[test]
+fn isosurfaces_load_with_their_items() {
+    let s = load_text(
+        "isosurfaces",
+        "isosurface { function { x*x + y*y + z*z - 1 } contained_by { sphere { <0, 1, 0>, 2 } } threshold 0.5 \
+         accuracy 0.01 max_gradient 4 max_trace 2 all_intersections open }\n\
+         isosurface { function { x } }",
+    )
+    .unwrap();
+    let ShapeDesc::Isosurface { function, container, params } = &s.objects[0].shape else { panic!("isosurface") };
+    assert_eq!(function.eval(&[1.0, 2.0, 3.0]), 13.0);
+    assert_eq!(*container, strahl::scene::desc::Container::Sphere { center: DVec3::Y, radius: 2.0 });
+    assert_eq!((params.threshold, params.accuracy, params.max_gradient, params.open), (0.5, 0.01, 4.0, true));
+    let ShapeDesc::Isosurface { container, params, .. } = &s.objects[1].shape else { panic!("isosurface") };
+    assert_eq!(*container, strahl::scene::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
+    assert_eq!(*params, strahl::scene::desc::IsoParams::default());
 }

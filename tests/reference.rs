@@ -160,6 +160,20 @@ fn julia_fractals_match_povray() {
     check_psnr("julias", &scene("julias"), 29.0);
 }
 
+/// Isosurfaces: internal and user functions (calls, named parameters), box and sphere
+/// containers, a container wall closing a cut solid, an open one with a threshold.
+#[test]
+fn isosurfaces_match_povray() {
+    check_psnr("isosurfaces", &scene("isosurfaces"), 35.0);
+}
+
+/// Parametric surfaces: a sphere in a sphere container, a torus, a sheet cut by its box, a
+/// twisted band seen from both sides.
+#[test]
+fn parametrics_match_povray() {
+    check_psnr("parametrics", &scene("parametrics"), 35.0);
+}
+
 #[test]
 fn prisms_match_povray() {
     check_psnr("prisms", &scene("prisms"), 35.0);

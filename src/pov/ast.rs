@@ -324,6 +324,12 @@ pub enum ShapeKind {
     /// `lathe`: an optional spline keyword first, as an `Ident`.
     Lathe,
     Sor,
+    /// `isosurface`: the function first (a `Value::Function`), then its items, each a keyword
+    /// `Ident` followed by its values.
+    Isosurface,
+    /// `parametric`: its three functions first (`Value::Function`s), the two (u, v) corners,
+    /// then keyword items as for `Isosurface`.
+    Parametric,
 }
 
 #[derive(Clone, Debug, PartialEq)]

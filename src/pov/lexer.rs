@@ -78,7 +78,7 @@ impl Token {
     }
 }
 
-const PUNCT: &str = "{}<>()[],;+-*/=!&|?:.";
+const PUNCT: &str = "{}<>()[],;+-*/=!&|?:.^";
 
 /// Two-character operators, matched before single punctuation.
 const OPS2: &[&str] = &["<=", ">=", "!="];

@@ -35,6 +35,8 @@ pub enum Value {
     Str(Rc<str>),
     Array(Rc<Array>),
     Macro(Rc<Macro>),
+    /// `function { ... }`: a user-defined float function, parsed into its tree.
+    Function(Rc<crate::function::Function>),
     /// A declaration whose syntax was read but which needs a feature strahl does not model
     /// yet: using it is the error, not declaring it (include files declare far more than a
     /// scene uses).
@@ -209,6 +211,7 @@ impl Value {
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Macro(_) => "a macro",
+            Value::Function(_) => "a function",
             Value::Unmodelled(_) => "a declaration strahl does not model yet",
         }
     }

@@ -63,6 +63,8 @@ impl Scene {
             ShapeKind::Blob => self.blobs[i].hit(ray, t_min, t_max),
             ShapeKind::Julia => self.julias[i].hit(ray, t_min, t_max),
             ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].hit(ray, t_min, t_max),
+            ShapeKind::Isosurface => self.isosurfaces[i].hit(ray, t_min, t_max),
+            ShapeKind::Parametric => self.parametrics[i].hit(ray, t_min, t_max),
             // Only CSG leaves are planes among the primitives.
             ShapeKind::Plane => self.half_spaces[i].hit(ray, t_min, t_max),
             ShapeKind::Csg => self.hit_csg(p.index, ray, t_min, t_max).0,
@@ -90,6 +92,8 @@ impl Scene {
             ShapeKind::Blob => self.blobs[i].inside(q),
             ShapeKind::Julia => self.julias[i].inside(q),
             ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].inside(q),
+            ShapeKind::Isosurface => self.isosurfaces[i].inside(q),
+            ShapeKind::Parametric => self.parametrics[i].inside(q),
             ShapeKind::Plane => self.half_spaces[i].inside(q),
             ShapeKind::Csg => self.inside_node(p.index, q),
         }
@@ -279,6 +283,8 @@ impl Scene {
                     ShapeKind::Sor => self.sors[k].normal(p),
                     ShapeKind::Blob => self.blobs[k].normal(p),
                     ShapeKind::Julia => self.julias[k].normal(p),
+                    ShapeKind::Isosurface => self.isosurfaces[k].normal(p),
+                    ShapeKind::Parametric => self.parametrics[k].normal(p),
                     ShapeKind::Plane => self.half_spaces[k].normal(p),
                     // Hits are resolved to faces before anything asks for a normal.
                     ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[k].normal(0, p),

@@ -32,9 +32,11 @@ use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
 use crate::geometry::height_field;
+use crate::geometry::isosurface::Isosurface;
 use crate::geometry::julia::Julia;
 use crate::geometry::lathe::Lathe;
 use crate::geometry::mesh::{Mesh, MeshData};
+use crate::geometry::parametric::Parametric;
 use crate::geometry::plane::Plane;
 use crate::geometry::poly::Poly;
 use crate::geometry::polygon::Polygon;
@@ -81,20 +83,24 @@ pub enum ShapeKind {
     /// `mesh` and `mesh2`.
     Mesh = 16,
     HeightField = 17,
+    Isosurface = 18,
+    Parametric = 19,
 }
 
 impl ShapeKind {
     /// In the order the statistics list them (alphabetical, as POV-Ray's).
-    pub const ALL: [ShapeKind; 18] = [
+    pub const ALL: [ShapeKind; 20] = [
         ShapeKind::Blob,
         ShapeKind::Box,
         ShapeKind::Cone,
         ShapeKind::Csg,
         ShapeKind::Disc,
         ShapeKind::HeightField,
+        ShapeKind::Isosurface,
         ShapeKind::Julia,
         ShapeKind::Lathe,
         ShapeKind::Mesh,
+        ShapeKind::Parametric,
         ShapeKind::Plane,
         ShapeKind::Poly,
         ShapeKind::Polygon,
@@ -128,6 +134,8 @@ impl ShapeKind {
             ShapeKind::Julia => "Julia Fractal",
             ShapeKind::Mesh => "Mesh",
             ShapeKind::HeightField => "Height Field",
+            ShapeKind::Isosurface => "Isosurface",
+            ShapeKind::Parametric => "Parametric",
         }
     }
 }
@@ -187,6 +195,8 @@ pub struct Scene {
     /// The `MeshData` built for each mesh description (by address) or height field (address,
     /// `smooth`, water level bits) during `build`, so instances share one copy.
     mesh_cache: HashMap<(usize, bool, u64), Arc<MeshData>>,
+    pub isosurfaces: Vec<Isosurface>,
+    pub parametrics: Vec<Parametric>,
     /// Unbounded: tested for every ray, outside the accelerator.
     pub planes: Vec<Plane>,
     pub plane_materials: Vec<u32>,
@@ -241,6 +251,8 @@ impl Scene {
             julias: Vec::new(),
             meshes: Vec::new(),
             mesh_cache: HashMap::new(),
+            isosurfaces: Vec::new(),
+            parametrics: Vec::new(),
             planes: Vec::new(),
             plane_materials: Vec::new(),
             plane_casts_shadow: Vec::new(),
@@ -485,6 +497,14 @@ impl Scene {
                 self.julias.push(Julia::new(render_from_object, param, function, max_iteration, precision, slice));
                 (ShapeKind::Julia, at(self.julias.len()))
             }
+            RenderShape::Isosurface { render_from_object, function, container, params } => {
+                self.isosurfaces.push(Isosurface::new(render_from_object, function, container, params));
+                (ShapeKind::Isosurface, at(self.isosurfaces.len()))
+            }
+            RenderShape::Parametric { render_from_object, functions, container, params } => {
+                self.parametrics.push(Parametric::new(render_from_object, functions, container, params));
+                (ShapeKind::Parametric, at(self.parametrics.len()))
+            }
             RenderShape::Superellipsoid { render_from_object, e, n } => {
                 self.superellipsoids.push(Superellipsoid::new(affine_f32(&render_from_object), e, n));
                 (ShapeKind::Superellipsoid, at(self.superellipsoids.len()))
@@ -568,6 +588,8 @@ impl Scene {
             ShapeKind::Blob => self.blobs[i].bounds(),
             ShapeKind::Julia => self.julias[i].bounds(),
             ShapeKind::Mesh | ShapeKind::HeightField => self.meshes[i].bounds(),
+            ShapeKind::Isosurface => self.isosurfaces[i].bounds(),
+            ShapeKind::Parametric => self.parametrics[i].bounds(),
             ShapeKind::Csg => (self.csg[i].min, self.csg[i].max),
             ShapeKind::Plane => return EVERYWHERE,
         };

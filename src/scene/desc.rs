@@ -319,6 +319,20 @@ pub enum ShapeDesc {
         precision: f64,
         slice: (DVec4, f64),
     },
+    /// `isosurface { function {..} contained_by {..} ... }`: where `function` (of x, y, z,
+    /// compiled) equals the threshold, inside the container.
+    Isosurface {
+        function: crate::function::Program,
+        container: Container,
+        params: IsoParams,
+    },
+    /// `parametric { function {x(u, v)} function {y} function {z} <u1, v1>, <u2, v2> ... }`,
+    /// the functions compiled; clipped to the container.
+    Parametric {
+        functions: [crate::function::Program; 3],
+        container: Container,
+        params: ParametricParams,
+    },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
@@ -373,6 +387,38 @@ pub struct HeightFieldDesc {
     pub height: u32,
     /// `width * height` values, row by row.
     pub heights: Vec<f32>,
+}
+
+/// An isosurface's `contained_by` shape (object space).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Container {
+    Box { min: DVec3, max: DVec3 },
+    Sphere { center: DVec3, radius: f64 },
+}
+
+/// The search parameters of an `isosurface` (POV-Ray's defaults).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct IsoParams {
+    pub threshold: f64,
+    pub accuracy: f64,
+    pub max_gradient: f64,
+    /// No container walls where it cuts the solid.
+    pub open: bool,
+}
+
+impl Default for IsoParams {
+    fn default() -> Self {
+        IsoParams { threshold: 0.0, accuracy: 0.001, max_gradient: 1.1, open: false }
+    }
+}
+
+/// The (u, v) rectangle and search parameters of a `parametric`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParametricParams {
+    pub lo: DVec2,
+    pub hi: DVec2,
+    pub accuracy: f64,
+    pub max_gradient: f64,
 }
 
 /// How a polynomial surface was written.
@@ -476,6 +522,8 @@ impl ShapeDesc {
             ShapeDesc::Julia { .. } => "julia_fractal",
             ShapeDesc::Mesh { .. } => "mesh",
             ShapeDesc::HeightField { .. } => "height_field",
+            ShapeDesc::Isosurface { .. } => "isosurface",
+            ShapeDesc::Parametric { .. } => "parametric",
         }
     }
 }

@@ -371,7 +371,9 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             | ShapeDesc::Lathe { .. }
             | ShapeDesc::Sor { .. }
             | ShapeDesc::Blob { .. }
-            | ShapeDesc::Julia { .. }) => {
+            | ShapeDesc::Julia { .. }
+            | ShapeDesc::Isosurface { .. }
+            | ShapeDesc::Parametric { .. }) => {
                 return Err(format!("write_pov: {} is not supported", other.keyword()));
             }
         }

@@ -152,6 +152,18 @@ pub(crate) enum RenderShape {
         components: Vec<blob::Component>,
         threshold: f64,
     },
+    Isosurface {
+        render_from_object: DAffine3,
+        function: crate::function::Program,
+        container: crate::scene::desc::Container,
+        params: crate::scene::desc::IsoParams,
+    },
+    Parametric {
+        render_from_object: DAffine3,
+        functions: [crate::function::Program; 3],
+        container: crate::scene::desc::Container,
+        params: crate::scene::desc::ParametricParams,
+    },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
         render_from_object: DAffine3,
@@ -270,6 +282,18 @@ impl RenderFrame {
                 render_from_object: render_from_object(),
                 components: components.iter().map(blob_component).collect(),
                 threshold: *threshold,
+            },
+            ShapeDesc::Isosurface { function, container, params } => RenderShape::Isosurface {
+                render_from_object: render_from_object(),
+                function: function.clone(),
+                container: *container,
+                params: *params,
+            },
+            ShapeDesc::Parametric { functions, container, params } => RenderShape::Parametric {
+                render_from_object: render_from_object(),
+                functions: functions.clone(),
+                container: *container,
+                params: *params,
             },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept

@@ -14,8 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    BlobShape, Color, ComplexFn, CsgOp, FinishDesc, JuliaFunction, NormalDesc, NormalPattern, ObjectDesc, PigmentDesc,
-    PigmentPattern, PolyForm, SceneDesc, ShapeDesc, Transform, Turbulence,
+    BlobShape, Color, ComplexFn, Container, CsgOp, FinishDesc, JuliaFunction, NormalDesc, NormalPattern, ObjectDesc,
+    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -174,6 +174,40 @@ fn object(s: &mut String, o: &ObjectDesc) {
             let smooth = if *smooth { " smooth" } else { "" };
             let (format, file, water) = (&field.format, quote(&field.file), num(*water_level));
             write!(s, "height_field {{ {format} \"{file}\"{smooth} water_level {water}")
+        }
+        ShapeDesc::Isosurface { function, container, params } => {
+            let c = match container {
+                Container::Box { min, max } => format!("box {{ {}, {} }}", vec(*min), vec(*max)),
+                Container::Sphere { center, radius } => format!("sphere {{ {}, {} }}", vec(*center), num(*radius)),
+            };
+            let open = if params.open { " open" } else { "" };
+            write!(
+                s,
+                "isosurface {{ function {{ /* {} instructions */ }} contained_by {{ {c} }} threshold {} accuracy {} \
+                 max_gradient {}{open}",
+                function.len(),
+                num(params.threshold),
+                num(params.accuracy),
+                num(params.max_gradient)
+            )
+        }
+        ShapeDesc::Parametric { functions, container, params } => {
+            let c = match container {
+                Container::Box { min, max } => format!("box {{ {}, {} }}", vec(*min), vec(*max)),
+                Container::Sphere { center, radius } => format!("sphere {{ {}, {} }}", vec(*center), num(*radius)),
+            };
+            let lens = functions.iter().map(|f| format!("function {{ /* {} instructions */ }}", f.len()));
+            write!(
+                s,
+                "parametric {{ {} <{}, {}>, <{}, {}> contained_by {{ {c} }} accuracy {} max_gradient {}",
+                lens.collect::<Vec<_>>().join(" "),
+                num(params.lo.x),
+                num(params.lo.y),
+                num(params.hi.x),
+                num(params.hi.y),
+                num(params.accuracy),
+                num(params.max_gradient)
+            )
         }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");

@@ -9,6 +9,7 @@ mod eval;
 mod fileio;
 mod functions;
 mod height_field;
+mod isosurface;
 mod julia;
 mod objects;
 mod sweeps;

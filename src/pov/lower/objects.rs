@@ -166,6 +166,7 @@ impl Lowerer<'_> {
                 ShapeDesc::Cone { open, .. } | ShapeDesc::Prism { open, .. } | ShapeDesc::Sor { open, .. } => {
                     *open = true
                 }
+                ShapeDesc::Isosurface { params, .. } => params.open = true,
                 other => return Err(flag_not_taken(*span, "open", other.keyword(), OPEN_TAKERS)),
             },
             Modifier::Sturm(span) => match &mut obj.shape {
@@ -401,6 +402,8 @@ impl Lowerer<'_> {
             ShapeKind::Text => self.text(args, span)?,
             ShapeKind::Lathe => self.lathe(args, span)?,
             ShapeKind::Sor => self.sor(args, span)?,
+            ShapeKind::Isosurface => self.isosurface(args, span)?,
+            ShapeKind::Parametric => self.parametric(args, span)?,
         })
     }
 
@@ -503,7 +506,7 @@ fn collinear(points: &[DVec3]) -> bool {
 }
 
 /// The shapes that take `open` and `sturm`, for messages.
-const OPEN_TAKERS: &str = "cylinder, cone, prism and sor";
+const OPEN_TAKERS: &str = "cylinder, cone, prism, sor and isosurface";
 const STURM_SHAPES: &str = "torus, cubic, quartic, poly, prism, lathe and sor";
 /// A CSG object's texture and interior, given to its children without one at the end of its
 /// modifiers.

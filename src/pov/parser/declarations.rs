@@ -144,6 +144,7 @@ impl Parser<'_, '_> {
             Some("camera") => DeclValue::Camera(self.camera_items()?.0),
             Some("light_source") => DeclValue::Light(self.light()?),
             Some("array") => return self.array().map(Declared::Value),
+            Some("function") => return self.function().map(|f| Declared::Value(Value::Function(Rc::new(f)))),
             Some(word) if super::scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }
@@ -252,6 +253,7 @@ pub(super) fn starts_declared_block(word: &str) -> bool {
             | "camera"
             | "array"
             | "light_source"
+            | "function"
     ) || super::scene::is_object_keyword(word)
         || UNSUPPORTED_SHAPES.contains(&word)
         || DECLARABLE_UNMODELLED.contains(&word)
@@ -266,7 +268,6 @@ enum Declared {
 /// Values POV-Ray can declare that strahl does not model yet: their declarations are kept as
 /// unmodelled (an error only where they are used).
 const DECLARABLE_UNMODELLED: &[&str] = &[
-    "function",
     "material",
     "media",
     "density",

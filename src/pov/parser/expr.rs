@@ -462,6 +462,12 @@ impl Parser<'_, '_> {
             return Ok(Expr { kind: ExprKind::Ident(word.to_string()), span });
         };
         self.bump();
+        if let Value::Function(f) = &value {
+            if self.peek_more().kind == TokenKind::Punct('(') {
+                let v = self.call_function(f.clone(), word, span)?;
+                return Ok(Expr { kind: ExprKind::Number(v), span });
+            }
+        }
         if let Value::Unmodelled(u) = &value {
             if self.peek_more().kind == TokenKind::Punct('(') {
                 // A user function (`#declare f = function {...}`) called.

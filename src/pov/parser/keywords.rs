@@ -122,19 +122,7 @@ pub(crate) const RESERVED: &[&str] = &[
 ];
 
 /// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
-pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &[
-    "mesh",
-    "mesh2",
-    "height_field",
-    "blob",
-    "isosurface",
-    "bicubic_patch",
-    "sphere_sweep",
-    "parametric",
-    "ovus",
-    "lemon",
-    "light_group",
-];
+pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &["bicubic_patch", "sphere_sweep", "ovus", "lemon", "light_group"];
 
 /// Other POV-Ray words strahl knows of but does not support, so messages can say "not supported"
 /// instead of "unknown".

@@ -11,6 +11,8 @@ mod blob;
 mod declarations;
 mod directives;
 mod expr;
+mod function;
+mod isosurface;
 mod julia;
 mod keywords;
 mod macros;

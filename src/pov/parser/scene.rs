@@ -47,11 +47,13 @@ const TOP_LEVEL: &[&str] = &[
     "mesh",
     "mesh2",
     "height_field",
+    "isosurface",
+    "parametric",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, smooth_triangle, mesh, mesh2, height_field, union, \
-     merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, smooth_triangle, mesh, mesh2, height_field, \
+     isosurface, parametric, union, merge, intersection, difference, object";
 /// Shapes whose bodies the parser reads and evaluates itself (`parser::mesh`).
 const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
@@ -129,6 +131,8 @@ fn shape_kind(word: &str) -> Option<ShapeKind> {
         "text" => ShapeKind::Text,
         "lathe" => ShapeKind::Lathe,
         "sor" => ShapeKind::Sor,
+        "isosurface" => ShapeKind::Isosurface,
+        "parametric" => ShapeKind::Parametric,
         _ => return None,
     })
 }
@@ -153,6 +157,8 @@ fn shape_args(kind: ShapeKind) -> &'static [&'static str] {
         ShapeKind::Prism => &["height 1", "height 2", "number of points", "points"],
         ShapeKind::Text => &["ttf", "font", "string", "thickness", "offset"],
         ShapeKind::Lathe | ShapeKind::Sor => &["number of points", "points"],
+        ShapeKind::Isosurface => &["function"],
+        ShapeKind::Parametric => &["function x", "function y", "function z", "<u1, v1>", "<u2, v2>"],
     }
 }
 
@@ -449,7 +455,13 @@ impl Parser<'_, '_> {
                         "open" => {
                             matches!(
                                 shape_kind(&word),
-                                Some(ShapeKind::Cylinder | ShapeKind::Cone | ShapeKind::Prism | ShapeKind::Sor)
+                                Some(
+                                    ShapeKind::Cylinder
+                                        | ShapeKind::Cone
+                                        | ShapeKind::Prism
+                                        | ShapeKind::Sor
+                                        | ShapeKind::Isosurface
+                                )
                             )
                         }
                         "sturm" => {
@@ -500,6 +512,12 @@ impl Parser<'_, '_> {
 
     /// The comma-separated arguments of a shape; commas are optional, as in POV-Ray.
     fn shape_args(&mut self, shape: ShapeKind, word: &str) -> PResult<Vec<crate::pov::ast::Expr>> {
+        if shape == ShapeKind::Isosurface {
+            return self.isosurface_args();
+        }
+        if shape == ShapeKind::Parametric {
+            return self.parametric_args();
+        }
         let names = shape_args(shape);
         let mut args = Vec::new();
         let leading = match shape {

@@ -43,8 +43,9 @@ fn unsupported_shape_is_named() {
     assert_eq!(
         e,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
-         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, smooth_triangle, mesh, mesh2, \
-         height_field, union, merge, intersection, difference, object)"
+         torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
+         smooth_triangle, mesh, mesh2, height_field, isosurface, parametric, union, merge, intersection, difference, \
+         object)"
     );
 }
 

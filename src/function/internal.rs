@@ -1,0 +1,103 @@
+//! The internal functions `functions.inc` declares as `function { internal(N) }`, by POV-Ray's
+//! numbers. Each takes x, y, z and its extra parameters; the formulas were checked against
+//! POV-Ray 3.7 by evaluating them at parse time (`#debug str(f_sphere(...), 0, 8)` at sample
+//! points, figures in the tests), not taken from its source.
+
+/// The internal functions strahl models.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Internal {
+    /// 17: `sqrt((x·a)² + (y·b)² + (z·c)²)` (no `- 1`: POV-Ray's value at (1, 0, 2) with
+    /// (1, 2, 3) is √37).
+    Ellipsoid,
+    /// 45: `s·(y − x² − z²)`.
+    Paraboloid,
+    /// 47: the polar angle `acos(y / r)` (0 at the origin).
+    Ph,
+    /// 57: the distance from the origin.
+    R,
+    /// 60: `(radius, sx, sy, sz)`: the distance outside a box of half-sizes s with its edges
+    /// rounded by `radius`; inside, `-radius` (POV-Ray subtracts a further 1e-6 everywhere).
+    RoundedBox,
+    /// 61: `|p| − radius`.
+    Sphere,
+    /// 68: `(e, n)`: `1 − ((|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n))^(n/2)`, negative outside.
+    Superellipsoid,
+    /// 69: the azimuth `atan2(x, z)`.
+    Th,
+    /// 70: `(major, minor)`: `√((√(x² + z²) − major)² + y²) − minor`.
+    Torus,
+    /// 76: lattice noise in [0, 1] (strahl's own, shared with the `bumps`-style patterns).
+    Noise3d,
+}
+
+impl Internal {
+    /// POV-Ray's number for it in `internal(N)`.
+    pub fn from_number(n: u32) -> Option<Internal> {
+        Some(match n {
+            17 => Internal::Ellipsoid,
+            45 => Internal::Paraboloid,
+            47 => Internal::Ph,
+            57 => Internal::R,
+            60 => Internal::RoundedBox,
+            61 => Internal::Sphere,
+            68 => Internal::Superellipsoid,
+            69 => Internal::Th,
+            70 => Internal::Torus,
+            76 => Internal::Noise3d,
+            _ => return None,
+        })
+    }
+
+    /// The numbers `from_number` knows, for messages.
+    pub const NUMBERS: &'static str = "17 (f_ellipsoid), 45 (f_paraboloid), 47 (f_ph), 57 (f_r), 60 (f_rounded_box), \
+                                       61 (f_sphere), 68 (f_superellipsoid), 69 (f_th), 70 (f_torus), 76 (f_noise3d)";
+
+    /// How many parameters it takes, x, y and z included.
+    pub fn arity(self) -> usize {
+        3 + match self {
+            Internal::Ph | Internal::R | Internal::Th | Internal::Noise3d => 0,
+            Internal::Sphere | Internal::Paraboloid => 1,
+            Internal::Torus | Internal::Superellipsoid => 2,
+            Internal::Ellipsoid => 3,
+            Internal::RoundedBox => 4,
+        }
+    }
+
+    /// Its value at `a` (x, y, z, then the extra parameters; `arity` of them).
+    #[inline]
+    pub fn eval(self, a: &[f64]) -> f64 {
+        let p = |i: usize| a.get(i).copied().unwrap_or(0.0);
+        let (x, y, z) = (p(0), p(1), p(2));
+        match self {
+            Internal::Ellipsoid => ((x * p(3)).powi(2) + (y * p(4)).powi(2) + (z * p(5)).powi(2)).sqrt(),
+            Internal::Paraboloid => p(3) * (y - x * x - z * z),
+            Internal::Ph => {
+                let r = (x * x + y * y + z * z).sqrt();
+                if r > 0.0 {
+                    (y / r).clamp(-1.0, 1.0).acos()
+                } else {
+                    0.0
+                }
+            }
+            Internal::R => (x * x + y * y + z * z).sqrt(),
+            Internal::RoundedBox => {
+                let r = p(3);
+                let q = |v: f64, s: f64| (v.abs() - s + r).max(0.0);
+                let (qx, qy, qz) = (q(x, p(4)), q(y, p(5)), q(z, p(6)));
+                (qx * qx + qy * qy + qz * qz).sqrt() - r - 1e-6
+            }
+            Internal::Sphere => (x * x + y * y + z * z).sqrt() - p(3),
+            Internal::Superellipsoid => {
+                let (e, n) = (p(3), p(4));
+                let xy = x.abs().powf(2.0 / e) + y.abs().powf(2.0 / e);
+                1.0 - (xy.powf(e / n) + z.abs().powf(2.0 / n)).powf(n / 2.0)
+            }
+            Internal::Th => x.atan2(z),
+            Internal::Torus => {
+                let w = (x * x + z * z).sqrt() - p(3);
+                (w * w + y * y).sqrt() - p(4)
+            }
+            Internal::Noise3d => f64::from(crate::shading::noise::noise(glam::Vec3::new(x as f32, y as f32, z as f32))),
+        }
+    }
+}

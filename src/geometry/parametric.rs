@@ -1,0 +1,374 @@
+//! POV-Ray's `parametric` (3.4.5.x): the surface `(x(u, v), y(u, v), z(u, v))` over a
+//! rectangle of (u, v), clipped to its `contained_by` box or sphere. A shell: nothing is
+//! inside it.
+//!
+//! Built once: the (u, v) rectangle is cut into `GRID`² cells, each bounded by the box of its
+//! sampled points grown by how far the surface may bulge between them (`max_gradient` times
+//! half the cell's (u, v) size, as POV-Ray's documentation defines the gradient), and the
+//! cells are grouped four by four into a quadtree of boxes. A ray walks the tree to the cells
+//! it meets, nearest first, and solves `P(u, v) = o + t·d` there by Newton's method in f64,
+//! derivatives by central differences; a solution must stay inside the (u, v) rectangle, the
+//! container and within `accuracy`. The normal at a point finds its (u, v) again the same
+//! way (by least squares from the cells whose boxes hold the point).
+
+use glam::{DAffine3, DVec2, DVec3, Vec3};
+
+use super::cuboid::{frame_for, BoxFrame};
+use super::ray::RayLanes;
+use super::{affine_f32, transformed_bounds, Shape};
+use crate::function::Program;
+use crate::lanes::{Lane, V3};
+use crate::scene::desc::{Container, ParametricParams};
+
+/// Cells along u and along v (a power of two, for the quadtree).
+const GRID: usize = 128;
+/// Newton steps per candidate cell: from a cell's centre a solution in it converges in four
+/// or five.
+const NEWTON_STEPS: usize = 8;
+
+/// How far (in cells) Newton's method may wander from its cell before it is given up: that
+/// solution belongs to another candidate.
+const WANDER: f64 = 2.0;
+
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    min: DVec3,
+    max: DVec3,
+}
+
+#[derive(Clone, Debug)]
+pub struct Parametric {
+    pub frame: BoxFrame,
+    functions: [Program; 3],
+    container: Container,
+    uv: ParametricParams,
+    /// Quadtree levels, coarsest first: level `k` has `2^k × 2^k` boxes, row-major in v.
+    levels: Vec<Vec<Node>>,
+    pub min: Vec3,
+    pub max: Vec3,
+}
+
+impl Parametric {
+    pub fn new(
+        render_from_object: DAffine3,
+        functions: [Program; 3],
+        container: Container,
+        uv: ParametricParams,
+    ) -> Parametric {
+        let mut p = Parametric {
+            frame: frame_for(affine_f32(&render_from_object)),
+            functions,
+            container,
+            uv,
+            levels: Vec::new(),
+            min: Vec3::ZERO,
+            max: Vec3::ZERO,
+        };
+        let cell = (uv.hi - uv.lo) / GRID as f64;
+        let mut leaves = Vec::with_capacity(GRID * GRID);
+        for j in 0..GRID {
+            for i in 0..GRID {
+                let base = uv.lo + cell * DVec2::new(i as f64, j as f64);
+                let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+                for (a, b) in (0..9).map(|k| (k % 3, k / 3)) {
+                    let q = p.point(base + cell * DVec2::new(a as f64, b as f64) * 0.5);
+                    min = min.min(q);
+                    max = max.max(q);
+                }
+                // Every (u, v) of the cell is within a quarter cell (along each axis) of a
+                // sample, and no coordinate changes faster than max_gradient along u or v. A
+                // max_gradient set too low must not open holes: at least a twentieth of the
+                // samples' own spread too.
+                let pad = (uv.max_gradient * 0.25 * (cell.x.abs() + cell.y.abs())).max(0.05 * (max - min).length())
+                    + uv.accuracy;
+                leaves.push(Node { min: min - pad, max: max + pad });
+            }
+        }
+        let mut levels = vec![leaves];
+        let mut n = GRID;
+        while n > 1 {
+            let fine = &levels[levels.len() - 1];
+            let half = n / 2;
+            let coarse: Vec<Node> = (0..half * half)
+                .map(|k| {
+                    let (i, j) = (k % half, k / half);
+                    let kids = [(2 * i, 2 * j), (2 * i + 1, 2 * j), (2 * i, 2 * j + 1), (2 * i + 1, 2 * j + 1)];
+                    kids.iter().fold(Node { min: DVec3::INFINITY, max: DVec3::NEG_INFINITY }, |b, &(a, c)| {
+                        let k = &fine[c * n + a];
+                        Node { min: b.min.min(k.min), max: b.max.max(k.max) }
+                    })
+                })
+                .collect();
+            levels.push(coarse);
+            n = half;
+        }
+        levels.reverse();
+        // The surface's box, cut to the container's.
+        let (clo, chi) = container.bounds();
+        let root = levels[0][0];
+        let (lo, hi) = (root.min.max(clo), root.max.min(chi));
+        let (lo, hi) = if lo.cmple(hi).all() { (lo, hi) } else { (DVec3::ZERO, DVec3::ZERO) };
+        let xf = affine_f32(&render_from_object);
+        let (min, max) = transformed_bounds(&xf, lo.as_vec3(), hi.as_vec3());
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        p.levels = levels;
+        p.min = min - pad;
+        p.max = max + pad;
+        p
+    }
+
+    pub fn bounds(&self) -> (Vec3, Vec3) {
+        (self.min, self.max)
+    }
+
+    fn point(&self, uv: DVec2) -> DVec3 {
+        let a = [uv.x, uv.y, 0.0];
+        DVec3::new(self.functions[0].eval(&a), self.functions[1].eval(&a), self.functions[2].eval(&a))
+    }
+
+    /// ∂P/∂u and ∂P/∂v by central differences.
+    fn tangents(&self, uv: DVec2) -> (DVec3, DVec3) {
+        let h = (self.uv.hi - self.uv.lo).abs() * 1e-6;
+        let du = (self.point(uv + DVec2::new(h.x, 0.0)) - self.point(uv - DVec2::new(h.x, 0.0))) / (2.0 * h.x);
+        let dv = (self.point(uv + DVec2::new(0.0, h.y)) - self.point(uv - DVec2::new(0.0, h.y))) / (2.0 * h.y);
+        (du, dv)
+    }
+
+    /// ∂P/∂u and ∂P/∂v by forward differences from `p = P(uv)`: two evaluations, not four,
+    /// for Newton's method, which only needs them roughly.
+    fn forward_tangents(&self, uv: DVec2, p: DVec3) -> (DVec3, DVec3) {
+        let h = (self.uv.hi - self.uv.lo).abs() * 1e-7;
+        let du = (self.point(uv + DVec2::new(h.x, 0.0)) - p) / h.x;
+        let dv = (self.point(uv + DVec2::new(0.0, h.y)) - p) / h.y;
+        (du, dv)
+    }
+
+    fn in_domain(&self, uv: DVec2) -> bool {
+        let (lo, hi) = (self.uv.lo.min(self.uv.hi), self.uv.lo.max(self.uv.hi));
+        let e = (hi - lo) * 1e-9;
+        uv.cmpge(lo - e).all() && uv.cmple(hi + e).all()
+    }
+
+    /// The centre (u, v) of leaf cell `k`.
+    fn cell_centre(&self, k: usize) -> DVec2 {
+        let cell = (self.uv.hi - self.uv.lo) / GRID as f64;
+        self.uv.lo + cell * DVec2::new((k % GRID) as f64 + 0.5, (k / GRID) as f64 + 0.5)
+    }
+
+    /// The leaf cells whose boxes the ray meets in `(t_min, t_max)`, with the entry `t`.
+    fn candidates(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Vec<(f64, usize)> {
+        let inv = d.recip();
+        let slab = |n: &Node| {
+            let (a, b) = ((n.min - o) * inv, (n.max - o) * inv);
+            let lo = a.min(b).max_element().max(t_min);
+            let hi = a.max(b).min_element().min(t_max);
+            (lo <= hi).then_some(lo)
+        };
+        let mut out = Vec::new();
+        let mut stack = vec![(0usize, 0usize)];
+        let last = self.levels.len() - 1;
+        while let Some((level, k)) = stack.pop() {
+            let Some(t) = slab(&self.levels[level][k]) else { continue };
+            if level == last {
+                out.push((t, k));
+                continue;
+            }
+            let n = 1usize << level;
+            let (i, j) = (k % n, k / n);
+            for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                stack.push((level + 1, (2 * j + b) * 2 * n + 2 * i + a));
+            }
+        }
+        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        out
+    }
+
+    pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+        let (enter, exit) = self.container_span(o, d)?;
+        let (t_lo, t_hi) = (t_min.max(enter), t_max.min(exit));
+        if t_lo.partial_cmp(&t_hi) != Some(std::cmp::Ordering::Less) {
+            return None;
+        }
+        let len = d.length();
+        let mut best = t_hi;
+        let mut found = false;
+        for (t_enter, k) in self.candidates(o, d, t_lo, t_hi) {
+            if t_enter >= best {
+                break;
+            }
+            let Some((t, _)) = self.newton(o, d, self.cell_centre(k), t_enter, WANDER) else { continue };
+            // Past the ray's own start by more than the accuracy: not the surface it left.
+            if t > t_lo && t < best && (t - t_min) * len > self.uv.accuracy * 0.5 {
+                best = t;
+                found = true;
+            }
+        }
+        found.then_some(best)
+    }
+
+    fn container_span(&self, o: DVec3, d: DVec3) -> Option<(f64, f64)> {
+        match self.container {
+            Container::Box { min, max } => {
+                let inv = d.recip();
+                let (a, b) = ((min - o) * inv, (max - o) * inv);
+                let (lo, hi) = (a.min(b).max_element(), a.max(b).min_element());
+                (lo <= hi).then_some((lo, hi))
+            }
+            Container::Sphere { center, radius } => {
+                let oc = o - center;
+                let (a, b, c) = (d.dot(d), oc.dot(d), oc.dot(oc) - radius * radius);
+                let disc = b * b - a * c;
+                (disc >= 0.0 && a > 0.0).then(|| ((-b - disc.sqrt()) / a, (-b + disc.sqrt()) / a))
+            }
+        }
+    }
+
+    /// Newton's method on `P(u, v) − (o + t·d) = 0` from `(uv, t)`.
+    fn newton(&self, o: DVec3, d: DVec3, mut uv: DVec2, mut t: f64, wander: f64) -> Option<(f64, DVec2)> {
+        let start = uv;
+        let reach = ((self.uv.hi - self.uv.lo) / GRID as f64).abs() * (0.5 + wander);
+        for _ in 0..NEWTON_STEPS {
+            let p = self.point(uv);
+            let r = p - (o + t * d);
+            let (du, dv) = self.forward_tangents(uv, p);
+            // [du dv −d]·(Δu, Δv, Δt) = −r, by Cramer's rule.
+            let m = glam::DMat3::from_cols(du, dv, -d);
+            let det = m.determinant();
+            if det.abs() < 1e-300 || !det.is_finite() {
+                return None;
+            }
+            let step = m.inverse() * -r;
+            uv += DVec2::new(step.x, step.y);
+            t += step.z;
+            if !uv.is_finite() || !t.is_finite() || (uv - start).abs().cmpgt(reach).any() {
+                return None;
+            }
+            if step.length() < 1e-10 * (1.0 + t.abs()) {
+                break;
+            }
+        }
+        let p = o + t * d;
+        let ok = self.in_domain(uv) && (self.point(uv) - p).length() < self.uv.accuracy && self.container.contains(p);
+        ok.then_some((t, uv))
+    }
+
+    /// The (u, v) of a point on the surface: least squares from each cell whose box holds it
+    /// (found through the quadtree), the best fit kept; an exact one ends the search.
+    fn uv_at(&self, q: DVec3) -> DVec2 {
+        let holds = |n: &Node| q.cmpge(n.min).all() && q.cmple(n.max).all();
+        let mut best = (f64::INFINITY, self.cell_centre(0));
+        let last = self.levels.len() - 1;
+        let mut stack = vec![(0usize, 0usize)];
+        while let Some((level, k)) = stack.pop() {
+            if !holds(&self.levels[level][k]) {
+                continue;
+            }
+            if level < last {
+                let n = 1usize << level;
+                let (i, j) = (k % n, k / n);
+                for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    stack.push((level + 1, (2 * j + b) * 2 * n + 2 * i + a));
+                }
+                continue;
+            }
+            let uv = self.fit(q, self.cell_centre(k));
+            if uv.is_finite() && self.in_domain(uv) {
+                let e = (self.point(uv) - q).length();
+                if e < best.0 {
+                    best = (e, uv);
+                    if e < self.uv.accuracy * 1e-3 {
+                        break;
+                    }
+                }
+            }
+        }
+        best.1
+    }
+
+    /// Gauss–Newton from `uv` towards the (u, v) whose point is nearest `q`.
+    fn fit(&self, q: DVec3, mut uv: DVec2) -> DVec2 {
+        for _ in 0..NEWTON_STEPS {
+            let r = self.point(uv) - q;
+            let (du, dv) = self.tangents(uv);
+            // The normal equations of [du dv]·Δ = −r.
+            let (a, b, c) = (du.dot(du), du.dot(dv), dv.dot(dv));
+            let det = a * c - b * b;
+            if det.abs() < 1e-300 {
+                break;
+            }
+            let (ru, rv) = (-du.dot(r), -dv.dot(r));
+            let step = DVec2::new(c * ru - b * rv, a * rv - b * ru) / det;
+            uv += step;
+            if !uv.is_finite() || step.length() < 1e-12 {
+                break;
+            }
+        }
+        uv
+    }
+
+    fn normal_object(&self, q: DVec3) -> DVec3 {
+        let (du, dv) = self.tangents(self.uv_at(q));
+        du.cross(dv)
+    }
+}
+
+impl Shape for Parametric {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
+    }
+
+    /// A shell: nothing is inside.
+    fn inside<L: Lane>(&self, _p: V3<L>) -> L::Mask {
+        L::mask_from_fn(|_| false)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::function::{Binary, Node as F, Unary};
+    use crate::geometry::ray::Ray;
+
+    /// The unit sphere of POV-Ray's documentation: (sin u cos v, sin u sin v, cos u).
+    fn sphere() -> Parametric {
+        let (u, v) = (F::Param(0), F::Param(1));
+        let s = |a: F| F::unary(Unary::Sin, a);
+        let c = |a: F| F::unary(Unary::Cos, a);
+        let fx = F::binary(Binary::Mul, s(u.clone()), c(v.clone()));
+        let fy = F::binary(Binary::Mul, s(u.clone()), s(v.clone()));
+        let fz = c(u);
+        let f = [fx, fy, fz].map(|f| Program::compile(&f, 3));
+        let uv = ParametricParams {
+            lo: DVec2::ZERO,
+            hi: DVec2::new(std::f64::consts::PI, 2.0 * std::f64::consts::PI),
+            accuracy: 0.001,
+            max_gradient: 1.0,
+        };
+        Parametric::new(DAffine3::IDENTITY, f, Container::Sphere { center: DVec3::ZERO, radius: 1.1 }, uv)
+    }
+
+    #[test]
+    fn the_documentations_sphere_is_a_sphere() {
+        let s = sphere();
+        for (o, d, want) in [
+            (Vec3::new(0.0, 0.0, -5.0), Vec3::Z, 4.0),
+            (Vec3::new(0.3, 0.2, -5.0), Vec3::Z, 5.0 - (1.0f32 - 0.13).sqrt()),
+            (Vec3::new(5.0, 0.0, 0.0), -Vec3::X, 4.0),
+        ] {
+            let t = s.intersect(&Ray::new(o, d), 0.0, f32::INFINITY).expect("hit");
+            assert!((t - want).abs() < 1e-4, "{o}: {t} vs {want}");
+            let p = o + t * d;
+            let n = s.normal_at(p);
+            assert!(n.dot(p.normalize()).abs() > 0.999, "{p}: {n}");
+        }
+        // The far side, past the first hit; a miss beside it.
+        let t = s.intersect(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), 4.01, f32::INFINITY);
+        assert!((t.expect("far side") - 6.0).abs() < 1e-4);
+        assert_eq!(s.intersect(&Ray::new(Vec3::new(0.0, 1.2, -5.0), Vec3::Z), 0.0, f32::INFINITY), None);
+    }
+}

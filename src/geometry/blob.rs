@@ -80,14 +80,18 @@ pub struct Blob {
     pub max: Vec3,
 }
 
+/// One ray's pieces, their span ends (position, 2·piece + 1 for an end) and the active set.
+type Scratch = (Vec<Piece>, Vec<(f64, u32)>, Vec<u32>);
+
 thread_local! {
-    /// Scratch for one ray's pieces, span ends and active set: no allocation per ray.
-    static SCRATCH: RefCell<(Vec<Piece>, Vec<(f64, u32)>, Vec<u32>)> = const { RefCell::new((Vec::new(), Vec::new(), Vec::new())) };
+    /// Reused for every ray a thread solves: no allocation per ray.
+    static SCRATCH: RefCell<Scratch> = const { RefCell::new((Vec::new(), Vec::new(), Vec::new())) };
 }
 
 /// The box of a component in blob space, if it adds to the field (positive strength).
 fn component_bounds(c: &Component) -> Option<(Vec3, Vec3)> {
-    if !(c.strength > 0.0) {
+    // NaN strengths add nothing either.
+    if c.strength.is_nan() || c.strength <= 0.0 {
         return None;
     }
     let (lo, hi) = match c.shape {
@@ -104,7 +108,7 @@ fn below_zero(a: f64, b: f64, c: f64) -> Option<(f64, f64)> {
         return (c < 0.0).then_some((f64::NEG_INFINITY, f64::INFINITY));
     }
     let disc = b * b - 4.0 * a * c;
-    if !(disc > 0.0) {
+    if disc.is_nan() || disc <= 0.0 {
         return None;
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
@@ -214,7 +218,8 @@ fn roots_above(k: &[f64; 5], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> u
     }
     let (mut a, mut b) = (lo, hi);
     let (fa, fb) = (eval(k, a), eval(k, b));
-    if !(fa * fb < 0.0) {
+    // Only a strict change of sign (not a NaN) brackets a root.
+    if (fa * fb).is_nan() || fa * fb >= 0.0 {
         return 0;
     }
     for _ in 0..200 {
@@ -244,7 +249,7 @@ impl Blob {
         if !(lo.cmple(hi).all()) {
             (lo, hi) = (Vec3::ZERO, Vec3::ZERO);
         }
-        let center = (0.5 * (lo.as_dvec3() + hi.as_dvec3())).into();
+        let center = 0.5 * (lo.as_dvec3() + hi.as_dvec3());
         let size = 0.5 * (hi - lo).max_element() as f64;
         let size = if size > 0.0 && size.is_finite() { size } else { 1.0 };
         let blob_from_unit = DAffine3::from_translation(center) * DAffine3::from_scale(DVec3::splat(size));
@@ -267,7 +272,7 @@ impl Blob {
 
     fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
         let len = d.length();
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             return None;
         }
         let dir = d / len;
@@ -302,7 +307,7 @@ impl Blob {
                 let Some(&(next, _)) = ends.get(w + 1) else { break };
                 // The field cannot reach the threshold where the active strengths cannot.
                 let reach: f64 = active.iter().map(|&p| pieces[p as usize].strength.max(0.0)).sum();
-                if !(next > u) || reach < self.threshold {
+                if next.is_nan() || next <= u || reach < self.threshold {
                     continue;
                 }
                 let mut k = [0.0; 5];

@@ -298,7 +298,7 @@ impl Julia {
         for k in 1..=self.steps() {
             h = step(self.function, h) + self.param;
             // NaN (a function's pole) counts as escaped.
-            if !(h.length_squared() <= BAILOUT2) {
+            if h.length_squared().is_nan() || h.length_squared() > BAILOUT2 {
                 return Some(k);
             }
         }
@@ -318,7 +318,7 @@ impl Julia {
         }
         let root = disc.sqrt();
         let (lo, hi) = (((-b - root) / a).max(t_min), ((-b + root) / a).min(t_max));
-        if !(lo < hi) {
+        if lo.is_nan() || hi.is_nan() || lo >= hi {
             return None;
         }
         let dt = self.step / a.sqrt();

@@ -12,7 +12,7 @@ impl Lowerer<'_> {
         let threshold = match &blob.threshold {
             Some(e) => {
                 let t = self.float(e)?;
-                if !(t > 0.0) {
+                if t.is_nan() || t <= 0.0 {
                     return Err(Diag::new(e.span, format!("blob threshold must be positive, found {t}")));
                 }
                 t
@@ -27,7 +27,7 @@ impl Lowerer<'_> {
         let mut textured = None;
         for c in &blob.components {
             let radius = self.float(&c.radius)?;
-            if !(radius > 0.0) {
+            if radius.is_nan() || radius <= 0.0 {
                 return Err(Diag::new(
                     c.radius.span,
                     format!("blob component radius must be positive, found {radius}"),

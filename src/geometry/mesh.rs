@@ -215,7 +215,9 @@ impl Mesh {
 impl Shape for Mesh {
     /// Each lane traced on its own through the mesh's BVH (lanes of a packet part ways inside
     /// a mesh as soon as they reach different faces).
-    #[inline(always)]
+    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
+    // scenes without this kind do not pay for its code.
+    #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);

@@ -313,7 +313,9 @@ impl Parametric {
 }
 
 impl Shape for Parametric {
-    #[inline(always)]
+    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
+    // scenes without this kind do not pay for its code.
+    #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
     }

@@ -88,6 +88,13 @@ fn scene(name: &str) -> PathBuf {
     root().join("tests/reference/scenes").join(format!("{name}.pov"))
 }
 
+/// Finishes beyond the chapter's: metallic highlights, Fresnel and variable reflection with
+/// falloff, exponent and metallic, emission, conserve_energy and diffuse albedo.
+#[test]
+fn finishes_match_povray() {
+    check_psnr("finishes", &scene("finishes"), 35.0);
+}
+
 /// Meshes: a declared `mesh` used twice (one carved by CSG through its `inside_vector`), a
 /// smooth `mesh` of smooth_triangles made by loops, a transformed `mesh2` with normal indices,
 /// and a lone `smooth_triangle`.

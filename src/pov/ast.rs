@@ -175,6 +175,11 @@ pub enum GlobalItem {
     AssumedGamma(Expr),
     MaxTraceLevel(Expr),
     AmbientLight(Expr),
+    NoiseGenerator(Expr),
+    NumberOfWaves(Expr),
+    IridWavelength(Expr),
+    /// `adc_bailout F`: strahl's bailout is fixed at 1/255; a different one is noted.
+    AdcBailout(Expr),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -260,12 +265,35 @@ pub enum FinishKey {
     Specular,
     Roughness,
     Reflection,
+    /// `metallic [AMOUNT]` (1 when no amount follows).
+    Metallic,
+    Emission,
+    /// `reflection_exponent` (the old form of `reflection { .. exponent E }`).
+    ReflectionExponent,
+    /// `conserve_energy [BOOL]`.
+    ConserveEnergy,
+    /// `diffuse albedo A`, `phong albedo A`, `specular albedo A`: A is the total reflectance.
+    DiffuseAlbedo,
+    PhongAlbedo,
+    SpecularAlbedo,
+}
+
+/// `reflection { [MIN,] MAX fresnel B falloff F exponent E metallic M }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReflectionBlock {
+    pub min: Option<Expr>,
+    pub max: Expr,
+    pub fresnel: Option<Expr>,
+    pub falloff: Option<Expr>,
+    pub exponent: Option<Expr>,
+    pub metallic: Option<Expr>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum FinishItem {
     Base(Expr),
     Set(FinishKey, Expr),
+    Reflection(Box<ReflectionBlock>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -50,7 +50,24 @@ pub fn reflect<L: Lane>(ray_dir: V3<L>, normal: V3<L>) -> V3<L> {
 /// The ambient term, where lighting starts.
 #[inline(always)]
 pub fn ambient<L: Lane>(finish: &Finish, ambient_light: Vec3, hit: &LocalHit<L>) -> V3<L> {
-    V3::splat(finish.ambient).mul(hit.color).mul(V3::splat(ambient_light)).scale(hit.opacity)
+    let a = V3::splat(finish.ambient).mul(hit.color).mul(V3::splat(ambient_light)).scale(hit.opacity);
+    if finish.emission == Vec3::ZERO {
+        return a;
+    }
+    // `emission`: as ambient, without `ambient_light`.
+    a.add(V3::splat(finish.emission).mul(hit.color).scale(hit.opacity))
+}
+
+/// The colour of a highlight of light `light`: the light's own, or towards the pigment's with
+/// `metallic`.
+#[inline(always)]
+fn highlight<L: Lane>(finish: &Finish, light: V3<L>, color: V3<L>) -> V3<L> {
+    if finish.metallic == 0.0 {
+        return light;
+    }
+    let m = L::splat(finish.metallic);
+    let one = V3::splat(Vec3::ONE);
+    light.mul(one.add(color.sub(one).scale(m)))
 }
 
 /// `color` plus one light's diffuse, phong and specular terms; `reflected` is
@@ -73,13 +90,15 @@ pub fn add_light<L: Lane>(
     }
     if finish.phong > 0.0 {
         let r_dot_l = reflected.dot(l);
-        let term = light.color.scale(L::splat(finish.phong) * finish.phong_size.pow_lanes(r_dot_l));
+        let term =
+            highlight(finish, light.color, c).scale(L::splat(finish.phong) * finish.phong_size.pow_lanes(r_dot_l));
         color = V3::select(L::and(on, zero.lt(r_dot_l)), color.add(term), color);
     }
     if finish.specular > 0.0 {
         let h = l.sub(ray_dir).normalize_or(V3::splat(Vec3::ZERO));
         let n_dot_h = normal.dot(h);
-        let term = light.color.scale(L::splat(finish.specular) * finish.specular_exponent.pow_lanes(n_dot_h));
+        let term = highlight(finish, light.color, c)
+            .scale(L::splat(finish.specular) * finish.specular_exponent.pow_lanes(n_dot_h));
         color = V3::select(L::and(on, zero.lt(n_dot_h)), color.add(term), color);
     }
     color

@@ -134,14 +134,26 @@ impl<'a> Tracer<'a> {
         let reflected_dir = reflected.vec3();
 
         if level < self.max_level() {
+            let mut reflection = Vec3::ZERO;
             if finish.reflects() {
-                let w = weight * finish.reflection.max_element();
+                let exponent;
+                (reflection, exponent) = finish.reflection_at(-ray.dir.dot(normal), c, material.ior);
+                let w = weight * reflection.max_element();
                 if w >= ADC_BAILOUT {
                     let r = Ray::new(offset_origin(p, facing, reflected_dir), reflected_dir.normalize());
-                    color += finish.reflection * self.trace(&r, level + 1, w, RayKind::Reflected);
+                    let mut seen = self.trace(&r, level + 1, w, RayKind::Reflected);
+                    if exponent != 1.0 {
+                        // Measured on POV-Ray 3.7 (a mirror of a grey background, 0.25):
+                        // exponent 0.5 shows 0.063, exponent 2 shows 0.50: seen^(1/exponent).
+                        seen = seen.max(Vec3::ZERO).powf(1.0 / exponent);
+                    }
+                    color += reflection * seen;
                 }
             }
-            let transmit = c * pigment.filter + Vec3::splat(pigment.transmit);
+            let mut transmit = c * pigment.filter + Vec3::splat(pigment.transmit);
+            if finish.conserve_energy {
+                transmit *= (Vec3::ONE - reflection).max(Vec3::ZERO);
+            }
             let w = weight * transmit.max_element();
             if w >= ADC_BAILOUT {
                 color += transmit * self.refract(ray, p, facing, normal, entering, material.ior, level, w);

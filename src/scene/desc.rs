@@ -99,11 +99,24 @@ pub struct GlobalSettings {
     pub assumed_gamma: Option<f64>,
     pub max_trace_level: u32,
     pub ambient_light: DVec3,
+    /// `noise_generator` 1, 2 or 3 (POV-Ray 3.7's default is 2): which noise patterns use.
+    pub noise_generator: u32,
+    /// `number_of_waves`: how many centres `waves` and `ripples` sum (POV-Ray's default 10).
+    pub number_of_waves: u32,
+    /// `irid_wavelength`: the wavelengths (as a colour) `irid` interferes at.
+    pub irid_wavelength: DVec3,
 }
 
 impl Default for GlobalSettings {
     fn default() -> Self {
-        GlobalSettings { assumed_gamma: None, max_trace_level: 5, ambient_light: DVec3::ONE }
+        GlobalSettings {
+            assumed_gamma: None,
+            max_trace_level: 5,
+            ambient_light: DVec3::ONE,
+            noise_generator: 2,
+            number_of_waves: 10,
+            irid_wavelength: DVec3::new(0.25, 0.18, 0.14),
+        }
     }
 }
 
@@ -178,7 +191,37 @@ pub struct FinishDesc {
     pub phong_size: f64,
     pub specular: f64,
     pub roughness: f64,
+    /// The reflection seen along the normal's direction... or everywhere when `reflection_min`
+    /// is `None`; with a minimum, this is the maximum, seen at grazing angles.
     pub reflection: DVec3,
+    /// `metallic`: how far highlights take the pigment's colour (0 to 1).
+    pub metallic: f64,
+    /// `emission`: light the surface gives off, like `ambient` but not scaled by
+    /// `ambient_light`.
+    pub emission: DVec3,
+    /// `reflection { MIN, MAX .. }`: the reflection along the normal; `None` for constant.
+    pub reflection_min: Option<DVec3>,
+    /// `falloff`: the exponent of (1 − cos θ) from the minimum to the maximum.
+    pub reflection_falloff: f64,
+    /// `fresnel`: the Fresnel reflectance (from the interior's ior) blends minimum to maximum.
+    pub reflection_fresnel: bool,
+    /// `exponent` (`reflection_exponent`): reflected light is raised to 1 / this power.
+    pub reflection_exponent: f64,
+    /// `metallic` in `reflection { }`: how far reflections take the pigment's colour.
+    pub reflection_metallic: f64,
+    /// `conserve_energy`: filter and transmit are scaled by what reflection leaves.
+    pub conserve_energy: bool,
+    /// `diffuse albedo`, `phong albedo`, `specular albedo`: those amounts are total
+    /// reflectances, turned into peak values by `scene::material::Finish`.
+    pub albedo: Albedo,
+}
+
+/// Which of `diffuse`, `phong` and `specular` were given with `albedo`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Albedo {
+    pub diffuse: bool,
+    pub phong: bool,
+    pub specular: bool,
 }
 
 impl Default for FinishDesc {
@@ -192,6 +235,15 @@ impl Default for FinishDesc {
             specular: 0.0,
             roughness: 0.05,
             reflection: DVec3::ZERO,
+            metallic: 0.0,
+            emission: DVec3::ZERO,
+            reflection_min: None,
+            reflection_falloff: 1.0,
+            reflection_fresnel: false,
+            reflection_exponent: 1.0,
+            reflection_metallic: 0.0,
+            conserve_energy: false,
+            albedo: Albedo::default(),
         }
     }
 }
@@ -569,6 +621,17 @@ pub struct SceneDesc {
     /// Every file `#include` read, in order, with the directive that read it (for the
     /// statistics: which `colors.inc` a scene got).
     pub included: Vec<IncludedFile>,
+    /// Rendering features the scene asks for that strahl does not model (`radiosity`, `media`,
+    /// `photons`...), each named once, where it first appears: for the statistics and the HUD.
+    pub unmodelled: Vec<UnmodelledFeature>,
+}
+
+/// A feature the scene uses that strahl renders without (the rest of the scene renders).
+#[derive(Clone, Debug, PartialEq)]
+pub struct UnmodelledFeature {
+    /// The feature as the scene writes it (`radiosity`, `media`, `photons`).
+    pub name: String,
+    pub at: SourceRef,
 }
 
 /// A file an `#include` read: where it was found, and where the directive stands.
@@ -589,6 +652,7 @@ impl Default for SceneDesc {
             global: GlobalSettings::default(),
             objects: Vec::new(),
             included: Vec::new(),
+            unmodelled: Vec::new(),
         }
     }
 }

@@ -68,25 +68,97 @@ pub struct Finish {
     pub specular: f32,
     /// `1 / roughness`, the Blinn exponent of `specular`.
     pub specular_exponent: Exponent,
+    /// The reflection, or its maximum when `variable` is set.
     pub reflection: Vec3,
+    /// How far highlights take the pigment's colour (`metallic`); 0 leaves them the light's.
+    pub metallic: f32,
+    pub emission: Vec3,
+    /// Angle-dependent reflection (`reflection { MIN, MAX .. }`, `metallic`, `exponent`);
+    /// `None` for a constant `reflection`, which is all the seed scene has.
+    pub variable: Option<VariableReflection>,
+    /// `conserve_energy`: filter and transmit are scaled by what reflection leaves.
+    pub conserve_energy: bool,
+}
+
+/// The parts of `reflection { }` beyond one colour.
+#[derive(Clone, Copy, Debug)]
+pub struct VariableReflection {
+    /// Seen along the normal (`Finish::reflection` at grazing angles).
+    pub min: Vec3,
+    pub falloff: f32,
+    pub fresnel: bool,
+    pub exponent: f32,
+    pub metallic: f32,
+}
+
+/// A peak value for a lobe `cos^e` that reflects `albedo` in total: the lobe's integral over
+/// the hemisphere, divided by the Lambertian one (π), is 2 / (e + 1), which is 1 for a plain
+/// `diffuse` (brilliance 1), where POV-Ray's docs say `albedo` changes nothing.
+fn peak_from_albedo(albedo: f64, exponent: f64) -> f64 {
+    albedo * (exponent + 1.0) / 2.0
+}
+
+/// The Fresnel reflectance of unpolarised light arriving at `cos_i` onto a surface between air
+/// and `ior` (either side), 1 under total internal reflection.
+pub fn fresnel(cos_i: f32, ior: f32) -> f32 {
+    let cos_i = cos_i.clamp(0.0, 1.0);
+    let sin_t2 = (1.0 - cos_i * cos_i) / (ior * ior);
+    if sin_t2 >= 1.0 {
+        return 1.0;
+    }
+    let cos_t = (1.0 - sin_t2).sqrt();
+    let rs = (cos_i - ior * cos_t) / (cos_i + ior * cos_t);
+    let rp = (ior * cos_i - cos_t) / (ior * cos_i + cos_t);
+    0.5 * (rs * rs + rp * rp)
 }
 
 impl Finish {
     pub fn from_desc(f: &FinishDesc) -> Finish {
+        let roughness_exponent = 1.0 / f.roughness.max(1e-6);
+        let diffuse = if f.albedo.diffuse { peak_from_albedo(f.diffuse, f.brilliance) } else { f.diffuse };
+        let phong = if f.albedo.phong { peak_from_albedo(f.phong, f.phong_size) } else { f.phong };
+        let specular = if f.albedo.specular { peak_from_albedo(f.specular, roughness_exponent) } else { f.specular };
+        let variable = (f.reflection_min.is_some() || f.reflection_exponent != 1.0 || f.reflection_metallic != 0.0)
+            .then(|| VariableReflection {
+                min: f.reflection_min.unwrap_or(f.reflection).as_vec3(),
+                falloff: f.reflection_falloff as f32,
+                fresnel: f.reflection_fresnel,
+                exponent: f.reflection_exponent as f32,
+                metallic: f.reflection_metallic as f32,
+            });
         Finish {
             ambient: f.ambient.as_vec3(),
-            diffuse: f.diffuse as f32,
+            diffuse: diffuse as f32,
             brilliance: Exponent::new(f.brilliance),
-            phong: f.phong as f32,
+            phong: phong as f32,
             phong_size: Exponent::new(f.phong_size),
-            specular: f.specular as f32,
-            specular_exponent: Exponent::new(1.0 / f.roughness.max(1e-6)),
+            specular: specular as f32,
+            specular_exponent: Exponent::new(roughness_exponent),
             reflection: f.reflection.as_vec3(),
+            metallic: f.metallic as f32,
+            emission: f.emission.as_vec3(),
+            variable,
+            conserve_energy: f.conserve_energy,
         }
     }
 
     pub fn reflects(&self) -> bool {
-        self.reflection.max_element() > 0.0
+        self.reflection.max_element() > 0.0 || self.variable.as_ref().is_some_and(|v| v.min.max_element() > 0.0)
+    }
+
+    /// The reflection at a hit seen at `cos_i` (between the ray and the normal) on a surface of
+    /// colour `color` whose interior has index `ior`, and the `exponent` of reflected light.
+    pub fn reflection_at(&self, cos_i: f32, color: Vec3, ior: f32) -> (Vec3, f32) {
+        let Some(v) = &self.variable else { return (self.reflection, 1.0) };
+        let blend = if v.fresnel { fresnel(cos_i, ior) } else { (1.0 - cos_i).clamp(0.0, 1.0).powf(v.falloff) };
+        let mut r = v.min.lerp(self.reflection, blend);
+        if v.metallic > 0.0 {
+            // The metal's colour along the normal, the light's at grazing angles (Fresnel-like).
+            let grazing = (1.0 - cos_i).clamp(0.0, 1.0).powi(5);
+            let tint = Vec3::ONE.lerp(color, v.metallic).lerp(Vec3::ONE, grazing);
+            r *= tint;
+        }
+        (r, v.exponent)
     }
 }
 

@@ -253,20 +253,57 @@ fn normal(s: &mut String, n: &NormalDesc, object_inverse: &DMat4) {
     let _ = write!(s, "{} }}", modifiers(&(*object_inverse * n.transform.matrix)));
 }
 
+fn albedo(set: bool) -> &'static str {
+    if set {
+        "albedo "
+    } else {
+        ""
+    }
+}
+
 fn finish(s: &mut String, f: &FinishDesc) {
     let _ = write!(
         s,
-        "finish {{ ambient rgb {} diffuse {} brilliance {} phong {} phong_size {} specular {} roughness {} \
+        "finish {{ ambient rgb {} diffuse {}{} brilliance {} phong {}{} phong_size {} specular {}{} roughness {} \
          reflection rgb {} }}",
         vec(f.ambient),
+        albedo(f.albedo.diffuse),
         num(f.diffuse),
         num(f.brilliance),
+        albedo(f.albedo.phong),
         num(f.phong),
         num(f.phong_size),
+        albedo(f.albedo.specular),
         num(f.specular),
         num(f.roughness),
         vec(f.reflection)
     );
+    // What the seed's finishes do not use is printed only where set, so their text stays.
+    s.pop();
+    if f.metallic != 0.0 {
+        let _ = write!(s, " metallic {}", num(f.metallic));
+    }
+    if f.emission != DVec3::ZERO {
+        let _ = write!(s, " emission rgb {}", vec(f.emission));
+    }
+    if f.conserve_energy {
+        s.push_str(" conserve_energy");
+    }
+    let variable = f.reflection_min.is_some() || f.reflection_exponent != 1.0 || f.reflection_metallic != 0.0;
+    if variable {
+        let min = f.reflection_min.unwrap_or(f.reflection);
+        let _ = write!(
+            s,
+            " reflection {{ rgb {}, rgb {} fresnel {} falloff {} exponent {} metallic {} }}",
+            vec(min),
+            vec(f.reflection),
+            u8::from(f.reflection_fresnel),
+            num(f.reflection_falloff),
+            num(f.reflection_exponent),
+            num(f.reflection_metallic)
+        );
+    }
+    s.push('}');
 }
 
 fn turbulence(s: &mut String, t: Option<&Turbulence>) {

@@ -24,7 +24,7 @@ use crate::pov::names::NameMap;
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
-use crate::scene::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc};
+use crate::scene::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc, UnmodelledFeature};
 pub(crate) use fileio::Mode as FileMode;
 
 /// Total loop iterations (`#while`, `#for`) allowed in one scene: far beyond real scenes (a
@@ -146,6 +146,18 @@ impl<'f> Lowerer<'f> {
     /// Records a warning (POV-Ray's "Scale by 0.0", `#warning`, ...) for the caller to print.
     pub(crate) fn warn(&mut self, diag: Diag) {
         self.output.push(Output::Warning(diag));
+    }
+
+    /// Notes a rendering feature strahl does not model (`radiosity`, `media`, ...): the first
+    /// use of each is named in a warning and kept in `SceneDesc::unmodelled`; the scene renders
+    /// without it.
+    pub(crate) fn not_modelled(&mut self, feature: &str, span: Span) {
+        if self.scene.unmodelled.iter().any(|f| f.name == feature) {
+            return;
+        }
+        let at = self.files.source_ref(span);
+        self.scene.unmodelled.push(UnmodelledFeature { name: feature.to_string(), at });
+        self.warn(Diag::new(span, format!("`{feature}` is not modelled by strahl; the scene renders without it")));
     }
 
     pub(crate) fn source_ref(&self, span: Span) -> SourceRef {
@@ -367,6 +379,30 @@ impl<'f> Lowerer<'f> {
                             self.scene.global.max_trace_level = n as u32;
                         }
                         GlobalItem::AmbientLight(e) => self.scene.global.ambient_light = self.color(e)?.rgb,
+                        GlobalItem::NoiseGenerator(e) => {
+                            let n = self.float(e)?;
+                            if ![1.0, 2.0, 3.0].contains(&n) {
+                                return Err(Diag::new(e.span, "noise_generator must be 1, 2 or 3"));
+                            }
+                            self.scene.global.noise_generator = n as u32;
+                        }
+                        GlobalItem::NumberOfWaves(e) => {
+                            let n = self.float(e)?;
+                            if !(1.0..=1000.0).contains(&n) {
+                                return Err(Diag::new(e.span, "number_of_waves must be between 1 and 1000"));
+                            }
+                            self.scene.global.number_of_waves = n as u32;
+                        }
+                        GlobalItem::IridWavelength(e) => self.scene.global.irid_wavelength = self.color(e)?.rgb,
+                        GlobalItem::AdcBailout(e) => {
+                            let b = self.float(e)?;
+                            if !(0.0..=1.0).contains(&b) {
+                                return Err(Diag::new(e.span, "adc_bailout must be between 0 and 1"));
+                            }
+                            if (b - 1.0 / 255.0).abs() > 1e-6 {
+                                self.not_modelled("adc_bailout (other than 1/255)", e.span);
+                            }
+                        }
                     }
                 }
             }

@@ -299,3 +299,50 @@ fn declared_color_map_is_used_by_name() {
         .unwrap_err();
     assert!(e.contains("expected `}` to close `color_map`"), "{e}");
 }
+
+#[test]
+fn unmodelled_features_are_noted_once_each_and_the_scene_loads() {
+    let text = "#macro Rad() count 35 error_bound 1.8 #end
+        global_settings { assumed_gamma 1 radiosity { Rad() #if (1) nearest_count 5 #end } photons { spacing 0.1 }
+                          noise_generator 3 number_of_waves 4 charset utf8 hf_gray_16 max_intersections 64 }
+        sphere { 0, 1 interior { ior 1.5 media { emission 1 density { spherical } } caustics 1 fade_power 2 }
+                 photons { target } no_image no_reflection off no_radiosity }
+        sphere { 2, 1 photons { target } radiosity { importance 0.5 } interior { media { } } }";
+    let (scene, warnings) = lower(text).unwrap();
+    let names: Vec<&str> = scene.unmodelled.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(names, ["radiosity", "photons", "media", "caustics", "interior fade_power", "no_image"]);
+    assert_eq!(warnings.len(), names.len(), "{warnings:?}");
+    assert!(warnings[0].message.contains("`radiosity` is not modelled"), "{}", warnings[0].message);
+    assert_eq!((scene.unmodelled[0].at.line, scene.unmodelled[0].at.col), (2, 43));
+    assert_eq!(scene.objects.len(), 2);
+    assert_eq!((scene.global.noise_generator, scene.global.number_of_waves), (3, 4));
+    // Out-of-range settings are located errors, not silent clamps.
+    assert!(lower("global_settings { noise_generator 4 }").unwrap_err().contains("1, 2 or 3"));
+    // An unclosed unmodelled block is an error that names it.
+    assert!(lower("global_settings { radiosity { count 3 }").unwrap_err().contains("global_settings"));
+    assert!(lower("global_settings { radiosity { count 3 ").unwrap_err().contains("radiosity"));
+}
+
+#[test]
+fn finish_items_beyond_the_chapter() {
+    let (s, w) = lower(
+        "sphere { 0, 1 finish { metallic phong 1 emission rgb <0.1, 0.2, 0.3> conserve_energy
+                        reflection { 0.1, 0.8 fresnel falloff 2 exponent 0.5 metallic } diffuse albedo 0.4 } }
+         sphere { 0, 1 finish { metallic 0.3 reflection 0.5 reflection_exponent 2 crand 0.1 irid { 0.3 thickness 0.2 } } }",
+    )
+    .unwrap();
+    let f = &s.objects[0].texture.finish;
+    assert_eq!((f.metallic, f.emission, f.conserve_energy), (1.0, DVec3::new(0.1, 0.2, 0.3), true));
+    assert_eq!(
+        (f.reflection_min, f.reflection, f.reflection_fresnel),
+        (Some(DVec3::splat(0.1)), DVec3::splat(0.8), true)
+    );
+    assert_eq!((f.reflection_falloff, f.reflection_exponent, f.reflection_metallic), (2.0, 0.5, 1.0));
+    assert!(f.albedo.diffuse && !f.albedo.phong);
+    let g = &s.objects[1].texture.finish;
+    assert_eq!((g.metallic, g.reflection_min, g.reflection_exponent), (0.3, None, 2.0));
+    let names: Vec<&str> = s.unmodelled.iter().map(|f| f.name.as_str()).collect();
+    assert_eq!(names, ["crand", "irid"], "{w:?}");
+    let e = lower("sphere { 0, 1 finish { reflection { 0.1, 0.8 fresnell } } }").unwrap_err();
+    assert!(e.contains("fresnell") && e.contains("reflection"), "{e}");
+}

@@ -1,6 +1,8 @@
 //! Surface blocks → `PigmentDesc`, `NormalDesc`, `FinishDesc`, `TextureDesc`, `InteriorDesc`.
 //! A block that starts with a declared name copies it, then applies the rest in written order.
 
+use glam::DVec3;
+
 use super::Lowerer;
 use crate::pov::ast::{
     ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
@@ -197,7 +199,45 @@ impl Lowerer<'_> {
                         }
                         out.roughness = r;
                     }
+                    FinishKey::Metallic => out.metallic = self.float(e)?,
+                    FinishKey::Emission => out.emission = self.color(e)?.rgb,
+                    FinishKey::ReflectionExponent => out.reflection_exponent = self.float(e)?,
+                    FinishKey::ConserveEnergy => out.conserve_energy = self.float(e)? != 0.0,
+                    FinishKey::DiffuseAlbedo => {
+                        out.diffuse = self.float(e)?;
+                        out.albedo.diffuse = true;
+                    }
+                    FinishKey::PhongAlbedo => {
+                        out.phong = self.float(e)?;
+                        out.albedo.phong = true;
+                    }
+                    FinishKey::SpecularAlbedo => {
+                        out.specular = self.float(e)?;
+                        out.albedo.specular = true;
+                    }
                 },
+                FinishItem::Reflection(r) => {
+                    out.reflection = self.color(&r.max)?.rgb;
+                    out.reflection_fresnel = match &r.fresnel {
+                        Some(e) => self.float(e)? != 0.0,
+                        None => false,
+                    };
+                    // One colour is a constant reflection, but a Fresnel one rises from zero.
+                    out.reflection_min = match &r.min {
+                        Some(e) => Some(self.color(e)?.rgb),
+                        None if out.reflection_fresnel => Some(DVec3::ZERO),
+                        None => None,
+                    };
+                    if let Some(e) = &r.falloff {
+                        out.reflection_falloff = self.float(e)?;
+                    }
+                    if let Some(e) = &r.exponent {
+                        out.reflection_exponent = self.float(e)?;
+                    }
+                    if let Some(e) = &r.metallic {
+                        out.reflection_metallic = self.float(e)?;
+                    }
+                }
             }
         }
         Ok(out)

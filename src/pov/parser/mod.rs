@@ -359,6 +359,32 @@ impl Parser<'_, '_> {
         Diag::new(t.span, message)
     }
 
+    /// At the keyword of a feature strahl does not model (`radiosity { }`, `media { }`,
+    /// `photons { }`): takes it and its block, if one follows, running the directives and macro
+    /// calls inside as POV-Ray would, and notes the feature once (`Lowerer::not_modelled`).
+    pub(super) fn skip_unmodelled(&mut self, feature: &str) -> PResult<()> {
+        let kw = self.bump().span;
+        self.low.not_modelled(feature, kw);
+        if !self.is_punct('{') {
+            return Ok(());
+        }
+        self.open_block(feature, kw)?;
+        let mut open = 1usize;
+        loop {
+            let t = self.peek();
+            match t.kind {
+                TokenKind::Eof => return Err(self.close_block(feature, kw).unwrap_err()),
+                TokenKind::Punct('{') => open += 1,
+                TokenKind::Punct('}') if open == 1 => break,
+                TokenKind::Punct('}') => open -= 1,
+                _ => {}
+            }
+            self.bump();
+        }
+        self.close_block(feature, kw)?;
+        Ok(())
+    }
+
     // ---- statements ----------------------------------------------------------------------
 
     /// The scene: each item is lowered as soon as it is read, so that the directives after it

@@ -63,7 +63,24 @@ const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
 const LIGHT: &[&str] =
     &["color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "rotate", "scale", "translate", "shadowless"];
-const GLOBAL: &[&str] = &["assumed_gamma", "max_trace_level", "ambient_light"];
+const GLOBAL: &[&str] = &[
+    "assumed_gamma",
+    "max_trace_level",
+    "ambient_light",
+    "noise_generator",
+    "number_of_waves",
+    "irid_wavelength",
+    "adc_bailout",
+    "charset",
+    "hf_gray_16",
+    "max_intersections",
+    "radiosity",
+    "photons",
+    "subsurface",
+    "mm_per_unit",
+];
+/// `global_settings` blocks of rendering features strahl does not model: skipped, noted.
+const GLOBAL_UNMODELLED: &[&str] = &["radiosity", "photons", "subsurface"];
 /// What may follow an object's arguments.
 pub const MODIFIERS: &[&str] = &[
     "pigment",
@@ -83,6 +100,13 @@ pub const MODIFIERS: &[&str] = &[
     "bounded_by",
     "inside_vector",
     "hierarchy",
+    "no_image",
+    "no_reflection",
+    "double_illuminate",
+    "no_radiosity",
+    "photons",
+    "radiosity",
+    "interior_texture",
 ];
 
 pub fn is_object_keyword(word: &str) -> bool {
@@ -302,12 +326,74 @@ impl Parser<'_, '_> {
                     self.bump();
                     GlobalItem::AmbientLight(self.color()?)
                 }
+                Some("noise_generator") => {
+                    self.bump();
+                    GlobalItem::NoiseGenerator(self.expr()?)
+                }
+                Some("number_of_waves") => {
+                    self.bump();
+                    GlobalItem::NumberOfWaves(self.expr()?)
+                }
+                Some("irid_wavelength") => {
+                    self.bump();
+                    GlobalItem::IridWavelength(self.color()?)
+                }
+                Some("adc_bailout") => {
+                    self.bump();
+                    GlobalItem::AdcBailout(self.expr()?)
+                }
+                Some(w) if GLOBAL_UNMODELLED.contains(&w) => {
+                    self.skip_unmodelled(&w.to_string())?;
+                    continue;
+                }
+                // Settings about files and old limits that change nothing strahl draws: the
+                // `charset` of strings (strahl reads UTF-8, a superset of ascii), 16-bit grey
+                // output for height fields, the obsolete `max_intersections`, and the
+                // subsurface scale `mm_per_unit`.
+                Some("charset") => {
+                    self.bump();
+                    self.bump();
+                    continue;
+                }
+                Some("hf_gray_16") => {
+                    self.bump();
+                    if !matches!(self.peek().kind, TokenKind::Ident(_) | TokenKind::Punct('}')) {
+                        self.expr()?;
+                    } else if matches!(
+                        self.peek_ident().as_deref(),
+                        Some("on" | "off" | "true" | "false" | "yes" | "no")
+                    ) {
+                        self.bump();
+                    }
+                    continue;
+                }
+                Some("max_intersections" | "mm_per_unit") => {
+                    self.bump();
+                    self.expr()?;
+                    continue;
+                }
                 _ => return Err(self.unknown_in("global_settings", GLOBAL)),
             };
             items.push(item);
         }
         self.close_block("global_settings", kw)?;
         Ok(Stmt::GlobalSettings { items, span: kw })
+    }
+
+    /// The optional boolean after a flag (`no_image`, `hierarchy off`, `hollow 0`): `None`
+    /// when none follows, else whether it is on (a value that cannot be read yet counts on).
+    fn flag_value(&mut self) -> PResult<Option<bool>> {
+        let starts_value = match &self.peek().kind {
+            TokenKind::Number(_) => true,
+            TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
+            TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
+            _ => false,
+        };
+        if !starts_value {
+            return Ok(None);
+        }
+        let e = self.expr()?;
+        Ok(Some(self.low.float(&e).map_or(true, |v| v != 0.0)))
     }
 
     /// `rotate V`, `scale V` or `translate V`.
@@ -398,14 +484,28 @@ impl Parser<'_, '_> {
                 // A hint for POV-Ray's own mesh bounding; strahl always builds a BVH.
                 Some("hierarchy") if BUILT.contains(&&*word) || word == "object" => {
                     self.bump();
-                    let starts_value = match &self.peek().kind {
-                        TokenKind::Number(_) => true,
-                        TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
-                        _ => false,
-                    };
-                    if starts_value {
-                        self.expr()?;
+                    self.flag_value()?;
+                    continue;
+                }
+                // Flags of features strahl does not model: read with their optional boolean,
+                // noted once. `no_radiosity` needs no note: radiosity itself is noted.
+                Some(w @ ("no_image" | "no_reflection" | "double_illuminate" | "no_radiosity")) => {
+                    let w = w.to_string();
+                    let at = self.bump().span;
+                    if self.flag_value()?.is_none_or(|on| on) && w != "no_radiosity" {
+                        self.low.not_modelled(&w, at);
                     }
+                    continue;
+                }
+                Some(w @ ("photons" | "radiosity")) => {
+                    let w = w.to_string();
+                    self.skip_unmodelled(&w)?;
+                    continue;
+                }
+                Some("interior_texture") => {
+                    let at = self.peek().span;
+                    self.low.not_modelled("interior_texture", at);
+                    self.texture()?;
                     continue;
                 }
                 Some("hollow") => {

@@ -77,11 +77,23 @@ impl<'a> Tracer<'a> {
         let color = match hit {
             Some(hit) => self.shade(ray, hit, level, weight),
             None if self.scene.atmosphere.is_empty() => return self.scene.background.rgb,
-            None => self.scene.atmosphere.miss(ray.dir, self.scene.background, self.pattern_quality()),
+            None => self.sky(ray),
         };
         if !self.scene.atmosphere.along_rays() {
             return color;
         }
+        self.through_atmosphere(ray, hit, color)
+    }
+
+    /// Out of line: most scenes have no sky sphere.
+    #[inline(never)]
+    fn sky(&self, ray: &Ray) -> Vec3 {
+        self.scene.atmosphere.miss(ray.dir, self.scene.background, self.pattern_quality())
+    }
+
+    /// Out of line: most scenes have no fog or rainbow.
+    #[inline(never)]
+    fn through_atmosphere(&self, ray: &Ray, hit: Option<&Hit>, color: Vec3) -> Vec3 {
         let depth = hit.map_or(MISS_DEPTH, |h| h.t);
         self.scene.atmosphere.along(ray.origin, ray.dir, depth, color)
     }
@@ -206,7 +218,9 @@ impl<'a> Tracer<'a> {
 
     /// For a light that is not a plain point light: the unit direction it arrives from at
     /// `surface` and the fraction of its colour that arrives (spot or cylinder falloff, fading,
-    /// and what its shadow rays pass), or `None` when none does.
+    /// and what its shadow rays pass), or `None` when none does. Kept out of line so that
+    /// `shade_surface`, which point-light scenes run per pixel, stays as small as before.
+    #[inline(never)]
     fn light_arriving(&mut self, ray: &Ray, surface: &Surface, index: usize, light: &Light) -> Option<(Vec3, Vec3)> {
         let p = surface.p;
         // Direction to the light, and where shadow rays towards it end.
@@ -249,6 +263,7 @@ impl<'a> Tracer<'a> {
     /// corner-first subdivision with `adaptive N`. Jitter comes from a hash of the hit point,
     /// the ray's direction (which stand for the pixel, sample and frame), the light and the
     /// grid point, so an image is the same at any thread count.
+    #[inline(never)]
     fn area_shadow(&mut self, ray: &Ray, s: &Surface, index: usize, light: &Light, grid: AreaGrid) -> Vec3 {
         let grid = grid.capped(self.quality.max_area_samples);
         let (a1, a2) = grid.axes(s.p - light.position);

@@ -202,7 +202,7 @@ impl Fog {
 }
 
 impl Rainbow {
-    fn build(d: &RainbowDesc, _frame: &RenderFrame) -> Option<Rainbow> {
+    fn build(d: &RainbowDesc, frame: &RenderFrame) -> Option<Rainbow> {
         let direction = d.direction.normalize_or_zero();
         if direction == glam::DVec3::ZERO || d.width <= 0.0 {
             return None;
@@ -213,7 +213,7 @@ impl Rainbow {
         }
         let up = up.normalize();
         let right = direction.cross(up);
-        let distance = if d.distance > 0.0 { d.distance * _frame.per_unit } else { f64::from(MISS_DEPTH) };
+        let distance = if d.distance > 0.0 { d.distance * frame.per_unit } else { f64::from(MISS_DEPTH) };
         Some(Rainbow {
             direction: direction.as_vec3(),
             start: (d.angle - d.width / 2.0).to_radians() as f32,

@@ -193,8 +193,9 @@ impl Light {
             LightKind::Spot => {
                 // POV-Ray reads the angles as half-openings below 90°; a falloff inside the
                 // radius makes a hard edge at the radius.
-                let falloff = falloff.clamp(0.0, 90.0);
-                let radius = radius.clamp(0.0, falloff);
+                // (max/min, not clamp: a NaN from the scene must not panic.)
+                let falloff = falloff.max(0.0).min(90.0);
+                let radius = radius.max(0.0).min(falloff);
                 Beam::Spot {
                     cos_radius: radius.to_radians().cos() as f32,
                     cos_falloff: falloff.to_radians().cos() as f32,

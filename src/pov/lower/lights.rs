@@ -84,7 +84,7 @@ impl Lowerer<'_> {
                     let n1 = self.float(size1)?;
                     let n2 = self.float(size2)?;
                     for (n, e) in [(n1, size1), (n2, size2)] {
-                        if !(n >= 1.0) {
+                        if n.is_nan() || n < 1.0 {
                             return Err(Diag::new(e.span, "area_light sizes must be at least 1"));
                         }
                     }

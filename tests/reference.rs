@@ -394,3 +394,10 @@ fn fog_matches_povray() {
 fn sky_sphere_matches_povray() {
     check_psnr("sky_sphere", &scene("sky_sphere"), 35.0);
 }
+
+/// A rainbow: an arc of 120° with soft ends, a translucent colour map and a little jitter
+/// (hashed per ray direction; the jitter's noise is below the threshold).
+#[test]
+fn rainbow_matches_povray() {
+    check_psnr("rainbow", &scene("rainbow"), 35.0);
+}

@@ -60,12 +60,18 @@ impl Preset {
             // Area lights: at most 4 shadow rays per light and point (2×2), so soft-shadow scenes
             // stay interactive; `balanced` allows 16 (4×4). Measured on scenes/area_light.pov
             // (docs/tradeoff/area_light.md). The seed scene has no area light.
-            Preset::Fast => PresetSettings { res_scale: 0.5, quality: Quality { max_area_samples: Some(4), ..full.quality }, ..full },
+            Preset::Fast => PresetSettings {
+                res_scale: 0.5,
+                quality: Quality { max_area_samples: Some(4), ..full.quality },
+                ..full
+            },
             // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
-            Preset::Balanced => {
-                PresetSettings { res_scale: 0.75, quality: Quality { max_area_samples: Some(16), ..full.quality }, ..full }
-            }
+            Preset::Balanced => PresetSettings {
+                res_scale: 0.75,
+                quality: Quality { max_area_samples: Some(16), ..full.quality },
+                ..full
+            },
             Preset::Full => full,
             // 4×4 samples per pixel, hits re-solved in f64: strahl's best, and the reference
             // errors are measured against (docs/precision.md).

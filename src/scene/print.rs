@@ -14,8 +14,8 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::scene::desc::{
-    BlobShape, Color, ComplexFn, Container, CsgOp, FinishDesc, JuliaFunction, LightDesc, LightKind, NormalDesc, NormalPattern, ObjectDesc,
-    PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, Transform, Turbulence,
+    BlobShape, Color, ComplexFn, Container, CsgOp, FinishDesc, JuliaFunction, LightDesc, LightKind, NormalDesc,
+    NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, Transform, Turbulence,
 };
 
 /// The scene as POV-Ray source (no `#include`s needed).
@@ -296,7 +296,8 @@ fn atmosphere(s: &mut String, desc: &SceneDesc) {
         );
     }
     for r in &desc.rainbows {
-        let entries: Vec<String> = r.color_map.iter().map(|e| format!("[{} {}]", num(e.value), color(&e.color))).collect();
+        let entries: Vec<String> =
+            r.color_map.iter().map(|e| format!("[{} {}]", num(e.value), color(&e.color))).collect();
         let _ = writeln!(
             s,
             "rainbow {{ direction {} angle {} width {} distance {} jitter {} up {} arc_angle {} falloff_angle {} \

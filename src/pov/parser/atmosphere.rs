@@ -47,7 +47,8 @@ const RAINBOW: &[&str] = &[
 /// Items that take one expression, per kind.
 const FOG_VALUES: &[&str] =
     &["fog_type", "distance", "fog_offset", "fog_alt", "up", "turbulence", "turb_depth", "omega", "lambda", "octaves"];
-const RAINBOW_VALUES: &[&str] = &["direction", "angle", "width", "distance", "jitter", "up", "arc_angle", "falloff_angle"];
+const RAINBOW_VALUES: &[&str] =
+    &["direction", "angle", "width", "distance", "jitter", "up", "arc_angle", "falloff_angle"];
 
 impl Parser<'_, '_> {
     /// `sky_sphere { .. }`, `fog { .. }`, `rainbow { .. }`: items in written order.

@@ -102,6 +102,9 @@ struct Common {
     /// Cap on turbulence/noise octaves (texture detail).
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(0..=32))]
     max_octaves: Option<u32>,
+    /// Cap on the points of each area light (soft-shadow rays per shading point).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=65536))]
+    max_area_samples: Option<u32>,
     /// Arithmetic of intersections: f32, or f64 (each ray's nearest hit re-solved in f64, for
     /// reference images). Default f32; the reference preset uses f64.
     #[arg(long, value_name = "P")]
@@ -129,6 +132,7 @@ impl Common {
                 shadows: preset.quality.shadows && !self.no_shadows,
                 max_octaves: self.max_octaves.or(preset.quality.max_octaves),
                 precision: self.precision.unwrap_or(preset.quality.precision),
+                max_area_samples: self.max_area_samples.or(preset.quality.max_area_samples),
             },
             packets: !self.no_packets,
             ..RenderSettings::default()

@@ -243,10 +243,8 @@ fn error_unsupported_keywords() {
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
-    let (_, _, m) = err("e_spot", "light_source { 0 color rgb 1 spotlight }");
-    assert!(m.starts_with("`spotlight` is not supported in light_source"), "{m}");
-    let (_, _, m) = err("e_fog", "fog { distance 3 }");
-    assert!(m.starts_with("`fog` is not supported in the scene"), "{m}");
+    let (_, _, m) = err("e_light_photons", "light_source { 0 color rgb 1 photons { } }");
+    assert!(m.starts_with("`photons` is not supported in light_source"), "{m}");
 }
 
 #[test]
@@ -1483,4 +1481,118 @@ fn isosurfaces_load_with_their_items() {
     let ShapeDesc::Isosurface { container, params, .. } = &s.objects[1].shape else { panic!("isosurface") };
     assert_eq!(*container, strahl::scene::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
     assert_eq!(*params, strahl::scene::desc::IsoParams::default());
+}
+
+// ---- lights and atmosphere ---------------------------------------------------------------
+
+#[test]
+fn light_kinds_and_modifiers() {
+    use strahl::scene::desc::LightKind;
+    let s = load_text(
+        "light_kinds",
+        "light_source { <0, 5, 0> color rgb 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 tightness 3 }\n\
+         light_source { <1, 5, 0>, rgb 1 cylinder radius 0.5 falloff 1 point_at 0 }\n\
+         light_source { <0, 9, 0> color rgb 1 parallel point_at 0 fade_distance 3 fade_power 2 }\n\
+         light_source { <0, 0, 0> color rgb 1 translate <0, 2, 0> point_at <1, 0, 0> spotlight \
+         media_interaction off media_attenuation on }\n\
+         light_source { <0, 5, 0> color rgb 1 area_light <2, 0, 0>, <0, 0, 2>, 4, 3 adaptive 1 jitter circular orient \
+         rotate y * 90 }",
+    )
+    .unwrap();
+    let l = &s.lights;
+    assert_eq!(l[0].kind, LightKind::Spot);
+    assert_eq!(l[0].spot_params(), (10.0, 20.0, 3.0));
+    assert!(close(l[0].point_at, DVec3::new(0.0, 0.0, 1.0)));
+    assert_eq!(l[1].kind, LightKind::Cylinder);
+    assert_eq!(l[1].spot_params(), (0.5, 1.0, 0.0));
+    assert!(l[2].parallel && l[2].fade_distance == 3.0 && l[2].fade_power == 2.0);
+    // A transform moves what came before it only: the position, not the later point_at.
+    assert!(close(l[3].position, DVec3::new(0.0, 2.0, 0.0)) && close(l[3].point_at, DVec3::X));
+    assert_eq!(l[3].spot_params(), (30.0, 45.0, 0.0));
+    assert!(!l[3].media_interaction && l[3].media_attenuation);
+    let a = l[4].area.expect("area light");
+    assert_eq!((a.size1, a.size2, a.adaptive, a.jitter, a.circular, a.orient), (4, 3, Some(1), true, true, true));
+    // rotate y*90 takes x to -z.
+    assert!(close(a.axis1, DVec3::new(0.0, 0.0, -2.0)), "{:?}", a.axis1);
+}
+
+#[test]
+fn looks_like_adds_a_shadowless_object_at_the_light() {
+    let s = load_text(
+        "looks_like",
+        "light_source { <1, 2, 3> color rgb 1 looks_like { sphere { 0, 0.5 pigment { rgb 1 } } } translate x }",
+    )
+    .unwrap();
+    assert_eq!(s.lights.len(), 1);
+    assert!(close(s.lights[0].position, DVec3::new(2.0, 2.0, 3.0)));
+    assert_eq!(s.objects.len(), 1);
+    assert!(s.objects[0].no_shadow);
+    let centre = s.objects[0].transform.matrix.transform_point3(DVec3::ZERO);
+    assert!(close(centre, DVec3::new(2.0, 2.0, 3.0)), "{centre}");
+}
+
+#[test]
+fn unmodelled_light_and_media_features_warn_with_their_place() {
+    let d = dir("light_warn");
+    let p = write(
+        &d,
+        "s.pov",
+        "light_source { 0 color rgb 1 projected_through { sphere { 0, 1 } } }\nmedia { scattering { 1, 0.1 } }\n\
+         sphere { 0, 1 }",
+    );
+    let (s, w) = load_scene_with_warnings(&p, &std_include()).unwrap();
+    assert_eq!(s.objects.len(), 1);
+    assert_eq!(w.len(), 2, "{w:?}");
+    assert_eq!((w[0].line, w[0].col), (1, 30));
+    assert!(w[0].message.contains("projected_through"), "{}", w[0].message);
+    assert_eq!((w[1].line, w[1].col), (2, 1));
+    assert!(w[1].message.contains("media is not modelled"), "{}", w[1].message);
+}
+
+#[test]
+fn atmosphere_items() {
+    let s = load_text(
+        "atmosphere",
+        "#include \"colors.inc\"\n\
+         sky_sphere { pigment { color Blue } pigment { checker color rgbt 1 color White } rotate y * 10 emission rgb 0.5 }\n\
+         fog { distance 20 color rgbt <0.5, 0.5, 0.5, 0.2> }\n\
+         fog { fog_type 2 distance 5 Gray50 fog_offset 1 fog_alt 0.5 up z }\n\
+         rainbow { direction <0, 0, 1> angle 42 width 4 distance 100 jitter 0.01 arc_angle 120 falloff_angle 30 \
+         color_map { [0 color Red] [1 color Blue] } }\n\
+         sphere { 0, 1 }",
+    )
+    .unwrap();
+    let sky = s.sky_sphere.as_ref().expect("sky sphere");
+    assert_eq!(sky.pigments.len(), 2);
+    assert!(close(sky.emission, DVec3::splat(0.5)));
+    assert_eq!(s.fogs.len(), 2);
+    assert_eq!((s.fogs[0].fog_type, s.fogs[0].distance, s.fogs[0].color.transmit), (1, 20.0, 0.2));
+    assert_eq!((s.fogs[1].fog_type, s.fogs[1].offset, s.fogs[1].alt), (2, 1.0, 0.5));
+    assert!(close(s.fogs[1].up, DVec3::Z));
+    assert!(close(s.fogs[1].color.rgb, DVec3::splat(0.5)));
+    let r = &s.rainbows[0];
+    assert_eq!((r.angle, r.width, r.arc_angle, r.falloff_angle, r.color_map.len()), (42.0, 4.0, 120.0, 30.0, 2));
+}
+
+#[test]
+fn error_lights_and_atmosphere() {
+    let (l, c, m) = err("e_area", "light_source { 0 color rgb 1\n  area_light x, z, 0, 2 }");
+    assert_eq!((l, c), (2, 20));
+    assert!(m.contains("area_light sizes must be at least 1"), "{m}");
+    let (l, c, m) = err("e_spotword", "light_source { 0 color rgb 1 spotlight radiuss 3 }");
+    assert_eq!((l, c), (1, 40));
+    assert!(m.contains("radiuss"), "{m}");
+    let (l, c, m) = err("e_fogdist", "\nfog { color rgb 1 }");
+    assert_eq!((l, c), (2, 1));
+    assert!(m.contains("fog needs a `distance`"), "{m}");
+    let (_, _, m) = err("e_fogtype", "fog { fog_type 3 distance 2 }");
+    assert!(m.contains("fog_type must be 1"), "{m}");
+    let (_, _, m) = err("e_sky", "sky_sphere { emission 1 }");
+    assert!(m.contains("sky_sphere needs a pigment"), "{m}");
+    let (_, _, m) = err("e_skyword", "sky_sphere { pigment { rgb 1 } colour 1 }");
+    assert!(m.contains("sky_sphere"), "{m}");
+    let (_, _, m) = err("e_rain", "rainbow { angle 42 width 3 }");
+    assert!(m.contains("rainbow needs a color_map"), "{m}");
+    let (_, _, m) = err("e_fog_csg", "union { sphere { 0, 1 } fog { distance 2 } }");
+    assert!(!m.is_empty());
 }

@@ -16,6 +16,45 @@ pub enum Stmt {
     Background { color: Expr, span: Span },
     GlobalSettings { items: Vec<GlobalItem>, span: Span },
     Object(Object),
+    /// `sky_sphere`, `fog`, `rainbow`.
+    Atmosphere(Atmosphere),
+    /// Atmospheric `media { }`: skipped, warned about.
+    Media(Span),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AtmosphereKind {
+    SkySphere,
+    Fog,
+    Rainbow,
+}
+
+impl AtmosphereKind {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            AtmosphereKind::SkySphere => "sky_sphere",
+            AtmosphereKind::Fog => "fog",
+            AtmosphereKind::Rainbow => "rainbow",
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Atmosphere {
+    pub kind: AtmosphereKind,
+    pub items: Vec<AtmoItem>,
+    pub span: Span,
+}
+
+/// One item of an atmosphere block, in written order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AtmoItem {
+    /// `keyword value` (the keyword as listed in `parser::atmosphere`), with the keyword's span.
+    Value(&'static str, Expr, Span),
+    Color(Expr),
+    Pigment(Pigment),
+    ColorMap(ColorMap),
+    Transform(TransformItem),
 }
 
 /// One block of `#default { ... }`.
@@ -166,8 +205,26 @@ pub struct Light {
     pub position: Expr,
     pub color: Option<Expr>,
     pub shadowless: bool,
-    pub transforms: Vec<TransformItem>,
+    /// Light modifiers and transforms in written order (a transform moves what was given
+    /// before it: position, `point_at`, area axes).
+    pub items: Vec<LightItem>,
     pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum LightItem {
+    /// `spotlight`, `cylinder`, `parallel`.
+    Kind(&'static str, Span),
+    /// `point_at`, `radius`, `falloff`, `tightness`, `fade_distance`, `fade_power`, `adaptive`.
+    Value(&'static str, Expr, Span),
+    /// `jitter`, `circular`, `orient`, `media_interaction`, `media_attenuation`,
+    /// `area_illumination`, each with its optional boolean.
+    Flag(&'static str, Option<Expr>, Span),
+    AreaLight { axis1: Expr, axis2: Expr, size1: Expr, size2: Expr, span: Span },
+    LooksLike(Box<Object>, Span),
+    /// `projected_through { .. }`: skipped, warned about.
+    ProjectedThrough(Span),
+    Transform(TransformItem),
 }
 
 #[derive(Clone, Debug, PartialEq)]

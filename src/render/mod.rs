@@ -8,6 +8,7 @@ pub mod adaptive;
 pub mod csg;
 pub mod image;
 pub mod intersect;
+pub mod light;
 pub mod packet;
 pub mod precision;
 pub mod preset;
@@ -40,11 +41,20 @@ pub struct Quality {
     pub max_octaves: Option<u32>,
     /// f32, or f32 with each nearest hit re-solved in f64 (`render::precision`).
     pub precision: precision::Precision,
+    /// Caps the points of each `area_light` grid (rows × columns, both scaled down alike): its
+    /// shadow rays per shading point (`render::light::AreaGrid::capped`).
+    pub max_area_samples: Option<u32>,
 }
 
 impl Default for Quality {
     fn default() -> Self {
-        Quality { max_trace_level: None, shadows: true, max_octaves: None, precision: precision::Precision::F32 }
+        Quality {
+            max_trace_level: None,
+            shadows: true,
+            max_octaves: None,
+            precision: precision::Precision::F32,
+            max_area_samples: None,
+        }
     }
 }
 

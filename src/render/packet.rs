@@ -127,15 +127,21 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     tracer.stats.max_depth = tracer.stats.max_depth.max(1);
     let background = scene.background.rgb;
 
-    // Transparent blockers tint shadow rays, which only single rays model.
-    if scene.features.transparency || scene.lights.len() > MAX_PACKET_LIGHTS {
+    // Transparent blockers tint shadow rays, which only single rays model; so do lights other
+    // than plain point lights (`render::light`: spot, cylinder, parallel, fading, area), and
+    // the sky sphere, fog and rainbows (`scene::atmosphere`) are applied per ray too. Checked
+    // once per block, so the seed scene pays nothing per pixel for them.
+    if scene.features.transparency
+        || scene.lights.len() > MAX_PACKET_LIGHTS
+        || scene.features.complex_lights
+        || !scene.atmosphere.is_empty()
+    {
         let mut colors = [[background; 8]; 8];
         for r in 0..rows {
             for i in 0..lanes {
-                let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
                 let ray = lane_ray(&rays[r], i);
-                let s = tracer.surface(&ray, &Hit { t: t[r].0[i], shape });
-                colors[r][i] = tracer.shade_surface(&ray, &s, 1, 1.0, Shadows::Trace);
+                let hit = hit_shape(ids[r][i], faces[r][i]).map(|shape| Hit { t: t[r].0[i], shape });
+                colors[r][i] = tracer.shade_hit(&ray, hit.as_ref(), 1, 1.0);
             }
         }
         return colors;

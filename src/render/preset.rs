@@ -57,10 +57,21 @@ impl Preset {
             // 2.4× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
             // the front before the error doubles with each halving of time (0.25 is 1.7× faster
             // again for 1.9× the error, and traces 160×90 pixels at 640×360).
-            Preset::Fast => PresetSettings { res_scale: 0.5, ..full },
+            // Area lights: at most 4 shadow rays per light and point (2×2), so soft-shadow scenes
+            // stay interactive; `balanced` allows 16 (4×4). Measured on scenes/area_light.pov
+            // (docs/tradeoff/area_light.md). The seed scene has no area light.
+            Preset::Fast => PresetSettings {
+                res_scale: 0.5,
+                quality: Quality { max_area_samples: Some(4), ..full.quality },
+                ..full
+            },
             // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
-            Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
+            Preset::Balanced => PresetSettings {
+                res_scale: 0.75,
+                quality: Quality { max_area_samples: Some(16), ..full.quality },
+                ..full
+            },
             Preset::Full => full,
             // 4×4 samples per pixel, hits re-solved in f64: strahl's best, and the reference
             // errors are measured against (docs/precision.md).

@@ -11,12 +11,14 @@ use glam::Vec3;
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::lanes::V3;
 use crate::render::intersect::Hit;
+use crate::render::light::{self, AreaGrid};
 use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
 pub use crate::render::stats::RayKind;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
-use crate::scene::build::Scene;
+use crate::scene::atmosphere::MISS_DEPTH;
+use crate::scene::build::{Light, Scene};
 use crate::scene::material::Material;
 use crate::shading::normal::perturb_normal;
 use crate::shading::pattern::Rgbft;
@@ -32,11 +34,14 @@ pub struct Tracer<'a> {
     pub scene: &'a Scene,
     pub quality: &'a Quality,
     pub stats: RenderStats,
+    /// Scratch for adaptive area-light sampling (`light::adaptive_visibility`), kept between
+    /// shading points so no point allocates.
+    area_cache: Vec<Option<Vec3>>,
 }
 
 impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
-        Tracer { scene, quality, stats: RenderStats::default() }
+        Tracer { scene, quality, stats: RenderStats::default(), area_cache: Vec::new() }
     }
 
     #[inline]
@@ -58,13 +63,39 @@ impl<'a> Tracer<'a> {
     /// still change the pixel; `inside_ior` is the index of refraction the ray travels in.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
         self.stats.count_ray(kind, level);
-        match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
-            Some(hit) => {
-                let hit = if self.refines() { self.scene.refine(ray, hit) } else { hit };
-                self.shade(ray, &hit, level, weight)
-            }
-            None => self.scene.background.rgb,
+        let hit = match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
+            Some(hit) if self.refines() => Some(self.scene.refine(ray, hit)),
+            hit => hit,
+        };
+        self.shade_hit(ray, hit.as_ref(), level, weight)
+    }
+
+    /// The colour of `ray` given its nearest hit (refined already): shaded, or the background
+    /// and sky where it missed, seen through fog and rainbows.
+    #[inline]
+    pub fn shade_hit(&mut self, ray: &Ray, hit: Option<&Hit>, level: u32, weight: f32) -> Vec3 {
+        let color = match hit {
+            Some(hit) => self.shade(ray, hit, level, weight),
+            None if self.scene.atmosphere.is_empty() => return self.scene.background.rgb,
+            None => self.sky(ray),
+        };
+        if !self.scene.atmosphere.along_rays() {
+            return color;
         }
+        self.through_atmosphere(ray, hit, color)
+    }
+
+    /// Out of line: most scenes have no sky sphere.
+    #[inline(never)]
+    fn sky(&self, ray: &Ray) -> Vec3 {
+        self.scene.atmosphere.miss(ray.dir, self.scene.background, self.pattern_quality())
+    }
+
+    /// Out of line: most scenes have no fog or rainbow.
+    #[inline(never)]
+    fn through_atmosphere(&self, ray: &Ray, hit: Option<&Hit>, color: Vec3) -> Vec3 {
+        let depth = hit.map_or(MISS_DEPTH, |h| h.t);
+        self.scene.atmosphere.along(ray.origin, ray.dir, depth, color)
     }
 
     fn shade(&mut self, ray: &Ray, hit: &Hit, level: u32, weight: f32) -> Vec3 {
@@ -113,6 +144,10 @@ impl<'a> Tracer<'a> {
                         continue;
                     }
                     (l, Vec3::ONE)
+                }
+                Shadows::Trace if !light.is_point() => {
+                    let Some(lit) = self.light_arriving(ray, surface, i, light) else { continue };
+                    lit
                 }
                 Shadows::Trace => {
                     let Some(l) = light_direction(surface, light.position) else { continue };
@@ -191,6 +226,110 @@ impl<'a> Tracer<'a> {
         let dir = dir.normalize();
         let r = Ray::new(offset_origin(p, facing, dir), dir);
         self.trace(&r, level + 1, weight, RayKind::Refracted)
+    }
+
+    /// For a light that is not a plain point light: the unit direction it arrives from at
+    /// `surface` and the fraction of its colour that arrives (spot or cylinder falloff, fading,
+    /// and what its shadow rays pass), or `None` when none does. Kept out of line so that
+    /// `shade_surface`, which point-light scenes run per pixel, stays as small as before.
+    #[inline(never)]
+    fn light_arriving(&mut self, ray: &Ray, surface: &Surface, index: usize, light: &Light) -> Option<(Vec3, Vec3)> {
+        let p = surface.p;
+        // Direction to the light, and where shadow rays towards it end.
+        let (l, target) = if light.parallel {
+            let l = -light.axis;
+            (l, p + l * (light.position - p).dot(l))
+        } else {
+            let to = light.position - p;
+            let dist = to.length();
+            if dist == 0.0 {
+                return None;
+            }
+            (to / dist, light.position)
+        };
+        if !(surface.normal.dot(l) > 0.0 && surface.facing.dot(l) > 0.0) {
+            return None;
+        }
+        let mut factor = light::beam_factor(light.beam, light.axis, light.tightness, p - light.position);
+        if light.fade_distance > 0.0 {
+            factor *= light::fade((light.position - p).length(), light.fade_distance, light.fade_power);
+        }
+        if factor <= 0.0 {
+            return None;
+        }
+        let mut passed = Vec3::splat(factor);
+        if self.quality.shadows && !light.shadowless {
+            passed *= match light.area {
+                Some(grid) => self.area_shadow(ray, surface, index, light, grid),
+                // A parallel light's shadows start at its plane: parts of the scene beyond it
+                // neither cast nor receive them (POV-Ray 3.7).
+                None if light.parallel && (target - p).dot(l) <= 0.0 => Vec3::ONE,
+                None => self.shadow(&shadow_ray(p, surface.facing, l, target)),
+            };
+        }
+        (passed != Vec3::ZERO).then_some((l, passed))
+    }
+
+    /// The light passed from an area light: one shadow ray per grid point (single rays, not
+    /// packets: each shading point has its own targets), averaged, or POV-Ray's adaptive
+    /// corner-first subdivision with `adaptive N`. Jitter comes from a hash of the hit point,
+    /// the ray's direction (which stand for the pixel, sample and frame), the light and the
+    /// grid point, so an image is the same at any thread count.
+    #[inline(never)]
+    fn area_shadow(&mut self, ray: &Ray, s: &Surface, index: usize, light: &Light, grid: AreaGrid) -> Vec3 {
+        let grid = grid.capped(self.quality.max_area_samples);
+        let (a1, a2) = grid.axes(s.p - light.position);
+        let seed = [
+            s.p.x.to_bits(),
+            s.p.y.to_bits(),
+            s.p.z.to_bits(),
+            ray.dir.x.to_bits(),
+            ray.dir.y.to_bits(),
+            ray.dir.z.to_bits(),
+            index as u32,
+        ];
+        let centre = light.position;
+        let sample = |tracer: &mut Tracer, i: u32, j: u32| -> Vec3 {
+            let jitter = if grid.jitter {
+                let mut words = [0u32; 8];
+                words[..7].copy_from_slice(&seed);
+                words[7] = j * grid.size1 + i;
+                light::hash2(&words)
+            } else {
+                (0.5, 0.5)
+            };
+            let target = centre + grid.offset(a1, a2, i, j, jitter);
+            let to = target - s.p;
+            let dist = to.length();
+            if dist == 0.0 {
+                return Vec3::ONE;
+            }
+            let l = to / dist;
+            // A point of the light behind the surface lights nothing there.
+            if s.facing.dot(l) <= 0.0 {
+                return Vec3::ZERO;
+            }
+            tracer.shadow(&shadow_ray(s.p, s.facing, l, target))
+        };
+        match grid.adaptive {
+            Some(min_depth) => {
+                let mut cache = std::mem::take(&mut self.area_cache);
+                let v = light::adaptive_visibility(grid.size1, grid.size2, min_depth, &mut cache, &mut |i, j| {
+                    sample(self, i, j)
+                });
+                self.area_cache = cache;
+                v
+            }
+            None => {
+                let mut sum = Vec3::ZERO;
+                for j in 0..grid.size2 {
+                    for i in 0..grid.size1 {
+                        sum += sample(self, i, j);
+                    }
+                }
+                sum / (grid.size1 * grid.size2) as f32
+            }
+        }
     }
 
     /// Light from a point light passed along `shadow`: one for a clear path, zero when blocked,

@@ -91,6 +91,81 @@ pub struct LightDesc {
     pub color: DVec3,
     /// `shadowless`: the light illuminates but casts no shadows (no shadow rays are traced).
     pub shadowless: bool,
+    /// Point (the default), `spotlight` or `cylinder`.
+    pub kind: LightKind,
+    /// `point_at`: where a spotlight, cylinder or parallel light points (default the origin).
+    pub point_at: DVec3,
+    /// `radius`, `falloff`, `tightness` as written: degrees for a spotlight, units from the axis
+    /// for a cylinder. `None`: the kind's default (`LightDesc::spot_params`).
+    pub radius: Option<f64>,
+    pub falloff: Option<f64>,
+    pub tightness: Option<f64>,
+    /// `parallel`: every ray of the light travels along `point_at - position`.
+    pub parallel: bool,
+    /// `fade_distance` (0: no fading) and `fade_power`.
+    pub fade_distance: f64,
+    pub fade_power: f64,
+    /// `area_light`: soft shadows from a grid of point lights.
+    pub area: Option<AreaLightDesc>,
+    /// `media_interaction`, `media_attenuation`: kept as written; strahl models no media.
+    pub media_interaction: bool,
+    pub media_attenuation: bool,
+}
+
+impl Default for LightDesc {
+    /// A white point light at the origin, as POV-Ray's defaults.
+    fn default() -> Self {
+        LightDesc {
+            position: DVec3::ZERO,
+            color: DVec3::ONE,
+            shadowless: false,
+            kind: LightKind::Point,
+            point_at: DVec3::ZERO,
+            radius: None,
+            falloff: None,
+            tightness: None,
+            parallel: false,
+            fade_distance: 0.0,
+            fade_power: 0.0,
+            area: None,
+            media_interaction: true,
+            media_attenuation: false,
+        }
+    }
+}
+
+impl LightDesc {
+    /// `(radius, falloff, tightness)` with the kind's defaults (POV-Ray 3.7: spotlight 30, 45, 0
+    /// degrees; cylinder 0.75, 1, 0 units).
+    pub fn spot_params(&self) -> (f64, f64, f64) {
+        let (r, f) = match self.kind {
+            LightKind::Cylinder => (0.75, 1.0),
+            _ => (30.0, 45.0),
+        };
+        (self.radius.unwrap_or(r), self.falloff.unwrap_or(f), self.tightness.unwrap_or(0.0))
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightKind {
+    Point,
+    Spot,
+    Cylinder,
+}
+
+/// `area_light <axis1>, <axis2>, size1, size2 [adaptive N] [jitter] [circular] [orient]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AreaLightDesc {
+    pub axis1: DVec3,
+    pub axis2: DVec3,
+    /// Rows and columns of point lights (at least 1 each).
+    pub size1: u32,
+    pub size2: u32,
+    /// `adaptive N`: corner-first subdivision with at least N levels; `None`: every point.
+    pub adaptive: Option<u32>,
+    pub jitter: bool,
+    pub circular: bool,
+    pub orient: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -605,6 +680,75 @@ pub struct ObjectDesc {
     pub source: SourceRef,
 }
 
+/// `sky_sphere { pigment.. [transform] [emission C] }`: pigments evaluated on the unit ray
+/// direction, layered (the first written is the bottom layer).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkySphereDesc {
+    /// Bottom layer first; each pigment's transform includes the sky sphere's own.
+    pub pigments: Vec<PigmentDesc>,
+    pub emission: DVec3,
+}
+
+/// `fog { fog_type distance color fog_offset fog_alt up turbulence .. }`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FogDesc {
+    /// 1: constant, 2: ground fog.
+    pub fog_type: u32,
+    pub distance: f64,
+    pub color: Color,
+    pub offset: f64,
+    pub alt: f64,
+    /// Unit up direction of ground fog (rotated by the fog's transforms).
+    pub up: DVec3,
+    /// `turbulence`: parsed; strahl's fog is smooth (warned once).
+    pub turbulence: DVec3,
+}
+
+impl Default for FogDesc {
+    fn default() -> Self {
+        FogDesc {
+            fog_type: 1,
+            distance: 0.0,
+            color: Color::BLACK,
+            offset: 0.0,
+            alt: 0.0,
+            up: DVec3::Y,
+            turbulence: DVec3::ZERO,
+        }
+    }
+}
+
+/// `rainbow { direction angle width distance jitter up arc_angle falloff_angle color_map }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RainbowDesc {
+    pub direction: DVec3,
+    /// Degrees.
+    pub angle: f64,
+    pub width: f64,
+    pub distance: f64,
+    pub jitter: f64,
+    pub up: DVec3,
+    pub arc_angle: f64,
+    pub falloff_angle: f64,
+    pub color_map: Vec<ColorMapEntry>,
+}
+
+impl Default for RainbowDesc {
+    fn default() -> Self {
+        RainbowDesc {
+            direction: DVec3::Z,
+            angle: 0.0,
+            width: 0.0,
+            distance: 1e7,
+            jitter: 0.0,
+            up: DVec3::Y,
+            arc_angle: 180.0,
+            falloff_angle: 180.0,
+            color_map: Vec::new(),
+        }
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneDesc {
     /// The language version in effect at the end of parsing (`#version`, or 3.7 when none).
@@ -616,6 +760,12 @@ pub struct SceneDesc {
     pub lights: Vec<LightDesc>,
     /// `background { color C }`; black by default.
     pub background: Color,
+    /// `sky_sphere { pigment.. }`: seen where rays miss (`scene::atmosphere`).
+    pub sky_sphere: Option<SkySphereDesc>,
+    /// `fog { .. }` layers, in scene order.
+    pub fogs: Vec<FogDesc>,
+    /// `rainbow { .. }`s, in scene order.
+    pub rainbows: Vec<RainbowDesc>,
     pub global: GlobalSettings,
     pub objects: Vec<ObjectDesc>,
     /// Every file `#include` read, in order, with the directive that read it (for the
@@ -649,6 +799,9 @@ impl Default for SceneDesc {
             camera: CameraDesc::default(),
             lights: Vec::new(),
             background: Color::BLACK,
+            sky_sphere: None,
+            fogs: Vec::new(),
+            rainbows: Vec::new(),
             global: GlobalSettings::default(),
             objects: Vec::new(),
             included: Vec::new(),

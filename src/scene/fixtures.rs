@@ -50,7 +50,7 @@ pub fn seed_scene() -> SceneDesc {
         },
         lights: [DVec3::new(0.0, 4.0, -3.0), DVec3::new(0.0, 6.0, -4.0), DVec3::new(6.0, 4.0, -3.0)]
             .into_iter()
-            .map(|position| LightDesc { position, color: DVec3::ONE, shadowless: false })
+            .map(|position| LightDesc { position, ..LightDesc::default() })
             .collect(),
         objects: vec![
             object(

@@ -246,11 +246,15 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
             ..CameraDesc::default()
         },
         lights: vec![
-            LightDesc { position: qv(DVec3::new(-lx, ly, -1.5 * lx)), color: DVec3::splat(0.8), shadowless: false },
+            LightDesc {
+                position: qv(DVec3::new(-lx, ly, -1.5 * lx)),
+                color: DVec3::splat(0.8),
+                ..LightDesc::default()
+            },
             LightDesc {
                 position: qv(DVec3::new(lx, 0.7 * ly, -0.5 * lx)),
                 color: DVec3::splat(0.5),
-                shadowless: false,
+                ..LightDesc::default()
             },
         ],
         background: Color::rgb(0.55, 0.65, 0.85),

@@ -1,6 +1,7 @@
 //! Scene data: `desc` (as written, f64) and `build` (render-ready, f32, relative to a render
 //! origin), with the fixtures, generators and printer that work on descriptions.
 
+pub mod atmosphere;
 pub mod build;
 pub mod csg;
 pub mod desc;

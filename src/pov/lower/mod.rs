@@ -3,6 +3,7 @@
 //! composes transforms the way POV-Ray does. Split by topic: `eval` (expressions, colours,
 //! transforms), `camera`, `textures`, `objects`.
 
+mod atmosphere;
 mod blob;
 mod camera;
 mod eval;
@@ -11,6 +12,7 @@ mod functions;
 mod height_field;
 mod isosurface;
 mod julia;
+mod lights;
 mod objects;
 mod sweeps;
 mod text;
@@ -288,22 +290,6 @@ impl<'f> Lowerer<'f> {
         })
     }
 
-    /// A `light_source`; its position may be a declared light, which it continues from.
-    fn light(&mut self, l: &crate::pov::ast::Light) -> PResult<LightDesc> {
-        let mut light = match self.eval(&l.position)? {
-            Value::Light(base) => *base,
-            v => LightDesc { position: v.as_vec3(l.position.span)?, color: glam::DVec3::ONE, shadowless: false },
-        };
-        if let Some(c) = &l.color {
-            light.color = self.color(c)?.rgb;
-        }
-        light.shadowless |= l.shadowless;
-        for t in &l.transforms {
-            light.position = self.transform(t)?.matrix.transform_point3(light.position);
-        }
-        Ok(light)
-    }
-
     /// `#default { ... }`: where later texture blocks and untextured objects start.
     pub(crate) fn set_default(&mut self, items: &[DefaultItem]) -> PResult<()> {
         for item in items {
@@ -348,14 +334,22 @@ impl<'f> Lowerer<'f> {
                 self.scene.camera = self.camera(items, *span)?
             }
             Stmt::Light(l) => {
-                let light = self.light(l)?;
+                let (light, start) = self.light_placed(l)?;
                 if self.csg_stack.is_empty() {
                     self.scene.lights.push(light);
                 } else {
                     // It moves with the object it is written in.
                     self.child_lights.push(light);
                 }
+                for object in self.looks_like(l, start) {
+                    self.stmt(&Stmt::Object(object))?;
+                }
             }
+            Stmt::Atmosphere(a) => {
+                self.not_in_csg(a.kind.keyword(), a.span)?;
+                self.atmosphere(a)?;
+            }
+            Stmt::Media(span) => self.media_warning(*span),
             Stmt::Background { color, span } => {
                 self.not_in_csg("background", *span)?;
                 self.scene.background = self.color(color)?

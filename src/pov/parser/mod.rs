@@ -7,6 +7,7 @@
 //! Split by topic: `expr` (expressions, colours), `scene` (camera, lights, objects) and
 //! `textures` (pigment, normal, finish, texture, interior).
 
+mod atmosphere;
 mod blob;
 mod declarations;
 mod directives;

@@ -7,7 +7,7 @@ use super::blob::BLOB_ITEMS;
 use super::julia::JULIA_ITEMS;
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
-    CameraItem, Clip, CsgOp, GlobalItem, Light, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
+    AtmosphereKind, CameraItem, Clip, CsgOp, GlobalItem, Light, LightItem, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
     TransformKind,
 };
 use crate::pov::lexer::TokenKind;
@@ -49,6 +49,10 @@ const TOP_LEVEL: &[&str] = &[
     "height_field",
     "isosurface",
     "parametric",
+    "sky_sphere",
+    "fog",
+    "rainbow",
+    "media",
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
@@ -61,8 +65,42 @@ pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
 const CAMERA: &[&str] =
     &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
-const LIGHT: &[&str] =
-    &["color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "rotate", "scale", "translate", "shadowless"];
+const LIGHT: &[&str] = &[
+    "color",
+    "colour",
+    "rgb",
+    "rgbf",
+    "rgbt",
+    "rgbft",
+    "rotate",
+    "scale",
+    "translate",
+    "shadowless",
+    "spotlight",
+    "cylinder",
+    "parallel",
+    "point_at",
+    "radius",
+    "falloff",
+    "tightness",
+    "fade_distance",
+    "fade_power",
+    "area_light",
+    "adaptive",
+    "jitter",
+    "circular",
+    "orient",
+    "area_illumination",
+    "looks_like",
+    "projected_through",
+    "media_interaction",
+    "media_attenuation",
+];
+/// Light items followed by one value.
+const LIGHT_VALUES: &[&str] = &["point_at", "radius", "falloff", "tightness", "fade_distance", "fade_power", "adaptive"];
+/// Light items with an optional boolean after them.
+const LIGHT_FLAGS: &[&str] =
+    &["jitter", "circular", "orient", "area_illumination", "media_interaction", "media_attenuation"];
 const GLOBAL: &[&str] = &[
     "assumed_gamma",
     "max_trace_level",
@@ -200,6 +238,10 @@ impl Parser<'_, '_> {
                 Ok(Stmt::Background { color, span: kw })
             }
             Some("global_settings") => self.global_settings(),
+            Some("sky_sphere") => self.atmosphere(AtmosphereKind::SkySphere),
+            Some("fog") => self.atmosphere(AtmosphereKind::Fog),
+            Some("rainbow") => self.atmosphere(AtmosphereKind::Rainbow),
+            Some("media") => self.skip_media(),
             Some(w) if is_object_keyword(w) => self.object().map(Stmt::Object),
             Some(w) if UNSUPPORTED_SHAPES.contains(&w) => {
                 Err(Diag::unmodelled(self.peek().span, format!("`{w}` is not supported (supported: {SHAPES})")))
@@ -284,16 +326,55 @@ impl Parser<'_, '_> {
         let position = self.expr()?;
         self.eat_punct(',');
         let mut color = None;
-        let mut transforms = Vec::new();
+        let mut items = Vec::new();
         let mut shadowless = false;
         while !self.at_block_end() {
-            match self.peek_ident().as_deref() {
-                Some("rotate" | "scale" | "translate") => transforms.push(self.transform_item()?),
+            let word = self.peek_ident();
+            match word.as_deref() {
+                Some("rotate" | "scale" | "translate") => items.push(LightItem::Transform(self.transform_item()?)),
                 Some("shadowless") => {
                     self.bump();
                     shadowless = true;
                 }
-                Some(w) if LIGHT.contains(&w) => color = Some(self.color()?),
+                Some(w @ ("spotlight" | "cylinder" | "parallel")) => {
+                    let name = LIGHT.iter().copied().find(|k| *k == w).unwrap_or("spotlight");
+                    items.push(LightItem::Kind(name, self.bump().span));
+                }
+                Some(w) if LIGHT_VALUES.contains(&w) => {
+                    let name = LIGHT_VALUES.iter().copied().find(|k| *k == w).unwrap_or("radius");
+                    let span = self.bump().span;
+                    items.push(LightItem::Value(name, self.expr()?, span));
+                }
+                Some(w) if LIGHT_FLAGS.contains(&w) => {
+                    let name = LIGHT_FLAGS.iter().copied().find(|k| *k == w).unwrap_or("jitter");
+                    let span = self.bump().span;
+                    let value = if self.starts_bool() { Some(self.expr()?) } else { None };
+                    items.push(LightItem::Flag(name, value, span));
+                }
+                Some("area_light") => {
+                    let span = self.bump().span;
+                    let axis1 = self.expr()?;
+                    self.eat_punct(',');
+                    let axis2 = self.expr()?;
+                    self.eat_punct(',');
+                    let size1 = self.expr()?;
+                    self.eat_punct(',');
+                    let size2 = self.expr()?;
+                    items.push(LightItem::AreaLight { axis1, axis2, size1, size2, span });
+                }
+                Some("looks_like") => {
+                    let span = self.bump().span;
+                    self.open_block("looks_like", span)?;
+                    let object = self.object()?;
+                    self.close_block("looks_like", span)?;
+                    items.push(LightItem::LooksLike(Box::new(object), span));
+                }
+                Some("projected_through") => {
+                    let span = self.bump().span;
+                    self.skip_braced("projected_through", span)?;
+                    items.push(LightItem::ProjectedThrough(span));
+                }
+                Some(w) if LIGHT[..6].contains(&w) => color = Some(self.color()?),
                 // A bare colour (`light_source { <0,4,-3>, White }`), as POV-Ray accepts.
                 _ if color.is_none()
                     && self.starts_expr(&LIGHT[6..])
@@ -305,7 +386,17 @@ impl Parser<'_, '_> {
             }
         }
         self.close_block("light_source", kw)?;
-        Ok(Light { position, color, shadowless, transforms, span: kw })
+        Ok(Light { position, color, shadowless, items, span: kw })
+    }
+
+    /// Whether a boolean value follows an optional-boolean keyword (`jitter`, `hollow off`).
+    fn starts_bool(&mut self) -> bool {
+        match &self.peek().kind {
+            TokenKind::Number(_) => true,
+            TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
+            TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
+            _ => false,
+        }
     }
 
     fn global_settings(&mut self) -> PResult<Stmt> {

@@ -344,12 +344,53 @@ fn seed_scene_matches_povray_by_region() {
     }
 }
 
+/// One reference scene per camera projection and its PSNR floor against POV-Ray 3.7.
+const CAMERAS: &[(&str, f64)] = &[
+    ("cameras_ortho", 35.0),
+    ("cameras_ortho_plain", 35.0),
+    ("cameras_ortho_area", 35.0),
+    ("cameras_fisheye", 35.0),
+    ("cameras_ultra", 35.0),
+    ("cameras_omnimax", 35.0),
+    ("cameras_panoramic", 35.0),
+    ("cameras_cylinder", 35.0),
+    ("cameras_cylinder2", 35.0),
+    ("cameras_cylinder3", 35.0),
+    ("cameras_cylinder4", 35.0),
+    ("cameras_spherical", 35.0),
+];
+
+#[test]
+fn cameras_match_povray() {
+    let mut failures = Vec::new();
+    for &(name, min_db) in CAMERAS {
+        if let Err(e) = std::panic::catch_unwind(|| check_psnr(name, &scene(name), min_db)) {
+            failures.push(format!("{name}: {e:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:?}");
+}
+
+/// Focal blur: POV-Ray samples the lens adaptively from a Halton sequence, strahl from a hash,
+/// so both images are noisy in different ways; the threshold is the noise floor of two such
+/// renders (measured: see docs/perf/cameras.md), well above what a wrong focal plane or
+/// aperture scale gives.
+#[test]
+fn focal_blur_matches_povray() {
+    check_psnr("cameras_focal_blur", &scene("cameras_focal_blur"), FOCAL_BLUR_MIN_DB);
+}
+
+const FOCAL_BLUR_MIN_DB: f64 = 30.0;
+
 /// Packets (8×8 primary rays, shadow rows) and single rays give the same bytes on every
 /// reference scene: the packet kernels are the single-ray kernels, eight lanes wide.
 #[test]
 fn packets_and_single_rays_give_identical_images() {
-    let mut scenes: Vec<PathBuf> =
-        ["flat", "reflection", "refraction", "shadows", "legacy"].iter().map(|n| scene(n)).collect();
+    let mut scenes: Vec<PathBuf> = ["flat", "reflection", "refraction", "shadows", "legacy"]
+        .iter()
+        .chain(CAMERAS.iter().map(|(n, _)| n))
+        .map(|n| scene(n))
+        .collect();
     scenes.push(root().join("scenes/seed.pov"));
     for path in scenes {
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));

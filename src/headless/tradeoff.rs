@@ -82,6 +82,10 @@ pub fn sweep() -> Vec<Setting> {
         s.push(Setting::knob(format!("max-octaves {o}"), |s| s.quality.max_octaves = Some(o)));
     }
     s.push(Setting::knob("precision f64".into(), |s| s.quality.precision = Precision::F64));
+    // Focal-blur rays per sample (the same image as `full` on scenes without focal blur).
+    for n in [4, 16] {
+        s.push(Setting::knob(format!("max-blur-samples {n}"), |s| s.quality.max_blur_samples = Some(n)));
+    }
     for aa in 2..=3 {
         s.push(Setting::knob(format!("aa {aa}"), |s| s.aa = aa));
     }
@@ -328,7 +332,7 @@ mod tests {
     fn sweep_moves_one_knob_at_a_time() {
         let full = Preset::Full.settings();
         let s = sweep();
-        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 1 + 2 + 4);
+        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 1 + 2 + 2 + 4);
         let names: Vec<&str> = s.iter().map(|s| s.name.as_str()).collect();
         assert!(names.contains(&"res-scale 0.25") && names.contains(&"no-shadows") && names.contains(&"aa 3"));
         assert!(names.contains(&"precision f64"));
@@ -341,6 +345,7 @@ mod tests {
                 k.quality.shadows != full.quality.shadows,
                 k.quality.max_octaves != full.quality.max_octaves,
                 k.quality.precision != full.quality.precision,
+                k.quality.max_blur_samples != full.quality.max_blur_samples,
             ];
             assert_eq!(changed.iter().filter(|&&c| c).count(), 1, "{}", k.name);
         }

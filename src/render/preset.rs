@@ -13,6 +13,10 @@ use std::str::FromStr;
 use super::precision::Precision;
 use super::Quality;
 
+/// Focal-blur rays per sample under `fast` and `balanced` (`Quality::max_blur_samples`).
+pub const FAST_BLUR_SAMPLES: u32 = 4;
+pub const BALANCED_BLUR_SAMPLES: u32 = 16;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Preset {
     Fast,
@@ -57,10 +61,20 @@ impl Preset {
             // 2.4× faster than `full` for 1.6× its error (PSNR 21.8 dB vs 21.9): the last step of
             // the front before the error doubles with each halving of time (0.25 is 1.7× faster
             // again for 1.9× the error, and traces 160×90 pixels at 640×360).
-            Preset::Fast => PresetSettings { res_scale: 0.5, ..full },
+            // Focal blur: 4 rays per pixel (scenes ask for 20-100), so a blurred scene stays
+            // interactive in the window (scenes/focal_blur.pov: docs/perf/cameras.md).
+            Preset::Fast => PresetSettings {
+                res_scale: 0.5,
+                quality: Quality { max_blur_samples: Some(FAST_BLUR_SAMPLES), ..full.quality },
+                ..full
+            },
             // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
-            Preset::Balanced => PresetSettings { res_scale: 0.75, ..full },
+            Preset::Balanced => PresetSettings {
+                res_scale: 0.75,
+                quality: Quality { max_blur_samples: Some(BALANCED_BLUR_SAMPLES), ..full.quality },
+                ..full
+            },
             Preset::Full => full,
             // 4×4 samples per pixel, hits re-solved in f64: strahl's best, and the reference
             // errors are measured against (docs/precision.md).

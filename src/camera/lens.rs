@@ -11,11 +11,11 @@
 //! | perspective | from `location` along `D + px·R + py·U` (in `render`, f32, unchanged) |
 //! | orthographic | from `location + px·R + py·U` along `Dn` |
 //! | fisheye | polar (r, φ) of (2px, 2py) stretched to a circle; θ = r·angle/2 off `Dn`; none past r = 1 |
-//! | ultra_wide_angle | x = px·angle, y = py·angle·\|U\|/\|R\|; `sin x cos y·Rn + sin y·Un + cos x cos y·Dn` |
-//! | omnimax | as fisheye with θ = 1.411269 r − 0.09439 r³ |
-//! | panoramic | x = px·π, y = py·π/2 (spherical 180 90, lengths of D, R, U as the ellipsoid's axes) |
+//! | ultra_wide_angle | x = px·angle, y = py·angle·\|U\|/\|R\|; `sin x·Rn + sin y·Un + cos x cos y·Dn` |
+//! | omnimax | as fisheye with θ = 1.411269 r − 0.09439 r³ (approximate: POV-Ray's differs, see docs) |
+//! | panoramic | lon = px·π, lat = py·π; `cos lat (sin lon·R + cos lon·D) + sin lat·U` (the vectors' lengths are the ellipsoid's axes) |
 //! | cylinder 1 | vertical axis, fixed eye: x = px·angle; `sin x·Rn + py·U + cos x·Dn` |
-//! | cylinder 2 | horizontal axis, fixed eye: y = py·angle·\|U\|/\|R\|; `px·R + sin y·Un + cos y·Dn` |
+//! | cylinder 2 | horizontal axis, fixed eye: y = py·angle; `px·R + sin y·Un + cos y·Dn` |
 //! | cylinder 3 | vertical axis, eye moves: from `location + py·U` along `sin x·Rn + cos x·Dn` |
 //! | cylinder 4 | horizontal axis, eye moves: from `location + px·R` along `sin y·Un + cos y·Dn` |
 //! | spherical | lon = px·h, lat = py·v; `cos lat sin lon·Rn + sin lat·Un + cos lat cos lon·Dn` |
@@ -118,6 +118,8 @@ pub struct LensRays {
     dn: DVec3,
     /// |R| / |U|.
     aspect: f64,
+    /// Render units per world unit.
+    scale: f64,
     /// Focal blur: lens radius and the focal plane's distance along `dn` from `location`.
     blur: Option<(f64, f64)>,
 }
@@ -140,6 +142,7 @@ impl LensRays {
             un: unit(up),
             dn,
             aspect: right.length() / up.length(),
+            scale,
             blur,
         }
     }
@@ -181,20 +184,20 @@ impl LensRays {
             Projection::UltraWideAngle { angle } => {
                 let a = angle.to_radians();
                 let (x, y) = (px * a, py * a / self.aspect);
-                (o, rn * (x.sin() * y.cos()) + un * y.sin() + dn * (x.cos() * y.cos()))
+                (o, rn * x.sin() + un * y.sin() + dn * (x.cos() * y.cos()))
             }
             Projection::Panoramic => {
-                let (x, y) = (px * std::f64::consts::PI, py * std::f64::consts::FRAC_PI_2);
+                let (x, y) = (px * std::f64::consts::PI, py * std::f64::consts::PI);
                 let (d, rr, uu) = (self.direction.length(), self.right.length(), self.up.length());
                 (o, rn * (x.sin() * y.cos() * rr) + un * (y.sin() * uu) + dn * (x.cos() * y.cos() * d))
             }
             Projection::Cylinder { kind, angle } => {
                 let a = angle.to_radians();
-                let x = px * a;
-                let y = py * a / self.aspect;
+                let (x, y) = (px * a, py * a);
+                // `up` and `right` in world units: render space is `scale` times larger.
                 match kind {
-                    1 => (o, rn * x.sin() + self.up * py + dn * x.cos()),
-                    2 => (o, self.right * px + un * y.sin() + dn * y.cos()),
+                    1 => (o, rn * x.sin() + self.up * (py / self.scale) + dn * x.cos()),
+                    2 => (o, self.right * (px / self.scale) + un * y.sin() + dn * y.cos()),
                     3 => (o + self.up * py, rn * x.sin() + dn * x.cos()),
                     _ => (o + self.right * px, un * y.sin() + dn * y.cos()),
                 }
@@ -338,15 +341,15 @@ mod tests {
         close(dir(&g, 1.0, 0.5), DVec3::X);
         let y = (90f64 / 1.33).to_radians();
         close(dir(&g, 0.5, 0.0), DVec3::new(0.0, y.sin(), y.cos()));
-        // Top-left corner: x = -90°, y = 90°/1.33.
-        close(dir(&g, 0.0, 0.0), DVec3::new(-y.cos(), y.sin(), 0.0));
+        // Top-left corner: x = -90°, y = 90°/1.33 (POV-Ray 3.7's directions, measured).
+        close(dir(&g, 0.0, 0.0), DVec3::new(-1.0, y.sin(), 0.0).normalize());
     }
 
     #[test]
-    fn panoramic_is_spherical_180_90_with_unit_vectors() {
+    fn panoramic_is_spherical_180_180_with_unit_vectors() {
         let lens = Lens { projection: Projection::Panoramic, blur: None };
         let p = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::X, DVec3::Y, 1.0);
-        let lens = Lens { projection: Projection::Spherical { h: 180.0, v: 90.0 }, blur: None };
+        let lens = Lens { projection: Projection::Spherical { h: 180.0, v: 180.0 }, blur: None };
         let s = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::X, DVec3::Y, 1.0);
         for (u, v) in [(0.0, 0.0), (1.0, 0.3), (0.25, 0.9)] {
             close(dir(&p, u, v), dir(&s, u, v));
@@ -366,8 +369,8 @@ mod tests {
         let (o, d) = c4.ray(1.0, 0.5).unwrap();
         close(o, DVec3::new(0.665, 0.0, 0.0));
         close(d, DVec3::Z);
-        let c2 = gen(Projection::Cylinder { kind: 2, angle: 133.0 });
-        let y = (0.5f64 * 133.0 / 1.33).to_radians();
+        let c2 = gen(Projection::Cylinder { kind: 2, angle: 120.0 });
+        let y = 60f64.to_radians();
         close(dir(&c2, 0.5, 0.0), DVec3::new(0.0, y.sin(), y.cos()));
     }
 

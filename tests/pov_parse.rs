@@ -1492,14 +1492,8 @@ fn camera_projections_parse() {
     use strahl::camera::Projection;
     let cam = |text: &str| load_text("camera_projection", text).unwrap_or_else(|e| panic!("{e}")).camera;
     assert_eq!(cam("camera { orthographic location -5*z }").lens.projection, Projection::Orthographic);
-    assert_eq!(
-        cam("camera { fisheye angle 180 }").lens.projection,
-        Projection::Fisheye { angle: 180.0 }
-    );
-    assert_eq!(
-        cam("camera { cylinder 3 angle 120 }").lens.projection,
-        Projection::Cylinder { kind: 3, angle: 120.0 }
-    );
+    assert_eq!(cam("camera { fisheye angle 180 }").lens.projection, Projection::Fisheye { angle: 180.0 });
+    assert_eq!(cam("camera { cylinder 3 angle 120 }").lens.projection, Projection::Cylinder { kind: 3, angle: 120.0 });
     assert_eq!(
         cam("camera { spherical angle 360, 180 }").lens.projection,
         Projection::Spherical { h: 360.0, v: 180.0 }
@@ -1553,9 +1547,11 @@ fn camera_errors_are_located() {
 #[test]
 fn camera_normal_is_read_and_reported() {
     let d = dir("camera_normal");
-    let (_, w) =
-        load_scene_with_warnings(&write(&d, "s.pov", "camera { location -5*z normal { bumps 0.5 scale 0.1 } }"), &std_include())
-            .unwrap();
+    let (_, w) = load_scene_with_warnings(
+        &write(&d, "s.pov", "camera { location -5*z normal { bumps 0.5 scale 0.1 } }"),
+        &std_include(),
+    )
+    .unwrap();
     let text = format!("{w:?}");
     assert!(text.contains("camera `normal`") && text.contains("not modelled"), "{text}");
 }

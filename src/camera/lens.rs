@@ -35,14 +35,24 @@ pub enum Projection {
     Perspective,
     Orthographic,
     /// `angle` in degrees (POV-Ray's default 90 when the scene gives none... see `lower`).
-    Fisheye { angle: f64 },
-    UltraWideAngle { angle: f64 },
+    Fisheye {
+        angle: f64,
+    },
+    UltraWideAngle {
+        angle: f64,
+    },
     Omnimax,
     Panoramic,
     /// `cylinder 1|2|3|4` with its angle in degrees.
-    Cylinder { kind: u8, angle: f64 },
+    Cylinder {
+        kind: u8,
+        angle: f64,
+    },
     /// `spherical`, `angle h [v]` in degrees.
-    Spherical { h: f64, v: f64 },
+    Spherical {
+        h: f64,
+        v: f64,
+    },
 }
 
 impl Projection {
@@ -386,7 +396,12 @@ mod tests {
     fn focal_blur_keeps_the_focal_plane_sharp() {
         let lens = Lens {
             projection: Projection::Perspective,
-            blur: Some(FocalBlur { aperture: 0.5, max_samples: 8, focal_point: DVec3::new(0.0, 0.0, 4.0), ..Default::default() }),
+            blur: Some(FocalBlur {
+                aperture: 0.5,
+                max_samples: 8,
+                focal_point: DVec3::new(0.0, 0.0, 4.0),
+                ..Default::default()
+            }),
         };
         let g = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0);
         let ray = g.ray(0.2, 0.7).unwrap();

@@ -167,11 +167,12 @@ impl Lowerer<'_> {
         }
         // The angle the projection reads: the scene's, else the perspective field of view
         // the vectors give (POV-Ray's rule, checked by rendering).
-        let fov = angle.unwrap_or_else(|| 2.0 * (0.5 * cam.right.length() / cam.direction.length()).atan().to_degrees());
+        let fov =
+            angle.unwrap_or_else(|| 2.0 * (0.5 * cam.right.length() / cam.direction.length()).atan().to_degrees());
         match &mut cam.lens.projection {
-            Projection::Fisheye { angle } | Projection::UltraWideAngle { angle } | Projection::Cylinder { angle, .. } => {
-                *angle = fov
-            }
+            Projection::Fisheye { angle }
+            | Projection::UltraWideAngle { angle }
+            | Projection::Cylinder { angle, .. } => *angle = fov,
             Projection::Spherical { h, v } => {
                 *h = fov;
                 if *v == 0.0 {

@@ -34,7 +34,7 @@ pub enum Projection {
     #[default]
     Perspective,
     Orthographic,
-    /// `angle` in degrees (POV-Ray's default 90 when the scene gives none... see `lower`).
+    /// `angle` in degrees; without one, the perspective field of view the vectors give (`lower`).
     Fisheye {
         angle: f64,
     },

@@ -71,7 +71,7 @@ impl Lowerer<'_> {
                     let b = blur.get_or_insert(cam.lens.blur.unwrap_or_default());
                     let count = |l: &mut Self, e: &crate::pov::ast::Expr| -> PResult<u32> {
                         let n = l.float(e)?;
-                        if !(n >= 0.0 && n <= 1e6) {
+                        if !(0.0..=1e6).contains(&n) {
                             return Err(Diag::new(e.span, "blur_samples must be between 0 and 1000000"));
                         }
                         Ok(n as u32)

@@ -131,6 +131,8 @@ impl FlyState {
             direction: basis.forward * o.direction.length(),
             right: basis.right * (sign * o.right.length()),
             up: basis.up * o.up.length(),
+            // The projection and focal blur fly along: the window moves the camera, nothing else.
+            lens: o.lens,
         }
     }
 }

@@ -109,6 +109,9 @@ struct Common {
     /// reference images). Default f32; the reference preset uses f64.
     #[arg(long, value_name = "P")]
     precision: Option<Precision>,
+    /// Cap on a focal-blur camera's rays per sample (`blur_samples`).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=10000))]
+    max_blur_samples: Option<u32>,
 }
 
 /// `--res-scale`: a number in MIN_RES_SCALE..=1.
@@ -133,6 +136,7 @@ impl Common {
                 max_octaves: self.max_octaves.or(preset.quality.max_octaves),
                 precision: self.precision.unwrap_or(preset.quality.precision),
                 max_area_samples: self.max_area_samples.or(preset.quality.max_area_samples),
+                max_blur_samples: self.max_blur_samples.or(preset.quality.max_blur_samples),
             },
             packets: !self.no_packets,
             ..RenderSettings::default()

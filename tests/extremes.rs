@@ -156,6 +156,7 @@ fn axis_camera(location: DVec3) -> CameraDesc {
         sky: DVec3::Y,
         look_at: None,
         angle: None,
+        ..CameraDesc::default()
     }
 }
 
@@ -406,6 +407,7 @@ box { <-1000, -10, -1000>, <1000, 0, 1000> pigment { color rgbt <1, 1, 1, 1> } i
             sky: DVec3::Y,
             look_at: None,
             angle: None,
+            ..CameraDesc::default()
         };
         // 1×1: the one ray is `direction` itself.
         let f = render_clean(name, &desc, 1, 1);

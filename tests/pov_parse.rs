@@ -1595,4 +1595,73 @@ fn error_lights_and_atmosphere() {
     assert!(m.contains("rainbow needs a color_map"), "{m}");
     let (_, _, m) = err("e_fog_csg", "union { sphere { 0, 1 } fog { distance 2 } }");
     assert!(!m.is_empty());
+// ---- camera projections and focal blur --------------------------------------------------
+
+#[test]
+fn camera_projections_parse() {
+    use strahl::camera::Projection;
+    let cam = |text: &str| load_text("camera_projection", text).unwrap_or_else(|e| panic!("{e}")).camera;
+    assert_eq!(cam("camera { orthographic location -5*z }").lens.projection, Projection::Orthographic);
+    assert_eq!(cam("camera { fisheye angle 180 }").lens.projection, Projection::Fisheye { angle: 180.0 });
+    assert_eq!(cam("camera { cylinder 3 angle 120 }").lens.projection, Projection::Cylinder { kind: 3, angle: 120.0 });
+    assert_eq!(
+        cam("camera { spherical angle 360, 180 }").lens.projection,
+        Projection::Spherical { h: 360.0, v: 180.0 }
+    );
+    // The vertical angle defaults to half the horizontal one.
+    assert_eq!(cam("camera { spherical angle 300 }").lens.projection, Projection::Spherical { h: 300.0, v: 150.0 });
+    // Orthographic `angle`: the width is 2·tan(angle/2)·|look_at - location|.
+    let c = cam("camera { orthographic location <0, 0, -10> look_at 0 angle 90 }");
+    assert!((c.right.length() - 20.0).abs() < 1e-9, "{}", c.right);
+    assert!((c.up.length() - 20.0 / 1.33).abs() < 1e-9, "{}", c.up);
+    // Given right and up are the view's size.
+    let c = cam("camera { orthographic location <0, 0, -10> right 8*x up 6*y look_at 0 }");
+    assert!((c.right.length() - 8.0).abs() < 1e-9 && (c.up.length() - 6.0).abs() < 1e-9);
+    // A declared camera keeps its lens.
+    let c = cam("#declare C = camera { panoramic location 0 }\ncamera { C translate y }");
+    assert_eq!(c.lens.projection, Projection::Panoramic);
+}
+
+#[test]
+fn focal_blur_parses() {
+    let c = load_text(
+        "focal_blur",
+        "camera { location -5*z aperture 0.4 blur_samples 10, 40 focal_point <0, 1, 2> confidence 0.95 variance 1/1000 }",
+    )
+    .unwrap()
+    .camera;
+    let b = c.lens.blur.expect("blur");
+    assert_eq!((b.aperture, b.min_samples, b.max_samples), (0.4, 10, 40));
+    assert_eq!(b.focal_point, DVec3::new(0.0, 1.0, 2.0));
+    assert!((b.confidence - 0.95).abs() < 1e-12 && (b.variance - 1e-3).abs() < 1e-12);
+    // Without blur_samples there is no blur.
+    let c = load_text("focal_blur_none", "camera { aperture 0.4 }").unwrap().camera;
+    assert!(c.lens.blur.is_none());
+}
+
+#[test]
+fn camera_errors_are_located() {
+    let (line, col, m) = err("cylinder_type", "camera {\n  cylinder 5\n}\n");
+    assert_eq!((line, col), (2, 12), "{m}");
+    assert!(m.contains("cylinder camera type must be 1, 2, 3 or 4"), "{m}");
+    let (line, col, m) = err("persp_angle", "camera { angle 200 }\n");
+    assert_eq!((line, col), (1, 16), "{m}");
+    assert!(m.contains("between 0 and 180"), "{m}");
+    let (line, col, m) = err("mesh_camera", "camera {\n  mesh_camera { 1 0 mesh { M } }\n}\n");
+    assert_eq!((line, col), (2, 3), "{m}");
+    assert!(m.contains("mesh_camera"), "{m}");
+    // Wide angles are fine for the projections that use them.
+    assert!(load_text("fisheye_wide", "camera { fisheye angle 360 }").is_ok());
+}
+
+#[test]
+fn camera_normal_is_read_and_reported() {
+    let d = dir("camera_normal");
+    let (_, w) = load_scene_with_warnings(
+        &write(&d, "s.pov", "camera { location -5*z normal { bumps 0.5 scale 0.1 } }"),
+        &std_include(),
+    )
+    .unwrap();
+    let text = format!("{w:?}");
+    assert!(text.contains("camera `normal`") && text.contains("not modelled"), "{text}");
 }

@@ -321,6 +321,7 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
         sky: DVec3::Y,
         look_at: None,
         angle: None,
+        ..CameraDesc::default()
     };
     let lights = (0..1 + r.pick(3))
         .map(|_| LightDesc { position: r.v(-10.0, 10.0), color: r.v(0.2, 1.0), shadowless: r.pick(4) == 0, ..LightDesc::default() })

@@ -351,12 +351,57 @@ fn seed_scene_matches_povray_by_region() {
     }
 }
 
+/// One reference scene per camera projection and its PSNR floor against POV-Ray 3.7.
+/// `cameras_omnimax` is left out: strahl's omnimax is a fisheye-like approximation that does
+/// not match POV-Ray's (9.5 dB; POV-Ray's centre looks 17° up and its black region differs),
+/// a known gap; it is still in the packets test.
+const CAMERAS: &[(&str, f64)] = &[
+    ("cameras_ortho", 35.0),
+    ("cameras_ortho_plain", 35.0),
+    ("cameras_ortho_area", 35.0),
+    ("cameras_fisheye", 35.0),
+    ("cameras_ultra", 35.0),
+    ("cameras_panoramic", 35.0),
+    ("cameras_cylinder", 35.0),
+    ("cameras_cylinder2", 35.0),
+    ("cameras_cylinder3", 35.0),
+    ("cameras_cylinder4", 35.0),
+    ("cameras_spherical", 35.0),
+];
+
+#[test]
+fn cameras_match_povray() {
+    let mut failures = Vec::new();
+    for &(name, min_db) in CAMERAS {
+        if let Err(e) = std::panic::catch_unwind(|| check_psnr(name, &scene(name), min_db)) {
+            failures.push(format!("{name}: {e:?}"));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:?}");
+}
+
+/// Focal blur: POV-Ray samples the lens adaptively from a Halton sequence, strahl from a hash,
+/// so both images are noisy in different ways and cannot reach 35 dB. The floor is what strahl
+/// measures today (18.9 dB), a regression guard only: strahl's blur is stronger than
+/// POV-Ray's for the same `aperture` (its best match is at about a tenth of the aperture,
+/// 29.5 dB), so the aperture's scale is not yet calibrated (docs/perf/cameras.md).
+#[test]
+fn focal_blur_matches_povray() {
+    check_psnr("cameras_focal_blur", &scene("cameras_focal_blur"), FOCAL_BLUR_MIN_DB);
+}
+
+const FOCAL_BLUR_MIN_DB: f64 = 18.0;
+
 /// Packets (8×8 primary rays, shadow rows) and single rays give the same bytes on every
 /// reference scene: the packet kernels are the single-ray kernels, eight lanes wide.
 #[test]
 fn packets_and_single_rays_give_identical_images() {
-    let mut scenes: Vec<PathBuf> =
-        ["flat", "reflection", "refraction", "shadows", "legacy"].iter().map(|n| scene(n)).collect();
+    let mut scenes: Vec<PathBuf> = ["flat", "reflection", "refraction", "shadows", "legacy"]
+        .iter()
+        .chain(CAMERAS.iter().map(|(n, _)| n))
+        .chain(&["cameras_omnimax", "cameras_focal_blur"])
+        .map(|n| scene(n))
+        .collect();
     scenes.push(root().join("scenes/seed.pov"));
     for path in scenes {
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));

@@ -8,12 +8,14 @@
 //! Camera paths (keyframed flights for capture and bench) live in `path`; their file format in
 //! `path_file`.
 
+pub mod lens;
 pub mod path;
 mod path_file;
 
 use glam::DVec3;
 
 use crate::scene::desc::CameraDesc;
+pub use lens::{FocalBlur, Lens, Projection};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -21,11 +23,13 @@ pub struct Camera {
     pub direction: DVec3,
     pub right: DVec3,
     pub up: DVec3,
+    /// The projection and focal blur (`lens`); flying keeps it.
+    pub lens: Lens,
 }
 
 impl Camera {
     pub fn from_desc(desc: &CameraDesc) -> Camera {
-        Camera { location: desc.location, direction: desc.direction, right: desc.right, up: desc.up }
+        Camera { location: desc.location, direction: desc.direction, right: desc.right, up: desc.up, lens: desc.lens }
     }
 
     /// A camera at `location` looking at `look_at`, with POV-Ray's `look_at` rules: the vector
@@ -40,7 +44,13 @@ impl Camera {
         }
         let forward = (look_at - location).try_normalize().unwrap_or(DVec3::Z);
         let basis = Basis::from_forward(forward, DVec3::Y);
-        Camera { location, direction: basis.forward * dir_len, right: basis.right * right_len, up: basis.up * up_len }
+        Camera {
+            location,
+            direction: basis.forward * dir_len,
+            right: basis.right * right_len,
+            up: basis.up * up_len,
+            lens: like.lens,
+        }
     }
 
     /// Horizontal field of view in degrees.
@@ -56,8 +66,29 @@ impl Camera {
     /// The camera as a POV-Ray `camera { }` block that reproduces this view.
     pub fn to_pov(&self) -> String {
         let v = |v: DVec3| format!("<{:.6}, {:.6}, {:.6}>", v.x, v.y, v.z);
+        let projection = match self.lens.projection {
+            Projection::Perspective => String::new(),
+            Projection::Fisheye { angle } | Projection::UltraWideAngle { angle } => {
+                format!("  {}\n  angle {angle:.6}\n", self.lens.projection.keyword())
+            }
+            Projection::Cylinder { angle, .. } => format!("  {}\n  angle {angle:.6}\n", self.lens.projection.keyword()),
+            Projection::Spherical { h, v } => format!("  spherical\n  angle {h:.6}, {v:.6}\n"),
+            p => format!("  {}\n", p.keyword()),
+        };
+        let blur = match self.lens.blur {
+            Some(b) => format!(
+                "  aperture {:.6}\n  blur_samples {}, {}\n  focal_point {}\n  confidence {:.6}\n  variance {:.9}\n",
+                b.aperture,
+                b.min_samples,
+                b.max_samples,
+                v(b.focal_point),
+                b.confidence,
+                b.variance
+            ),
+            None => String::new(),
+        };
         format!(
-            "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n}}",
+            "camera {{\n{projection}  location {}\n  direction {}\n  right {}\n  up {}\n{blur}}}",
             v(self.location),
             v(self.direction),
             v(self.right),

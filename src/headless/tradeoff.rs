@@ -85,6 +85,10 @@ pub fn sweep() -> Vec<Setting> {
     for n in [4, 16] {
         s.push(Setting::knob(format!("max-area-samples {n}"), |s| s.quality.max_area_samples = Some(n)));
     }
+    // Focal-blur rays per sample (the same image as `full` on scenes without focal blur).
+    for n in [4, 16] {
+        s.push(Setting::knob(format!("max-blur-samples {n}"), |s| s.quality.max_blur_samples = Some(n)));
+    }
     for aa in 2..=3 {
         s.push(Setting::knob(format!("aa {aa}"), |s| s.aa = aa));
     }
@@ -345,6 +349,7 @@ mod tests {
                 k.quality.max_octaves != full.quality.max_octaves,
                 k.quality.precision != full.quality.precision,
                 k.quality.max_area_samples != full.quality.max_area_samples,
+                k.quality.max_blur_samples != full.quality.max_blur_samples,
             ];
             assert_eq!(changed.iter().filter(|&&c| c).count(), 1, "{}", k.name);
         }

@@ -198,6 +198,31 @@ pub enum CameraItem {
     Direction(Expr),
     Sky(Expr),
     Transform(TransformItem),
+    /// The projection keyword (`orthographic`, `cylinder 2`, ...).
+    Projection(CameraProjection, Span),
+    /// `angle H V`'s second value (spherical cameras' vertical angle).
+    AngleV(Expr),
+    Aperture(Expr),
+    /// `blur_samples [min,] max`.
+    BlurSamples(Option<Expr>, Expr),
+    FocalPoint(Expr),
+    Confidence(Expr),
+    Variance(Expr),
+    /// Read in full but not modelled (`normal { }`, `bokeh { }`): a warning names it.
+    Unmodelled(&'static str, Span),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum CameraProjection {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    UltraWideAngle,
+    Omnimax,
+    Panoramic,
+    /// `cylinder N`, N in 1..=4.
+    Cylinder(Expr),
+    Spherical,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -22,7 +22,8 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
-use crate::camera::Camera;
+use crate::camera::lens::{self, LensRays};
+use crate::camera::{Camera, Lens};
 use crate::geometry::ray::Ray;
 use crate::lanes::{Lane, F8, V3};
 use crate::scene::build::Scene;
@@ -44,6 +45,8 @@ pub struct Quality {
     /// Caps the points of each `area_light` grid (rows × columns, both scaled down alike): its
     /// shadow rays per shading point (`render::light::AreaGrid::capped`).
     pub max_area_samples: Option<u32>,
+    /// Caps a focal-blur camera's `blur_samples` (rays per sample).
+    pub max_blur_samples: Option<u32>,
 }
 
 impl Default for Quality {
@@ -54,6 +57,7 @@ impl Default for Quality {
             max_octaves: None,
             precision: precision::Precision::F32,
             max_area_samples: None,
+            max_blur_samples: None,
         }
     }
 }
@@ -91,22 +95,44 @@ impl Default for RenderSettings {
     }
 }
 
-/// Camera vectors in render space, f32.
+/// Camera vectors in render space, f32, and the lens for projections other than plain
+/// perspective.
+///
+/// The plain perspective camera keeps its f32 eight-lane ray code (the seed scene's bits).
+/// Every other projection, and focal blur, makes each ray in f64 (`camera::lens`) and rounds
+/// it to f32 once; packets build their lanes from those same single rays, so packets and
+/// single rays trace the same bits.
 #[derive(Clone, Copy, Debug)]
 struct RayGen {
     origin: Vec3,
     direction: Vec3,
     right: Vec3,
     up: Vec3,
+    /// `None`: POV-Ray's default perspective camera without blur.
+    lens: Option<LensRays>,
+    /// Blur rays averaged per sample (1 without focal blur), after the quality cap.
+    blur_samples: u32,
 }
 
 impl RayGen {
-    fn new(camera: &Camera, frame: &RenderFrame) -> RayGen {
+    fn new(camera: &Camera, frame: &RenderFrame, quality: &Quality) -> RayGen {
+        let lens = (camera.lens != Lens::default()).then(|| {
+            LensRays::new(
+                &camera.lens,
+                frame.point(camera.location),
+                frame.vector(camera.direction),
+                frame.vector(camera.right),
+                frame.vector(camera.up),
+                frame.per_unit,
+            )
+        });
         RayGen {
             origin: frame.point(camera.location).as_vec3(),
             direction: frame.vector(camera.direction).as_vec3(),
             right: frame.vector(camera.right).as_vec3(),
             up: frame.vector(camera.up).as_vec3(),
+            lens,
+            blur_samples: camera.lens.blur_samples(quality.max_blur_samples),
         }
     }
 
@@ -125,19 +151,65 @@ impl RayGen {
             .add(V3::splat(self.up).scale(half - v));
         d.normalize()
     }
+
+    /// Whether blocks of this camera's rays may be traced as packets: every pixel must have a
+    /// ray (fisheye and omnimax leave corners black, so they go through single rays).
+    fn packets(&self) -> bool {
+        self.lens.is_none_or(|l| l.covers_image())
+    }
+
+    /// The ray of blur sample `s` of sub-sample (sx, sy) of pixel (x, y) through a lens
+    /// (`self.lens` is `Some`); `None` where the projection has no ray.
+    fn lens_ray(&self, p: &PixelSample, s: u32) -> Option<Ray> {
+        let lens = self.lens.as_ref().expect("lens rays need a lens");
+        let PixelSample { x, y, sx, sy, w, h, aa } = *p;
+        let cell = |i: u32, si: u32, n: u32, jitter: f64| (i as f64 + (si as f64 + jitter) / aa as f64) / n as f64;
+        let (o, d) = if self.blur_samples > 1 || lens.has_blur() {
+            let j = lens::blur_jitter(x, y, sx, sy, s);
+            let r = lens.ray(cell(x, sx, w, j[2]), cell(y, sy, h, j[3]))?;
+            lens.blurred(r, (j[0], j[1]))
+        } else {
+            lens.ray(cell(x, sx, w, 0.5), cell(y, sy, h, 0.5))?
+        };
+        let d = d.try_normalize()?;
+        Some(Ray::new(o.as_vec3(), d.as_vec3()))
+    }
+}
+
+/// Where one sample of a pixel lies: pixel (x, y) of a w×h image, sub-sample (sx, sy) of aa×aa.
+#[derive(Clone, Copy, Debug)]
+struct PixelSample {
+    x: u32,
+    y: u32,
+    sx: u32,
+    sy: u32,
+    w: u32,
+    h: u32,
+    aa: u32,
 }
 
 /// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
-/// for that pixel without antialiasing. For tools that ask what a pixel sees.
+/// for that pixel without antialiasing. For tools that ask what a pixel sees. Where the
+/// camera's projection has no ray (a fisheye's corners), the ray along the view axis.
 pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u32, y: u32) -> Ray {
-    let gen = RayGen::new(camera, &scene.frame);
+    let gen = RayGen::new(camera, &scene.frame, &Quality { max_blur_samples: Some(1), ..Quality::default() });
+    if gen.lens.is_some() {
+        let p = PixelSample { x, y, sx: 0, sy: 0, w: width, h: height, aa: 1 };
+        if let Some(r) = gen.lens_ray(&p, 0) {
+            return r;
+        }
+        return Ray::new(gen.origin, gen.direction.normalize());
+    }
     gen.ray((x as f32 + 0.5) / width as f32, (y as f32 + 0.5) / height as f32)
 }
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
-    let gen = RayGen::new(camera, &scene.frame);
-    let use_packets = settings.packets && packet::supported(scene);
+    let gen = RayGen::new(camera, &scene.frame, &settings.quality);
+    // Cameras whose pixels may have no ray (fisheye, omnimax) trace single rays; every other
+    // projection and focal blur may use packets (`packet::trace_block` drops its frustum test
+    // when the rays do not share an origin).
+    let use_packets = settings.packets && packet::supported(scene) && gen.packets();
     render_tiles(settings, image, |t, raster| {
         let mut tracer = Tracer::new(scene, &settings.quality);
         if use_packets {
@@ -258,6 +330,17 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
     let mut sums = [[Vec3::ZERO; 8]; 8];
     // Lanes past the block's edge repeat its last pixel; their results are dropped.
     let xs = F8::from_fn(|i| (b.x + (i as u32).min(b.w - 1)) as f32);
+    if gen.lens.is_some() {
+        samples.each(aa, |sx, sy| render_block_lens(tracer, gen, b, raster, (sx, sy), &mut sums));
+        for r in 0..b.h {
+            for i in 0..b.w {
+                let c = raster.resolve(sums[r as usize][i as usize]);
+                // SAFETY: tiles partition the image and blocks partition tiles.
+                unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
+            }
+        }
+        return;
+    }
     samples.each(aa, |sx, sy| {
         let rays: [Ray8; 8] = std::array::from_fn(|r| {
             let y = b.y + (r as u32).min(b.h - 1);
@@ -288,6 +371,56 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
     }
 }
 
+/// Sub-sample (sx, sy) of a block through a lens, added to `sums`: per lane the mean of its
+/// blur rays, each built by `RayGen::lens_ray` as `render_pixel` builds it and added in the
+/// same order, so packets give single rays' bits.
+fn render_block_lens(
+    tracer: &mut Tracer,
+    gen: &RayGen,
+    b: &Block,
+    raster: Raster,
+    (sx, sy): (u32, u32),
+    sums: &mut [[Vec3; 8]; 8],
+) {
+    let Raster { w, h, aa, .. } = raster;
+    let n = gen.blur_samples;
+    let mut cell = [[Vec3::ZERO; 8]; 8];
+    for s in 0..n {
+        let rays: [Ray8; 8] = std::array::from_fn(|r| {
+            let y = b.y + (r as u32).min(b.h - 1);
+            let lane: [Ray; 8] = std::array::from_fn(|i| {
+                let x = b.x + (i as u32).min(b.w - 1);
+                let p = PixelSample { x, y, sx, sy, w, h, aa };
+                // `packets()` admits only projections with a ray for every pixel.
+                gen.lens_ray(&p, s).unwrap_or_else(|| Ray::new(gen.origin, gen.direction))
+            });
+            let v3 = |f: &dyn Fn(&Ray) -> Vec3| V3 {
+                x: F8::from_fn(|i| f(&lane[i]).x),
+                y: F8::from_fn(|i| f(&lane[i]).y),
+                z: F8::from_fn(|i| f(&lane[i]).z),
+            };
+            Ray8 { o: v3(&|r| r.origin), d: v3(&|r| r.dir), inv: v3(&|r| r.inv_dir) }
+        });
+        let colors = packet::trace_block(tracer, &rays, b.h as usize, b.w as usize);
+        let gamma = tracer.scene.gamma;
+        for r in 0..b.h as usize {
+            for i in 0..b.w as usize {
+                let c = colors[r][i];
+                if c.is_finite() {
+                    cell[r][i] += output_sample(c, gamma);
+                } else {
+                    tracer.stats.bad_samples += 1;
+                }
+            }
+        }
+    }
+    for r in 0..b.h as usize {
+        for i in 0..b.w as usize {
+            sums[r][i] += if n > 1 { cell[r][i] / n as f32 } else { cell[r][i] };
+        }
+    }
+}
+
 /// One sample as it enters the pixel average: clipped to [0, 1] as POV-Ray does before
 /// averaging, and raised to the scene's `assumed_gamma` (POV-Ray 3.7 encodes `v^gamma` as sRGB;
 /// measured: `assumed_gamma 2.2` turns a linear 13/255 into 5/255 where 1.0 gives 63/255).
@@ -312,6 +445,9 @@ fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, raster: Raste
     let Raster { w, h, aa, samples, .. } = raster;
     let gamma = tracer.scene.gamma;
     let mut sample = |sx: u32, sy: u32| {
+        if gen.lens.is_some() {
+            return lens_sample(tracer, gen, &PixelSample { x, y, sx, sy, w, h, aa });
+        }
         let u = (x as f32 + (sx as f32 + 0.5) / aa as f32) / w as f32;
         let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
         let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
@@ -335,6 +471,28 @@ fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, raster: Raste
             }
             sum / (aa * aa) as f32
         }
+    }
+}
+
+/// One sample through a lens: the mean of its blur rays' clipped colours (black where the
+/// projection has no ray, as POV-Ray leaves it).
+fn lens_sample(tracer: &mut Tracer, gen: &RayGen, p: &PixelSample) -> Vec3 {
+    let gamma = tracer.scene.gamma;
+    let n = gen.blur_samples;
+    let mut sum = Vec3::ZERO;
+    for s in 0..n {
+        let Some(ray) = gen.lens_ray(p, s) else { continue };
+        let c = tracer.trace(&ray, 1, 1.0, RayKind::Primary);
+        if c.is_finite() {
+            sum += output_sample(c, gamma);
+        } else {
+            tracer.stats.bad_samples += 1;
+        }
+    }
+    if n > 1 {
+        sum / n as f32
+    } else {
+        sum
     }
 }
 

@@ -98,7 +98,12 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // The face of each lane's hit on a mesh (`NO_HIT` elsewhere).
     let mut faces = [[NO_HIT; 8]; 8];
     let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
-    intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], Some(&frustum), &mut tracer.stats);
+    // The frustum bounds rays from one origin; orthographic, cylinder 3/4 and focal-blur
+    // packets (each lane its own origin) walk the tree without it.
+    let o = rays[0].o.lane(0);
+    let shared = rays[..rows].iter().all(|r| (0..8).all(|i| r.o.lane(i) == o));
+    let frustum = shared.then_some(&frustum);
+    intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], frustum, &mut tracer.stats);
     if !scene.csg.is_empty() || !scene.meshes.is_empty() {
         // Hits on CSG nodes become hits on their leaves, and hits on meshes hits on their
         // faces, one ray at a time (`Scene::resolve`).

@@ -13,6 +13,10 @@ use std::str::FromStr;
 use super::precision::Precision;
 use super::Quality;
 
+/// Focal-blur rays per sample under `fast` and `balanced` (`Quality::max_blur_samples`).
+pub const FAST_BLUR_SAMPLES: u32 = 4;
+pub const BALANCED_BLUR_SAMPLES: u32 = 16;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Preset {
     Fast,
@@ -60,16 +64,18 @@ impl Preset {
             // Area lights: at most 4 shadow rays per light and point (2×2), so soft-shadow scenes
             // stay interactive; `balanced` allows 16 (4×4). Measured on scenes/area_light.pov
             // (docs/tradeoff/area_light.md). The seed scene has no area light.
+            // Focal blur: 4 rays per pixel (scenes ask for 20-100), so a blurred scene stays
+            // interactive in the window (scenes/focal_blur.pov: docs/perf/cameras.md).
             Preset::Fast => PresetSettings {
                 res_scale: 0.5,
-                quality: Quality { max_area_samples: Some(4), ..full.quality },
+                quality: Quality { max_blur_samples: Some(FAST_BLUR_SAMPLES), max_area_samples: Some(4), ..full.quality },
                 ..full
             },
             // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
             Preset::Balanced => PresetSettings {
                 res_scale: 0.75,
-                quality: Quality { max_area_samples: Some(16), ..full.quality },
+                quality: Quality { max_blur_samples: Some(BALANCED_BLUR_SAMPLES), max_area_samples: Some(16), ..full.quality },
                 ..full
             },
             Preset::Full => full,

@@ -69,6 +69,11 @@ pub struct CameraDesc {
     pub look_at: Option<DVec3>,
     /// Horizontal field of view in degrees, if given.
     pub angle: Option<f64>,
+    /// The projection and focal blur (`crate::camera::lens`).
+    pub lens: crate::camera::Lens,
+    /// Whether the camera statement gave `up` or `right` (an orthographic camera without
+    /// either takes its view size from the perspective camera it replaces).
+    pub up_or_right_given: bool,
 }
 
 impl Default for CameraDesc {
@@ -81,6 +86,8 @@ impl Default for CameraDesc {
             sky: DVec3::Y,
             look_at: None,
             angle: None,
+            lens: Default::default(),
+            up_or_right_given: false,
         }
     }
 }

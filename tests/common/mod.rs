@@ -18,6 +18,7 @@ pub fn transform_scene(desc: &SceneDesc, m: DMat4) -> SceneDesc {
         sky: m.transform_vector3(c.sky),
         look_at: c.look_at.map(|p| m.transform_point3(p)),
         angle: c.angle,
+        ..*c
     };
     for l in &mut out.lights {
         l.position = m.transform_point3(l.position);

@@ -4,7 +4,8 @@
 //! with renders), so the written order of these items does not matter.
 
 use super::Lowerer;
-use crate::pov::ast::CameraItem;
+use crate::camera::{FocalBlur, Projection};
+use crate::pov::ast::{CameraItem, CameraProjection};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{CameraState, Value};
 use crate::scene::desc::CameraDesc;
@@ -18,6 +19,13 @@ impl Lowerer<'_> {
     /// Applies `items` in order, starting from a declared camera when the first item names one.
     pub(super) fn camera_state(&mut self, items: &[CameraItem]) -> PResult<CameraState> {
         let mut state = CameraState::default();
+        // What the items say about the lens, applied to `state.cam.lens` after the loop (the
+        // projection keyword should stand first, but `angle` may come before it).
+        let mut projection: Option<(CameraProjection, Span)> = None;
+        let mut angle_span = None;
+        let mut angle_v = None;
+        let mut blur = None::<FocalBlur>;
+        let mut blur_span = None;
         for item in items {
             let CameraState { cam, angle, look_at, transforms } = &mut state;
             match item {
@@ -27,18 +35,123 @@ impl Lowerer<'_> {
                 },
                 CameraItem::Location(e) => cam.location = self.vec3(e)?,
                 CameraItem::Direction(e) => cam.direction = self.vec3(e)?,
-                CameraItem::Right(e) => cam.right = self.vec3(e)?,
-                CameraItem::Up(e) => cam.up = self.vec3(e)?,
+                CameraItem::Right(e) => {
+                    cam.right = self.vec3(e)?;
+                    cam.up_or_right_given = true;
+                }
+                CameraItem::Up(e) => {
+                    cam.up = self.vec3(e)?;
+                    cam.up_or_right_given = true;
+                }
                 CameraItem::Sky(e) => cam.sky = self.vec3(e)?,
                 CameraItem::Angle(e) => {
                     let a = self.float(e)?;
-                    if !(a > 0.0 && a < 180.0) {
-                        return Err(Diag::new(e.span, "camera angle must be between 0 and 180 degrees"));
+                    if !(a > 0.0 && a.is_finite()) {
+                        return Err(Diag::new(e.span, "camera angle must be greater than 0 degrees"));
                     }
                     *angle = Some(a);
+                    angle_span = Some(e.span);
+                }
+                CameraItem::AngleV(e) => {
+                    let a = self.float(e)?;
+                    if !(a > 0.0 && a.is_finite()) {
+                        return Err(Diag::new(e.span, "camera vertical angle must be greater than 0 degrees"));
+                    }
+                    angle_v = Some(a);
                 }
                 CameraItem::LookAt(e) => *look_at = Some((self.vec3(e)?, e.span)),
                 CameraItem::Transform(t) => transforms.push(self.transform(t)?),
+                CameraItem::Projection(p, span) => projection = Some((p.clone(), *span)),
+                CameraItem::Aperture(e) => {
+                    let b = blur.get_or_insert(cam.lens.blur.unwrap_or_default());
+                    b.aperture = self.float(e)?;
+                    blur_span.get_or_insert(e.span);
+                }
+                CameraItem::BlurSamples(min, max) => {
+                    let b = blur.get_or_insert(cam.lens.blur.unwrap_or_default());
+                    let count = |l: &mut Self, e: &crate::pov::ast::Expr| -> PResult<u32> {
+                        let n = l.float(e)?;
+                        if !(0.0..=1e6).contains(&n) {
+                            return Err(Diag::new(e.span, "blur_samples must be between 0 and 1000000"));
+                        }
+                        Ok(n as u32)
+                    };
+                    b.max_samples = count(self, max)?;
+                    b.min_samples = match min {
+                        Some(m) => count(self, m)?,
+                        // POV-Ray's default minimum: 4 below 7 samples, else 7.
+                        None if b.max_samples < 7 => 4,
+                        None => 7,
+                    };
+                    blur_span.get_or_insert(max.span);
+                }
+                CameraItem::FocalPoint(e) => {
+                    blur.get_or_insert(cam.lens.blur.unwrap_or_default()).focal_point = self.vec3(e)?;
+                }
+                CameraItem::Confidence(e) => {
+                    blur.get_or_insert(cam.lens.blur.unwrap_or_default()).confidence = self.float(e)?;
+                }
+                CameraItem::Variance(e) => {
+                    blur.get_or_insert(cam.lens.blur.unwrap_or_default()).variance = self.float(e)?;
+                }
+                CameraItem::Unmodelled(what, span) => {
+                    self.warn(Diag::new(*span, format!("{what} is not modelled; the camera ignores it")));
+                }
+            }
+        }
+        let cam = &mut state.cam;
+        if let Some((p, span)) = projection {
+            cam.lens.projection = match p {
+                CameraProjection::Perspective => Projection::Perspective,
+                CameraProjection::Orthographic => Projection::Orthographic,
+                // Angles are filled in by `resolve_camera`, once `angle` is known.
+                CameraProjection::Fisheye => Projection::Fisheye { angle: 0.0 },
+                CameraProjection::UltraWideAngle => Projection::UltraWideAngle { angle: 0.0 },
+                CameraProjection::Omnimax => Projection::Omnimax,
+                CameraProjection::Panoramic => Projection::Panoramic,
+                CameraProjection::Cylinder(e) => {
+                    let k = self.float(&e)?;
+                    if !matches!(k, 1.0 | 2.0 | 3.0 | 4.0) {
+                        return Err(Diag::new(e.span, format!("cylinder camera type must be 1, 2, 3 or 4, not {k}")));
+                    }
+                    Projection::Cylinder { kind: k as u8, angle: 0.0 }
+                }
+                CameraProjection::Spherical => Projection::Spherical { h: 0.0, v: 0.0 },
+            };
+            let _ = span;
+        }
+        if let Some(v) = angle_v {
+            if let Projection::Spherical { v: sv, .. } = &mut cam.lens.projection {
+                *sv = v;
+            }
+        }
+        if let (Some(a), Some(span)) = (state.angle, angle_span) {
+            let limited = matches!(state.cam.lens.projection, Projection::Perspective | Projection::Orthographic);
+            if limited && a >= 180.0 {
+                return Err(Diag::new(
+                    span,
+                    format!(
+                        "camera angle must be between 0 and 180 degrees for a {} camera",
+                        state.cam.lens.projection.keyword()
+                    ),
+                ));
+            }
+        }
+        if let Some(b) = blur {
+            let cam = &mut state.cam;
+            cam.lens.blur = (b.aperture > 0.0 && b.max_samples > 0).then_some(b);
+            if b.aperture > 0.0 && b.max_samples == 0 {
+                self.warn(Diag::new(
+                    blur_span.expect("blur items have spans"),
+                    "focal blur needs `blur_samples` as well as `aperture`; no blur",
+                ));
+            }
+            if cam.lens.blur.is_some() && !(b.confidence > 0.0 && b.confidence < 1.0 && b.variance > 0.0) {
+                self.warn(Diag::new(
+                    blur_span.expect("blur items have spans"),
+                    "focal blur `confidence` must be in (0, 1) and `variance` positive (both parsed, not \
+                     modelled: strahl always traces blur_samples rays)",
+                ));
             }
         }
         Ok(state)
@@ -52,11 +165,44 @@ impl Lowerer<'_> {
                 return Err(Diag::new(span, format!("camera {name} vector has zero length")));
             }
         }
-        if let Some(a) = angle {
+        // The angle the projection reads: the scene's, else the perspective field of view
+        // the vectors give (POV-Ray's rule, checked by rendering).
+        let fov =
+            angle.unwrap_or_else(|| 2.0 * (0.5 * cam.right.length() / cam.direction.length()).atan().to_degrees());
+        match &mut cam.lens.projection {
+            Projection::Fisheye { angle }
+            | Projection::UltraWideAngle { angle }
+            | Projection::Cylinder { angle, .. } => *angle = fov,
+            Projection::Spherical { h, v } => {
+                *h = fov;
+                if *v == 0.0 {
+                    *v = fov / 2.0;
+                }
+            }
+            _ => {}
+        }
+        let perspective = cam.lens.projection == Projection::Perspective;
+        if let (Some(a), true) = (angle, perspective) {
             // Horizontal field of view: the image plane spans |right| at distance |direction|.
             let len = 0.5 * cam.right.length() / (a.to_radians() / 2.0).tan();
             cam.direction = cam.direction.normalize() * len;
-            cam.angle = Some(a);
+        }
+        if angle.is_some() {
+            cam.angle = angle;
+        }
+        if cam.lens.projection == Projection::Orthographic && (angle.is_some() || !cam.up_or_right_given) {
+            // POV-Ray's second orthographic mode: the view the perspective camera it replaces
+            // has at the distance to `look_at` (or one direction length ahead without one).
+            let distance = look_at.map_or(cam.direction.length(), |(p, _)| (p - cam.location).length());
+            let width = match angle {
+                Some(a) => 2.0 * distance * (a.to_radians() / 2.0).tan(),
+                None => cam.right.length() * distance / cam.direction.length(),
+            };
+            let k = width / cam.right.length();
+            if k.is_finite() && k > 0.0 {
+                cam.right *= k;
+                cam.up *= k;
+            }
         }
         if let Some((target, target_span)) = look_at {
             let to = target - cam.location;

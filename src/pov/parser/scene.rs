@@ -7,7 +7,7 @@ use super::blob::BLOB_ITEMS;
 use super::julia::JULIA_ITEMS;
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
-    AtmosphereKind, CameraItem, Clip, CsgOp, GlobalItem, Light, LightItem, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
+    AtmosphereKind, CameraItem, CameraProjection, Clip, CsgOp, GlobalItem, Light, LightItem, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
     TransformKind,
 };
 use crate::pov::lexer::TokenKind;
@@ -63,8 +63,36 @@ const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
-const CAMERA: &[&str] =
-    &["location", "look_at", "angle", "right", "up", "direction", "sky", "perspective", "rotate", "translate"];
+const CAMERA: &[&str] = &[
+    "location",
+    "look_at",
+    "angle",
+    "right",
+    "up",
+    "direction",
+    "sky",
+    "perspective",
+    "orthographic",
+    "fisheye",
+    "ultra_wide_angle",
+    "omnimax",
+    "panoramic",
+    "cylinder",
+    "spherical",
+    "aperture",
+    "blur_samples",
+    "focal_point",
+    "confidence",
+    "variance",
+    "normal",
+    "bokeh",
+    "rotate",
+    "scale",
+    "translate",
+];
+/// Camera items that only the first statement of a camera may give (not after a declared one).
+const CAMERA_TYPES: &[&str] =
+    &["perspective", "orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic", "cylinder", "spherical"];
 const LIGHT: &[&str] = &[
     "color",
     "colour",
@@ -282,30 +310,87 @@ impl Parser<'_, '_> {
         while !self.at_block_end() {
             let item = match self.peek_ident().as_deref() {
                 // POV-Ray 3.7 accepts only transforms after a declared camera (checked by parsing).
-                Some(word) if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "translate") => {
+                Some(word) if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "scale" | "translate") => {
                     return Err(Diag::new(
                         self.peek().span,
                         format!(
-                            "`{word}` cannot follow a declared camera: only rotate and translate may (as in POV-Ray)"
+                            "`{word}` cannot follow a declared camera: only rotate, scale and translate may (as in POV-Ray)"
                         ),
                     ));
                 }
-                Some("perspective") => {
-                    // The default (and only) projection strahl supports.
+                Some(word) if CAMERA_TYPES.contains(&word) => {
+                    let span = self.bump().span;
+                    let projection = match word {
+                        "perspective" => CameraProjection::Perspective,
+                        "orthographic" => CameraProjection::Orthographic,
+                        "fisheye" => CameraProjection::Fisheye,
+                        "ultra_wide_angle" => CameraProjection::UltraWideAngle,
+                        "omnimax" => CameraProjection::Omnimax,
+                        "panoramic" => CameraProjection::Panoramic,
+                        "cylinder" => CameraProjection::Cylinder(self.expr()?),
+                        _ => CameraProjection::Spherical,
+                    };
+                    CameraItem::Projection(projection, span)
+                }
+                Some("mesh_camera") => {
+                    return Err(Diag::unmodelled(
+                        self.peek().span,
+                        "`mesh_camera` is not supported (strahl's cameras: perspective, orthographic, fisheye, \
+                         ultra_wide_angle, omnimax, panoramic, cylinder 1-4, spherical)",
+                    ));
+                }
+                Some(word @ ("normal" | "bokeh")) => {
+                    let span = self.peek().span;
+                    if word == "normal" {
+                        self.normal()?;
+                        CameraItem::Unmodelled("camera `normal` (perturbed eye rays)", span)
+                    } else {
+                        let kw = self.bump().span;
+                        self.open_block("bokeh", kw)?;
+                        if self.peek_ident().as_deref() == Some("pigment") {
+                            self.pigment()?;
+                        }
+                        self.close_block("bokeh", kw)?;
+                        CameraItem::Unmodelled("focal blur `bokeh` (the lens samples a uniform disc)", span)
+                    }
+                }
+                Some("rotate" | "scale" | "translate") => CameraItem::Transform(self.transform_item()?),
+                Some("blur_samples") => {
                     self.bump();
+                    let first = self.expr()?;
+                    if self.eat_punct(',') {
+                        CameraItem::BlurSamples(Some(first), self.expr()?)
+                    } else {
+                        CameraItem::BlurSamples(None, first)
+                    }
+                }
+                Some("angle") => {
+                    self.bump();
+                    let h = self.expr()?;
+                    items.push(CameraItem::Angle(h));
+                    // `angle H V` (spherical): the vertical angle, after a comma or a space.
+                    let comma = self.eat_punct(',');
+                    if comma || self.starts_expr(CAMERA) {
+                        items.push(CameraItem::AngleV(self.expr()?));
+                    }
                     continue;
                 }
-                Some("rotate" | "translate") => CameraItem::Transform(self.transform_item()?),
-                Some(word @ ("location" | "look_at" | "angle" | "right" | "up" | "direction" | "sky")) => {
+                Some(
+                    word @ ("location" | "look_at" | "right" | "up" | "direction" | "sky" | "aperture" | "focal_point"
+                    | "confidence" | "variance"),
+                ) => {
                     self.bump();
                     let e = self.expr()?;
                     match word {
                         "location" => CameraItem::Location(e),
                         "look_at" => CameraItem::LookAt(e),
-                        "angle" => CameraItem::Angle(e),
                         "right" => CameraItem::Right(e),
                         "up" => CameraItem::Up(e),
                         "direction" => CameraItem::Direction(e),
+                        "aperture" => CameraItem::Aperture(e),
+                        "focal_point" => CameraItem::FocalPoint(e),
+                        "confidence" => CameraItem::Confidence(e),
+                        "variance" => CameraItem::Variance(e),
                         _ => CameraItem::Sky(e),
                     }
                 }

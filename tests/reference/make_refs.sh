@@ -32,3 +32,6 @@ done
 for s in meshes heightfields; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
 done
+for s in patterns_simple layered; do
+    render "$here/scenes/$s.pov" "$s"
+done

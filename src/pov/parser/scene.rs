@@ -302,6 +302,12 @@ impl Parser<'_, '_> {
                     self.bump();
                     GlobalItem::AmbientLight(self.color()?)
                 }
+                Some("noise_generator") => {
+                    // 1, 2 or 3: read; strahl has one noise (shading::noise).
+                    self.bump();
+                    self.expr()?;
+                    continue;
+                }
                 _ => return Err(self.unknown_in("global_settings", GLOBAL)),
             };
             items.push(item);

@@ -189,11 +189,23 @@ impl Parser<'_, '_> {
     pub(super) fn pigment(&mut self) -> PResult<Pigment> {
         let kw = self.bump().span;
         self.open_block("pigment", kw)?;
+        let items = self.pigment_items(false)?;
+        let end = self.close_block("pigment", kw)?;
+        Ok(Pigment { items, span: kw.to(end) })
+    }
+
+    /// The end of a block body, or of a map entry's body (`]`) when `in_entry`.
+    fn at_body_end(&mut self, in_entry: bool) -> bool {
+        self.at_block_end() || in_entry && self.is_punct(']')
+    }
+
+    /// A pigment's items, up to its `}` (or the `]` of a `pigment_map` entry).
+    fn pigment_items(&mut self, in_entry: bool) -> PResult<Vec<PigmentItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(PIGMENT)? {
             items.push(PigmentItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some(w) if matches!(w, "color" | "colour") || color_key(w).is_some() => {
                     PigmentItem::Color(self.color()?)
@@ -254,8 +266,7 @@ impl Parser<'_, '_> {
             };
             items.push(item);
         }
-        let end = self.close_block("pigment", kw)?;
-        Ok(Pigment { items, span: kw.to(end) })
+        Ok(items)
     }
 
     /// `color_map { [v C] ... }`, `color_map { [a, b color C1 color C2] ... }` (POV-Ray's older
@@ -408,11 +419,18 @@ impl Parser<'_, '_> {
     fn texture_one(&mut self) -> PResult<Texture> {
         let kw = self.bump().span;
         self.open_block("texture", kw)?;
+        let items = self.texture_items(false)?;
+        let end = self.close_block("texture", kw)?;
+        Ok(Texture { items, span: kw.to(end) })
+    }
+
+    /// A texture's items, up to its `}` (or the `]` of a `texture_map` entry).
+    fn texture_items(&mut self, in_entry: bool) -> PResult<Vec<TextureItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(TEXTURE)? {
             items.push(TextureItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some("pigment") => TextureItem::Pigment(self.pigment()?),
                 Some("normal") => TextureItem::Normal(self.normal()?),
@@ -430,8 +448,7 @@ impl Parser<'_, '_> {
             };
             items.push(item);
         }
-        let end = self.close_block("texture", kw)?;
-        Ok(Texture { items, span: kw.to(end) })
+        Ok(items)
     }
 
     /// `texture { }` and the layers written right after it (`texture {A} texture {B}`: B over A).
@@ -471,7 +488,8 @@ impl Parser<'_, '_> {
                             // A list of normals: read, the pattern's own gradient is used.
                             self.normal()?;
                         }
-                        _ if context == "pigment" && self.starts_expr(stop) && !self.starts_mod() => {
+                        // `PIGMENT[6..]`: the pigment keywords less the colour words.
+                        _ if context == "pigment" && self.starts_expr(&PIGMENT[6..]) && !self.starts_mod() => {
                             pat.colors.push(self.color()?)
                         }
                         _ => break,
@@ -625,10 +643,7 @@ impl Parser<'_, '_> {
             self.eat_punct(',');
             let inner = match self.peek_ident().as_deref() {
                 Some(w) if w == T::KEYWORD => item(self)?,
-                _ => {
-                    let e = self.maybe_bare_name(Self::expr)?;
-                    T::from_name(e, open)
-                }
+                _ => T::body(self, open)?,
             };
             self.expect_punct(']', "to close the map entry")?;
             out.push((value, inner));
@@ -662,21 +677,22 @@ impl Parser<'_, '_> {
 }
 
 /// What a map entry holds when it names a declared item instead of writing a block.
-pub(super) trait FromName {
+pub(super) trait FromName: Sized {
     const KEYWORD: &'static str;
-    fn from_name(e: crate::pov::ast::Expr, span: crate::pov::source::Span) -> Self;
+    /// The entry's body written without its block (`[0.5 rgb 1]`, `[0 T_Stone1]`).
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self>;
 }
 
 impl FromName for Pigment {
     const KEYWORD: &'static str = "pigment";
-    fn from_name(e: crate::pov::ast::Expr, span: crate::pov::source::Span) -> Self {
-        Pigment { items: vec![PigmentItem::Base(e)], span }
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Pigment { items: p.pigment_items(true)?, span })
     }
 }
 
 impl FromName for Texture {
     const KEYWORD: &'static str = "texture";
-    fn from_name(e: crate::pov::ast::Expr, span: crate::pov::source::Span) -> Self {
-        Texture { items: vec![TextureItem::Base(e)], span }
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Texture { items: p.texture_items(true)?, span })
     }
 }

@@ -3,7 +3,7 @@
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
-camera { orthographic location <0, 0, -10> look_at <0, 0, 0> right x * 8 up y * 6 }
+camera { location <0, 0, -20> look_at <0, 0, 0> angle 22.62 }
 
 #declare Map = color_map { [0 rgb <0.1, 0.2, 0.8>] [0.5 rgb <1, 0.9, 0.2>] [1 rgb <0.8, 0.1, 0.1>] }
 #declare F = finish { ambient 1 diffuse 0 }

@@ -98,7 +98,7 @@ pub fn checker<L: Lane>(p: V3<L>) -> L {
 }
 
 /// `brick`: 0 in the mortar, 1 in a brick. Courses of `size.y` along y; every other course is
-/// shifted by half a brick along x and z; the mortar (`mortar` wide) runs along the lower
+/// shifted by half a brick along x and z; the mortar (`mortar` wide) runs along the upper
 /// faces of every brick.
 #[inline(always)]
 pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
@@ -113,8 +113,10 @@ pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
         }
         let fx = x.rem_euclid(size.x);
         let fz = z.rem_euclid(size.z);
-        let m = mortar * 0.5;
-        let in_mortar = y < m || y > size.y - m || fx < m || fx > size.x - m || fz < m || fz > size.z - m;
+        // The mortar runs along the upper faces of each brick (POV-Ray 3.7 shows bricks, not
+        // mortar, on the face z = 0).
+        let m = mortar;
+        let in_mortar = y > size.y - m || fx > size.x - m || fz > size.z - m;
         if in_mortar {
             0.0
         } else {
@@ -123,7 +125,7 @@ pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
     })
 }
 
-/// `hexagon`: a tiling of the x-z plane by hexagons one unit across their flats, coloured
+/// `hexagon`: a tiling of the x-z plane by hexagons of unit side (√3 across the flats), coloured
 /// 0, 1, 2 so that no two neighbours match; a hexagon is centred on the origin with colour 0.
 #[inline(always)]
 pub fn hexagon<L: Lane>(p: V3<L>) -> L {
@@ -132,7 +134,7 @@ pub fn hexagon<L: Lane>(p: V3<L>) -> L {
 
 fn hexagon_one(x: f32, z: f32) -> f32 {
     // Axial coordinates of the nearest hexagon centre (pointy sides on ±x).
-    let size = 1.0 / 3f32.sqrt(); // centre to corner, for a flat-to-flat width of 1
+    let size = 1.0; // centre to corner (POV-Ray 3.7: about √3 between rows of centres)
     let q = (2.0 / 3.0 * x) / size;
     let r = (-1.0 / 3.0 * x + 3f32.sqrt() / 3.0 * z) / size;
     let s = -q - r;
@@ -216,10 +218,11 @@ mod tests {
     fn brick_mortar_and_courses() {
         let b = |p| one(|q| brick(q, Vec3::new(8.0, 3.0, 4.5), 0.5), p);
         assert_eq!(b([4.0, 1.5, 2.0]), 1.0);
-        assert_eq!(b([0.1, 1.5, 2.0]), 0.0, "vertical joint");
-        assert_eq!(b([4.0, 0.1, 2.0]), 0.0, "bed joint");
-        // The next course is shifted by half a brick: its joint is at x = 4.
-        assert_eq!(b([4.0, 4.5, 1.0]), 0.0);
+        assert_eq!(b([0.0, 1.5, 0.0]), 1.0, "the corner at the origin is brick");
+        assert_eq!(b([7.9, 1.5, 2.0]), 0.0, "vertical joint");
+        assert_eq!(b([4.0, 2.9, 2.0]), 0.0, "bed joint");
+        // The next course is shifted by half a brick: its joint is at x = 4 − mortar.
+        assert_eq!(b([3.7, 4.5, 1.0]), 0.0);
         assert_eq!(b([0.5, 4.5, 1.0]), 1.0);
     }
 
@@ -228,10 +231,10 @@ mod tests {
         let h = |x, z| hexagon_one(x, z);
         assert_eq!(h(0.0, 0.0), 0.0);
         let c = h(0.0, 0.0);
-        // The six neighbours one unit away (across the flats) all differ from the centre.
+        // The six neighbours √3 away (across the flats) all differ from the centre.
         for k in 0..6 {
             let a = (k as f32 * 60.0 + 30.0).to_radians();
-            assert_ne!(h(a.cos(), a.sin()), c, "neighbour {k}");
+            assert_ne!(h(a.cos() * 3f32.sqrt(), a.sin() * 3f32.sqrt()), c, "neighbour {k}");
         }
         for x in -20..20 {
             for z in -20..20 {

@@ -853,7 +853,7 @@ fn patterns_parse_and_unknown_ones_are_located_errors() {
     assert!(matches!(&s.objects[5].texture.pigment.pattern, PigmentPattern::PigmentMap(_, e) if e.len() == 2));
     // An unknown word where a pattern could be is a located error naming it.
     let (l, c, m) = err("pattern_unknown", "sphere { 0, 1\n pigment { gradient x foo_wave } }");
-    assert_eq!((l, c), (2, 22), "{m}");
+    assert_eq!((l, c), (2, 23), "{m}");
     assert!(m.contains("foo_wave"), "{m}");
     let (l, c, m) = err("pattern_arg", "sphere { 0, 1 pigment { gradient 0 } }");
     assert_eq!((l, c), (1, 25), "{m}");

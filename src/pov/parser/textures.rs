@@ -416,7 +416,8 @@ impl Parser<'_, '_> {
         Ok(Finish { items, span: kw.to(end) })
     }
 
-    fn texture_one(&mut self) -> PResult<Texture> {
+    /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.
+    pub(super) fn texture_one(&mut self) -> PResult<Texture> {
         let kw = self.bump().span;
         self.open_block("texture", kw)?;
         let items = self.texture_items(false)?;

@@ -91,7 +91,14 @@ pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>,
 }
 
 #[inline(never)]
-fn pattern_normal<L: Lane>(nrm: &NormalF32, pat: &Pattern32, amount: f32, p: V3<L>, n: V3<L>, q: PatternQuality) -> V3<L> {
+fn pattern_normal<L: Lane>(
+    nrm: &NormalF32,
+    pat: &Pattern32,
+    amount: f32,
+    p: V3<L>,
+    n: V3<L>,
+    q: PatternQuality,
+) -> V3<L> {
     let at = |d: Vec3| pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
     let v0 = at(Vec3::ZERO);
     let inv = L::splat(1.0 / NORMAL_DELTA);

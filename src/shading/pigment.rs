@@ -346,7 +346,11 @@ fn layer_over<L: Lane>(top: RgbftLanes<L>, below: RgbftLanes<L>) -> RgbftLanes<L
     let one = L::splat(1.0);
     let pass = top.filter + top.transmit;
     let opaque = (one - pass).max(L::splat(0.0));
-    let tint = V3 { x: top.transmit + top.filter * top.rgb.x, y: top.transmit + top.filter * top.rgb.y, z: top.transmit + top.filter * top.rgb.z };
+    let tint = V3 {
+        x: top.transmit + top.filter * top.rgb.x,
+        y: top.transmit + top.filter * top.rgb.y,
+        z: top.transmit + top.filter * top.rgb.z,
+    };
     RgbftLanes {
         rgb: top.rgb.scale(opaque).add(below.rgb.mul(tint)),
         filter: below.filter * pass,

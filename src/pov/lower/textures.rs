@@ -8,11 +8,11 @@ use crate::pov::ast::{
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use glam::DVec3;
 use crate::scene::desc::{
     Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
     PigmentPattern, TextureDesc, Transform, Turbulence, Warp, Wave,
 };
+use glam::DVec3;
 
 /// POV-Ray's `bumps` amount when none is written.
 const DEFAULT_BUMPS: f64 = 0.5;
@@ -129,7 +129,10 @@ impl Lowerer<'_> {
                     }
                     if let Some(n) = kind.list_len() {
                         if list.len() > n {
-                            return Err(Diag::new(pa.span, format!("{} takes at most {n} colours or pigments", pa.name)));
+                            return Err(Diag::new(
+                                pa.span,
+                                format!("{} takes at most {n} colours or pigments", pa.name),
+                            ));
                         }
                         let defaults = default_list_colors(&kind);
                         while list.len() < n {
@@ -413,7 +416,8 @@ impl Lowerer<'_> {
                 }
             }
         }
-        let pattern = pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (e.g. bumps, dents, gradient)"))?;
+        let pattern =
+            pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (e.g. bumps, dents, gradient)"))?;
         Ok(NormalDesc { pattern, turbulence: turb.finish(), transform })
     }
 

@@ -471,7 +471,8 @@ impl Parser<'_, '_> {
             TokenKind::Ident(w) => w.to_string(),
             _ => unreachable!("pattern() is called on a pattern keyword"),
         };
-        let mut pat = PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
+        let mut pat =
+            PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
         match pat.name.as_str() {
             "gradient" => pat.arg = Some(self.expr()?),
             "spiral1" | "spiral2" | "mandel" | "quilted" if self.starts_expr(stop) && !self.starts_mod() => {

@@ -7,7 +7,8 @@ use crate::lanes::{Lane, V3};
 
 /// An integer hash of a lattice cell (the `mix32` rounds of `shading::noise`).
 fn hash3(x: i32, y: i32, z: i32, salt: u32) -> u32 {
-    let mut h = (x as u32).wrapping_mul(0x8da6_b343) ^ (y as u32).wrapping_mul(0xd816_3841)
+    let mut h = (x as u32).wrapping_mul(0x8da6_b343)
+        ^ (y as u32).wrapping_mul(0xd816_3841)
         ^ (z as u32).wrapping_mul(0xcb1a_b31f)
         ^ salt;
     h ^= h >> 16;

@@ -84,12 +84,9 @@ impl Pattern32 {
             PatternKind::Granite => Kind32::Granite,
             PatternKind::Marble => Kind32::Marble,
             PatternKind::Agate { turb } => Kind32::Agate(turb as f32),
-            PatternKind::Crackle { form, metric, offset, solid } => Kind32::Crackle(Crackle {
-                form: form.as_vec3(),
-                metric: metric as f32,
-                offset: offset as f32,
-                solid,
-            }),
+            PatternKind::Crackle { form, metric, offset, solid } => {
+                Kind32::Crackle(Crackle { form: form.as_vec3(), metric: metric as f32, offset: offset as f32, solid })
+            }
             PatternKind::Cells => Kind32::Cells,
             PatternKind::Wrinkles => Kind32::Wrinkles,
             PatternKind::Dents => Kind32::Dents,
@@ -330,12 +327,19 @@ mod tests {
     fn noise_patterns_mean_and_spread() {
         // POV-Ray 3.7 over a 8×6 plane: bozo 0.525 ± 0.131, wrinkles 0.528 ± 0.142,
         // dents 0.172 ± 0.120.
-        for (kind, mean, std) in
-            [(PatternKind::Bozo, 0.525, 0.131), (PatternKind::Wrinkles, 0.528, 0.142), (PatternKind::Dents, 0.172, 0.12)]
-        {
+        for (kind, mean, std) in [
+            (PatternKind::Bozo, 0.525, 0.131),
+            (PatternKind::Wrinkles, 0.528, 0.142),
+            (PatternKind::Dents, 0.172, 0.12),
+        ] {
             let pat = Pattern32::from_desc(&PatternDesc::new(kind));
             let v: Vec<f32> = (0..20_000)
-                .map(|k| pat.value_lanes(V3::<f32>::from_vec3(Vec3::new(k as f32 * 0.173, 0.37, (k / 100) as f32 * 0.291)), None))
+                .map(|k| {
+                    pat.value_lanes(
+                        V3::<f32>::from_vec3(Vec3::new(k as f32 * 0.173, 0.37, (k / 100) as f32 * 0.291)),
+                        None,
+                    )
+                })
                 .collect();
             let m = v.iter().sum::<f32>() / v.len() as f32;
             let s = (v.iter().map(|x| (x - m) * (x - m)).sum::<f32>() / v.len() as f32).sqrt();

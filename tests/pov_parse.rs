@@ -786,49 +786,76 @@ fn default_errors_are_located() {
 }
 
 #[test]
-fn layered_textures_are_refused_at_the_second_texture() {
-    // POV-Ray composites `texture {A} texture {B}` (B over A, by B's filter and transmit);
-    // strahl does not yet, and says so rather than render B alone.
+fn layered_textures_composite_and_a_texture_after_a_pigment_is_refused() {
+    use strahl::scene::desc::PigmentPattern;
+    // `texture {A} texture {B}`: B over A (by B's filter and transmit), in objects, CSG,
+    // declarations and `#default`.
+    for (name, text) in [
+        ("layer_object", "sphere { 0, 1 texture { pigment { rgb 1 } }\n  texture { pigment { rgbt 1 } } }"),
+        ("layer_union", "union { sphere { 0, 1 } texture { pigment { rgb 1 } }\ntexture { pigment { rgbt 1 } } }"),
+        (
+            "layer_declare",
+            "#declare T = texture { pigment { rgb 1 } }\n  texture { pigment { rgbt 1 } }\nsphere { 0, 1 texture { T } }",
+        ),
+        (
+            "layer_default",
+            "#default { texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } } }\nsphere { 0, 1 }",
+        ),
+    ] {
+        let s = load_text(name, text).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        let PigmentPattern::Layered(layers) = &s.objects[0].texture.pigment.pattern else {
+            panic!("{name}: {:?}", s.objects[0].texture.pigment.pattern)
+        };
+        assert_eq!(layers.len(), 2, "{name}");
+    }
+    // A texture after the object's own pigment, or on an object that has one, is refused.
     for (name, text, at) in [
-        ("layer_object", "sphere { 0, 1 texture { pigment { rgb 1 } }\n  texture { pigment { rgb 0 } } }", (2, 3)),
         ("layer_pigment", "sphere { 0, 1 pigment { rgb 1 }\n  texture { pigment { rgb 0 } } }", (2, 3)),
         (
             "layer_ref",
             "#declare S = sphere { 0, 1 texture { pigment { rgb 1 } } }\nobject { S texture { pigment { rgb 0 } } }",
             (2, 12),
         ),
-        (
-            "layer_union",
-            "union { sphere { 0, 1 } texture { pigment { rgb 1 } }\ntexture { pigment { rgb 0 } } }",
-            (2, 1),
-        ),
-        ("layer_default", "#default { texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }", (1, 42)),
     ] {
         let (l, c, m) = err(name, text);
         assert_eq!((l, c), at, "{name}: {m}");
         assert!(m.starts_with("layered textures"), "{name}: {m}");
     }
-    // A declaration is kept as "declared, not modelled" (include files declare layered
-    // textures a scene may never use); using it is the error, naming both places.
-    let text =
-        "#declare T = texture { pigment { rgb 1 } }\n  texture { pigment { rgb 0 } }\nsphere { 0, 1 texture { T } }";
-    let (l, c, m) = err("layer_declare", text);
-    assert_eq!((l, c), (3, 25), "{m}");
-    assert!(m.starts_with("this declaration cannot be used: layered textures"), "{m}");
-    assert!(m.contains("note: declared with it here: "), "{m}");
-    assert!(m.contains("scene.pov:2:3"), "{m}");
-    assert!(load_text(
-        "layer_declare_unused",
-        "#declare T = texture { pigment { rgb 1 } }\n  texture { pigment { rgb 0 } }\nsphere { 0, 1 }"
-    )
-    .is_ok());
-    // A union's texture over a child's own is not layering: the child keeps its own.
+}
+
+#[test]
+fn patterns_parse_and_unknown_ones_are_located_errors() {
+    use strahl::scene::desc::{NormalPattern, PatternKind, PigmentPattern, Wave};
     let s = load_text(
-        "layer_union_child",
-        "union { sphere { 0, 1 texture { pigment { rgb 1 } } } texture { pigment { rgb 0 } } }",
+        "patterns_ok",
+        "sphere { 0, 1 pigment { gradient y triangle_wave frequency 2 color_map { [0 rgb 0] [1 rgb 1] } } }\n\
+         sphere { 0, 1 pigment { brick rgb 1 rgb 0 brick_size <1, 0.5, 1> mortar 0.1 } }\n\
+         sphere { 0, 1 pigment { checker pigment { rgb 1 } pigment { granite } } }\n\
+         sphere { 0, 1 pigment { bozo pigment_map { [0 rgb 1] [1 checker rgb 0 rgb 1] } warp { repeat x } } }\n\
+         sphere { 0, 1 normal { dents 0.7 scale 0.2 } }\n\
+         sphere { 0, 1 texture { crackle texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }",
     )
     .unwrap();
-    assert_eq!(solid(&s, 0), DVec3::ONE);
+    let PigmentPattern::Mapped(pd, _) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert_eq!((pd.kind, pd.wave, pd.frequency), (PatternKind::Gradient(DVec3::Y), Wave::Triangle, 2.0));
+    let PigmentPattern::List(pd, list) = &s.objects[1].texture.pigment.pattern else { panic!() };
+    assert_eq!(pd.kind, PatternKind::Brick { size: DVec3::new(1.0, 0.5, 1.0), mortar: 0.1 });
+    assert_eq!(list.len(), 2);
+    assert!(matches!(&s.objects[2].texture.pigment.pattern, PigmentPattern::List(_, l) if l.len() == 2));
+    let PigmentPattern::PigmentMap(pd, entries) = &s.objects[3].texture.pigment.pattern else { panic!() };
+    assert_eq!((pd.warps.len(), entries.len()), (1, 2));
+    let Some(NormalPattern::Pattern(pd, a)) = s.objects[4].texture.normal.as_ref().map(|n| n.pattern.clone()) else {
+        panic!()
+    };
+    assert_eq!((pd.kind, a), (PatternKind::Dents, 0.7));
+    assert!(matches!(&s.objects[5].texture.pigment.pattern, PigmentPattern::PigmentMap(_, e) if e.len() == 2));
+    // An unknown word where a pattern could be is a located error naming it.
+    let (l, c, m) = err("pattern_unknown", "sphere { 0, 1\n pigment { gradient x foo_wave } }");
+    assert_eq!((l, c), (2, 23), "{m}");
+    assert!(m.contains("foo_wave"), "{m}");
+    let (l, c, m) = err("pattern_arg", "sphere { 0, 1 pigment { gradient 0 } }");
+    assert_eq!((l, c), (1, 25), "{m}");
+    assert!(m.contains("gradient"), "{m}");
 }
 
 #[test]

@@ -95,6 +95,22 @@ fn finishes_match_povray() {
     check_psnr("finishes", &scene("finishes"), 35.0);
 }
 
+/// Exact patterns of the kernel layer (gradient, onion, radial, brick, hexagon, checker of
+/// pigments, boxed, spherical, cylindrical, planar, pigment_map) with colour maps and wave
+/// types, seen head-on with ambient light only.
+#[test]
+#[ignore = "13.5 dB so far: the hexagon tile (orientation or colour order) and the pigment_map tile differ; the other ten tiles match"]
+fn patterns_simple_match_povray() {
+    check_psnr("patterns_simple", &scene("patterns_simple"), 35.0);
+}
+
+/// Layered textures: upper layers composited over lower ones by their filter and transmit.
+#[test]
+#[ignore = "22.8 dB so far: the sphere's filtered layer composites differently from POV-Ray's; plane and box match"]
+fn layered_textures_match_povray() {
+    check_psnr("layered", &scene("layered"), 30.0);
+}
+
 /// Meshes: a declared `mesh` used twice (one carved by CSG through its `inside_vector`), a
 /// smooth `mesh` of smooth_triangles made by loops, a transformed `mesh2` with normal indices,
 /// and a lone `smooth_triangle`.

@@ -313,6 +313,45 @@ pub enum PigmentItem {
     ColorMap(ColorMap),
     Turb(Turb),
     Transform(TransformItem),
+    /// Any other pattern (`gradient x`, `brick C1 C2`, `checker pigment {..} pigment {..}`).
+    Pattern(PatternAst),
+    Mod(PatternMod),
+    /// `pigment_map { [v pigment {..}] ... }`.
+    PigmentMap(Vec<(Expr, Pigment)>, Span),
+}
+
+/// A pattern keyword with its argument and, for list patterns, what each cell shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternAst {
+    pub name: String,
+    /// `gradient V`, `spiral1 N`, `mandel N`.
+    pub arg: Option<Expr>,
+    pub colors: Vec<Expr>,
+    pub pigments: Vec<Pigment>,
+    pub textures: Vec<Texture>,
+    pub span: Span,
+}
+
+/// A modifier of a pattern's value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PatternMod {
+    /// `ramp_wave`, `triangle_wave`, ..., `poly_wave [E]`.
+    Wave(String, Option<Expr>),
+    /// `frequency`, `phase`, `brick_size`, `mortar`, `agate_turb`, `form`, `metric`, `offset`,
+    /// `control0`, `control1`, `noise_generator`.
+    Set(String, Expr),
+    /// `solid` (crackle).
+    Flag(String, Span),
+    Warp(WarpAst),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum WarpAst {
+    Turbulence(Vec<Turb>),
+    Repeat { dir: Expr, offset: Option<Expr>, flip: Option<Expr> },
+    BlackHole { center: Expr, radius: Expr, strength: Option<Expr>, falloff: Option<Expr>, inverse: bool },
+    /// A warp read but not modelled (mapping warps), with its keyword.
+    Other(String, Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -329,6 +368,12 @@ pub enum NormalItem {
     Bumps(Option<Expr>, Span),
     Turb(Turb),
     Transform(TransformItem),
+    /// Any other pattern with its optional amount.
+    Pattern(PatternAst, Option<Expr>),
+    Mod(PatternMod),
+    BumpSize(Expr),
+    /// `slope_map`, `normal_map` and the like: read, not modelled.
+    Ignored(String, Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -391,6 +436,12 @@ pub enum TextureItem {
     Normal(Normal),
     Finish(Finish),
     Transform(TransformItem),
+    /// `texture { checker texture {..} texture {..} }` or a pattern for `texture_map`.
+    Pattern(PatternAst),
+    Mod(PatternMod),
+    TextureMap(Vec<(Expr, Texture)>, Span),
+    /// A further `texture { }` written right after this one: a layer over it.
+    Layer(Box<Texture>),
 }
 
 #[derive(Clone, Debug, PartialEq)]

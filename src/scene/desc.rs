@@ -231,6 +231,126 @@ pub enum PigmentPattern {
     Checker(Color, Color),
     /// Rings around the pattern-space z axis, looked up in the map.
     Wood(Vec<ColorMapEntry>),
+    /// Any other pattern's value looked up in a colour map.
+    Mapped(PatternDesc, Vec<ColorMapEntry>),
+    /// `pigment_map`: the pattern's value blends the pigments of the two entries around it
+    /// (sorted by value).
+    PigmentMap(PatternDesc, Vec<(f64, PigmentDesc)>),
+    /// A list pattern (`checker`, `hexagon`, `brick`) picking one pigment per cell.
+    List(PatternDesc, Vec<PigmentDesc>),
+    /// Layered textures' pigments, bottom first: each upper layer shows what is below it
+    /// through its filter and transmit.
+    Layered(Vec<PigmentDesc>),
+}
+
+/// The pattern functions (`shading::patterns`), with their own parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PatternKind {
+    /// `gradient V`: V is normalised.
+    Gradient(DVec3),
+    /// `bozo`, `spotted` and `bumps` as a pigment: noise.
+    Bozo,
+    Granite,
+    Marble,
+    Agate { turb: f64 },
+    Crackle { form: DVec3, metric: f64, offset: f64, solid: bool },
+    Cells,
+    Wrinkles,
+    Dents,
+    Leopard,
+    Ripples,
+    Waves,
+    Radial,
+    Onion,
+    Spiral1(f64),
+    Spiral2(f64),
+    /// Values 0 (mortar) and 1 (brick).
+    Brick { size: DVec3, mortar: f64 },
+    /// Values 0, 1, 2.
+    Hexagon,
+    /// Values 0, 1.
+    Checker,
+    Boxed,
+    Cylindrical,
+    Spherical,
+    Planar,
+    Quilted { c0: f64, c1: f64 },
+    Mandel(u32),
+    /// Raw ring value `frac(r)` (its default wave is the triangle).
+    Wood,
+    /// `average`: a `pigment_map`'s pigments averaged, weighted by their entry values.
+    Average,
+}
+
+impl PatternKind {
+    /// How many pigments a list pattern picks from; `None` for a continuous pattern.
+    pub fn list_len(&self) -> Option<usize> {
+        match self {
+            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Hexagon => Some(3),
+            _ => None,
+        }
+    }
+}
+
+/// How a pattern's value in [0, 1) is shaped after `frequency` and `phase`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Wave {
+    Ramp,
+    Triangle,
+    Sine,
+    Scallop,
+    Cubic,
+    Poly(f64),
+}
+
+/// One `warp { }` of a pattern, applied in pattern space in written order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Warp {
+    Turbulence(Turbulence),
+    /// `warp { repeat V offset O flip F }`: V has one non-zero component, the period.
+    Repeat { dir: DVec3, offset: DVec3, flip: DVec3 },
+    BlackHole { center: DVec3, radius: f64, strength: f64, falloff: f64, inverse: bool },
+}
+
+/// A pattern with its value modifiers; the transform and classic turbulence live with the
+/// pigment or normal that uses it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternDesc {
+    pub kind: PatternKind,
+    pub wave: Wave,
+    pub frequency: f64,
+    pub phase: f64,
+    pub warps: Vec<Warp>,
+}
+
+impl PatternDesc {
+    pub fn new(kind: PatternKind) -> PatternDesc {
+        let wave = match kind {
+            PatternKind::Marble | PatternKind::Wood => Wave::Triangle,
+            _ => Wave::Ramp,
+        };
+        PatternDesc { kind, wave, frequency: 1.0, phase: 0.0, warps: Vec::new() }
+    }
+}
+
+impl PigmentDesc {
+    /// Moves the pigment, and every pigment it is made of, by `tr` (applied after its own).
+    pub fn transform_by(&mut self, tr: &Transform) {
+        self.transform = self.transform.then(tr);
+        match &mut self.pattern {
+            PigmentPattern::PigmentMap(_, entries) => entries.iter_mut().for_each(|(_, p)| p.transform_by(tr)),
+            PigmentPattern::List(_, list) | PigmentPattern::Layered(list) => {
+                list.iter_mut().for_each(|p| p.transform_by(tr))
+            }
+            _ => {}
+        }
+    }
+
+    /// Whether the pigment is a single colour that needs no pattern work.
+    pub fn is_solid(&self) -> bool {
+        matches!(self.pattern, PigmentPattern::Solid(_))
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -253,6 +373,8 @@ impl Default for PigmentDesc {
 pub enum NormalPattern {
     /// `bumps AMOUNT`.
     Bumps(f64),
+    /// Any other pattern: the normal tilts by `amount` times the pattern's gradient.
+    Pattern(PatternDesc, f64),
 }
 
 #[derive(Clone, Debug, PartialEq)]

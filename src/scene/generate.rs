@@ -388,7 +388,7 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
             PigmentPattern::Checker(a, b) => {
                 let _ = write!(o, " pigment {{ checker color {} color {} }}", rgb(a)?, rgb(b)?);
             }
-            PigmentPattern::Wood(_) => return Err("write_pov: wood pigment is not supported".into()),
+            _ => return Err("write_pov: only solid and checker pigments are supported".into()),
         }
         let f = &obj.texture.finish;
         let mut items = String::new();

@@ -5,8 +5,7 @@ use glam::{DMat4, Vec3};
 use crate::lanes::Lane;
 use crate::scene::desc::{FinishDesc, InteriorDesc, TextureDesc};
 use crate::shading::normal::NormalF32;
-use crate::shading::pattern::Rgbft;
-use crate::shading::pigment::{Pigment, PigmentPattern32};
+use crate::shading::pigment::Pigment;
 
 /// A shading exponent. Whole numbers up to 256 (POV-Ray's default `phong_size 40`, the seed's
 /// `brilliance 1`, `roughness 0.05` → 20) are raised by repeated squaring, which costs a few
@@ -189,12 +188,7 @@ pub struct Material {
 impl Material {
     /// Whether any point of the pigment lets light through (filter or transmit above zero).
     pub fn may_be_transparent(&self) -> bool {
-        let see_through = |c: &Rgbft| c.filter > 0.0 || c.transmit > 0.0;
-        match &self.pigment.pattern {
-            PigmentPattern32::Solid(c) => see_through(c),
-            PigmentPattern32::Checker(cs) => cs.iter().any(see_through),
-            PigmentPattern32::Wood(map) => map.entries().iter().any(|(_, c)| see_through(c)),
-        }
+        self.pigment.pattern.may_be_transparent()
     }
 
     /// `world_from_render`: `RenderFrame::world_from_render` of the scene being built.

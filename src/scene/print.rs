@@ -316,6 +316,12 @@ fn atmosphere(s: &mut String, desc: &SceneDesc) {
 }
 
 fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
+    if let PigmentPattern::Layered(list) = &p.pattern {
+        // Layers belong to textures; printed as the bottom layer alone (lossy).
+        if let Some(bottom) = list.first() {
+            return pigment(s, bottom, object_inverse);
+        }
+    }
     let _ = write!(s, "pigment {{ ");
     let _ = match &p.pattern {
         PigmentPattern::Solid(c) => write!(s, "{}", color(c)),
@@ -324,6 +330,28 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
             let entries: Vec<String> = map.iter().map(|e| format!("[{} {}]", num(e.value), color(&e.color))).collect();
             write!(s, "wood color_map {{ {} }}", entries.join(" "))
         }
+        PigmentPattern::Mapped(pd, map) => {
+            let entries: Vec<String> = map.iter().map(|e| format!("[{} {}]", num(e.value), color(&e.color))).collect();
+            write!(s, "{} color_map {{ {} }}", pattern_text(pd), entries.join(" "))
+        }
+        PigmentPattern::PigmentMap(pd, entries) => {
+            let _ = write!(s, "{} pigment_map {{ ", pattern_text(pd));
+            for (v, p) in entries {
+                let _ = write!(s, "[{} ", num(*v));
+                pigment(s, p, object_inverse);
+                let _ = write!(s, "] ");
+            }
+            write!(s, "}}")
+        }
+        PigmentPattern::List(pd, list) => {
+            let _ = write!(s, "{} ", pattern_text(pd));
+            for p in list {
+                pigment(s, p, object_inverse);
+                let _ = write!(s, " ");
+            }
+            Ok(())
+        }
+        PigmentPattern::Layered(_) => unreachable!("handled above"),
     };
     turbulence(s, p.turbulence.as_ref());
     let _ = write!(s, "{} }}", modifiers(&(*object_inverse * p.transform.matrix)));
@@ -332,6 +360,7 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
 fn normal(s: &mut String, n: &NormalDesc, object_inverse: &DMat4) {
     let _ = match n.pattern {
         NormalPattern::Bumps(amount) => write!(s, "normal {{ bumps {}", num(amount)),
+        NormalPattern::Pattern(ref pd, amount) => write!(s, "normal {{ {} bump_size {}", pattern_text(pd), num(amount)),
     };
     turbulence(s, n.turbulence.as_ref());
     let _ = write!(s, "{} }}", modifiers(&(*object_inverse * n.transform.matrix)));
@@ -343,6 +372,83 @@ fn albedo(set: bool) -> &'static str {
     } else {
         ""
     }
+}
+
+/// A pattern keyword with its parameters and value modifiers.
+fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
+    use crate::scene::desc::{PatternKind as K, Warp, Wave};
+    let v = |d: glam::DVec3| format!("<{}, {}, {}>", num(d.x), num(d.y), num(d.z));
+    let mut out = match p.kind {
+        K::Gradient(d) => format!("gradient {}", v(d)),
+        K::Bozo => "bozo".into(),
+        K::Granite => "granite".into(),
+        K::Marble => "marble".into(),
+        K::Agate { turb } => format!("agate agate_turb {}", num(turb)),
+        K::Crackle { form, metric, offset, solid } => format!(
+            "crackle form {} metric {} offset {}{}",
+            v(form),
+            num(metric),
+            num(offset),
+            if solid { " solid" } else { "" }
+        ),
+        K::Cells => "cells".into(),
+        K::Wrinkles => "wrinkles".into(),
+        K::Dents => "dents".into(),
+        K::Leopard => "leopard".into(),
+        K::Ripples => "ripples".into(),
+        K::Waves => "waves".into(),
+        K::Radial => "radial".into(),
+        K::Onion => "onion".into(),
+        K::Spiral1(n) => format!("spiral1 {}", num(n)),
+        K::Spiral2(n) => format!("spiral2 {}", num(n)),
+        K::Brick { size, mortar } => format!("brick brick_size {} mortar {}", v(size), num(mortar)),
+        K::Hexagon => "hexagon".into(),
+        K::Checker => "checker".into(),
+        K::Boxed => "boxed".into(),
+        K::Cylindrical => "cylindrical".into(),
+        K::Spherical => "spherical".into(),
+        K::Planar => "planar".into(),
+        K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
+        K::Mandel(n) => format!("mandel {n}"),
+        K::Wood => "wood".into(),
+        K::Average => "average".into(),
+    };
+    let wave = match p.wave {
+        Wave::Ramp => "ramp_wave".to_string(),
+        Wave::Triangle => "triangle_wave".into(),
+        Wave::Sine => "sine_wave".into(),
+        Wave::Scallop => "scallop_wave".into(),
+        Wave::Cubic => "cubic_wave".into(),
+        Wave::Poly(e) => format!("poly_wave {}", num(e)),
+    };
+    if p.kind.list_len().is_none() && !matches!(p.kind, K::Average) {
+        let _ = write!(out, " {wave} frequency {} phase {}", num(p.frequency), num(p.phase));
+    }
+    for w in &p.warps {
+        let _ = match *w {
+            Warp::Turbulence(t) => write!(
+                out,
+                " warp {{ turbulence {} octaves {} omega {} lambda {} }}",
+                v(t.amount),
+                t.octaves,
+                num(t.omega),
+                num(t.lambda)
+            ),
+            Warp::Repeat { dir, offset, flip } => {
+                write!(out, " warp {{ repeat {} offset {} flip {} }}", v(dir), v(offset), v(flip))
+            }
+            Warp::BlackHole { center, radius, strength, falloff, inverse } => write!(
+                out,
+                " warp {{ black_hole {}, {} strength {} falloff {}{} }}",
+                v(center),
+                num(radius),
+                num(strength),
+                num(falloff),
+                if inverse { " inverse" } else { "" }
+            ),
+        };
+    }
+    out
 }
 
 fn finish(s: &mut String, f: &FinishDesc) {

@@ -8,4 +8,5 @@
 pub mod noise;
 pub mod normal;
 pub mod pattern;
+pub mod patterns;
 pub mod pigment;

@@ -243,6 +243,12 @@ pub fn noise(p: Vec3) -> f32 {
     (0.5 + NOISE_SCALE * raw_noise(p)).clamp(0.0, 1.0)
 }
 
+/// `noise` for one or eight points, lane by lane with the scalar kernel (the same bits).
+#[inline(always)]
+pub fn noise_lanes<L: Lane>(p: V3<L>) -> L {
+    L::from_fn(|i| noise(p.lane(i)))
+}
+
 /// POV-Ray-style vector noise: three independent gradient noises sharing one lattice walk,
 /// each component centred on 0 with std 0.251 (range about ±1).
 #[inline]

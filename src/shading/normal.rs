@@ -11,16 +11,23 @@
 use glam::{DMat4, Mat3A, Vec3};
 
 use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
+use super::patterns::Pattern32;
 use super::pigment::{pattern_from_render, PatternQuality, Period};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern};
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum NormalPattern32 {
     Bumps(f32),
+    /// Any pattern of the kernel layer as a height: the normal tilts down its gradient by
+    /// `amount` (the gradient by forward differences of `NORMAL_DELTA` in pattern space).
+    Pattern(Box<Pattern32>, f32),
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The finite-difference step for pattern normals, in pattern units.
+const NORMAL_DELTA: f32 = 0.02;
+
+#[derive(Clone, Debug, PartialEq)]
 pub struct NormalF32 {
     pub pattern: NormalPattern32,
     pub turbulence: Option<TurbulenceF32>,
@@ -41,12 +48,14 @@ impl NormalF32 {
     pub fn from_desc(d: &NormalDesc, world_from_render: &DMat4) -> NormalF32 {
         let periods = match d.pattern {
             NormalPattern::Bumps(_) => [Period::Every(LATTICE_PERIOD); 3],
+            NormalPattern::Pattern(..) => [Period::Never; 3],
         };
         let pattern_from_render =
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let linear = pattern_from_render.matrix3;
-        let pattern = match d.pattern {
+        let pattern = match &d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
+            NormalPattern::Pattern(p, a) => NormalPattern32::Pattern(Box::new(Pattern32::from_desc(p)), *a as f32),
         };
         NormalF32 {
             pattern,
@@ -71,13 +80,36 @@ pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>,
     if let Some(t) = &nrm.turbulence {
         p = warp_lanes(p, t, q.max_octaves);
     }
-    match nrm.pattern {
+    match &nrm.pattern {
         NormalPattern32::Bumps(amount) => {
             let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
-            let bumped = np.add(dnoise_lanes(p).scale(L::splat(amount)));
+            let bumped = np.add(dnoise_lanes(p).scale(L::splat(*amount)));
             bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
         }
+        NormalPattern32::Pattern(pat, amount) => pattern_normal(nrm, pat, *amount, p, n, q),
     }
+}
+
+#[inline(never)]
+fn pattern_normal<L: Lane>(
+    nrm: &NormalF32,
+    pat: &Pattern32,
+    amount: f32,
+    p: V3<L>,
+    n: V3<L>,
+    q: PatternQuality,
+) -> V3<L> {
+    let at = |d: Vec3| pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
+    let v0 = at(Vec3::ZERO);
+    let inv = L::splat(1.0 / NORMAL_DELTA);
+    let grad = V3 {
+        x: (at(Vec3::X * NORMAL_DELTA) - v0) * inv,
+        y: (at(Vec3::Y * NORMAL_DELTA) - v0) * inv,
+        z: (at(Vec3::Z * NORMAL_DELTA) - v0) * inv,
+    };
+    let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
+    let bumped = np.sub(grad.scale(L::splat(amount)));
+    bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
 }
 
 #[cfg(test)]

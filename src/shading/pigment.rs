@@ -6,6 +6,7 @@ use glam::{Affine3A, DMat4, Vec3};
 
 use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
 use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
+use super::patterns::{Kind32, Pattern32};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{PigmentDesc, PigmentPattern, Turbulence};
 
@@ -22,6 +23,32 @@ pub enum PigmentPattern32 {
     Checker([Rgbft; 2]),
     /// Turbulence displaces wood cycloidally (see `wood_cycloidal`), not by the plain warp.
     Wood(ColorMap),
+    /// Any other pattern through a colour map.
+    Mapped(Box<Pattern32>, ColorMap),
+    /// `pigment_map`: entries sorted by value.
+    PigmentMap(Box<Pattern32>, Vec<(f32, Pigment)>),
+    /// A list pattern's pigment per cell.
+    List(Box<Pattern32>, Vec<Pigment>),
+    /// Layered textures' pigments, bottom first.
+    Layered(Vec<Pigment>),
+}
+
+impl PigmentPattern32 {
+    /// Whether any point of it lets light through (filter or transmit above zero).
+    pub fn may_be_transparent(&self) -> bool {
+        let see_through = |c: &Rgbft| c.filter > 0.0 || c.transmit > 0.0;
+        match self {
+            PigmentPattern32::Solid(c) => see_through(c),
+            PigmentPattern32::Checker(cs) => cs.iter().any(see_through),
+            PigmentPattern32::Wood(map) | PigmentPattern32::Mapped(_, map) => {
+                map.entries().iter().any(|(_, c)| see_through(c))
+            }
+            PigmentPattern32::PigmentMap(_, e) => e.iter().any(|(_, p)| p.pattern.may_be_transparent()),
+            PigmentPattern32::List(_, l) => l.iter().any(|p| p.pattern.may_be_transparent()),
+            // Each layer passes on only what shows through it: the bottom decides.
+            PigmentPattern32::Layered(l) => l.first().is_some_and(|p| p.pattern.may_be_transparent()),
+        }
+    }
 }
 
 /// POV-Ray 3.7's `wood` does not take `turbulence` as a plain warp. Measured on renders of
@@ -183,11 +210,27 @@ impl Pigment {
             PigmentPattern::Solid(c) => PigmentPattern32::Solid(Rgbft::from_desc(c)),
             PigmentPattern::Checker(a, b) => PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)]),
             PigmentPattern::Wood(map) => PigmentPattern32::Wood(ColorMap::from_desc(map)),
+            PigmentPattern::Mapped(pat, map) => {
+                PigmentPattern32::Mapped(Box::new(Pattern32::from_desc(pat)), ColorMap::from_desc(map))
+            }
+            PigmentPattern::PigmentMap(pat, entries) => PigmentPattern32::PigmentMap(
+                Box::new(Pattern32::from_desc(pat)),
+                entries.iter().map(|(v, p)| (*v as f32, Pigment::from_desc(p, world_from_render))).collect(),
+            ),
+            PigmentPattern::List(pat, list) => PigmentPattern32::List(
+                Box::new(Pattern32::from_desc(pat)),
+                list.iter().map(|p| Pigment::from_desc(p, world_from_render)).collect(),
+            ),
+            PigmentPattern::Layered(list) => {
+                PigmentPattern32::Layered(list.iter().map(|p| Pigment::from_desc(p, world_from_render)).collect())
+            }
         };
         let periods = match &d.pattern {
             PigmentPattern::Solid(_) => [Period::Any; 3],
             PigmentPattern::Checker(..) => [Period::Every(2.0); 3],
             PigmentPattern::Wood(_) => [Period::Never, Period::Never, Period::Any],
+            // Patterns of the kernel layer keep their translation (no reduction).
+            _ => [Period::Never; 3],
         };
         let pattern_from_render =
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
@@ -236,7 +279,97 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
             };
             map.lookup_lanes(wood_lanes(p))
         }
+        _ => eval_composite_lanes(pig, p_render, q),
     }
+}
+
+/// The pigments of the pattern layer (`shading::patterns`), kept out of line so that solid,
+/// checker and wood pigments stay as small as they were.
+#[inline(never)]
+fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuality) -> RgbftLanes<L> {
+    match &pig.pattern {
+        PigmentPattern32::Mapped(pat, map) => {
+            let p = pig.pattern_point(p_render, q);
+            map.lookup_lanes(pat.value_lanes(p, q.max_octaves))
+        }
+        PigmentPattern32::PigmentMap(pat, entries) if pat.kind == Kind32::Average => {
+            let total: f32 = entries.iter().map(|e| e.0).sum();
+            let mut out = RgbftLanes::splat(Rgbft::default());
+            for (w, p) in entries {
+                let c = eval_pigment_lanes(p, p_render, q);
+                let k = L::splat(if total != 0.0 { w / total } else { 0.0 });
+                out = RgbftLanes {
+                    rgb: out.rgb.add(c.rgb.scale(k)),
+                    filter: out.filter + c.filter * k,
+                    transmit: out.transmit + c.transmit * k,
+                };
+            }
+            out
+        }
+        PigmentPattern32::PigmentMap(pat, entries) => {
+            let v = pat.value_lanes(pig.pattern_point(p_render, q), q.max_octaves);
+            let colors: Vec<(f32, RgbftLanes<L>)> =
+                entries.iter().map(|(value, p)| (*value, eval_pigment_lanes(p, p_render, q))).collect();
+            blend_entries(&colors, v)
+        }
+        PigmentPattern32::List(pat, list) => {
+            let v = pat.value_lanes(pig.pattern_point(p_render, q), q.max_octaves);
+            let mut out = match list.first() {
+                Some(p) => eval_pigment_lanes(p, p_render, q),
+                None => return RgbftLanes::splat(Rgbft::default()),
+            };
+            for (k, p) in list.iter().enumerate().skip(1) {
+                let c = eval_pigment_lanes(p, p_render, q);
+                out = RgbftLanes::select(L::splat(k as f32 - 0.5).lt(v), c, out);
+            }
+            out
+        }
+        PigmentPattern32::Layered(list) => {
+            let mut out = RgbftLanes::splat(Rgbft::default());
+            for (k, p) in list.iter().enumerate() {
+                let c = eval_pigment_lanes(p, p_render, q);
+                out = if k == 0 { c } else { layer_over(c, out) };
+            }
+            out
+        }
+        PigmentPattern32::Solid(_) | PigmentPattern32::Checker(_) | PigmentPattern32::Wood(_) => {
+            eval_pigment_lanes(pig, p_render, q)
+        }
+    }
+}
+
+/// An upper layer over what lies below it: its opaque part shows its colour, its transmitted
+/// part the colour below, its filtered part the colour below tinted by its own; filter and
+/// transmit of the result are what passes through both.
+#[inline(always)]
+fn layer_over<L: Lane>(top: RgbftLanes<L>, below: RgbftLanes<L>) -> RgbftLanes<L> {
+    let one = L::splat(1.0);
+    let pass = top.filter + top.transmit;
+    let opaque = (one - pass).max(L::splat(0.0));
+    let tint = V3 {
+        x: top.transmit + top.filter * top.rgb.x,
+        y: top.transmit + top.filter * top.rgb.y,
+        z: top.transmit + top.filter * top.rgb.z,
+    };
+    RgbftLanes {
+        rgb: top.rgb.scale(opaque).add(below.rgb.mul(tint)),
+        filter: below.filter * pass,
+        transmit: below.transmit * pass,
+    }
+}
+
+/// Linear blending between sorted map entries, clamped at both ends (as `ColorMap`).
+#[inline(always)]
+fn blend_entries<L: Lane>(e: &[(f32, RgbftLanes<L>)], v: L) -> RgbftLanes<L> {
+    let (Some(first), Some(last)) = (e.first(), e.last()) else { return RgbftLanes::splat(Rgbft::default()) };
+    let mut out = last.1;
+    for w in e.windows(2).rev() {
+        let ((v0, c0), (v1, c1)) = (w[0], w[1]);
+        let span = v1 - v0;
+        let c = if span > 0.0 { c0.lerp(c1, (v - L::splat(v0)) / L::splat(span)) } else { c1 };
+        out = RgbftLanes::select(v.le(L::splat(v1)), c, out);
+    }
+    RgbftLanes::select(v.le(L::splat(first.0)), first.1, out)
 }
 
 #[cfg(test)]

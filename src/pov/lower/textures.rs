@@ -6,13 +6,13 @@ use glam::DVec3;
 use super::Lowerer;
 use crate::pov::ast::{
     ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
-    Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind,
+    PatternAst, PatternMod, Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern,
-    TextureDesc, Transform, Turbulence,
+    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
+    PigmentPattern, TextureDesc, Transform, Turbulence, Warp, Wave,
 };
 
 /// POV-Ray's `bumps` amount when none is written.
@@ -23,6 +23,10 @@ enum Pattern {
     Solid(Color),
     Checker(Color, Color),
     Wood,
+    /// A pattern of the kernel layer, with the pigments of a list pattern.
+    Generic(PatternDesc, Vec<PigmentDesc>),
+    /// A `pigment_map` or list pigment this pigment started from.
+    Done(PigmentPattern),
 }
 
 /// A pigment's colour map while its block is read, with the `color_map` written in the block
@@ -81,6 +85,8 @@ impl Lowerer<'_> {
     /// after `#default { pigment { Red } }` is red), or from the declared pigment it names.
     pub(super) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
         let (mut pattern, mut map, mut turb, mut transform) = pigment_state(self.default_texture.pigment.clone());
+        let mut own_transform = Transform::default();
+        let mut pigment_map: Option<(Vec<(f64, PigmentDesc)>, Span)> = None;
         for item in &p.items {
             match item {
                 PigmentItem::Base(e) => {
@@ -108,19 +114,236 @@ impl Lowerer<'_> {
                 PigmentItem::Wood(_) => pattern = Pattern::Wood,
                 PigmentItem::ColorMap(m) => map = Some((self.color_map(m)?, Some(m.span))),
                 PigmentItem::Turb(t) => self.turb(t, &mut turb)?,
-                PigmentItem::Transform(t) => transform = transform.then(&self.transform(t)?),
+                PigmentItem::Transform(t) => {
+                    let t = self.transform(t)?;
+                    transform = transform.then(&t);
+                    own_transform = own_transform.then(&t);
+                }
+                PigmentItem::Pattern(pa) => {
+                    let kind = self.pattern_kind(pa)?;
+                    let mut list = Vec::new();
+                    for c in &pa.colors {
+                        list.push(PigmentDesc { pattern: PigmentPattern::Solid(self.color(c)?), ..Default::default() });
+                    }
+                    for p in &pa.pigments {
+                        list.push(self.pigment(p)?);
+                    }
+                    if let Some(n) = kind.list_len() {
+                        if list.len() > n {
+                            return Err(Diag::new(
+                                pa.span,
+                                format!("{} takes at most {n} colours or pigments", pa.name),
+                            ));
+                        }
+                        let defaults = default_list_colors(&kind);
+                        while list.len() < n {
+                            let c = defaults[list.len()];
+                            list.push(PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() });
+                        }
+                    }
+                    pattern = Pattern::Generic(PatternDesc::new(kind), list);
+                }
+                PigmentItem::Mod(m) => {
+                    if let Pattern::Wood = pattern {
+                        pattern = Pattern::Generic(PatternDesc::new(PatternKind::Wood), Vec::new());
+                    }
+                    if let Pattern::Generic(pd, _) = &mut pattern {
+                        self.pattern_mod(m, pd)?;
+                    }
+                }
+                PigmentItem::PigmentMap(entries, span) => {
+                    let mut out = Vec::with_capacity(entries.len());
+                    for (v, p) in entries {
+                        out.push((self.float(v)?, self.pigment(p)?));
+                    }
+                    pigment_map = Some((out, *span));
+                }
             }
         }
+        // Transforms written in this block also move the pigments it is made of.
+        let children = |mut list: Vec<PigmentDesc>| {
+            list.iter_mut().for_each(|p| p.transform_by(&own_transform));
+            list
+        };
         let pattern = match (pattern, map) {
             (Pattern::Wood, Some((m, _))) => PigmentPattern::Wood(m),
             (Pattern::Wood, None) => PigmentPattern::Wood(default_wood_map()),
-            (_, Some((_, Some(span)))) => {
-                return Err(Diag::new(span, "color_map needs a pattern that uses it (supported: wood)"))
+            (Pattern::Generic(pd, list), map) if pd.kind.list_len().is_some() => {
+                if let Some((_, Some(span))) = map {
+                    return Err(Diag::new(span, "a list pattern (checker, brick, hexagon) takes no color_map"));
+                }
+                PigmentPattern::List(pd, children(list))
             }
+            (Pattern::Generic(pd, _), map) => match (pigment_map, map) {
+                (Some((entries, _)), _) => {
+                    let mut entries = entries;
+                    entries.iter_mut().for_each(|(_, p)| p.transform_by(&own_transform));
+                    entries.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    PigmentPattern::PigmentMap(pd, entries)
+                }
+                (None, Some((m, _))) => PigmentPattern::Mapped(pd, m),
+                (None, None) => PigmentPattern::Mapped(pd, default_pattern_map()),
+            },
+            (Pattern::Done(p), _) => p,
+            (_, Some((_, Some(span)))) => return Err(Diag::new(span, "color_map needs a pattern that uses it")),
             (Pattern::Solid(c), _) => PigmentPattern::Solid(c),
             (Pattern::Checker(a, b), _) => PigmentPattern::Checker(a, b),
         };
         Ok(PigmentDesc { pattern, turbulence: turb.finish(), transform })
+    }
+
+    /// The pattern a keyword names, with its argument.
+    fn pattern_kind(&mut self, pa: &PatternAst) -> PResult<PatternKind> {
+        let arg = |l: &Self, default: f64| match &pa.arg {
+            Some(e) => l.float(e),
+            None => Ok(default),
+        };
+        Ok(match pa.name.as_str() {
+            "gradient" => {
+                let v = match &pa.arg {
+                    Some(e) => self.vec3(e)?,
+                    None => DVec3::X,
+                };
+                if v == DVec3::ZERO {
+                    return Err(Diag::new(pa.span, "gradient needs a non-zero vector"));
+                }
+                PatternKind::Gradient(v)
+            }
+            "bozo" | "spotted" | "bumps" => PatternKind::Bozo,
+            "granite" => PatternKind::Granite,
+            "marble" => PatternKind::Marble,
+            "agate" => PatternKind::Agate { turb: 1.0 },
+            "crackle" => {
+                PatternKind::Crackle { form: DVec3::new(-1.0, 1.0, 0.0), metric: 2.0, offset: 0.0, solid: false }
+            }
+            "cells" => PatternKind::Cells,
+            "wrinkles" => PatternKind::Wrinkles,
+            "dents" => PatternKind::Dents,
+            "leopard" => PatternKind::Leopard,
+            "ripples" => PatternKind::Ripples,
+            "waves" => PatternKind::Waves,
+            "radial" => PatternKind::Radial,
+            "onion" => PatternKind::Onion,
+            "spiral1" => PatternKind::Spiral1(arg(self, 1.0)?),
+            "spiral2" => PatternKind::Spiral2(arg(self, 1.0)?),
+            "brick" => PatternKind::Brick { size: DVec3::new(8.0, 3.0, 4.5), mortar: 0.5 },
+            "hexagon" => PatternKind::Hexagon,
+            "checker" => PatternKind::Checker,
+            "boxed" => PatternKind::Boxed,
+            "cylindrical" => PatternKind::Cylindrical,
+            "spherical" => PatternKind::Spherical,
+            "planar" => PatternKind::Planar,
+            "quilted" => PatternKind::Quilted { c0: 1.0, c1: 1.0 },
+            "mandel" => {
+                let n = arg(self, 25.0)?;
+                if !(1.0..=1e6).contains(&n) {
+                    return Err(Diag::new(pa.span, "mandel needs between 1 and 1e6 iterations"));
+                }
+                PatternKind::Mandel(n as u32)
+            }
+            "wood" => PatternKind::Wood,
+            "average" => PatternKind::Average,
+            other => return Err(Diag::new(pa.span, format!("unknown pattern `{other}`"))),
+        })
+    }
+
+    /// Applies one modifier to a pattern.
+    fn pattern_mod(&mut self, m: &PatternMod, pd: &mut PatternDesc) -> PResult<()> {
+        match m {
+            PatternMod::Wave(w, e) => {
+                pd.wave = match w.as_str() {
+                    "ramp_wave" => Wave::Ramp,
+                    "triangle_wave" => Wave::Triangle,
+                    "sine_wave" => Wave::Sine,
+                    "scallop_wave" => Wave::Scallop,
+                    "cubic_wave" => Wave::Cubic,
+                    _ => Wave::Poly(match e {
+                        Some(e) => self.float(e)?,
+                        None => 1.0,
+                    }),
+                }
+            }
+            PatternMod::Flag(_, _) => {
+                if let PatternKind::Crackle { solid, .. } = &mut pd.kind {
+                    *solid = true;
+                }
+            }
+            PatternMod::Set(word, e) => match (word.as_str(), &mut pd.kind) {
+                ("frequency", _) => pd.frequency = self.float(e)?,
+                ("phase", _) => pd.phase = self.float(e)?,
+                ("brick_size", PatternKind::Brick { size, .. }) => {
+                    let v = self.vec3(e)?;
+                    if v.min_element() <= 0.0 {
+                        return Err(Diag::new(e.span, "brick_size must be positive"));
+                    }
+                    *size = v;
+                }
+                ("mortar", PatternKind::Brick { mortar, .. }) => *mortar = self.float(e)?,
+                ("agate_turb", PatternKind::Agate { turb }) => *turb = self.float(e)?,
+                ("form", PatternKind::Crackle { form, .. }) => *form = self.vec3(e)?,
+                ("metric", PatternKind::Crackle { metric, .. }) => {
+                    let v = self.float(e)?;
+                    if v <= 0.0 {
+                        return Err(Diag::new(e.span, "metric must be positive"));
+                    }
+                    *metric = v;
+                }
+                ("offset", PatternKind::Crackle { offset, .. }) => *offset = self.float(e)?,
+                ("control0", PatternKind::Quilted { c0, .. }) => *c0 = self.float(e)?,
+                ("control1", PatternKind::Quilted { c1, .. }) => *c1 = self.float(e)?,
+                // noise_generator 1|2|3: read; strahl has one noise.
+                _ => {
+                    self.float(e)?;
+                }
+            },
+            PatternMod::Warp(w) => match w {
+                WarpAst::Turbulence(items) => {
+                    let mut state = TurbState::from(None);
+                    for t in items {
+                        self.turb(t, &mut state)?;
+                    }
+                    // `octaves` etc. after a `turbulence` warp of a texture extend it.
+                    if let (false, Some(Warp::Turbulence(last))) = (state.given, pd.warps.last_mut()) {
+                        for t in items {
+                            let mut s = TurbState { value: *last, given: true };
+                            self.turb(t, &mut s)?;
+                            *last = s.value;
+                        }
+                    } else if let Some(t) = state.finish() {
+                        pd.warps.push(Warp::Turbulence(t));
+                    }
+                }
+                WarpAst::Repeat { dir, offset, flip } => {
+                    let dir = self.vec3(dir)?;
+                    let offset = match offset {
+                        Some(e) => self.vec3(e)?,
+                        None => DVec3::ZERO,
+                    };
+                    let flip = match flip {
+                        Some(e) => self.vec3(e)?,
+                        None => DVec3::ZERO,
+                    };
+                    pd.warps.push(Warp::Repeat { dir, offset, flip });
+                }
+                WarpAst::BlackHole { center, radius, strength, falloff, inverse } => {
+                    let opt = |l: &Self, e: &Option<Expr>, d: f64| match e {
+                        Some(e) => l.float(e),
+                        None => Ok(d),
+                    };
+                    pd.warps.push(Warp::BlackHole {
+                        center: self.vec3(center)?,
+                        radius: self.float(radius)?,
+                        strength: opt(self, strength, 1.0)?,
+                        falloff: opt(self, falloff, 2.0)?,
+                        inverse: *inverse,
+                    });
+                }
+                WarpAst::Other(word, span) => {
+                    self.warn(Diag::new(*span, format!("warp `{word}` is not modelled; ignored")));
+                }
+            },
+        }
+        Ok(())
     }
 
     /// A colour map's entries in the sorted form the renderer reads (see `sorted_map`), or a
@@ -169,9 +392,33 @@ impl Lowerer<'_> {
                 }
                 NormalItem::Turb(t) => self.turb(t, &mut turb)?,
                 NormalItem::Transform(t) => transform = transform.then(&self.transform(t)?),
+                NormalItem::Pattern(pa, amount) => {
+                    let a = match amount {
+                        Some(e) => self.float(e)?,
+                        None => DEFAULT_BUMPS,
+                    };
+                    let kind = self.pattern_kind(pa)?;
+                    pattern = Some(NormalPattern::Pattern(PatternDesc::new(kind), a));
+                }
+                NormalItem::Mod(m) => {
+                    if let Some(NormalPattern::Pattern(pd, _)) = &mut pattern {
+                        self.pattern_mod(m, pd)?;
+                    }
+                }
+                NormalItem::BumpSize(e) => {
+                    let v = self.float(e)?;
+                    match &mut pattern {
+                        Some(NormalPattern::Pattern(_, a)) | Some(NormalPattern::Bumps(a)) => *a = v,
+                        None => {}
+                    }
+                }
+                NormalItem::Ignored(word, span) => {
+                    self.warn(Diag::new(*span, format!("`{word}` in a normal is not modelled; ignored")));
+                }
             }
         }
-        let pattern = pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (supported: bumps)"))?;
+        let pattern =
+            pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (e.g. bumps, dents, gradient)"))?;
         Ok(NormalDesc { pattern, turbulence: turb.finish(), transform })
     }
 
@@ -245,6 +492,8 @@ impl Lowerer<'_> {
 
     pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
         let mut out = self.default_texture.clone();
+        let mut pattern: Option<(PatternDesc, Vec<TextureDesc>)> = None;
+        let mut texture_map: Option<Vec<(f64, TextureDesc)>> = None;
         for item in &t.items {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
@@ -258,8 +507,62 @@ impl Lowerer<'_> {
                 TextureItem::Transform(tr) => {
                     let tr = self.transform(tr)?;
                     transform_texture(&mut out, &tr);
+                    if let Some((_, list)) = &mut pattern {
+                        list.iter_mut().for_each(|t| transform_texture(t, &tr));
+                    }
+                }
+                TextureItem::Pattern(pa) => {
+                    let kind = self.pattern_kind(pa)?;
+                    let mut list = Vec::new();
+                    for t in &pa.textures {
+                        list.push(self.texture(t)?);
+                    }
+                    pattern = Some((PatternDesc::new(kind), list));
+                }
+                TextureItem::Mod(m) => {
+                    if let Some((pd, _)) = &mut pattern {
+                        self.pattern_mod(m, pd)?;
+                    }
+                }
+                TextureItem::TextureMap(entries, _) => {
+                    let mut list = Vec::with_capacity(entries.len());
+                    for (v, t) in entries {
+                        list.push((self.float(v)?, self.texture(t)?));
+                    }
+                    list.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    texture_map = Some(list);
+                }
+                TextureItem::Layer(t) => {
+                    let upper = self.texture(t)?;
+                    let below = std::mem::take(&mut out.pigment);
+                    let mut layers = match below.pattern {
+                        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
+                        _ => vec![below],
+                    };
+                    layers.push(upper.pigment);
+                    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
+                    if upper.normal.is_some() {
+                        out.normal = upper.normal;
+                    }
                 }
             }
+        }
+        // A pattern of textures: the pigments follow the pattern; the first texture's normal
+        // and finish stand for all of them (a warning says so).
+        if let Some((pd, list)) = pattern {
+            let first = match &texture_map {
+                Some(m) => m.first().map(|e| e.1.clone()),
+                None => list.first().cloned(),
+            };
+            if let Some(f) = first {
+                out.normal = f.normal;
+                out.finish = f.finish;
+            }
+            let pattern = match texture_map {
+                Some(m) => PigmentPattern::PigmentMap(pd, m.into_iter().map(|(v, t)| (v, t.pigment)).collect()),
+                None => PigmentPattern::List(pd, list.into_iter().map(|t| t.pigment).collect()),
+            };
+            out.pigment = PigmentDesc { pattern, ..Default::default() };
         }
         Ok(out)
     }
@@ -299,6 +602,21 @@ fn default_wood_map() -> Vec<ColorMapEntry> {
         .collect()
 }
 
+/// POV-Ray's colours of a list pattern written without them.
+fn default_list_colors(kind: &PatternKind) -> [Color; 3] {
+    match kind {
+        // brick: mortar grey, brick red.
+        PatternKind::Brick { .. } => [Color::rgb(0.5, 0.5, 0.5), Color::rgb(0.6, 0.15, 0.15), Color::BLACK],
+        PatternKind::Hexagon => [Color::rgb(0.0, 0.0, 1.0), Color::rgb(0.0, 1.0, 0.0), Color::rgb(1.0, 0.0, 0.0)],
+        _ => [Color::rgb(0.0, 0.0, 1.0), Color::rgb(0.0, 1.0, 0.0), Color::BLACK],
+    }
+}
+
+/// The map of a pattern written without one: black to white.
+fn default_pattern_map() -> Vec<ColorMapEntry> {
+    vec![ColorMapEntry { value: 0.0, color: Color::BLACK }, ColorMapEntry { value: 1.0, color: Color::WHITE }]
+}
+
 /// The state `pigment` edits, from a pigment it starts from: pattern, map (with no span: a
 /// map that came with it is not an error when the pattern changes), turbulence, transform.
 fn pigment_state(p: PigmentDesc) -> (Pattern, MapState, TurbState, Transform) {
@@ -310,6 +628,11 @@ fn pigment_state(p: PigmentDesc) -> (Pattern, MapState, TurbState, Transform) {
             map = Some((m, None));
             Pattern::Wood
         }
+        PigmentPattern::Mapped(pd, m) => {
+            map = Some((m, None));
+            Pattern::Generic(pd, Vec::new())
+        }
+        other => Pattern::Done(other),
     };
     (pattern, map, TurbState::from(p.turbulence), p.transform)
 }
@@ -374,7 +697,7 @@ fn sorted_lookup(entries: &[ColorMapEntry], v: f64) -> Color {
 
 /// Carries a texture's patterns along with a transform applied after them.
 pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
-    t.pigment.transform = t.pigment.transform.then(tr);
+    t.pigment.transform_by(tr);
     if let Some(n) = &mut t.normal {
         n.transform = n.transform.then(tr);
     }

@@ -153,7 +153,7 @@ impl Parser<'_, '_> {
                         if p.peek_ident().as_deref() != Some("texture") {
                             return Err(Diag::new(p.peek().span, "texture_list holds `texture { ... }` blocks"));
                         }
-                        p.texture().map(|_| true)
+                        p.texture_one().map(|_| true)
                     })?;
                     unmodelled.textures.get_or_insert(skw);
                 }

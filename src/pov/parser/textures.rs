@@ -4,7 +4,8 @@ use super::expr::color_key;
 use super::{is_pov_keyword, Parser};
 use crate::pov::ast::{
     ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal,
-    NormalItem, Pigment, PigmentItem, ReflectionBlock, Texture, TextureItem, Turb, TurbKind,
+    NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, ReflectionBlock, Texture, TextureItem, Turb, TurbKind,
+    WarpAst,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
@@ -20,6 +21,7 @@ const PIGMENT: &[&str] = &[
     "wood",
     "color_map",
     "colour_map",
+    "pigment_map",
     "turbulence",
     "octaves",
     "omega",
@@ -27,8 +29,128 @@ const PIGMENT: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "matrix",
+    "transform",
+    "gradient",
+    "bozo",
+    "spotted",
+    "bumps",
+    "granite",
+    "marble",
+    "agate",
+    "crackle",
+    "cells",
+    "wrinkles",
+    "dents",
+    "leopard",
+    "ripples",
+    "waves",
+    "radial",
+    "onion",
+    "spiral1",
+    "spiral2",
+    "brick",
+    "hexagon",
+    "boxed",
+    "cylindrical",
+    "spherical",
+    "planar",
+    "quilted",
+    "mandel",
+    "average",
+    "ramp_wave",
+    "triangle_wave",
+    "sine_wave",
+    "scallop_wave",
+    "cubic_wave",
+    "poly_wave",
+    "frequency",
+    "phase",
+    "warp",
+    "brick_size",
+    "mortar",
+    "agate_turb",
+    "form",
+    "metric",
+    "offset",
+    "solid",
+    "control0",
+    "control1",
+    "noise_generator",
+    "quick_color",
+    "quick_colour",
 ];
-const NORMAL: &[&str] = &["bumps", "turbulence", "octaves", "omega", "lambda", "rotate", "scale", "translate"];
+/// Pattern keywords of the kernel layer (`shading::patterns`); `checker` and `wood` have their
+/// own items in a pigment.
+pub(crate) const PATTERNS: &[&str] = &[
+    "gradient",
+    "bozo",
+    "spotted",
+    "bumps",
+    "granite",
+    "marble",
+    "agate",
+    "crackle",
+    "cells",
+    "wrinkles",
+    "dents",
+    "leopard",
+    "ripples",
+    "waves",
+    "radial",
+    "onion",
+    "spiral1",
+    "spiral2",
+    "brick",
+    "hexagon",
+    "boxed",
+    "cylindrical",
+    "spherical",
+    "planar",
+    "quilted",
+    "mandel",
+    "average",
+    "checker",
+    "wood",
+];
+/// Modifiers of a pattern's value, in any block that has a pattern.
+const PATTERN_MODS: &[&str] = &[
+    "ramp_wave",
+    "triangle_wave",
+    "sine_wave",
+    "scallop_wave",
+    "cubic_wave",
+    "poly_wave",
+    "frequency",
+    "phase",
+    "warp",
+    "brick_size",
+    "mortar",
+    "agate_turb",
+    "form",
+    "metric",
+    "offset",
+    "solid",
+    "control0",
+    "control1",
+    "noise_generator",
+];
+const NORMAL: &[&str] = &[
+    "bumps",
+    "turbulence",
+    "octaves",
+    "omega",
+    "lambda",
+    "rotate",
+    "scale",
+    "translate",
+    "matrix",
+    "transform",
+    "bump_size",
+    "slope_map",
+    "normal_map",
+    "accuracy",
+];
 const FINISH: &[&str] = &[
     "ambient",
     "diffuse",
@@ -47,7 +169,8 @@ const FINISH: &[&str] = &[
     "subsurface",
 ];
 const REFLECTION: &[&str] = &["fresnel", "falloff", "exponent", "metallic"];
-const TEXTURE: &[&str] = &["pigment", "normal", "finish", "rotate", "scale", "translate"];
+const TEXTURE: &[&str] =
+    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map"];
 const INTERIOR: &[&str] =
     &["ior", "media", "caustics", "dispersion", "dispersion_samples", "fade_distance", "fade_power", "fade_color"];
 
@@ -84,11 +207,23 @@ impl Parser<'_, '_> {
     pub(super) fn pigment(&mut self) -> PResult<Pigment> {
         let kw = self.bump().span;
         self.open_block("pigment", kw)?;
+        let items = self.pigment_items(false)?;
+        let end = self.close_block("pigment", kw)?;
+        Ok(Pigment { items, span: kw.to(end) })
+    }
+
+    /// The end of a block body, or of a map entry's body (`]`) when `in_entry`.
+    fn at_body_end(&mut self, in_entry: bool) -> bool {
+        self.at_block_end() || in_entry && self.is_punct(']')
+    }
+
+    /// A pigment's items, up to its `}` (or the `]` of a `pigment_map` entry).
+    fn pigment_items(&mut self, in_entry: bool) -> PResult<Vec<PigmentItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(PIGMENT)? {
             items.push(PigmentItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some(w) if matches!(w, "color" | "colour") || color_key(w).is_some() => {
                     PigmentItem::Color(self.color()?)
@@ -100,31 +235,56 @@ impl Parser<'_, '_> {
                         if !colors.is_empty() {
                             self.eat_punct(',');
                         }
-                        if self.peek_ident().as_deref() == Some("pigment") {
-                            return Err(Diag::unmodelled(
-                                self.peek().span,
-                                "a pattern of pigments (`checker pigment {..} pigment {..}`) is not supported yet",
-                            ));
+                        if colors.is_empty() && self.peek_ident().as_deref() == Some("pigment") {
+                            break;
                         }
                         if !self.starts_expr(&PIGMENT[6..]) {
                             break;
                         }
                         colors.push(self.color()?);
                     }
-                    PigmentItem::Checker(colors, span)
+                    if colors.is_empty() && self.peek_ident().as_deref() == Some("pigment") {
+                        let mut pigments = Vec::new();
+                        while self.peek_ident().as_deref() == Some("pigment") {
+                            pigments.push(self.pigment()?);
+                            self.eat_punct(',');
+                        }
+                        PigmentItem::Pattern(PatternAst {
+                            name: "checker".into(),
+                            arg: None,
+                            colors: Vec::new(),
+                            pigments,
+                            textures: Vec::new(),
+                            span,
+                        })
+                    } else {
+                        PigmentItem::Checker(colors, span)
+                    }
                 }
                 Some("wood") => PigmentItem::Wood(self.bump().span),
+                Some(w) if PATTERNS.contains(&w) => PigmentItem::Pattern(self.pattern(PIGMENT, "pigment")?),
+                Some(w) if PATTERN_MODS.contains(&w) => PigmentItem::Mod(self.pattern_mod()?),
+                Some("pigment_map") => {
+                    let span = self.bump().span;
+                    PigmentItem::PigmentMap(self.block_map("pigment_map", span, |p| p.pigment())?, span)
+                }
+                Some("quick_color" | "quick_colour") => {
+                    self.bump();
+                    self.color()?;
+                    continue;
+                }
                 Some("color_map" | "colour_map") => PigmentItem::ColorMap(self.color_map()?),
                 Some(w) if turb_kind(w).is_some() => {
                     PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
-                Some("rotate" | "scale" | "translate") => PigmentItem::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    PigmentItem::Transform(self.transform_item()?)
+                }
                 _ => return Err(self.unknown_in("pigment", PIGMENT)),
             };
             items.push(item);
         }
-        let end = self.close_block("pigment", kw)?;
-        Ok(Pigment { items, span: kw.to(end) })
+        Ok(items)
     }
 
     /// `color_map { [v C] ... }`, `color_map { [a, b color C1 color C2] ... }` (POV-Ray's older
@@ -193,7 +353,30 @@ impl Parser<'_, '_> {
                 Some(w) if turb_kind(w).is_some() => {
                     NormalItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
-                Some("rotate" | "scale" | "translate") => NormalItem::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    NormalItem::Transform(self.transform_item()?)
+                }
+                Some(w) if PATTERNS.contains(&w) => {
+                    let pat = self.pattern(NORMAL, "normal")?;
+                    let amount = if self.starts_expr(NORMAL) && !self.starts_mod() { Some(self.expr()?) } else { None };
+                    NormalItem::Pattern(pat, amount)
+                }
+                Some(w) if PATTERN_MODS.contains(&w) => NormalItem::Mod(self.pattern_mod()?),
+                Some("bump_size") => {
+                    self.bump();
+                    NormalItem::BumpSize(self.expr()?)
+                }
+                Some("accuracy") => {
+                    self.bump();
+                    self.expr()?;
+                    continue;
+                }
+                Some(w @ ("slope_map" | "normal_map")) => {
+                    let w = w.to_string();
+                    let span = self.bump().span;
+                    self.skip_block(&w, span)?;
+                    NormalItem::Ignored(w, span)
+                }
                 _ => return Err(self.unknown_in("normal", NORMAL)),
             };
             items.push(item);
@@ -317,25 +500,245 @@ impl Parser<'_, '_> {
         }
     }
 
-    pub(super) fn texture(&mut self) -> PResult<Texture> {
+    /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.
+    pub(super) fn texture_one(&mut self) -> PResult<Texture> {
         let kw = self.bump().span;
         self.open_block("texture", kw)?;
+        let items = self.texture_items(false)?;
+        let end = self.close_block("texture", kw)?;
+        Ok(Texture { items, span: kw.to(end) })
+    }
+
+    /// A texture's items, up to its `}` (or the `]` of a `texture_map` entry).
+    fn texture_items(&mut self, in_entry: bool) -> PResult<Vec<TextureItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(TEXTURE)? {
             items.push(TextureItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some("pigment") => TextureItem::Pigment(self.pigment()?),
                 Some("normal") => TextureItem::Normal(self.normal()?),
                 Some("finish") => TextureItem::Finish(self.finish()?),
-                Some("rotate" | "scale" | "translate") => TextureItem::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    TextureItem::Transform(self.transform_item()?)
+                }
+                Some(w) if PATTERNS.contains(&w) => TextureItem::Pattern(self.pattern(TEXTURE, "texture")?),
+                Some(w) if PATTERN_MODS.contains(&w) || turb_kind(w).is_some() => TextureItem::Mod(self.pattern_mod()?),
+                Some("texture_map") => {
+                    let span = self.bump().span;
+                    TextureItem::TextureMap(self.block_map("texture_map", span, |p| p.texture_one())?, span)
+                }
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };
             items.push(item);
         }
-        let end = self.close_block("texture", kw)?;
-        Ok(Texture { items, span: kw.to(end) })
+        Ok(items)
+    }
+
+    /// `texture { }` and the layers written right after it (`texture {A} texture {B}`: B over A).
+    pub(super) fn texture(&mut self) -> PResult<Texture> {
+        let mut t = self.texture_one()?;
+        while !matches!(self.cur.kind, TokenKind::Directive(_)) && self.peek_ident().as_deref() == Some("texture") {
+            let layer = self.texture_one()?;
+            t.span = t.span.to(layer.span);
+            t.items.push(TextureItem::Layer(Box::new(layer)));
+        }
+        Ok(t)
+    }
+
+    /// A pattern keyword and what it takes. `stop`: the keywords of the enclosing block.
+    fn pattern(&mut self, stop: &[&str], context: &str) -> PResult<PatternAst> {
+        let tok = self.bump();
+        let span = tok.span;
+        let name = match &tok.kind {
+            TokenKind::Ident(w) => w.to_string(),
+            _ => unreachable!("pattern() is called on a pattern keyword"),
+        };
+        let mut pat =
+            PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
+        match pat.name.as_str() {
+            "gradient" => pat.arg = Some(self.expr()?),
+            "spiral1" | "spiral2" | "mandel" | "quilted" if self.starts_expr(stop) && !self.starts_mod() => {
+                if pat.name != "quilted" {
+                    pat.arg = Some(self.expr()?)
+                }
+            }
+            "checker" | "brick" | "hexagon" => {
+                let max = if pat.name == "hexagon" { 3 } else { 2 };
+                for _ in 0..max {
+                    match self.peek_ident().as_deref() {
+                        Some("pigment") if context == "pigment" => pat.pigments.push(self.pigment()?),
+                        Some("texture") if context == "texture" => pat.textures.push(self.texture_one()?),
+                        Some("normal") => {
+                            // A list of normals: read, the pattern's own gradient is used.
+                            self.normal()?;
+                        }
+                        // `PIGMENT[6..]`: the pigment keywords less the colour words.
+                        _ if context == "pigment" && self.starts_expr(&PIGMENT[6..]) && !self.starts_mod() => {
+                            pat.colors.push(self.color()?)
+                        }
+                        _ => break,
+                    }
+                    self.eat_punct(',');
+                }
+            }
+            _ => {}
+        }
+        Ok(pat)
+    }
+
+    /// Whether the next word is a pattern modifier (so not an amount or colour).
+    fn starts_mod(&mut self) -> bool {
+        matches!(self.peek_ident().as_deref(), Some(w) if PATTERN_MODS.contains(&w) || turb_kind(w).is_some())
+    }
+
+    /// One pattern modifier.
+    fn pattern_mod(&mut self) -> PResult<PatternMod> {
+        let tok = self.bump();
+        let word = match &tok.kind {
+            TokenKind::Ident(w) => w.to_string(),
+            _ => unreachable!("pattern_mod() is called on a modifier keyword"),
+        };
+        Ok(match word.as_str() {
+            "ramp_wave" | "triangle_wave" | "sine_wave" | "scallop_wave" | "cubic_wave" => PatternMod::Wave(word, None),
+            "poly_wave" => {
+                let e = if self.starts_expr(PIGMENT) { Some(self.expr()?) } else { None };
+                PatternMod::Wave(word, e)
+            }
+            "solid" => PatternMod::Flag(word, tok.span),
+            "warp" => PatternMod::Warp(self.warp(tok.span)?),
+            "turbulence" | "octaves" | "omega" | "lambda" => {
+                // In a texture: the turbulence of its pattern.
+                let kind = turb_kind(&word).unwrap_or(TurbKind::Turbulence);
+                PatternMod::Warp(WarpAst::Turbulence(vec![Turb { kind, value: self.expr()? }]))
+            }
+            _ => PatternMod::Set(word, self.expr()?),
+        })
+    }
+
+    /// `warp { ... }` after its keyword.
+    fn warp(&mut self, kw: crate::pov::source::Span) -> PResult<WarpAst> {
+        self.open_block("warp", kw)?;
+        let w = match self.peek_ident().as_deref() {
+            Some("turbulence") => {
+                let mut t = Vec::new();
+                while let Some(k) = self.peek_ident().as_deref().and_then(turb_kind) {
+                    t.push(self.turb(k)?);
+                }
+                WarpAst::Turbulence(t)
+            }
+            Some("repeat") => {
+                self.bump();
+                let dir = self.expr()?;
+                let (mut offset, mut flip) = (None, None);
+                loop {
+                    match self.peek_ident().as_deref() {
+                        Some("offset") => {
+                            self.bump();
+                            offset = Some(self.expr()?);
+                        }
+                        Some("flip") => {
+                            self.bump();
+                            flip = Some(self.expr()?);
+                        }
+                        _ => break,
+                    }
+                }
+                WarpAst::Repeat { dir, offset, flip }
+            }
+            Some("black_hole") => {
+                self.bump();
+                let center = self.expr()?;
+                self.eat_punct(',');
+                let radius = self.expr()?;
+                let (mut strength, mut falloff, mut inverse) = (None, None, false);
+                loop {
+                    match self.peek_ident().as_deref() {
+                        Some("strength") => {
+                            self.bump();
+                            strength = Some(self.expr()?);
+                        }
+                        Some("falloff") => {
+                            self.bump();
+                            falloff = Some(self.expr()?);
+                        }
+                        Some("inverse") => {
+                            self.bump();
+                            inverse = true;
+                        }
+                        _ => break,
+                    }
+                }
+                WarpAst::BlackHole { center, radius, strength, falloff, inverse }
+            }
+            _ => {
+                let span = self.peek().span;
+                let word = self.peek_ident().map_or_else(|| "warp".to_string(), |w| w.to_string());
+                self.skip_rest_of_block("warp", kw)?;
+                return Ok(WarpAst::Other(word, span));
+            }
+        };
+        if !self.at_block_end() {
+            let span = self.peek().span;
+            self.skip_rest_of_block("warp", kw)?;
+            return Ok(WarpAst::Other("warp".into(), span));
+        }
+        self.close_block("warp", kw)?;
+        Ok(w)
+    }
+
+    /// Skips a `{ ... }` block after its keyword (read but not modelled).
+    fn skip_block(&mut self, what: &str, kw: crate::pov::source::Span) -> PResult<()> {
+        self.open_block(what, kw)?;
+        self.skip_rest_of_block(what, kw)
+    }
+
+    /// Skips to the `}` that closes the block open now, and past it.
+    fn skip_rest_of_block(&mut self, what: &str, kw: crate::pov::source::Span) -> PResult<()> {
+        let mut depth = 0usize;
+        loop {
+            match &self.peek().kind {
+                TokenKind::Eof => return Err(Diag::new(kw, format!("`{what}` block is not closed"))),
+                TokenKind::Punct('{') => depth += 1,
+                TokenKind::Punct('}') if depth == 0 => break,
+                TokenKind::Punct('}') => depth -= 1,
+                _ => {}
+            }
+            self.bump();
+        }
+        self.close_block(what, kw)?;
+        Ok(())
+    }
+
+    /// `NAME_map { [v X] ... }` where X is read by `item` (a block) or is a declared name.
+    fn block_map<T>(
+        &mut self,
+        what: &str,
+        kw: crate::pov::source::Span,
+        mut item: impl FnMut(&mut Self) -> PResult<T>,
+    ) -> PResult<Vec<(crate::pov::ast::Expr, T)>>
+    where
+        T: FromName,
+    {
+        self.open_block(what, kw)?;
+        let mut out = Vec::new();
+        while !self.at_block_end() {
+            let open = self.expect_punct('[', "to start a map entry")?;
+            let value = self.expr()?;
+            self.eat_punct(',');
+            let inner = match self.peek_ident().as_deref() {
+                Some(w) if w == T::KEYWORD => item(self)?,
+                _ => T::body(self, open)?,
+            };
+            self.expect_punct(']', "to close the map entry")?;
+            out.push((value, inner));
+        }
+        self.close_block(what, kw)?;
+        if out.is_empty() {
+            return Err(Diag::new(kw, format!("{what} needs at least one entry")));
+        }
+        Ok(out)
     }
 
     pub(super) fn interior(&mut self) -> PResult<Interior> {
@@ -379,5 +782,26 @@ impl Parser<'_, '_> {
         }
         let end = self.close_block("interior", kw)?;
         Ok(Interior { items, span: kw.to(end) })
+    }
+}
+
+/// What a map entry holds when it names a declared item instead of writing a block.
+pub(super) trait FromName: Sized {
+    const KEYWORD: &'static str;
+    /// The entry's body written without its block (`[0.5 rgb 1]`, `[0 T_Stone1]`).
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self>;
+}
+
+impl FromName for Pigment {
+    const KEYWORD: &'static str = "pigment";
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Pigment { items: p.pigment_items(true)?, span })
+    }
+}
+
+impl FromName for Texture {
+    const KEYWORD: &'static str = "texture";
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Texture { items: p.texture_items(true)?, span })
     }
 }

@@ -1,0 +1,252 @@
+//! Geometric patterns: pure functions of a pattern-space point, exact (no noise).
+
+use glam::Vec3;
+
+use crate::lanes::{Lane, V3};
+use crate::shading::pattern::checker_lanes;
+
+/// `x − floor(x)`.
+#[inline(always)]
+pub fn frac<L: Lane>(x: L) -> L {
+    x - x.floor()
+}
+
+/// `max(0, 1 − x)`.
+#[inline(always)]
+fn fall<L: Lane>(x: L) -> L {
+    (L::splat(1.0) - x).max(L::splat(0.0))
+}
+
+/// `gradient V` (V unit length): the fraction of the distance along V.
+#[inline(always)]
+pub fn gradient<L: Lane>(p: V3<L>, dir: Vec3) -> L {
+    frac(p.dot(V3::splat(dir)))
+}
+
+/// `onion`: concentric spheres of unit spacing.
+#[inline(always)]
+pub fn onion<L: Lane>(p: V3<L>) -> L {
+    frac(p.dot(p).sqrt())
+}
+
+/// `radial`: the angle around y, 0 on +x, falling through +z (POV-Ray 3.7 measured: 0.75 on +z,
+/// 0.25 on −z).
+#[inline(always)]
+pub fn radial<L: Lane>(p: V3<L>) -> L {
+    L::from_fn(|i| {
+        let a = (-p.z.get(i)).atan2(p.x.get(i)) * (0.5 / std::f32::consts::PI);
+        a - a.floor()
+    })
+}
+
+#[inline(always)]
+pub fn spherical<L: Lane>(p: V3<L>) -> L {
+    fall(p.dot(p).sqrt())
+}
+
+#[inline(always)]
+pub fn cylindrical<L: Lane>(p: V3<L>) -> L {
+    fall((p.x * p.x + p.z * p.z).sqrt())
+}
+
+#[inline(always)]
+pub fn planar<L: Lane>(p: V3<L>) -> L {
+    fall(p.y.abs())
+}
+
+#[inline(always)]
+pub fn boxed<L: Lane>(p: V3<L>) -> L {
+    fall(p.x.abs().max(p.y.abs()).max(p.z.abs()))
+}
+
+/// `leopard`: `((sin x + sin y + sin z) / 3)²`.
+#[inline(always)]
+pub fn leopard<L: Lane>(p: V3<L>) -> L {
+    let s = (p.x.map(f32::sin) + p.y.map(f32::sin) + p.z.map(f32::sin)) * L::splat(1.0 / 3.0);
+    s * s
+}
+
+/// `spiral1 N`: N arms winding around z, one turn per unit along z.
+#[inline(always)]
+pub fn spiral1<L: Lane>(p: V3<L>, arms: f32) -> L {
+    L::from_fn(|i| {
+        let (x, y, z) = (p.x.get(i), p.y.get(i), p.z.get(i));
+        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI);
+        let v = z + (x * x + y * y).sqrt() + arms * turn;
+        v - v.floor()
+    })
+}
+
+/// `spiral2 N`: two sets of arms winding in opposite senses.
+#[inline(always)]
+pub fn spiral2<L: Lane>(p: V3<L>, arms: f32) -> L {
+    L::from_fn(|i| {
+        let (x, y, z) = (p.x.get(i), p.y.get(i), p.z.get(i));
+        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI);
+        let r = (x * x + y * y).sqrt();
+        let a = z + r + arms * turn;
+        let b = z + r - arms * turn;
+        let v = 0.5 * ((a - a.floor()) + (b - b.floor()));
+        v - v.floor()
+    })
+}
+
+/// `checker` as a value: 0 or 1.
+#[inline(always)]
+pub fn checker<L: Lane>(p: V3<L>) -> L {
+    L::select(checker_lanes(p, L::splat(0.0)), L::splat(1.0), L::splat(0.0))
+}
+
+/// `brick`: 0 in the mortar, 1 in a brick. Courses of `size.y` along y; every other course is
+/// shifted by half a brick along x and z; the mortar (`mortar` wide) runs along the upper
+/// faces of every brick.
+#[inline(always)]
+pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
+    L::from_fn(|i| {
+        let q = p.lane(i);
+        let course = (q.y / size.y).floor();
+        let odd = course.rem_euclid(2.0) != 0.0;
+        let (mut x, y, mut z) = (q.x, q.y - course * size.y, q.z);
+        if odd {
+            x += size.x * 0.5;
+            z += size.z * 0.5;
+        }
+        let fx = x.rem_euclid(size.x);
+        let fz = z.rem_euclid(size.z);
+        // The mortar runs along the upper faces of each brick (POV-Ray 3.7 shows bricks, not
+        // mortar, on the face z = 0).
+        let m = mortar;
+        let in_mortar = y > size.y - m || fx > size.x - m || fz > size.z - m;
+        if in_mortar {
+            0.0
+        } else {
+            1.0
+        }
+    })
+}
+
+/// `hexagon`: a tiling of the x-z plane by hexagons of unit side (√3 across the flats), coloured
+/// 0, 1, 2 so that no two neighbours match; a hexagon is centred on the origin with colour 0.
+#[inline(always)]
+pub fn hexagon<L: Lane>(p: V3<L>) -> L {
+    L::from_fn(|i| hexagon_one(p.x.get(i), p.z.get(i)))
+}
+
+fn hexagon_one(x: f32, z: f32) -> f32 {
+    // Axial coordinates of the nearest hexagon centre (pointy sides on ±x).
+    let size = 1.0; // centre to corner (POV-Ray 3.7: about √3 between rows of centres)
+    let q = (2.0 / 3.0 * x) / size;
+    let r = (-1.0 / 3.0 * x + 3f32.sqrt() / 3.0 * z) / size;
+    let s = -q - r;
+    let (mut rq, mut rr, rs) = (q.round(), r.round(), s.round());
+    let (dq, dr, ds) = ((rq - q).abs(), (rr - r).abs(), (rs - s).abs());
+    if dq > dr && dq > ds {
+        rq = -rr - rs;
+    } else if dr > ds {
+        rr = -rq - rs;
+    }
+    (rq - rr).rem_euclid(3.0)
+}
+
+/// `quilted`: unit cells whose value rises from the edges to the middle along a curve set by
+/// `control0`/`control1` (a cubic through 0, c0, c1, 1).
+#[inline(always)]
+pub fn quilted<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> L {
+    L::from_fn(|i| {
+        let q = p.lane(i);
+        let f = |v: f32| {
+            let t = (v - v.floor() - 0.5).abs() * 2.0; // 0 in the middle, 1 at the edges
+            let u = 1.0 - t;
+            // Cubic Bezier 0, c0, c1, 1 at u.
+            let a = 1.0 - u;
+            3.0 * a * a * u * c0 + 3.0 * a * u * u * c1 + u * u * u
+        };
+        (f(q.x) * f(q.y) * f(q.z)).cbrt()
+    })
+}
+
+/// `mandel N`: the Mandelbrot set in the x-y plane; the escape iteration over N, 1 inside.
+#[inline(always)]
+pub fn mandel<L: Lane>(p: V3<L>, iterations: u32) -> L {
+    L::from_fn(|i| {
+        let (cx, cy) = (p.x.get(i), p.y.get(i));
+        let (mut x, mut y) = (cx, cy);
+        for n in 0..iterations {
+            if x * x + y * y > 4.0 {
+                return n as f32 / iterations as f32;
+            }
+            let t = x * x - y * y + cx;
+            y = 2.0 * x * y + cy;
+            x = t;
+        }
+        1.0
+    })
+}
+
+/// Raw wood rings: `frac(r)` around z (the triangle wave makes POV-Ray's `wood`).
+#[inline(always)]
+pub fn wood_rings<L: Lane>(p: V3<L>) -> L {
+    frac((p.x * p.x + p.y * p.y).sqrt())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(f: impl Fn(V3<f32>) -> f32, p: [f32; 3]) -> f32 {
+        f(V3::from_vec3(Vec3::from(p)))
+    }
+
+    #[test]
+    fn exact_values() {
+        let g = |p| one(|q| gradient(q, Vec3::X), p);
+        assert!((g([0.25, 7.0, 1.0]) - 0.25).abs() < 1e-6);
+        assert!((g([-0.25, 0.0, 0.0]) - 0.75).abs() < 1e-6);
+        assert!((one(onion, [0.0, 1.3, 0.0]) - 0.3).abs() < 1e-6);
+        assert!((one(radial, [0.0, 0.0, 1.0]) - 0.75).abs() < 1e-6);
+        assert!((one(radial, [0.0, 0.0, -1.0]) - 0.25).abs() < 1e-6);
+        assert!((one(radial, [-1.0, 0.0, 0.0]) - 0.5).abs() < 1e-6);
+        assert!((one(spherical, [0.0, 0.5, 0.0]) - 0.5).abs() < 1e-6);
+        assert_eq!(one(boxed, [0.0, 2.0, 0.0]), 0.0);
+        assert!((one(boxed, [0.25, -0.5, 0.1]) - 0.5).abs() < 1e-6);
+        assert!((one(planar, [3.0, 0.25, 3.0]) - 0.75).abs() < 1e-6);
+        assert!((one(cylindrical, [0.6, 9.0, 0.0]) - 0.4).abs() < 1e-6);
+        assert!((one(leopard, [-std::f32::consts::FRAC_PI_2, 0.0, 0.0]) - 1.0 / 9.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn brick_mortar_and_courses() {
+        let b = |p| one(|q| brick(q, Vec3::new(8.0, 3.0, 4.5), 0.5), p);
+        assert_eq!(b([4.0, 1.5, 2.0]), 1.0);
+        assert_eq!(b([0.0, 1.5, 0.0]), 1.0, "the corner at the origin is brick");
+        assert_eq!(b([7.9, 1.5, 2.0]), 0.0, "vertical joint");
+        assert_eq!(b([4.0, 2.9, 2.0]), 0.0, "bed joint");
+        // The next course is shifted by half a brick: its joint is at x = 4 − mortar.
+        assert_eq!(b([3.7, 4.5, 1.0]), 0.0);
+        assert_eq!(b([0.5, 4.5, 1.0]), 1.0);
+    }
+
+    #[test]
+    fn hexagon_neighbours_differ() {
+        let h = |x, z| hexagon_one(x, z);
+        assert_eq!(h(0.0, 0.0), 0.0);
+        let c = h(0.0, 0.0);
+        // The six neighbours √3 away (across the flats) all differ from the centre.
+        for k in 0..6 {
+            let a = (k as f32 * 60.0 + 30.0).to_radians();
+            assert_ne!(h(a.cos() * 3f32.sqrt(), a.sin() * 3f32.sqrt()), c, "neighbour {k}");
+        }
+        for x in -20..20 {
+            for z in -20..20 {
+                let v = h(x as f32 * 0.37, z as f32 * 0.41);
+                assert!(v == 0.0 || v == 1.0 || v == 2.0);
+            }
+        }
+    }
+
+    #[test]
+    fn mandel_inside_and_out() {
+        assert_eq!(one(|q| mandel(q, 30), [0.0, 0.0, 0.0]), 1.0);
+        assert!(one(|q| mandel(q, 30), [1.5, 1.5, 0.0]) < 0.1);
+    }
+}

@@ -238,8 +238,8 @@ fn error_unsupported_keywords() {
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
          torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
-         smooth_triangle, mesh, mesh2, height_field, isosurface, parametric, union, merge, intersection, difference, \
-         object)"
+         smooth_triangle, mesh, mesh2, height_field, bicubic_patch, isosurface, parametric, light_group, union, \
+         merge, intersection, difference, object)"
     );
     let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
     assert_eq!(m, "`media` is not supported in interior (supported: ior)");
@@ -1483,4 +1483,77 @@ fn isosurfaces_load_with_their_items() {
     let ShapeDesc::Isosurface { container, params, .. } = &s.objects[1].shape else { panic!("isosurface") };
     assert_eq!(*container, strahl::scene::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
     assert_eq!(*params, strahl::scene::desc::IsoParams::default());
+}
+
+// ---- bicubic_patch, light_group, gif and pot height fields ----------------------------------
+
+const SADDLE: &str = "<0, 0, 2>, <1, 0, 0>, <2, 0, 0>, <3, 0, -2>, <0, 1, 0>, <1, 1, 0>, <2, 1, 0>, <3, 1, 0>, \
+                      <0, 2, 0>, <1, 2, 0>, <2, 2, 0>, <3, 2, 0>, <0, 3, 2> <1, 3, 0> <2, 3, 0> <3, 3, -2>";
+
+#[test]
+fn bicubic_patch_tessellates_into_a_smooth_mesh_and_bad_ones_are_located() {
+    let s = load_text("bp", &format!("bicubic_patch {{ type 1 flatness 0.1 u_steps 2 v_steps 1 {SADDLE} scale 2 }}"))
+        .unwrap();
+    let ShapeDesc::Mesh { mesh, inside_vector } = &s.objects[0].shape else { panic!("a mesh") };
+    assert_eq!(*inside_vector, None, "a patch is not solid");
+    assert_eq!((mesh.vertices.len(), mesh.faces.len()), (5 * 3, 4 * 2 * 2));
+    assert!(mesh.faces.iter().all(|f| f.normals.is_some()));
+    assert_eq!(mesh.vertices[0], DVec3::new(0.0, 0.0, 2.0));
+    let (l, c, m) = err("bp_type", &format!("bicubic_patch {{\n u_steps 3 {SADDLE} }}"));
+    assert_eq!((l, c), (2, 12));
+    assert!(m.starts_with("bicubic_patch needs `type 0` or `type 1`"), "{m}");
+    let (l, c, m) = err("bp_type2", &format!("bicubic_patch {{ type 2 {SADDLE} }}"));
+    assert_eq!((l, c, m.as_str()), (1, 22, "bicubic_patch: type must be 0 or 1, found 2"));
+    let (_, _, m) = err("bp_few", "bicubic_patch { type 0 <0, 0, 0>, <1, 0, 0> pigment { rgb 1 } }");
+    assert_eq!(m, "bicubic_patch needs 16 control points (4 rows of 4): found 2");
+    let (_, _, m) = err("bp_steps", &format!("bicubic_patch {{ type 0 u_steps -1 {SADDLE} }}"));
+    assert_eq!(m, "bicubic_patch: u_steps must be ≥ 0, found -1");
+}
+
+#[test]
+fn light_group_lights_only_its_objects_and_nests() {
+    let s = load_text(
+        "lg",
+        "light_source { <0, 9, 0> rgb 1 }\n\
+         light_group { light_source { <1, 2, 3> rgb <1, 0, 0> } sphere { 0, 1 } translate x }\n\
+         #declare Inner = light_group { light_source { 0 rgb 1 } sphere { 0, 1 } global_lights on };\n\
+         light_group { light_source { y rgb 1 } object { Inner } box { 0, 1 } global_lights }\n\
+         sphere { 0, 2 }",
+    )
+    .unwrap();
+    assert_eq!(s.lights.len(), 4);
+    assert_eq!(s.lights[1].position, DVec3::new(2.0, 2.0, 3.0), "moved with its group");
+    let groups: Vec<Option<u32>> = s.objects.iter().map(|o| o.light_group).collect();
+    assert_eq!(groups, vec![Some(0), Some(1), Some(2), None]);
+    assert_eq!(s.light_mask(Some(0)), Some(vec![false, true, false, false]));
+    // Inner: its own light, its parent's, and the global one (global_lights on).
+    assert_eq!(s.light_mask(Some(1)), Some(vec![true, false, true, true]));
+    assert_eq!(s.light_mask(Some(2)), Some(vec![true, false, false, true]));
+    assert_eq!(s.light_mask(None), Some(vec![true, false, false, false]));
+    let plain = load_text("lg_none", "light_source { 0 rgb 1 } sphere { 0, 1 }").unwrap();
+    assert_eq!(plain.light_mask(None), None);
+}
+
+#[test]
+fn pot_and_gif_height_fields_read_and_bad_ones_are_located() {
+    let pot = std::path::Path::new("/usr/share/povray-3.7/include/mtmand.pot");
+    if pot.is_file() {
+        let d = dir("hf_pot");
+        std::fs::copy(pot, d.join("m.pot")).unwrap();
+        let path = write(&d, "scene.pov", "height_field { pot \"m.pot\" water_level 0 }");
+        let s = load_scene(&path, &std_include()).unwrap();
+        let ShapeDesc::HeightField { field, .. } = &s.objects[0].shape else { panic!("height field") };
+        // The file is 320 x 120: a 160 x 120 field of 16-bit heights.
+        assert_eq!((field.width, field.height), (160, 120));
+        assert!(field.heights.iter().any(|&h| h > 0.0));
+    }
+    let d = dir("hf_badgif");
+    std::fs::write(d.join("bad.gif"), "GIF89a\x01").unwrap();
+    let path = write(&d, "scene.pov", "height_field { gif \"bad.gif\" }");
+    let e = load_scene(&path, &std_include()).expect_err("truncated gif");
+    assert_eq!((e.line, e.col), (1, 20));
+    assert!(e.message.contains("as gif: not a readable GIF"), "{}", e.message);
+    let (l, c, m) = err("hf_nopot", "\n height_field { pot \"nowhere.pot\" }");
+    assert_eq!((l, c), (2, 21));
+    assert!(m.starts_with("height_field image \"nowhere.pot\" not found"), "{m}");
 }

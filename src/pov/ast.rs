@@ -350,6 +350,10 @@ pub enum ObjectKind {
     Blob(Blob),
     /// `julia_fractal { <p> items }`.
     Julia(JuliaFractal),
+    /// `light_group { objects lights global_lights B }`: a union whose own lights light only
+    /// its objects; `global_lights` is `None` when not written (off), `Some(None)` when
+    /// written alone (on).
+    LightGroup { children: Vec<Stmt>, global_lights: Option<Option<Expr>> },
 }
 
 /// A `julia_fractal`'s parameter and items as written; the object modifiers follow as for any

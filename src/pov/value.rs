@@ -138,6 +138,7 @@ impl Part {
             no_shadow: false,
             inverse: false,
             hollow: false,
+            light_group: None,
             source,
         };
         Part { desc, textured: false, has_interior: false, children }

@@ -25,7 +25,7 @@ done
 for s in superellipsoids; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in prisms text lathes sors blobs julias isosurfaces parametrics; do
+for s in prisms text lathes sors blobs julias isosurfaces parametrics bicubic light_groups; do
     render "$here/scenes/$s.pov" "$s"
 done
 # heightfields.pov reads hf.pgm beside it, made by scripts/make-heightfield.py.

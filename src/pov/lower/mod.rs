@@ -3,6 +3,7 @@
 //! composes transforms the way POV-Ray does. Split by topic: `eval` (expressions, colours,
 //! transforms), `camera`, `textures`, `objects`.
 
+pub(crate) mod bicubic;
 mod blob;
 mod camera;
 mod eval;

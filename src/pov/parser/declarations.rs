@@ -278,7 +278,6 @@ const DECLARABLE_UNMODELLED: &[&str] = &[
     "density_map",
     "spline",
     "transform",
-    "light_group",
     "fog",
     "rainbow",
     "sky_sphere",

@@ -7,6 +7,7 @@
 //! Split by topic: `expr` (expressions, colours), `scene` (camera, lights, objects) and
 //! `textures` (pigment, normal, finish, texture, interior).
 
+mod bicubic;
 mod blob;
 mod declarations;
 mod directives;
@@ -15,6 +16,7 @@ mod function;
 mod isosurface;
 mod julia;
 mod keywords;
+mod light_group;
 mod macros;
 mod mesh;
 mod scene;

@@ -75,9 +75,8 @@ impl Parser<'_, '_> {
         }
         let mut points = [DVec3::ZERO; 16];
         for (i, slot) in points.iter_mut().enumerate() {
-            if i > 0 {
-                self.eat_punct(',');
-            }
+            // Commas are optional, also after the items (`v_steps 4, <0, 0, 0>, ...`).
+            self.eat_punct(',');
             if !self.starts_expr(super::scene::MODIFIERS) || self.peek_ident().as_deref() == Some("uv_vectors") {
                 return Err(Diag::new(
                     self.peek().span,

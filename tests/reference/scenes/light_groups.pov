@@ -35,7 +35,7 @@ light_group {
 };
 light_group {
     light_source { <4, 3, -8> color rgb <1, 0.8, 0.3> }
-    light_group { Inner }
+    object { Inner }
     cylinder { <0, 0, 0>, <0, 0.8, 0>, 0.5 pigment { color White } translate <1, 0, 0> }
     translate <1.4, 0.6, -1>
 }

@@ -49,7 +49,8 @@ impl Lowerer<'_> {
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
             ObjectKind::LightGroup { children, global_lights } => {
-                let mut parts = self.children(children, "light_group", o.span)?;
+                // A light group flattens as a union does (and a union or group inside it too).
+                let mut parts = self.children(children, "union", o.span)?;
                 let lights = std::mem::take(&mut self.child_lights);
                 let global = match global_lights {
                     Some(on) => self.hollow(on.as_ref())?,
@@ -258,8 +259,9 @@ impl Lowerer<'_> {
             }
             Some(_) => {}
         };
+        // Shading looks at the shapes' own descriptions (a CSG node's children are shaded
+        // with their materials), so only the leaves are marked.
         for part in parts {
-            mark(part);
             part.for_each_leaf(&mut mark);
         }
         Ok(())

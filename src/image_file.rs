@@ -26,10 +26,8 @@ pub fn read_gif(bytes: &[u8], max_side: usize) -> Result<IndexedImage, String> {
         return Err(format!("the image is {width}×{height}; at most {max_side}×{max_side} is read"));
     }
     let global: Option<Vec<u8>> = decoder.global_palette().map(<[u8]>::to_vec);
-    let frame = decoder
-        .read_next_frame()
-        .map_err(|e| format!("not a readable GIF: {e}"))?
-        .ok_or("the GIF holds no image")?;
+    let frame =
+        decoder.read_next_frame().map_err(|e| format!("not a readable GIF: {e}"))?.ok_or("the GIF holds no image")?;
     let palette_bytes = frame.palette.as_deref().or(global.as_deref()).unwrap_or(&[]);
     let palette = palette_bytes.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
     let mut indices = vec![0u8; width * height];

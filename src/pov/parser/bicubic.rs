@@ -70,7 +70,10 @@ impl Parser<'_, '_> {
         if patch_type.is_none() {
             return Err(Diag::new(
                 self.peek().span,
-                format!("bicubic_patch needs `type 0` or `type 1` before its control points, found {}", self.peek().describe()),
+                format!(
+                    "bicubic_patch needs `type 0` or `type 1` before its control points, found {}",
+                    self.peek().describe()
+                ),
             ));
         }
         let mut points = [DVec3::ZERO; 16];

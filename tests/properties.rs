@@ -1006,12 +1006,8 @@ fn random_patch(r: &mut Rng, case: u64) -> strahl::scene::desc::MeshDesc {
             format!("<{}, {}, {}>", p.x, p.y, p.z)
         })
         .collect();
-    let text = format!(
-        "bicubic_patch {{ type 1 u_steps {} v_steps {} {} }}",
-        1 + r.pick(4),
-        1 + r.pick(4),
-        points.join(", ")
-    );
+    let text =
+        format!("bicubic_patch {{ type 1 u_steps {} v_steps {} {} }}", 1 + r.pick(4), 1 + r.pick(4), points.join(", "));
     let dir = std::env::temp_dir().join(format!("strahl-props-patch-{}-{case}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("patch.pov");

@@ -14,6 +14,7 @@ pub mod fly;
 pub mod function;
 pub mod geometry;
 pub mod headless;
+pub mod image_file;
 pub mod lanes;
 pub mod pov;
 pub mod render;

@@ -238,13 +238,14 @@ fn error_unsupported_keywords() {
         m,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
          torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
-         smooth_triangle, mesh, mesh2, height_field, isosurface, parametric, union, merge, intersection, difference, \
-         object)"
+         smooth_triangle, mesh, mesh2, height_field, bicubic_patch, isosurface, parametric, light_group, union, \
+         merge, intersection, difference, object)"
     );
-    let (_, _, m) = err("e_media", "sphere { 0, 1 interior { media { } } }");
-    assert_eq!(m, "`media` is not supported in interior (supported: ior)");
-    let (_, _, m) = err("e_light_photons", "light_source { 0 color rgb 1 photons { } }");
-    assert!(m.starts_with("`photons` is not supported in light_source"), "{m}");
+    // (`media` and `photons` are noted as not modelled, not refused: see the tests of warnings.)
+    let (_, _, m) = err("e_interior_word", "sphere { 0, 1 interior { turbulence 1 } }");
+    assert!(m.starts_with("`turbulence` is not supported in interior (supported: ior, media"), "{m}");
+    let (_, _, m) = err("e_light_word", "light_source { 0 color rgb 1 pigment { } }");
+    assert!(m.starts_with("`pigment` is not supported in light_source"), "{m}");
 }
 
 #[test]
@@ -1573,7 +1574,7 @@ fn unmodelled_light_and_media_features_warn_with_their_place() {
     assert_eq!((w[0].line, w[0].col), (1, 30));
     assert!(w[0].message.contains("projected_through"), "{}", w[0].message);
     assert_eq!((w[1].line, w[1].col), (2, 1));
-    assert!(w[1].message.contains("media is not modelled"), "{}", w[1].message);
+    assert!(w[1].message.contains("`media` is not modelled"), "{}", w[1].message);
 }
 
 #[test]
@@ -1622,6 +1623,8 @@ fn error_lights_and_atmosphere() {
     assert!(m.contains("rainbow needs a color_map"), "{m}");
     let (_, _, m) = err("e_fog_csg", "union { sphere { 0, 1 } fog { distance 2 } }");
     assert!(!m.is_empty());
+}
+
 // ---- camera projections and focal blur --------------------------------------------------
 
 #[test]
@@ -1691,4 +1694,118 @@ fn camera_normal_is_read_and_reported() {
     .unwrap();
     let text = format!("{w:?}");
     assert!(text.contains("camera `normal`") && text.contains("not modelled"), "{text}");
+}
+
+// ---- bicubic_patch, light_group, gif and pot height fields ----------------------------------
+
+const SADDLE: &str = "<0, 0, 2>, <1, 0, 0>, <2, 0, 0>, <3, 0, -2>, <0, 1, 0>, <1, 1, 0>, <2, 1, 0>, <3, 1, 0>, \
+                      <0, 2, 0>, <1, 2, 0>, <2, 2, 0>, <3, 2, 0>, <0, 3, 2> <1, 3, 0> <2, 3, 0> <3, 3, -2>";
+
+#[test]
+fn bicubic_patch_tessellates_into_a_smooth_mesh_and_bad_ones_are_located() {
+    let s = load_text("bp", &format!("bicubic_patch {{ type 1 flatness 0.1 u_steps 2 v_steps 1 {SADDLE} scale 2 }}"))
+        .unwrap();
+    let ShapeDesc::Mesh { mesh, inside_vector } = &s.objects[0].shape else { panic!("a mesh") };
+    assert_eq!(*inside_vector, None, "a patch is not solid");
+    assert_eq!((mesh.vertices.len(), mesh.faces.len()), (5 * 3, 4 * 2 * 2));
+    assert!(mesh.faces.iter().all(|f| f.normals.is_some()));
+    assert_eq!(mesh.vertices[0], DVec3::new(0.0, 0.0, 2.0));
+    let (l, c, m) = err("bp_type", &format!("bicubic_patch {{\n u_steps 3 {SADDLE} }}"));
+    assert_eq!((l, c), (2, 12));
+    assert!(m.starts_with("bicubic_patch needs `type 0` or `type 1`"), "{m}");
+    let (l, c, m) = err("bp_type2", &format!("bicubic_patch {{ type 2 {SADDLE} }}"));
+    assert_eq!((l, c, m.as_str()), (1, 22, "bicubic_patch: type must be 0 or 1, found 2"));
+    let (_, _, m) = err("bp_few", "bicubic_patch { type 0 <0, 0, 0>, <1, 0, 0> pigment { rgb 1 } }");
+    assert_eq!(m, "bicubic_patch needs 16 control points (4 rows of 4): found 2");
+    let (_, _, m) = err("bp_steps", &format!("bicubic_patch {{ type 0 u_steps -1 {SADDLE} }}"));
+    assert_eq!(m, "bicubic_patch: u_steps must be ≥ 0, found -1");
+}
+
+#[test]
+fn light_group_lights_only_its_objects_and_nests() {
+    let s = load_text(
+        "lg",
+        "light_source { <0, 9, 0> rgb 1 }\n\
+         light_group { light_source { <1, 2, 3> rgb <1, 0, 0> } sphere { 0, 1 } translate x }\n\
+         #declare Inner = light_group { light_source { 0 rgb 1 } sphere { 0, 1 } global_lights on };\n\
+         light_group { light_source { y rgb 1 } object { Inner } box { 0, 1 } global_lights }\n\
+         sphere { 0, 2 }",
+    )
+    .unwrap();
+    assert_eq!(s.lights.len(), 4);
+    assert_eq!(s.lights[1].position, DVec3::new(2.0, 2.0, 3.0), "moved with its group");
+    let groups: Vec<Option<u32>> = s.objects.iter().map(|o| o.light_group).collect();
+    assert_eq!(groups, vec![Some(0), Some(1), Some(2), None]);
+    assert_eq!(s.light_mask(Some(0)), Some(vec![false, true, false, false]));
+    // Inner: its own light, its parent's, and the global one (global_lights on).
+    assert_eq!(s.light_mask(Some(1)), Some(vec![true, false, true, true]));
+    assert_eq!(s.light_mask(Some(2)), Some(vec![true, false, false, true]));
+    assert_eq!(s.light_mask(None), Some(vec![true, false, false, false]));
+    let plain = load_text("lg_none", "light_source { 0 rgb 1 } sphere { 0, 1 }").unwrap();
+    assert_eq!(plain.light_mask(None), None);
+}
+
+#[test]
+fn pot_and_gif_height_fields_read_and_bad_ones_are_located() {
+    let pot = std::path::Path::new("/usr/share/povray-3.7/include/mtmand.pot");
+    if pot.is_file() {
+        let d = dir("hf_pot");
+        std::fs::copy(pot, d.join("m.pot")).unwrap();
+        let path = write(&d, "scene.pov", "height_field { pot \"m.pot\" water_level 0 }");
+        let s = load_scene(&path, &std_include()).unwrap();
+        let ShapeDesc::HeightField { field, .. } = &s.objects[0].shape else { panic!("height field") };
+        // The file is 320 x 120: a 160 x 120 field of 16-bit heights.
+        assert_eq!((field.width, field.height), (160, 120));
+        assert!(field.heights.iter().any(|&h| h > 0.0));
+    }
+    let d = dir("hf_badgif");
+    std::fs::write(d.join("bad.gif"), "GIF89a\x01").unwrap();
+    let path = write(&d, "scene.pov", "height_field { gif \"bad.gif\" }");
+    let e = load_scene(&path, &std_include()).expect_err("truncated gif");
+    assert_eq!((e.line, e.col), (1, 20));
+    assert!(e.message.contains("as gif: not a readable GIF"), "{}", e.message);
+    let (l, c, m) = err("hf_nopot", "\n height_field { pot \"nowhere.pot\" }");
+    assert_eq!((l, c), (2, 21));
+    assert!(m.starts_with("height_field image \"nowhere.pot\" not found"), "{m}");
+}
+
+#[test]
+fn declared_atmospheres_are_where_blocks_start() {
+    let s = load_text(
+        "declared_sky",
+        "#declare S = sky_sphere { pigment { rgb <0.2, 0.3, 0.9> } pigment { checker rgbt 1 rgb 1 } }\n\
+         #declare F = fog { distance 20 rgb 0.5 }\n\
+         sky_sphere { S rotate y * 30 }\n\
+         fog { F fog_offset 1 }\n\
+         sphere { 0, 1 }",
+    )
+    .unwrap();
+    let sky = s.sky_sphere.as_ref().expect("the sky sphere");
+    assert_eq!(sky.pigments.len(), 2);
+    assert_eq!((s.fogs.len(), s.fogs[0].distance, s.fogs[0].offset), (1, 20.0, 1.0));
+    // A declared fog is not a sky sphere.
+    let (l, c, m) = err("declared_sky_kind", "#declare F = fog { distance 20 rgb 0.5 }\nsky_sphere { F }");
+    assert_eq!((l, c), (2, 14), "{m}");
+    assert!(m.contains('F') && m.contains("sky_sphere"), "{m}");
+}
+
+#[test]
+fn photons_in_lights_are_noted_and_fonts_resolve_without_their_extension() {
+    let d = dir("photons_light");
+    let p = write(&d, "s.pov", "light_source { <0, 5, 0> color rgb 1 photons { refraction on reflection on } }\nsphere { 0, 1 }");
+    let (s, w) = load_scene_with_warnings(&p, &std_include()).unwrap();
+    assert_eq!(s.lights.len(), 1);
+    assert!(w.iter().any(|w| w.message.contains("`photons` is not modelled") && (w.line, w.col) == (1, 38)), "{w:?}");
+    // POV-Ray finds `"crystal"` as crystal.ttf on the include path.
+    let pov_include = PathBuf::from("/usr/share/povray-3.7/include");
+    if pov_include.join("crystal.ttf").exists() {
+        let d = dir("font_ext");
+        let p = write(&d, "scene.pov", "text { ttf \"crystal\" \"P\" 1, 0 }");
+        let s = load_scene(&p, &IncludePath { dirs: vec![pov_include] }).unwrap();
+        assert_eq!(s.objects.len(), 1);
+    } else {
+        println!("skipped the font half: POV-Ray's include files (povray-includes) are not installed");
+    }
+    let (_, _, m) = err("font_missing", "text { ttf \"no_such_font\" \"P\" 1, 0 }");
+    assert!(m.contains("font \"no_such_font\" not found"), "{m}");
 }

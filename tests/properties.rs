@@ -341,6 +341,7 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
                 no_shadow: r.pick(5) == 0,
                 inverse: false,
                 hollow: false,
+                light_group: None,
                 source,
             }
         })
@@ -768,6 +769,7 @@ fn csg_leaf(r: &mut Rng) -> ObjectDesc {
         no_shadow: false,
         inverse: r.pick(6) == 0,
         hollow: false,
+        light_group: None,
         source: SourceRef::default(),
     }
 }
@@ -995,7 +997,31 @@ fn csg_surfaces_match_a_crossing_reference() {
     assert!(compared > 3000 && hits > 250, "{compared} rays compared, {hits} hits");
 }
 
-/// Meshes: eight-lane packets give the single-ray distances bit for bit, and both agree with
+/// A `bicubic_patch` with random control points around a 6-unit square and random steps, read
+/// through the parser (which tessellates it into a mesh).
+fn random_patch(r: &mut Rng, case: u64) -> strahl::scene::desc::MeshDesc {
+    let points: Vec<String> = (0..16)
+        .map(|k| {
+            let base = DVec3::new((k % 4) as f64 * 2.0 - 3.0, 0.0, (k / 4) as f64 * 2.0 - 3.0);
+            let p = base + r.v(-1.5, 1.5);
+            format!("<{}, {}, {}>", p.x, p.y, p.z)
+        })
+        .collect();
+    let text =
+        format!("bicubic_patch {{ type 1 u_steps {} v_steps {} {} }}", 1 + r.pick(4), 1 + r.pick(4), points.join(", "));
+    let dir = std::env::temp_dir().join(format!("strahl-props-patch-{}-{case}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("patch.pov");
+    std::fs::write(&path, text).unwrap();
+    let desc = strahl::pov::load_scene(&path, &strahl::pov::IncludePath::default()).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    match &desc.objects[0].shape {
+        ShapeDesc::Mesh { mesh, .. } => (**mesh).clone(),
+        other => panic!("a patch lowers to a mesh, not {other:?}"),
+    }
+}
+
+/// Meshes (triangle soups and bicubic patches): eight-lane packets give the single-ray distances bit for bit, and both agree with
 /// brute force over the same triangles placed one by one as `triangle` objects (the mesh's own
 /// BVH, its object-space transform and the face it reports, against no accelerator at all).
 #[test]
@@ -1008,7 +1034,14 @@ fn mesh_packets_single_rays_and_brute_force_agree() {
     let (mut hits, mut rays, mut disagree) = (0, 0, 0);
     for case in 0..24 {
         let mut mesh = MeshDesc::default();
-        for _ in 0..50 + r.pick(300) {
+        if case % 3 == 2 {
+            // A bicubic patch, tessellated by the parser as a scene would have it (its smooth
+            // normals dropped: the brute-force triangles below are flat).
+            mesh = random_patch(r, case);
+            mesh.normals.clear();
+            mesh.faces.iter_mut().for_each(|f| f.normals = None);
+        }
+        for _ in 0..(50 + r.pick(300)) * u64::from(case % 3 != 2) {
             let k = mesh.vertices.len() as u32;
             let c = r.v(-3.0, 3.0);
             mesh.vertices.extend([c + r.v(-0.7, 0.7), c + r.v(-0.7, 0.7), c + r.v(-0.7, 0.7)]);

@@ -79,6 +79,9 @@ pub enum DeclValue {
     Object(Object),
     Camera(Vec<CameraItem>),
     Light(Light),
+    /// `#declare S = sky_sphere { .. }` (or fog, rainbow): its items, for a block that names
+    /// it to start from.
+    Atmosphere(Atmosphere),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -511,6 +514,10 @@ pub enum ObjectKind {
     Blob(Blob),
     /// `julia_fractal { <p> items }`.
     Julia(JuliaFractal),
+    /// `light_group { objects lights global_lights B }`: a union whose own lights light only
+    /// its objects; `global_lights` is `None` when not written (off), `Some(None)` when
+    /// written alone (on).
+    LightGroup { children: Vec<Stmt>, global_lights: Option<Option<Expr>> },
 }
 
 /// A `julia_fractal`'s parameter and items as written; the object modifiers follow as for any

@@ -32,6 +32,9 @@ pub enum Value {
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
     Light(Box<LightDesc>),
+    /// A declared `sky_sphere`, `fog` or `rainbow`: its items as read (names resolved), which
+    /// a block naming it starts from.
+    Atmosphere(Rc<crate::pov::ast::Atmosphere>),
     Str(Rc<str>),
     Array(Rc<Array>),
     Macro(Rc<Macro>),
@@ -138,6 +141,7 @@ impl Part {
             no_shadow: false,
             inverse: false,
             hollow: false,
+            light_group: None,
             source,
         };
         Part { desc, textured: false, has_interior: false, children }
@@ -208,6 +212,11 @@ impl Value {
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",
             Value::Light(_) => "a light_source",
+            Value::Atmosphere(a) => match a.kind {
+                crate::pov::ast::AtmosphereKind::SkySphere => "a sky_sphere",
+                crate::pov::ast::AtmosphereKind::Fog => "a fog",
+                crate::pov::ast::AtmosphereKind::Rainbow => "a rainbow",
+            },
             Value::Str(_) => "a string",
             Value::Array(_) => "an array",
             Value::Macro(_) => "a macro",

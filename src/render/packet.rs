@@ -249,6 +249,9 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 let reflected = shade::reflect(hit.ray_dir, hit.normal);
                 let mut color = shade::ambient(finish, scene.ambient_light, &hit);
                 for (l, light) in scene.lights.iter().enumerate() {
+                    if !material.lit_by(l) {
+                        continue;
+                    }
                     let sample = LightSample {
                         dir: light_dir[l][r],
                         color: V3::splat(light.color * Vec3::ONE),

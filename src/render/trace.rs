@@ -137,6 +137,9 @@ impl<'a> Tracer<'a> {
         let reflected = shade::reflect(hit.ray_dir, hit.normal);
         let mut color = shade::ambient(finish, scene.ambient_light, &hit);
         for (i, light) in scene.lights.iter().enumerate() {
+            if !material.lit_by(i) {
+                continue;
+            }
             let (l, passed) = match shadows {
                 Shadows::Given(lit) => {
                     let l = lit[i];

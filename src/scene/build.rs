@@ -266,6 +266,9 @@ pub struct Scene {
     /// The `MeshData` built for each mesh description (by address) or height field (address,
     /// `smooth`, water level bits) during `build`, so instances share one copy.
     mesh_cache: HashMap<(usize, bool, u64), Arc<MeshData>>,
+    /// While building: which lights light the objects of no light group (entry 0) and of
+    /// each `light_group` (entry g + 1); empty without light groups.
+    light_masks: Vec<Option<Arc<[bool]>>>,
     pub isosurfaces: Vec<Isosurface>,
     pub parametrics: Vec<Parametric>,
     /// Unbounded: tested for every ray, outside the accelerator.
@@ -324,6 +327,10 @@ impl Scene {
             julias: Vec::new(),
             meshes: Vec::new(),
             mesh_cache: HashMap::new(),
+            light_masks: (0..desc.light_groups.len() + 1)
+                .filter(|_| !desc.light_groups.is_empty())
+                .map(|g| desc.light_mask(g.checked_sub(1).map(|g| g as u32)).map(Arc::from))
+                .collect(),
             isosurfaces: Vec::new(),
             parametrics: Vec::new(),
             planes: Vec::new(),
@@ -360,13 +367,15 @@ impl Scene {
         }
         scene.prims.extend(leaves);
         scene.mesh_cache.clear();
+        scene.light_masks.clear();
         scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
 
     /// The material of `object`, noting what it needs in `features`.
     fn add_material(&mut self, object: &ObjectDesc) -> u32 {
-        let m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
+        let mut m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
+        m.lights = self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten();
         self.features.transparency |= m.may_be_transparent();
         self.features.reflection |= m.finish.reflects();
         self.features.normals |= m.normal.is_some();

@@ -806,6 +806,9 @@ pub struct ObjectDesc {
     /// `hollow`: the inside may hold media. Kept as written; nothing that strahl renders yet
     /// depends on it (in POV-Ray only media and fog inside objects do).
     pub hollow: bool,
+    /// The innermost `light_group` the object belongs to (an index into
+    /// `SceneDesc::light_groups`), or `None`: lit by the scene's global lights only.
+    pub light_group: Option<u32>,
     pub source: SourceRef,
 }
 
@@ -878,6 +881,17 @@ impl Default for RainbowDesc {
     }
 }
 
+/// A `light_group` (POV-Ray 3.4.4.2): its lights (indices into `SceneDesc::lights`) light only
+/// the objects of the group and of the groups inside it; the scene's global lights (those in no
+/// group) light them too when `global_lights` is on.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct LightGroupDesc {
+    pub lights: Vec<u32>,
+    pub global_lights: bool,
+    /// The group this one is written in: its lights light this group's objects too.
+    pub parent: Option<u32>,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneDesc {
     /// The language version in effect at the end of parsing (`#version`, or 3.7 when none).
@@ -897,6 +911,8 @@ pub struct SceneDesc {
     pub rainbows: Vec<RainbowDesc>,
     pub global: GlobalSettings,
     pub objects: Vec<ObjectDesc>,
+    /// The scene's `light_group`s; empty when it has none (every light lights everything).
+    pub light_groups: Vec<LightGroupDesc>,
     /// Every file `#include` read, in order, with the directive that read it (for the
     /// statistics: which `colors.inc` a scene got).
     pub included: Vec<IncludedFile>,
@@ -933,6 +949,7 @@ impl Default for SceneDesc {
             rainbows: Vec::new(),
             global: GlobalSettings::default(),
             objects: Vec::new(),
+            light_groups: Vec::new(),
             included: Vec::new(),
             unmodelled: Vec::new(),
         }
@@ -951,6 +968,34 @@ impl SceneDesc {
             None if self.version_directive && self.version >= 3.7 - 1e-9 => Some(1.0),
             None => None,
         }
+    }
+
+    /// Which of `lights` light the objects of `group` (`None`: objects in no group), or `None`
+    /// when the scene has no light groups and every light lights everything.
+    pub fn light_mask(&self, group: Option<u32>) -> Option<Vec<bool>> {
+        if self.light_groups.is_empty() {
+            return None;
+        }
+        let mut grouped = vec![false; self.lights.len()];
+        for g in &self.light_groups {
+            for &l in &g.lights {
+                grouped[l as usize] = true;
+            }
+        }
+        let global = group.is_none_or(|g| self.light_groups[g as usize].global_lights);
+        let mut mask: Vec<bool> = grouped.iter().map(|&in_group| global && !in_group).collect();
+        // The group's own lights and those of the groups around it (bounded: a chain of
+        // parents cannot be longer than the number of groups).
+        let mut at = group;
+        for _ in 0..self.light_groups.len() {
+            let Some(g) = at else { break };
+            let g = &self.light_groups[g as usize];
+            for &l in &g.lights {
+                mask[l as usize] = true;
+            }
+            at = g.parent;
+        }
+        Some(mask)
     }
 
     /// Whether output pixels are sRGB-encoded.

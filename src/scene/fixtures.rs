@@ -27,6 +27,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transfo
         no_shadow: false,
         inverse: false,
         hollow: false,
+        light_group: None,
         source: SourceRef { file: "fixtures::seed_scene".into(), line: 0, col: 0 },
     }
 }

@@ -118,6 +118,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
         no_shadow: false,
         inverse: false,
         hollow: false,
+        light_group: None,
         source: SourceRef { file: "scene::generate".into(), line: index as u32, col: 0 },
     }
 }

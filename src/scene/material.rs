@@ -183,9 +183,18 @@ pub struct Material {
     pub normal: Option<NormalF32>,
     pub finish: Finish,
     pub ior: f32,
+    /// Which of the scene's lights light this surface (`light_group`), by light index; `None`
+    /// (every scene without light groups): all of them.
+    pub lights: Option<std::sync::Arc<[bool]>>,
 }
 
 impl Material {
+    /// Whether light `index` of the scene lights this surface.
+    #[inline]
+    pub fn lit_by(&self, index: usize) -> bool {
+        self.lights.as_ref().is_none_or(|mask| mask[index])
+    }
+
     /// Whether any point of the pigment lets light through (filter or transmit above zero).
     pub fn may_be_transparent(&self) -> bool {
         self.pigment.pattern.may_be_transparent()
@@ -198,6 +207,7 @@ impl Material {
             normal: texture.normal.as_ref().map(|n| NormalF32::from_desc(n, world_from_render)),
             finish: Finish::from_desc(&texture.finish),
             ior: interior.ior as f32,
+            lights: None,
         }
     }
 }

@@ -30,7 +30,7 @@ for s in cameras_ortho cameras_ortho_plain cameras_ortho_area cameras_fisheye ca
     cameras_focal_blur; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in prisms text lathes sors blobs julias isosurfaces parametrics finishes; do
+for s in prisms text lathes sors blobs julias isosurfaces parametrics finishes bicubic light_groups; do
     render "$here/scenes/$s.pov" "$s"
 done
 # heightfields.pov reads hf.pgm beside it, made by scripts/make-heightfield.py.

@@ -2,7 +2,9 @@
 //! its maximum; a palette image's index over 255; a colour image (PPM, TGA, colour PNG) holds a
 //! 16-bit height in its red (high byte) and green (low byte) channels. The file is searched as
 //! `#include` searches (the scene's folder, then the include path). PNG through the `png`
-//! crate strahl already uses; PGM, PPM and TGA are a few lines each.
+//! crate strahl already uses; GIF (palette index over 255) and POT (Fractint's 16-bit GIF,
+//! high bytes left, low bytes right) through `crate::image_file`; PGM, PPM and TGA are a few
+//! lines each.
 
 use std::sync::Arc;
 
@@ -41,6 +43,8 @@ impl Lowerer<'_> {
         let decoded = match format {
             "png" => png_heights(&bytes),
             "pgm" | "ppm" => pnm_heights(&bytes),
+            "gif" => gif_heights(&bytes),
+            "pot" => pot_heights(&bytes),
             _ => tga_heights(&bytes),
         };
         let (width, height, heights) =
@@ -109,6 +113,29 @@ fn png_heights(bytes: &[u8]) -> Result<Heights, String> {
         }
     }
     Ok((w, h, out))
+}
+
+/// GIF: a pixel's palette index over 255 (POV-Ray 3.4.5.1.6: entry 0 is height 0, entry 255
+/// height 1, whatever their colours).
+fn gif_heights(bytes: &[u8]) -> Result<Heights, String> {
+    let img = crate::image_file::read_gif(bytes, MAX_SIDE)?;
+    Ok((img.width, img.height, img.indices.iter().map(|&i| i as f32 / 255.0).collect()))
+}
+
+/// POT (Fractint's 16-bit continuous potential): a GIF twice as wide as the field, whose left
+/// half holds each height's high byte and right half its low byte.
+fn pot_heights(bytes: &[u8]) -> Result<Heights, String> {
+    let img = crate::image_file::read_gif(bytes, 2 * MAX_SIDE)?;
+    if img.width % 2 != 0 {
+        return Err(format!("a POT file is twice as wide as its field; this one is {} pixels wide", img.width));
+    }
+    let w = img.width / 2;
+    let mut out = Vec::with_capacity(w * img.height);
+    for row in img.indices.chunks_exact(img.width) {
+        let (high, low) = row.split_at(w);
+        out.extend(high.iter().zip(low).map(|(&h, &l)| red_green(h, l)));
+    }
+    Ok((w, img.height, out))
 }
 
 /// PGM (P2, P5) and PPM (P3, P6).

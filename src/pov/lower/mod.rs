@@ -4,6 +4,7 @@
 //! transforms), `camera`, `textures`, `objects`.
 
 mod atmosphere;
+pub(crate) mod bicubic;
 mod blob;
 mod camera;
 mod eval;
@@ -287,6 +288,7 @@ impl<'f> Lowerer<'f> {
             DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
             DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
             DeclValue::Light(l) => Value::Light(Box::new(self.light(l)?)),
+            DeclValue::Atmosphere(a) => Value::Atmosphere(Rc::new(a.clone())),
         })
     }
 

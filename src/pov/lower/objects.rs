@@ -37,6 +37,7 @@ impl Lowerer<'_> {
                     no_shadow: false,
                     inverse: false,
                     hollow: false,
+                    light_group: None,
                     source: self.files.source_ref(o.span),
                 })],
                 csg: false,
@@ -47,6 +48,17 @@ impl Lowerer<'_> {
                 (ExprKind::Value(_), Value::Object(group)) => *group,
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
+            ObjectKind::LightGroup { children, global_lights } => {
+                // A light group flattens as a union does (and a union or group inside it too).
+                let mut parts = self.children(children, "union", o.span)?;
+                let lights = std::mem::take(&mut self.child_lights);
+                let global = match global_lights {
+                    Some(on) => self.hollow(on.as_ref())?,
+                    None => false,
+                };
+                self.light_group(&mut parts, lights, global, &o.modifiers)?;
+                Group { parts, csg: true, lights: Vec::new() }
+            }
             ObjectKind::Csg { op: CsgOp::Union, children } => {
                 Group { parts: self.children(children, "union", o.span)?, csg: true, lights: Vec::new() }
             }
@@ -210,6 +222,49 @@ impl Lowerer<'_> {
             self.warn(Diag::new(span, format!("`{word}` has no objects")));
         }
         Ok(parts)
+    }
+
+    /// Registers a `light_group` (POV-Ray 3.4.4.2): its `lights`, moved by the group's
+    /// transforms, join the scene's lights, marked as lighting only `parts` (and, through
+    /// `parent`, the parts of the groups written inside this one).
+    fn light_group(
+        &mut self,
+        parts: &mut [Part],
+        mut lights: Vec<crate::scene::desc::LightDesc>,
+        global_lights: bool,
+        modifiers: &[Modifier],
+    ) -> PResult<()> {
+        for m in modifiers {
+            if let Modifier::Transform(t) = m {
+                let t = self.transform(t)?;
+                for light in &mut lights {
+                    light.position = t.matrix.transform_point3(light.position);
+                }
+            }
+        }
+        let id = self.scene.light_groups.len() as u32;
+        let first = self.scene.lights.len() as u32;
+        let count = lights.len() as u32;
+        self.scene.lights.extend(lights);
+        let groups = &mut self.scene.light_groups;
+        groups.push(crate::scene::desc::LightGroupDesc {
+            lights: (first..first + count).collect(),
+            global_lights,
+            parent: None,
+        });
+        let mut mark = |p: &mut Part| match p.desc.light_group {
+            None => p.desc.light_group = Some(id),
+            Some(inner) if inner != id && groups[inner as usize].parent.is_none() => {
+                groups[inner as usize].parent = Some(id)
+            }
+            Some(_) => {}
+        };
+        // Shading looks at the shapes' own descriptions (a CSG node's children are shaded
+        // with their materials), so only the leaves are marked.
+        for part in parts {
+            part.for_each_leaf(&mut mark);
+        }
+        Ok(())
     }
 
     /// `hollow` alone is on; with a value, on unless it is 0.

@@ -78,16 +78,25 @@ impl Lowerer<'_> {
         if thickness == 0.0 {
             return Err(Diag::new(arg(3)?.span, "text thickness must not be 0"));
         }
-        let path = if std::path::Path::new(&name).is_file() {
-            std::path::PathBuf::from(&name)
-        } else {
-            self.files.data_path(&name, false).map_err(|_| {
-                Diag::new(
-                    font_expr.span,
-                    format!("font \"{name}\" not found (searched as written, the scene's folder and the include path)"),
-                )
-            })?
-        };
+        // POV-Ray finds a font named without an extension as `.ttf` (`#declare Font="crystal"`
+        // in advanced/blocks); a name as written comes first.
+        let mut candidates = vec![name.clone()];
+        if std::path::Path::new(&name).extension().is_none() {
+            candidates.push(format!("{name}.ttf"));
+        }
+        let found = candidates.iter().find_map(|n| {
+            if std::path::Path::new(n).is_file() {
+                Some(std::path::PathBuf::from(n))
+            } else {
+                self.files.data_path(n, false).ok().filter(|p| p.is_file())
+            }
+        });
+        let path = found.ok_or_else(|| {
+            Diag::new(
+                font_expr.span,
+                format!("font \"{name}\" not found (searched as written, the scene's folder and the include path)"),
+            )
+        })?;
         let data = std::fs::read(&path)
             .map_err(|e| Diag::new(font_expr.span, format!("cannot read font \"{}\": {e}", path.display())))?;
         let face = ttf_parser::Face::parse(&data, 0)

@@ -4,8 +4,8 @@
 
 use super::Parser;
 use crate::pov::ast::{AtmoItem, Atmosphere, AtmosphereKind, Stmt};
-use crate::pov::lexer::TokenKind;
-use crate::pov::source::{Diag, PResult};
+use crate::pov::source::PResult;
+use crate::pov::value::Value;
 
 const SKY_SPHERE: &[&str] = &["pigment", "emission", "rotate", "scale", "translate"];
 const FOG: &[&str] = &[
@@ -62,6 +62,16 @@ impl Parser<'_, '_> {
             AtmosphereKind::Rainbow => (RAINBOW, RAINBOW_VALUES),
         };
         let mut items = Vec::new();
+        // A declared block of the same kind first (`sky_sphere { S_Cloud1 rotate .. }`): its
+        // items, then these.
+        let base = match self.peek_ident().as_deref().and_then(|n| self.low.lookup(n)) {
+            Some(Value::Atmosphere(base)) if base.kind == kind => Some(base.clone()),
+            _ => None,
+        };
+        if let Some(base) = base {
+            items.extend(base.items.iter().cloned());
+            self.bump();
+        }
         while !self.at_block_end() {
             let word = self.peek_ident();
             let item = match word.as_deref() {
@@ -101,34 +111,5 @@ impl Parser<'_, '_> {
         let kw = self.bump().span;
         self.skip_braced("media", kw)?;
         Ok(Stmt::Media(kw))
-    }
-
-    /// Skips a `{ .. }` block after `keyword` (spanned `kw`), nested blocks included.
-    pub(super) fn skip_braced(&mut self, keyword: &str, kw: crate::pov::source::Span) -> PResult<()> {
-        self.open_block(keyword, kw)?;
-        let mut depth = 1usize;
-        loop {
-            let t = self.peek();
-            match t.kind {
-                TokenKind::Eof => {
-                    return Err(Diag::new(t.span, format!("unexpected end of file in `{keyword}` opened here")));
-                }
-                TokenKind::Punct('{') => {
-                    depth += 1;
-                    self.bump();
-                }
-                TokenKind::Punct('}') => {
-                    depth -= 1;
-                    if depth == 0 {
-                        self.close_block(keyword, kw)?;
-                        return Ok(());
-                    }
-                    self.bump();
-                }
-                _ => {
-                    self.bump();
-                }
-            }
-        }
     }
 }

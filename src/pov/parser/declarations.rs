@@ -5,7 +5,7 @@
 use std::rc::Rc;
 
 use super::{is_pov_keyword, Parser, LAYERED, UNSUPPORTED_SHAPES};
-use crate::pov::ast::{DeclValue, DefaultItem};
+use crate::pov::ast::{AtmosphereKind, DeclValue, DefaultItem, Stmt};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Array, Unmodelled, Value, MAX_ARRAY_DIMENSIONS, MAX_ARRAY_ELEMENTS};
@@ -143,6 +143,17 @@ impl Parser<'_, '_> {
             Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
             Some("camera") => DeclValue::Camera(self.camera_items()?.0),
             Some("light_source") => DeclValue::Light(self.light()?),
+            Some(w @ ("sky_sphere" | "fog" | "rainbow")) => {
+                let kind = match w {
+                    "sky_sphere" => AtmosphereKind::SkySphere,
+                    "fog" => AtmosphereKind::Fog,
+                    _ => AtmosphereKind::Rainbow,
+                };
+                match self.atmosphere(kind)? {
+                    Stmt::Atmosphere(a) => DeclValue::Atmosphere(a),
+                    _ => unreachable!("atmosphere() returns an atmosphere"),
+                }
+            }
             Some("array") => return self.array().map(Declared::Value),
             Some("function") => return self.function().map(|f| Declared::Value(Value::Function(Rc::new(f)))),
             Some(word) if super::scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
@@ -278,10 +289,6 @@ const DECLARABLE_UNMODELLED: &[&str] = &[
     "density_map",
     "spline",
     "transform",
-    "light_group",
-    "fog",
-    "rainbow",
-    "sky_sphere",
     "photons",
     "radiosity",
     "matrix",

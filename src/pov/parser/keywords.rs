@@ -122,7 +122,7 @@ pub(crate) const RESERVED: &[&str] = &[
 ];
 
 /// POV-Ray shapes and CSG that strahl does not render; named in "not supported" messages.
-pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &["bicubic_patch", "sphere_sweep", "ovus", "lemon", "light_group"];
+pub(crate) const UNSUPPORTED_SHAPES: &[&str] = &["sphere_sweep", "ovus", "lemon"];
 
 /// Other POV-Ray words strahl knows of but does not support, so messages can say "not supported"
 /// instead of "unknown".

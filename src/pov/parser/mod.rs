@@ -8,6 +8,7 @@
 //! `textures` (pigment, normal, finish, texture, interior).
 
 mod atmosphere;
+mod bicubic;
 mod blob;
 mod declarations;
 mod directives;
@@ -16,6 +17,7 @@ mod function;
 mod isosurface;
 mod julia;
 mod keywords;
+mod light_group;
 mod macros;
 mod mesh;
 mod scene;
@@ -366,25 +368,41 @@ impl Parser<'_, '_> {
     pub(super) fn skip_unmodelled(&mut self, feature: &str) -> PResult<()> {
         let kw = self.bump().span;
         self.low.not_modelled(feature, kw);
-        if !self.is_punct('{') {
-            return Ok(());
+        if self.is_punct('{') {
+            self.skip_braced(feature, kw)?;
         }
-        self.open_block(feature, kw)?;
-        let mut open = 1usize;
+        Ok(())
+    }
+
+    /// Skips a `{ .. }` block after `keyword` (spanned `kw`), nested blocks included.
+    pub(super) fn skip_braced(&mut self, keyword: &str, kw: Span) -> PResult<()> {
+        self.open_block(keyword, kw)?;
+        let mut depth = 1usize;
         loop {
             let t = self.peek();
             match t.kind {
-                TokenKind::Eof => return Err(self.close_block(feature, kw).unwrap_err()),
-                TokenKind::Punct('{') => open += 1,
-                TokenKind::Punct('}') if open == 1 => break,
-                TokenKind::Punct('}') => open -= 1,
-                _ => {}
+                TokenKind::Eof => {
+                    return Err(Diag::new(t.span, format!("unexpected end of file in `{keyword}` opened here")));
+                }
+                TokenKind::Punct('{') => {
+                    depth += 1;
+                    self.bump();
+                }
+                TokenKind::Punct('}') => {
+                    depth -= 1;
+                    if depth == 0 {
+                        self.close_block(keyword, kw)?;
+                        return Ok(());
+                    }
+                    self.bump();
+                }
+                _ => {
+                    self.bump();
+                }
             }
-            self.bump();
         }
-        self.close_block(feature, kw)?;
-        Ok(())
     }
+
 
     // ---- statements ----------------------------------------------------------------------
 

@@ -47,6 +47,8 @@ const TOP_LEVEL: &[&str] = &[
     "mesh",
     "mesh2",
     "height_field",
+    "bicubic_patch",
+    "light_group",
     "isosurface",
     "parametric",
     "sky_sphere",
@@ -56,10 +58,10 @@ const TOP_LEVEL: &[&str] = &[
 ];
 const SHAPES: &str =
     "sphere, plane, box, triangle, polygon, cylinder, cone, disc, torus, quadric, cubic, quartic, poly, \
-     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, smooth_triangle, mesh, mesh2, height_field, \
-     isosurface, parametric, union, merge, intersection, difference, object";
+     superellipsoid, prism, text, lathe, sor, blob, julia_fractal, smooth_triangle, mesh, mesh2, height_field, bicubic_patch, \
+     isosurface, parametric, light_group, union, merge, intersection, difference, object";
 /// Shapes whose bodies the parser reads and evaluates itself (`parser::mesh`).
-const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle"];
+const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle", "bicubic_patch"];
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
@@ -177,7 +179,7 @@ pub const MODIFIERS: &[&str] = &[
 
 pub fn is_object_keyword(word: &str) -> bool {
     shape_kind(word).is_some()
-        || matches!(word, "object" | "blob" | "julia_fractal")
+        || matches!(word, "object" | "blob" | "julia_fractal" | "light_group")
         || csg_op(word).is_some()
         || BUILT.contains(&word)
 }
@@ -454,6 +456,8 @@ impl Parser<'_, '_> {
                     self.close_block("looks_like", span)?;
                     items.push(LightItem::LooksLike(Box::new(object), span));
                 }
+                // Photon mapping is not modelled: the light lights without it.
+                Some("photons") => self.skip_unmodelled("photons")?,
                 Some("projected_through") => {
                     let span = self.bump().span;
                     self.skip_braced("projected_through", span)?;
@@ -603,6 +607,14 @@ impl Parser<'_, '_> {
             None if word == "mesh2" => ObjectKind::Built(self.mesh2_body(kw)?),
             None if word == "smooth_triangle" => ObjectKind::Built(self.smooth_triangle_body()?),
             None if word == "height_field" => ObjectKind::Built(self.height_field_body(kw)?),
+            None if word == "bicubic_patch" => ObjectKind::Built(self.bicubic_body(kw)?),
+            None if word == "light_group" => {
+                let outer = std::mem::replace(&mut self.in_csg, true);
+                let body = self.light_group_body();
+                self.in_csg = outer;
+                let (children, global_lights) = body?;
+                ObjectKind::LightGroup { children, global_lights }
+            }
             None if csg_op(&word).is_some() => {
                 let outer = std::mem::replace(&mut self.in_csg, true);
                 let children = self.children();

@@ -1792,7 +1792,11 @@ fn declared_atmospheres_are_where_blocks_start() {
 #[test]
 fn photons_in_lights_are_noted_and_fonts_resolve_without_their_extension() {
     let d = dir("photons_light");
-    let p = write(&d, "s.pov", "light_source { <0, 5, 0> color rgb 1 photons { refraction on reflection on } }\nsphere { 0, 1 }");
+    let p = write(
+        &d,
+        "s.pov",
+        "light_source { <0, 5, 0> color rgb 1 photons { refraction on reflection on } }\nsphere { 0, 1 }",
+    );
     let (s, w) = load_scene_with_warnings(&p, &std_include()).unwrap();
     assert_eq!(s.lights.len(), 1);
     assert!(w.iter().any(|w| w.message.contains("`photons` is not modelled") && (w.line, w.col) == (1, 38)), "{w:?}");

@@ -66,7 +66,7 @@ fn tradeoff_writes_reports_and_full_beats_quarter_resolution() {
         assert!(dir.join(f).is_file(), "{f} missing");
     }
     let rows = read_csv(&dir.join("tradeoff.csv"));
-    assert_eq!(rows.len(), 17);
+    assert_eq!(rows.len(), 21);
     let row = |name: &str| rows.iter().find(|r| r[0].1 == name).unwrap_or_else(|| panic!("no row {name}")).clone();
     let (full, quarter, reference) = (row("preset full"), row("res-scale 0.25"), row("preset reference"));
     assert!(field(&full, "psnr_db") > field(&quarter, "psnr_db"));

@@ -335,7 +335,7 @@ mod tests {
     fn sweep_moves_one_knob_at_a_time() {
         let full = Preset::Full.settings();
         let s = sweep();
-        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 1 + 2 + 2 + 4);
+        assert_eq!(s.len(), 3 + 3 + 1 + 3 + 1 + 2 + 2 + 2 + 4);
         let names: Vec<&str> = s.iter().map(|s| s.name.as_str()).collect();
         assert!(names.contains(&"res-scale 0.25") && names.contains(&"no-shadows") && names.contains(&"aa 3"));
         assert!(names.contains(&"precision f64"));

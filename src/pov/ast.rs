@@ -11,10 +11,19 @@ pub use crate::scene::desc::CsgOp;
 /// token stream runs them (`parser::directives`).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Stmt {
-    Camera { items: Vec<CameraItem>, span: Span },
+    Camera {
+        items: Vec<CameraItem>,
+        span: Span,
+    },
     Light(Light),
-    Background { color: Expr, span: Span },
-    GlobalSettings { items: Vec<GlobalItem>, span: Span },
+    Background {
+        color: Expr,
+        span: Span,
+    },
+    GlobalSettings {
+        items: Vec<GlobalItem>,
+        span: Span,
+    },
     Object(Object),
     /// `sky_sphere`, `fog`, `rainbow`.
     Atmosphere(Atmosphere),
@@ -248,7 +257,13 @@ pub enum LightItem {
     /// `jitter`, `circular`, `orient`, `media_interaction`, `media_attenuation`,
     /// `area_illumination`, each with its optional boolean.
     Flag(&'static str, Option<Expr>, Span),
-    AreaLight { axis1: Expr, axis2: Expr, size1: Expr, size2: Expr, span: Span },
+    AreaLight {
+        axis1: Expr,
+        axis2: Expr,
+        size1: Expr,
+        size2: Expr,
+        span: Span,
+    },
     LooksLike(Box<Object>, Span),
     /// `projected_through { .. }`: skipped, warned about.
     ProjectedThrough(Span),
@@ -351,8 +366,18 @@ pub enum PatternMod {
 #[derive(Clone, Debug, PartialEq)]
 pub enum WarpAst {
     Turbulence(Vec<Turb>),
-    Repeat { dir: Expr, offset: Option<Expr>, flip: Option<Expr> },
-    BlackHole { center: Expr, radius: Expr, strength: Option<Expr>, falloff: Option<Expr>, inverse: bool },
+    Repeat {
+        dir: Expr,
+        offset: Option<Expr>,
+        flip: Option<Expr>,
+    },
+    BlackHole {
+        center: Expr,
+        radius: Expr,
+        strength: Option<Expr>,
+        falloff: Option<Expr>,
+        inverse: bool,
+    },
     /// A warp read but not modelled (mapping warps), with its keyword.
     Other(String, Span),
 }

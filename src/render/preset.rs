@@ -68,14 +68,22 @@ impl Preset {
             // interactive in the window (scenes/focal_blur.pov: docs/perf/cameras.md).
             Preset::Fast => PresetSettings {
                 res_scale: 0.5,
-                quality: Quality { max_blur_samples: Some(FAST_BLUR_SAMPLES), max_area_samples: Some(4), ..full.quality },
+                quality: Quality {
+                    max_blur_samples: Some(FAST_BLUR_SAMPLES),
+                    max_area_samples: Some(4),
+                    ..full.quality
+                },
                 ..full
             },
             // The knee of the front: 1.4× faster than `full` at its error (1 − SSIM 0.0642 vs
             // 0.0645, PSNR 23.8 dB vs 21.9). Beyond it, aa 2 costs 5.5× the time for 0.55× the error.
             Preset::Balanced => PresetSettings {
                 res_scale: 0.75,
-                quality: Quality { max_blur_samples: Some(BALANCED_BLUR_SAMPLES), max_area_samples: Some(16), ..full.quality },
+                quality: Quality {
+                    max_blur_samples: Some(BALANCED_BLUR_SAMPLES),
+                    max_area_samples: Some(16),
+                    ..full.quality
+                },
                 ..full
             },
             Preset::Full => full,

@@ -252,8 +252,15 @@ pub enum PatternKind {
     Bozo,
     Granite,
     Marble,
-    Agate { turb: f64 },
-    Crackle { form: DVec3, metric: f64, offset: f64, solid: bool },
+    Agate {
+        turb: f64,
+    },
+    Crackle {
+        form: DVec3,
+        metric: f64,
+        offset: f64,
+        solid: bool,
+    },
     Cells,
     Wrinkles,
     Dents,
@@ -265,7 +272,10 @@ pub enum PatternKind {
     Spiral1(f64),
     Spiral2(f64),
     /// Values 0 (mortar) and 1 (brick).
-    Brick { size: DVec3, mortar: f64 },
+    Brick {
+        size: DVec3,
+        mortar: f64,
+    },
     /// Values 0, 1, 2.
     Hexagon,
     /// Values 0, 1.
@@ -274,7 +284,10 @@ pub enum PatternKind {
     Cylindrical,
     Spherical,
     Planar,
-    Quilted { c0: f64, c1: f64 },
+    Quilted {
+        c0: f64,
+        c1: f64,
+    },
     Mandel(u32),
     /// Raw ring value `frac(r)` (its default wave is the triangle).
     Wood,
@@ -309,8 +322,18 @@ pub enum Wave {
 pub enum Warp {
     Turbulence(Turbulence),
     /// `warp { repeat V offset O flip F }`: V has one non-zero component, the period.
-    Repeat { dir: DVec3, offset: DVec3, flip: DVec3 },
-    BlackHole { center: DVec3, radius: f64, strength: f64, falloff: f64, inverse: bool },
+    Repeat {
+        dir: DVec3,
+        offset: DVec3,
+        flip: DVec3,
+    },
+    BlackHole {
+        center: DVec3,
+        radius: f64,
+        strength: f64,
+        falloff: f64,
+        inverse: bool,
+    },
 }
 
 /// A pattern with its value modifiers; the transform and classic turbulence live with the

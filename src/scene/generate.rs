@@ -230,7 +230,13 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
     // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
     let look_at = DVec3::new(0.0, 0.5 * edge, 0.0);
     let location = qv(DVec3::new(0.3 * edge, 0.85 * edge + 2.0, -2.0 * edge - 4.0));
-    let like = Camera { location, direction: DVec3::Z * direction_length(), right: DVec3::X, up: DVec3::Y, lens: Default::default() };
+    let like = Camera {
+        location,
+        direction: DVec3::Z * direction_length(),
+        right: DVec3::X,
+        up: DVec3::Y,
+        lens: Default::default(),
+    };
     let cam = Camera::looking_at(location, look_at, None, &like);
     // `right` is unit-long here; scaled as the parser evaluates `<r>*image_width/image_height`,
     // so the written file reads back to exactly this vector.
@@ -244,6 +250,8 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
             direction: cam.direction,
             right,
             up: cam.up,
+            // `write_pov` writes them, so the scene read back has them given.
+            up_or_right_given: true,
             ..CameraDesc::default()
         },
         lights: vec![

@@ -323,6 +323,7 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
         }
     }
     let _ = write!(s, "pigment {{ ");
+    let outer = p;
     let _ = match &p.pattern {
         PigmentPattern::Solid(c) => write!(s, "{}", color(c)),
         PigmentPattern::Checker(a, b) => write!(s, "checker {} {}", color(a), color(b)),
@@ -338,18 +339,23 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
             let _ = write!(s, "{} pigment_map {{ ", pattern_text(pd));
             for (v, p) in entries {
                 let _ = write!(s, "[{} ", num(*v));
-                pigment(s, p, object_inverse);
+                // Inner pigments are read inside this one's transform: printed relative to it.
+                pigment(s, p, &outer.transform.inverse);
                 let _ = write!(s, "] ");
             }
             write!(s, "}}")
         }
         PigmentPattern::List(pd, list) => {
-            let _ = write!(s, "{} ", pattern_text(pd));
+            // The list right after the keyword, its options (`brick_size`, `mortar`) after it,
+            // as POV-Ray reads them.
+            let text = pattern_text(pd);
+            let (keyword, options) = text.split_once(' ').unwrap_or((&text, ""));
+            let _ = write!(s, "{keyword} ");
             for p in list {
-                pigment(s, p, object_inverse);
+                pigment(s, p, &outer.transform.inverse);
                 let _ = write!(s, " ");
             }
-            Ok(())
+            write!(s, "{options}")
         }
         PigmentPattern::Layered(_) => unreachable!("handled above"),
     };

@@ -119,7 +119,8 @@ mod tests {
             assert!(v.z.abs() < 1e-12);
             assert!((n.normalize() - DVec3::Z).length() < 1e-9, "{n}");
         }
-        assert!((m.vertices[9] - DVec3::new(1.0 / 8.0, 1.0 / 8.0, 0.0)).length() < 1e-12);
+        // 9 vertices a row: the second vertex of the second row.
+        assert!((m.vertices[10] - DVec3::new(1.0 / 8.0, 1.0 / 8.0, 0.0)).length() < 1e-12);
     }
 
     #[test]

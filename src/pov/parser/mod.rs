@@ -403,7 +403,6 @@ impl Parser<'_, '_> {
         }
     }
 
-
     // ---- statements ----------------------------------------------------------------------
 
     /// The scene: each item is lowered as soon as it is read, so that the directives after it

@@ -7,8 +7,8 @@ use super::blob::BLOB_ITEMS;
 use super::julia::JULIA_ITEMS;
 use super::{is_pov_keyword, Parser, UNSUPPORTED_SHAPES};
 use crate::pov::ast::{
-    AtmosphereKind, CameraItem, CameraProjection, Clip, CsgOp, GlobalItem, Light, LightItem, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
-    TransformKind,
+    AtmosphereKind, CameraItem, CameraProjection, Clip, CsgOp, GlobalItem, Light, LightItem, Modifier, Object,
+    ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
@@ -127,7 +127,8 @@ const LIGHT: &[&str] = &[
     "media_attenuation",
 ];
 /// Light items followed by one value.
-const LIGHT_VALUES: &[&str] = &["point_at", "radius", "falloff", "tightness", "fade_distance", "fade_power", "adaptive"];
+const LIGHT_VALUES: &[&str] =
+    &["point_at", "radius", "falloff", "tightness", "fade_distance", "fade_power", "adaptive"];
 /// Light items with an optional boolean after them.
 const LIGHT_FLAGS: &[&str] =
     &["jitter", "circular", "orient", "area_illumination", "media_interaction", "media_attenuation"];
@@ -312,7 +313,9 @@ impl Parser<'_, '_> {
         while !self.at_block_end() {
             let item = match self.peek_ident().as_deref() {
                 // POV-Ray 3.7 accepts only transforms after a declared camera (checked by parsing).
-                Some(word) if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "scale" | "translate") => {
+                Some(word)
+                    if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "scale" | "translate") =>
+                {
                     return Err(Diag::new(
                         self.peek().span,
                         format!(

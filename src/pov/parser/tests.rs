@@ -44,8 +44,8 @@ fn unsupported_shape_is_named() {
         e,
         "`sphere_sweep` is not supported (supported: sphere, plane, box, triangle, polygon, cylinder, cone, disc, \
          torus, quadric, cubic, quartic, poly, superellipsoid, prism, text, lathe, sor, blob, julia_fractal, \
-         smooth_triangle, mesh, mesh2, height_field, isosurface, parametric, union, merge, intersection, difference, \
-         object)"
+         smooth_triangle, mesh, mesh2, height_field, bicubic_patch, isosurface, parametric, light_group, union, merge, \
+         intersection, difference, object)"
     );
 }
 

@@ -332,41 +332,41 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
     let xs = F8::from_fn(|i| (b.x + (i as u32).min(b.w - 1)) as f32);
     if gen.lens.is_some() {
         samples.each(aa, |sx, sy| render_block_lens(tracer, gen, b, raster, (sx, sy), &mut sums));
-        for r in 0..b.h {
-            for i in 0..b.w {
-                let c = raster.resolve(sums[r as usize][i as usize]);
-                // SAFETY: tiles partition the image and blocks partition tiles.
-                unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
-            }
-        }
-        return;
-    }
-    samples.each(aa, |sx, sy| {
-        let rays: [Ray8; 8] = std::array::from_fn(|r| {
-            let y = b.y + (r as u32).min(b.h - 1);
-            let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
-            let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-            let d = gen.dir_lanes(u, F8::splat(v));
-            Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+    } else {
+        samples.each(aa, |sx, sy| {
+            let rays: [Ray8; 8] = std::array::from_fn(|r| {
+                let y = b.y + (r as u32).min(b.h - 1);
+                let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
+                let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+                let d = gen.dir_lanes(u, F8::splat(v));
+                Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+            });
+            add_traced(tracer, &rays, b, &mut sums);
         });
-        let colors = packet::trace_block(tracer, &rays, b.h as usize, b.w as usize);
-        let gamma = tracer.scene.gamma;
-        for r in 0..b.h as usize {
-            for i in 0..b.w as usize {
-                let c = colors[r][i];
-                if c.is_finite() {
-                    sums[r][i] += output_sample(c, gamma);
-                } else {
-                    tracer.stats.bad_samples += 1;
-                }
-            }
-        }
-    });
+    }
     for r in 0..b.h {
         for i in 0..b.w {
             let c = raster.resolve(sums[r as usize][i as usize]);
             // SAFETY: tiles partition the image and blocks partition tiles.
             unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
+        }
+    }
+}
+
+/// Traces one block's rays as packets and adds each valid lane's output sample to `acc`
+/// (non-finite samples are counted, not added), as `render_pixel` adds one ray's.
+#[inline(always)]
+fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [[Vec3; 8]; 8]) {
+    let colors = packet::trace_block(tracer, rays, b.h as usize, b.w as usize);
+    let gamma = tracer.scene.gamma;
+    for r in 0..b.h as usize {
+        for i in 0..b.w as usize {
+            let c = colors[r][i];
+            if c.is_finite() {
+                acc[r][i] += output_sample(c, gamma);
+            } else {
+                tracer.stats.bad_samples += 1;
+            }
         }
     }
 }
@@ -401,18 +401,7 @@ fn render_block_lens(
             };
             Ray8 { o: v3(&|r| r.origin), d: v3(&|r| r.dir), inv: v3(&|r| r.inv_dir) }
         });
-        let colors = packet::trace_block(tracer, &rays, b.h as usize, b.w as usize);
-        let gamma = tracer.scene.gamma;
-        for r in 0..b.h as usize {
-            for i in 0..b.w as usize {
-                let c = colors[r][i];
-                if c.is_finite() {
-                    cell[r][i] += output_sample(c, gamma);
-                } else {
-                    tracer.stats.bad_samples += 1;
-                }
-            }
-        }
+        add_traced(tracer, &rays, b, &mut cell);
     }
     for r in 0..b.h as usize {
         for i in 0..b.w as usize {

@@ -194,6 +194,7 @@ impl Light {
                 // POV-Ray reads the angles as half-openings below 90°; a falloff inside the
                 // radius makes a hard edge at the radius.
                 // (max/min, not clamp: a NaN from the scene must not panic.)
+                #[allow(clippy::manual_clamp)]
                 let falloff = falloff.max(0.0).min(90.0);
                 let radius = radius.max(0.0).min(falloff);
                 Beam::Spot {

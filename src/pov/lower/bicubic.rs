@@ -138,8 +138,8 @@ mod tests {
     fn a_collapsed_row_gets_the_limit_normal_and_no_empty_triangles() {
         // The first row collapses to the apex (0, 0, 1) of a cone-like cap.
         let mut p = flat();
-        for k in 0..4 {
-            p[k] = DVec3::new(0.5, 0.0, 1.0);
+        for q in p.iter_mut().take(4) {
+            *q = DVec3::new(0.5, 0.0, 1.0);
         }
         let m = tessellate(&p, 2, 2);
         assert!(m.normals.iter().all(|n| n.length() > 0.0));

@@ -34,7 +34,7 @@ impl Parser<'_, '_> {
                     patch_type = Some(value);
                 }
                 "u_steps" | "v_steps" => {
-                    if !(value >= 0.0) {
+                    if value.is_nan() || value < 0.0 {
                         return Err(Diag::new(e.span, format!("bicubic_patch: {word} must be ≥ 0, found {value}")));
                     }
                     let steps = value as u32;
@@ -57,7 +57,7 @@ impl Parser<'_, '_> {
                 // `flatness` lets POV-Ray stop subdividing early; strahl always subdivides to
                 // `u_steps` × `v_steps`, which is the finer (the exact surface's) answer.
                 "flatness" => {
-                    if !(value >= 0.0) {
+                    if value.is_nan() || value < 0.0 {
                         return Err(Diag::new(e.span, format!("bicubic_patch: flatness must be ≥ 0, found {value}")));
                     }
                 }

@@ -526,7 +526,7 @@ impl Parser<'_, '_> {
                     GlobalItem::AdcBailout(self.expr()?)
                 }
                 Some(w) if GLOBAL_UNMODELLED.contains(&w) => {
-                    self.skip_unmodelled(&w.to_string())?;
+                    self.skip_unmodelled(w)?;
                     continue;
                 }
                 // Settings about files and old limits that change nothing strahl draws: the
@@ -576,7 +576,7 @@ impl Parser<'_, '_> {
             return Ok(None);
         }
         let e = self.expr()?;
-        Ok(Some(self.low.float(&e).map_or(true, |v| v != 0.0)))
+        Ok(Some(!self.low.float(&e).is_ok_and(|v| v == 0.0)))
     }
 
     /// `rotate V`, `scale V` or `translate V`.

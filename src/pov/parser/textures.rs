@@ -559,11 +559,10 @@ impl Parser<'_, '_> {
             PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
         match pat.name.as_str() {
             "gradient" => pat.arg = Some(self.expr()?),
-            "spiral1" | "spiral2" | "mandel" | "quilted" if self.starts_expr(stop) && !self.starts_mod() => {
-                if pat.name != "quilted" {
-                    pat.arg = Some(self.expr()?)
-                }
+            "spiral1" | "spiral2" | "mandel" if self.starts_expr(stop) && !self.starts_mod() => {
+                pat.arg = Some(self.expr()?)
             }
+            "quilted" if self.starts_expr(stop) && !self.starts_mod() => {}
             "checker" | "brick" | "hexagon" => {
                 let max = if pat.name == "hexagon" { 3 } else { 2 };
                 for _ in 0..max {

@@ -1813,3 +1813,17 @@ fn photons_in_lights_are_noted_and_fonts_resolve_without_their_extension() {
     let (_, _, m) = err("font_missing", "text { ttf \"no_such_font\" \"P\" 1, 0 }");
     assert!(m.contains("font \"no_such_font\" not found"), "{m}");
 }
+
+#[test]
+fn string_comparisons_and_a_comma_before_the_bump_amount() {
+    let s = load_text(
+        "string_compare",
+        "#declare F = \"\";\n#if (F != \"\") sphere { 0, 1 } #else sphere { 0, 2 normal { gradient x, 0.5 } } #end",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 1);
+    assert!(matches!(s.objects[0].shape, ShapeDesc::Sphere { radius, .. } if radius == 2.0));
+    assert!(s.objects[0].texture.normal.is_some());
+    let (_, _, m) = err("string_float", "#if (\"a\" = 1) #end");
+    assert!(m.contains("float") && m.contains("string"), "{m}");
+}

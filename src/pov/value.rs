@@ -339,8 +339,21 @@ fn finite(v: f64, span: Span) -> PResult<f64> {
     }
 }
 
-/// `a op b` for the comparison and logic operators: floats only, giving 1 or 0.
+/// `a op b` for the comparison and logic operators, giving 1 or 0: floats, or two strings
+/// compared by their characters (POV-Ray 3.7's own include files test `#if (c_file != "")`).
 fn compare(op: BinOp, a: &Value, b: &Value, a_span: Span, b_span: Span) -> PResult<Value> {
+    if let (Value::Str(x), Value::Str(y)) = (a, b) {
+        let truth = match op {
+            BinOp::Lt => x < y,
+            BinOp::Le => x <= y,
+            BinOp::Gt => x > y,
+            BinOp::Ge => x >= y,
+            BinOp::Eq => x == y,
+            BinOp::Ne => x != y,
+            _ => return Err(Diag::new(a_span.to(b_span), "`&` and `|` need floats, found two strings")),
+        };
+        return Ok(Value::Float(if truth { 1.0 } else { 0.0 }));
+    }
     let x = a.as_float(a_span)?;
     let y = b.as_float(b_span)?;
     let truth = match op {
@@ -411,6 +424,17 @@ mod tests {
 
     fn s() -> Span {
         Span::default()
+    }
+
+    #[test]
+    fn strings_compare_by_their_characters() {
+        let st = |t: &str| Value::Str(Rc::from(t));
+        let cmp = |op, a: &str, b: &str| binary(op, &st(a), &st(b), s(), s()).unwrap();
+        assert_eq!(cmp(BinOp::Ne, "file", ""), Value::Float(1.0));
+        assert_eq!(cmp(BinOp::Eq, "ab", "ab"), Value::Float(1.0));
+        assert_eq!(cmp(BinOp::Lt, "ab", "b"), Value::Float(1.0));
+        assert!(binary(BinOp::Eq, &st("a"), &Value::Float(1.0), s(), s()).is_err());
+        assert!(binary(BinOp::And, &st("a"), &st("b"), s(), s()).is_err());
     }
 
     #[test]

@@ -358,7 +358,13 @@ impl Parser<'_, '_> {
                 }
                 Some(w) if PATTERNS.contains(&w) => {
                     let pat = self.pattern(NORMAL, "normal")?;
-                    let amount = if self.starts_expr(NORMAL) && !self.starts_mod() { Some(self.expr()?) } else { None };
+                    // The bump amount may follow a comma (`gradient x, 0.5`), as POV-Ray reads it.
+                    let comma = self.eat_punct(',');
+                    let amount = if comma || (self.starts_expr(NORMAL) && !self.starts_mod()) {
+                        Some(self.expr()?)
+                    } else {
+                        None
+                    };
                     NormalItem::Pattern(pat, amount)
                 }
                 Some(w) if PATTERN_MODS.contains(&w) => NormalItem::Mod(self.pattern_mod()?),

@@ -20,13 +20,7 @@ impl Parser<'_, '_> {
                 }
                 TokenKind::Ident(w) if &**w == "global_lights" => {
                     self.bump();
-                    let starts_value = match &self.peek().kind {
-                        TokenKind::Number(_) => true,
-                        TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
-                        TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
-                        _ => false,
-                    };
-                    global = Some(if starts_value { Some(self.expr()?) } else { None });
+                    global = Some(if self.starts_bool() { Some(self.expr()?) } else { None });
                 }
                 TokenKind::Ident(w) if super::scene::MODIFIERS.contains(&&**w) => break,
                 _ => children.push(self.item()?),

@@ -10,13 +10,17 @@
 mod atmosphere;
 mod bicubic;
 mod blob;
+mod camera;
 mod declarations;
 mod directives;
 mod expr;
+mod finish;
 mod function;
+mod global;
 mod isosurface;
 mod julia;
 mod keywords;
+mod light;
 mod light_group;
 mod macros;
 mod mesh;
@@ -377,29 +381,36 @@ impl Parser<'_, '_> {
     /// Skips a `{ .. }` block after `keyword` (spanned `kw`), nested blocks included.
     pub(super) fn skip_braced(&mut self, keyword: &str, kw: Span) -> PResult<()> {
         self.open_block(keyword, kw)?;
-        let mut depth = 1usize;
+        self.skip_to_close(keyword, kw)
+    }
+
+    /// Skips to the `}` that closes the block open now (nested blocks included), and past it.
+    pub(super) fn skip_to_close(&mut self, keyword: &str, kw: Span) -> PResult<()> {
+        let mut depth = 0usize;
         loop {
             let t = self.peek();
             match t.kind {
                 TokenKind::Eof => {
                     return Err(Diag::new(t.span, format!("unexpected end of file in `{keyword}` opened here")));
                 }
-                TokenKind::Punct('{') => {
-                    depth += 1;
-                    self.bump();
-                }
-                TokenKind::Punct('}') => {
-                    depth -= 1;
-                    if depth == 0 {
-                        self.close_block(keyword, kw)?;
-                        return Ok(());
-                    }
-                    self.bump();
-                }
-                _ => {
-                    self.bump();
-                }
+                TokenKind::Punct('{') => depth += 1,
+                TokenKind::Punct('}') if depth == 0 => break,
+                TokenKind::Punct('}') => depth -= 1,
+                _ => {}
             }
+            self.bump();
+        }
+        self.close_block(keyword, kw)?;
+        Ok(())
+    }
+
+    /// Whether a boolean value follows an optional-boolean keyword (`jitter`, `hollow off`).
+    pub(super) fn starts_bool(&mut self) -> bool {
+        match &self.peek().kind {
+            TokenKind::Number(_) => true,
+            TokenKind::Punct(c) => matches!(c, '(' | '-' | '+'),
+            TokenKind::Ident(w) => matches!(&**w, "on" | "off" | "true" | "false" | "yes" | "no"),
+            _ => false,
         }
     }
 

@@ -1,14 +1,14 @@
-//! Surface blocks: pigment, normal, finish, texture and interior.
+//! Surface blocks: pigment, normal and texture, with their patterns and maps; finish and
+//! interior are in `finish.rs`.
 
 use super::expr::color_key;
-use super::{is_pov_keyword, Parser};
+use super::Parser;
 use crate::pov::ast::{
-    ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, MapEntry, Normal,
-    NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, ReflectionBlock, Texture, TextureItem, Turb, TurbKind,
-    WarpAst,
+    ColorMap, ColorMapBody, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, Texture,
+    TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::lexer::TokenKind;
-use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::source::{Diag, PResult};
 
 const PIGMENT: &[&str] = &[
     "color",
@@ -151,29 +151,8 @@ const NORMAL: &[&str] = &[
     "normal_map",
     "accuracy",
 ];
-const FINISH: &[&str] = &[
-    "ambient",
-    "diffuse",
-    "brilliance",
-    "phong",
-    "phong_size",
-    "specular",
-    "roughness",
-    "reflection",
-    "metallic",
-    "emission",
-    "reflection_exponent",
-    "conserve_energy",
-    "crand",
-    "irid",
-    "subsurface",
-];
-const REFLECTION: &[&str] = &["fresnel", "falloff", "exponent", "metallic"];
 const TEXTURE: &[&str] =
     &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map"];
-const INTERIOR: &[&str] =
-    &["ior", "media", "caustics", "dispersion", "dispersion_samples", "fade_distance", "fade_power", "fade_color"];
-
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,
@@ -186,7 +165,7 @@ fn turb_kind(word: &str) -> Option<TurbKind> {
 
 impl Parser<'_, '_> {
     /// A leading declared name (`pigment { DMFWood4 scale 2 }`), if the block starts with one.
-    fn base(&mut self, keywords: &[&str]) -> PResult<Option<crate::pov::ast::Expr>> {
+    pub(super) fn base(&mut self, keywords: &[&str]) -> PResult<Option<crate::pov::ast::Expr>> {
         match &self.peek().kind {
             TokenKind::Ident(w) if !keywords.contains(&&**w) && color_key(w).is_none() => {
                 let w = w.clone();
@@ -380,7 +359,7 @@ impl Parser<'_, '_> {
                 Some(w @ ("slope_map" | "normal_map")) => {
                     let w = w.to_string();
                     let span = self.bump().span;
-                    self.skip_block(&w, span)?;
+                    self.skip_braced(&w, span)?;
                     NormalItem::Ignored(w, span)
                 }
                 _ => return Err(self.unknown_in("normal", NORMAL)),
@@ -389,121 +368,6 @@ impl Parser<'_, '_> {
         }
         let end = self.close_block("normal", kw)?;
         Ok(Normal { items, span: kw.to(end) })
-    }
-
-    pub(super) fn finish(&mut self) -> PResult<Finish> {
-        let kw = self.bump().span;
-        self.open_block("finish", kw)?;
-        let mut items = Vec::new();
-        if let Some(b) = self.base(FINISH)? {
-            items.push(FinishItem::Base(b));
-        }
-        while !self.at_block_end() {
-            let word = self.peek_ident();
-            let key = match word.as_deref() {
-                Some("ambient") => FinishKey::Ambient,
-                Some("diffuse") => FinishKey::Diffuse,
-                Some("brilliance") => FinishKey::Brilliance,
-                Some("phong") => FinishKey::Phong,
-                Some("phong_size") => FinishKey::PhongSize,
-                Some("specular") => FinishKey::Specular,
-                Some("roughness") => FinishKey::Roughness,
-                Some("reflection") => FinishKey::Reflection,
-                Some("metallic") => FinishKey::Metallic,
-                Some("emission") => FinishKey::Emission,
-                Some("reflection_exponent") => FinishKey::ReflectionExponent,
-                Some("conserve_energy") => FinishKey::ConserveEnergy,
-                Some("subsurface") => {
-                    self.skip_unmodelled("subsurface")?;
-                    continue;
-                }
-                Some("irid") => {
-                    self.skip_unmodelled("irid")?;
-                    continue;
-                }
-                // A random darkening per pixel, "not for animations" (POV-Ray's docs): noted.
-                Some("crand") => {
-                    self.skip_unmodelled("crand")?;
-                    self.expr()?;
-                    continue;
-                }
-                _ => return Err(self.unknown_in("finish", FINISH)),
-            };
-            let kw_span = self.bump().span;
-            let key = match key {
-                FinishKey::Diffuse | FinishKey::Phong | FinishKey::Specular
-                    if self.peek_ident().as_deref() == Some("albedo") =>
-                {
-                    self.bump();
-                    match key {
-                        FinishKey::Diffuse => FinishKey::DiffuseAlbedo,
-                        FinishKey::Phong => FinishKey::PhongAlbedo,
-                        _ => FinishKey::SpecularAlbedo,
-                    }
-                }
-                k => k,
-            };
-            let value = match key {
-                FinishKey::Reflection if self.is_punct('{') => {
-                    items.push(FinishItem::Reflection(Box::new(self.reflection_block(kw_span)?)));
-                    continue;
-                }
-                FinishKey::Ambient | FinishKey::Reflection | FinishKey::Emission => self.color()?,
-                // `metallic` and `conserve_energy` alone mean on.
-                FinishKey::Metallic | FinishKey::ConserveEnergy if !self.starts_value() => {
-                    Expr { kind: ExprKind::Number(1.0), span: kw_span }
-                }
-                _ => self.expr()?,
-            };
-            items.push(FinishItem::Set(key, value));
-            if matches!(key, FinishKey::Diffuse | FinishKey::DiffuseAlbedo) && self.eat_punct(',') {
-                // `diffuse A, B`: B lights the back of thin objects (paper, leaves).
-                let back = self.expr()?;
-                self.low.not_modelled("diffuse backside illumination", back.span);
-            }
-        }
-        let end = self.close_block("finish", kw)?;
-        Ok(Finish { items, span: kw.to(end) })
-    }
-
-    /// `reflection { [MIN,] MAX fresnel B falloff F exponent E metallic M }`, at its `{`.
-    fn reflection_block(&mut self, kw: Span) -> PResult<ReflectionBlock> {
-        self.open_block("reflection", kw)?;
-        let first = self.color()?;
-        let (min, max) = if self.eat_punct(',') { (Some(first), self.color()?) } else { (None, first) };
-        let mut block = ReflectionBlock { min, max, fresnel: None, falloff: None, exponent: None, metallic: None };
-        while !self.at_block_end() {
-            let word = self.peek_ident();
-            if !matches!(word.as_deref(), Some(w) if REFLECTION.contains(&w)) {
-                return Err(self.unknown_in("reflection", REFLECTION));
-            }
-            let at = self.bump().span;
-            // `fresnel` and `metallic` alone mean on (1).
-            let value = if self.starts_value() { self.expr()? } else { Expr { kind: ExprKind::Number(1.0), span: at } };
-            let slot = match word.as_deref() {
-                Some("fresnel") => &mut block.fresnel,
-                Some("falloff") => &mut block.falloff,
-                Some("exponent") => &mut block.exponent,
-                _ => &mut block.metallic,
-            };
-            *slot = Some(value);
-        }
-        self.close_block("reflection", kw)?;
-        Ok(block)
-    }
-
-    /// Whether a value (a number, a parenthesis, a sign, a boolean word or a declared name)
-    /// follows, for items whose value is optional (`metallic`, `fresnel`).
-    fn starts_value(&mut self) -> bool {
-        match self.peek().kind {
-            TokenKind::Number(_) => true,
-            TokenKind::Punct(c) => matches!(c, '(' | '-' | '+' | '<'),
-            TokenKind::Ident(w) => {
-                matches!(&*w, "on" | "off" | "true" | "false" | "yes" | "no")
-                    || (!is_pov_keyword(&w) && self.low.lookup(&w).is_some())
-            }
-            _ => false,
-        }
     }
 
     /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.
@@ -680,40 +544,17 @@ impl Parser<'_, '_> {
             _ => {
                 let span = self.peek().span;
                 let word = self.peek_ident().map_or_else(|| "warp".to_string(), |w| w.to_string());
-                self.skip_rest_of_block("warp", kw)?;
+                self.skip_to_close("warp", kw)?;
                 return Ok(WarpAst::Other(word, span));
             }
         };
         if !self.at_block_end() {
             let span = self.peek().span;
-            self.skip_rest_of_block("warp", kw)?;
+            self.skip_to_close("warp", kw)?;
             return Ok(WarpAst::Other("warp".into(), span));
         }
         self.close_block("warp", kw)?;
         Ok(w)
-    }
-
-    /// Skips a `{ ... }` block after its keyword (read but not modelled).
-    fn skip_block(&mut self, what: &str, kw: crate::pov::source::Span) -> PResult<()> {
-        self.open_block(what, kw)?;
-        self.skip_rest_of_block(what, kw)
-    }
-
-    /// Skips to the `}` that closes the block open now, and past it.
-    fn skip_rest_of_block(&mut self, what: &str, kw: crate::pov::source::Span) -> PResult<()> {
-        let mut depth = 0usize;
-        loop {
-            match &self.peek().kind {
-                TokenKind::Eof => return Err(Diag::new(kw, format!("`{what}` block is not closed"))),
-                TokenKind::Punct('{') => depth += 1,
-                TokenKind::Punct('}') if depth == 0 => break,
-                TokenKind::Punct('}') => depth -= 1,
-                _ => {}
-            }
-            self.bump();
-        }
-        self.close_block(what, kw)?;
-        Ok(())
     }
 
     /// `NAME_map { [v X] ... }` where X is read by `item` (a block) or is a declared name.
@@ -744,49 +585,6 @@ impl Parser<'_, '_> {
             return Err(Diag::new(kw, format!("{what} needs at least one entry")));
         }
         Ok(out)
-    }
-
-    pub(super) fn interior(&mut self) -> PResult<Interior> {
-        let kw = self.bump().span;
-        self.open_block("interior", kw)?;
-        let mut items = Vec::new();
-        if let Some(b) = self.base(INTERIOR)? {
-            items.push(InteriorItem::Base(b));
-        }
-        while !self.at_block_end() {
-            match self.peek_ident().as_deref() {
-                Some("ior") => {
-                    self.bump();
-                    items.push(InteriorItem::Ior(self.expr()?));
-                }
-                Some("media") => self.skip_unmodelled("media")?,
-                // Light bent by wavelength and focused light: not modelled, noted.
-                Some(w @ ("caustics" | "dispersion")) => {
-                    let w = w.to_string();
-                    let at = self.bump().span;
-                    self.low.not_modelled(&w, at);
-                    self.expr()?;
-                }
-                Some("dispersion_samples") => {
-                    self.bump();
-                    self.expr()?;
-                }
-                // Light fading with the distance it travels inside: not modelled yet, noted.
-                Some(w @ ("fade_distance" | "fade_power")) => {
-                    let at = self.bump().span;
-                    let w = w.to_string();
-                    self.low.not_modelled(&format!("interior {w}"), at);
-                    self.expr()?;
-                }
-                Some("fade_color" | "fade_colour") => {
-                    self.bump();
-                    self.color()?;
-                }
-                _ => return Err(self.unknown_in("interior", INTERIOR)),
-            }
-        }
-        let end = self.close_block("interior", kw)?;
-        Ok(Interior { items, span: kw.to(end) })
     }
 }
 

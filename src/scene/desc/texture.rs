@@ -1,0 +1,295 @@
+//! Textures as written: patterns, pigments, normals, finishes and interiors.
+
+use super::{Color, Transform};
+use glam::DVec3;
+
+/// Turbulence (`turbulence`, `octaves`, `omega`, `lambda`) of a pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Turbulence {
+    pub amount: DVec3,
+    pub octaves: u32,
+    pub omega: f64,
+    pub lambda: f64,
+}
+
+impl Default for Turbulence {
+    /// POV-Ray's defaults once `turbulence` is given: octaves 6, omega 0.5, lambda 2.
+    fn default() -> Self {
+        Turbulence { amount: DVec3::ZERO, octaves: 6, omega: 0.5, lambda: 2.0 }
+    }
+}
+
+/// One `[value color]` entry of a `color_map`; entries are sorted by value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ColorMapEntry {
+    pub value: f64,
+    pub color: Color,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum PigmentPattern {
+    Solid(Color),
+    Checker(Color, Color),
+    /// Rings around the pattern-space z axis, looked up in the map.
+    Wood(Vec<ColorMapEntry>),
+    /// Any other pattern's value looked up in a colour map.
+    Mapped(PatternDesc, Vec<ColorMapEntry>),
+    /// `pigment_map`: the pattern's value blends the pigments of the two entries around it
+    /// (sorted by value).
+    PigmentMap(PatternDesc, Vec<(f64, PigmentDesc)>),
+    /// A list pattern (`checker`, `hexagon`, `brick`) picking one pigment per cell.
+    List(PatternDesc, Vec<PigmentDesc>),
+    /// Layered textures' pigments, bottom first: each upper layer shows what is below it
+    /// through its filter and transmit.
+    Layered(Vec<PigmentDesc>),
+}
+
+/// The pattern functions (`shading::patterns`), with their own parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PatternKind {
+    /// `gradient V`: V is normalised.
+    Gradient(DVec3),
+    /// `bozo`, `spotted` and `bumps` as a pigment: noise.
+    Bozo,
+    Granite,
+    Marble,
+    Agate {
+        turb: f64,
+    },
+    Crackle {
+        form: DVec3,
+        metric: f64,
+        offset: f64,
+        solid: bool,
+    },
+    Cells,
+    Wrinkles,
+    Dents,
+    Leopard,
+    Ripples,
+    Waves,
+    Radial,
+    Onion,
+    Spiral1(f64),
+    Spiral2(f64),
+    /// Values 0 (mortar) and 1 (brick).
+    Brick {
+        size: DVec3,
+        mortar: f64,
+    },
+    /// Values 0, 1, 2.
+    Hexagon,
+    /// Values 0, 1.
+    Checker,
+    Boxed,
+    Cylindrical,
+    Spherical,
+    Planar,
+    Quilted {
+        c0: f64,
+        c1: f64,
+    },
+    Mandel(u32),
+    /// Raw ring value `frac(r)` (its default wave is the triangle).
+    Wood,
+    /// `average`: a `pigment_map`'s pigments averaged, weighted by their entry values.
+    Average,
+}
+
+impl PatternKind {
+    /// How many pigments a list pattern picks from; `None` for a continuous pattern.
+    pub fn list_len(&self) -> Option<usize> {
+        match self {
+            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Hexagon => Some(3),
+            _ => None,
+        }
+    }
+}
+
+/// How a pattern's value in [0, 1) is shaped after `frequency` and `phase`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Wave {
+    Ramp,
+    Triangle,
+    Sine,
+    Scallop,
+    Cubic,
+    Poly(f64),
+}
+
+/// One `warp { }` of a pattern, applied in pattern space in written order.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Warp {
+    Turbulence(Turbulence),
+    /// `warp { repeat V offset O flip F }`: V has one non-zero component, the period.
+    Repeat {
+        dir: DVec3,
+        offset: DVec3,
+        flip: DVec3,
+    },
+    BlackHole {
+        center: DVec3,
+        radius: f64,
+        strength: f64,
+        falloff: f64,
+        inverse: bool,
+    },
+}
+
+/// A pattern with its value modifiers; the transform and classic turbulence live with the
+/// pigment or normal that uses it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PatternDesc {
+    pub kind: PatternKind,
+    pub wave: Wave,
+    pub frequency: f64,
+    pub phase: f64,
+    pub warps: Vec<Warp>,
+}
+
+impl PatternDesc {
+    pub fn new(kind: PatternKind) -> PatternDesc {
+        let wave = match kind {
+            PatternKind::Marble | PatternKind::Wood => Wave::Triangle,
+            _ => Wave::Ramp,
+        };
+        PatternDesc { kind, wave, frequency: 1.0, phase: 0.0, warps: Vec::new() }
+    }
+}
+
+impl PigmentDesc {
+    /// Moves the pigment, and every pigment it is made of, by `tr` (applied after its own).
+    pub fn transform_by(&mut self, tr: &Transform) {
+        self.transform = self.transform.then(tr);
+        match &mut self.pattern {
+            PigmentPattern::PigmentMap(_, entries) => entries.iter_mut().for_each(|(_, p)| p.transform_by(tr)),
+            PigmentPattern::List(_, list) | PigmentPattern::Layered(list) => {
+                list.iter_mut().for_each(|p| p.transform_by(tr))
+            }
+            _ => {}
+        }
+    }
+
+    /// Whether the pigment is a single colour that needs no pattern work.
+    pub fn is_solid(&self) -> bool {
+        matches!(self.pattern, PigmentPattern::Solid(_))
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PigmentDesc {
+    pub pattern: PigmentPattern,
+    /// `None` when the pattern has no turbulence.
+    pub turbulence: Option<Turbulence>,
+    /// Pattern space → world space (accumulates the pigment's own and its object's transforms).
+    pub transform: Transform,
+}
+
+impl Default for PigmentDesc {
+    /// POV-Ray's default pigment is black.
+    fn default() -> Self {
+        PigmentDesc { pattern: PigmentPattern::Solid(Color::BLACK), turbulence: None, transform: Transform::default() }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum NormalPattern {
+    /// `bumps AMOUNT`.
+    Bumps(f64),
+    /// Any other pattern: the normal tilts by `amount` times the pattern's gradient.
+    Pattern(PatternDesc, f64),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalDesc {
+    pub pattern: NormalPattern,
+    pub turbulence: Option<Turbulence>,
+    /// Pattern space → world space.
+    pub transform: Transform,
+}
+
+/// `finish { ... }` with POV-Ray 3.7's defaults.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FinishDesc {
+    pub ambient: DVec3,
+    pub diffuse: f64,
+    pub brilliance: f64,
+    pub phong: f64,
+    pub phong_size: f64,
+    pub specular: f64,
+    pub roughness: f64,
+    /// The reflection seen along the normal's direction... or everywhere when `reflection_min`
+    /// is `None`; with a minimum, this is the maximum, seen at grazing angles.
+    pub reflection: DVec3,
+    /// `metallic`: how far highlights take the pigment's colour (0 to 1).
+    pub metallic: f64,
+    /// `emission`: light the surface gives off, like `ambient` but not scaled by
+    /// `ambient_light`.
+    pub emission: DVec3,
+    /// `reflection { MIN, MAX .. }`: the reflection along the normal; `None` for constant.
+    pub reflection_min: Option<DVec3>,
+    /// `falloff`: the exponent of (1 − cos θ) from the minimum to the maximum.
+    pub reflection_falloff: f64,
+    /// `fresnel`: the Fresnel reflectance (from the interior's ior) blends minimum to maximum.
+    pub reflection_fresnel: bool,
+    /// `exponent` (`reflection_exponent`): reflected light is raised to 1 / this power.
+    pub reflection_exponent: f64,
+    /// `metallic` in `reflection { }`: how far reflections take the pigment's colour.
+    pub reflection_metallic: f64,
+    /// `conserve_energy`: filter and transmit are scaled by what reflection leaves.
+    pub conserve_energy: bool,
+    /// `diffuse albedo`, `phong albedo`, `specular albedo`: those amounts are total
+    /// reflectances, turned into peak values by `scene::material::Finish`.
+    pub albedo: Albedo,
+}
+
+/// Which of `diffuse`, `phong` and `specular` were given with `albedo`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Albedo {
+    pub diffuse: bool,
+    pub phong: bool,
+    pub specular: bool,
+}
+
+impl Default for FinishDesc {
+    fn default() -> Self {
+        FinishDesc {
+            ambient: DVec3::splat(0.1),
+            diffuse: 0.6,
+            brilliance: 1.0,
+            phong: 0.0,
+            phong_size: 40.0,
+            specular: 0.0,
+            roughness: 0.05,
+            reflection: DVec3::ZERO,
+            metallic: 0.0,
+            emission: DVec3::ZERO,
+            reflection_min: None,
+            reflection_falloff: 1.0,
+            reflection_fresnel: false,
+            reflection_exponent: 1.0,
+            reflection_metallic: 0.0,
+            conserve_energy: false,
+            albedo: Albedo::default(),
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct TextureDesc {
+    pub pigment: PigmentDesc,
+    pub normal: Option<NormalDesc>,
+    pub finish: FinishDesc,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InteriorDesc {
+    pub ior: f64,
+}
+
+impl Default for InteriorDesc {
+    fn default() -> Self {
+        InteriorDesc { ior: 1.0 }
+    }
+}

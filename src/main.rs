@@ -163,6 +163,13 @@ struct RenderCmd {
     /// Print no statistics.
     #[arg(short, long)]
     quiet: bool,
+    /// A POV-Ray .ini whose animation (Initial_Frame, Final_Frame, Initial_Clock, Final_Clock)
+    /// the scene is parsed for: its first frame, or --frame's. Other .ini settings are not read.
+    #[arg(long, value_name = "FILE")]
+    ini: Option<PathBuf>,
+    /// With --ini: the frame number to render (POV-Ray's frame_number).
+    #[arg(long, value_name = "K", requires = "ini")]
+    frame: Option<u32>,
     #[command(flatten)]
     common: Common,
 }
@@ -342,6 +349,10 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Gen(g) => headless::scaling::run_gen(&g),
         Command::Survey(s) => headless::survey::run(&s),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
+            clock: match &r.ini {
+                Some(ini) => headless::render::clock_from_ini(ini, r.frame)?,
+                None => strahl::pov::Clock::default(),
+            },
             scene: r.scene,
             include: r.common.include.clone(),
             output: r.output,

@@ -509,3 +509,40 @@ fn render_names_every_included_file_and_where_it_was_included() {
     assert!(lines[0].contains("outer.inc") && lines[0].ends_with("s.pov:1:1)"), "{stdout}");
     assert!(lines[1].contains("inner.inc") && lines[1].ends_with("outer.inc:2:1)"), "{stdout}");
 }
+
+#[test]
+fn render_with_an_ini_parses_the_scene_at_the_animations_frame() {
+    let dir = scratch("render_ini");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    // As POV-Ray's portfolio samples do: a still image (frame 0) indexes the array at -1.
+    let scene = dir.join("anim.pov");
+    std::fs::write(
+        &scene,
+        "#declare C = array[3] { rgb <1,0,0>, rgb <0,1,0>, rgb <0,0,1> }\n\
+         background { C[frame_number - 1] * (1 + clock) }\n",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let ini = dir.join("anim.ini");
+    std::fs::write(&ini, "Initial_Frame=1\nFinal_Frame=3\nInitial_Clock=0\nFinal_Clock=1 ; the last\n")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (scene, ini) = (scene.display().to_string(), ini.display().to_string());
+    let out = |name: &str| dir.join(name).display().to_string();
+    let still = fails(&["render", &scene, "-W", "4", "-H", "4", "-q", "-o", &out("still.png")]);
+    assert!(still.contains("anim.pov:2:"), "{still}");
+    let (first, last) = (out("first.png"), out("last.png"));
+    ok(&["render", &scene, "--ini", &ini, "-W", "4", "-H", "4", "-q", "-o", &first]);
+    ok(&["render", &scene, "--ini", &ini, "--frame", "3", "-W", "4", "-H", "4", "-q", "-o", &last]);
+    let pixel = |f: &str| {
+        let decoder = png::Decoder::new(std::fs::File::open(f).unwrap_or_else(|e| panic!("{e}")));
+        let mut reader = decoder.read_info().unwrap_or_else(|e| panic!("{e}"));
+        let mut buf = vec![0; reader.output_buffer_size()];
+        reader.next_frame(&mut buf).unwrap_or_else(|e| panic!("{e}"));
+        [buf[0], buf[1], buf[2]]
+    };
+    assert_eq!(pixel(&first), [255, 0, 0], "frame 1 at clock 0: C[0]");
+    assert_eq!(pixel(&last)[..2], [0, 0], "frame 3: C[2], blue, clock 1 doubles it (clipped)");
+    assert_eq!(pixel(&last)[2], 255);
+    let err = fails(&["render", &scene, "--ini", &ini, "--frame", "4", "-q", "-o", &out("x.png")]);
+    assert!(err.contains("--frame 4 is outside the animation's frames 1..3"), "{err}");
+    assert!(!dir.join("x.png").exists(), "nothing written on an error");
+}

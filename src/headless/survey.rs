@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 use clap::Args;
 
 use crate::headless::progress::Progress;
-use crate::headless::{output, CliError};
+use crate::headless::{output, povray_ini, CliError};
 
 #[derive(Args)]
 pub struct SurveyCmd {
@@ -171,9 +171,18 @@ fn survey_one(exe: &Path, scene: &Path, args: &SurveyCmd, scratch: &Path) -> Res
     let log = scratch.join("stderr.txt");
     let err_file =
         std::fs::File::create(&log).map_err(|e| CliError::user(format!("{}: cannot write: {e}", log.display())))?;
-    let mut child = Command::new(exe)
-        .arg("render")
-        .arg(scene)
+    // The child runs in the scene's folder, so the scene is named relative to it: a survey of a
+    // relative folder finds its scenes too.
+    let name = scene.file_name().map(PathBuf::from).unwrap_or_else(|| scene.to_path_buf());
+    let mut command = Command::new(exe);
+    command.arg("render").arg(&name);
+    // A sample rendered through its own .ini (`povray scene.ini`) is an animation: render its
+    // first frame, as POV-Ray would, so that `frame_number` and `clock` have the values it sets.
+    let ini = scene.with_extension("ini");
+    if std::fs::read_to_string(&ini).is_ok_and(|text| povray_ini::animation(&text).is_some()) {
+        command.arg("--ini").arg(ini.file_name().unwrap_or_default());
+    }
+    let mut child = command
         .args(["-W", &args.width.to_string(), "-H", &args.height.to_string(), "-q", "-o"])
         .arg(&image)
         .current_dir(folder)

@@ -77,17 +77,23 @@ impl Clock {
     /// numbers an animation: frames 1..=frames, the clock at `from` on the first and `to` on
     /// the last.
     pub fn frame(from: f64, to: f64, index: u32, frames: u32) -> Clock {
-        let steps = frames.saturating_sub(1).max(1);
+        Clock::numbered(1, frames.max(1), from, to, index + 1)
+    }
+
+    /// Frame `number` of an animation numbered `first..=last` (POV-Ray's `Initial_Frame` and
+    /// `Final_Frame`), the clock running from `from` on the first to `to` on the last.
+    pub fn numbered(first: u32, last: u32, from: f64, to: f64, number: u32) -> Clock {
+        let steps = last.saturating_sub(first).max(1);
         let delta = (to - from) / f64::from(steps);
-        let clock = if frames <= 1 { from } else { from + delta * f64::from(index) };
+        let clock = if last <= first { from } else { from + delta * f64::from(number.saturating_sub(first)) };
         Clock {
             clock,
             clock_delta: delta,
-            frame_number: index + 1,
+            frame_number: number,
             initial_clock: from,
             final_clock: to,
-            initial_frame: 1,
-            final_frame: frames,
+            initial_frame: first,
+            final_frame: last,
             on: true,
         }
     }

@@ -22,7 +22,13 @@ impl Parser<'_, '_> {
     pub(super) fn bicubic_body(&mut self, kw: Span) -> PResult<ShapeDesc> {
         let mut patch_type = None;
         let (mut u_steps, mut v_steps) = (0u32, 0u32);
-        while let Some(word) = self.peek_ident().filter(|w| PATCH_ITEMS.contains(&&**w)) {
+        loop {
+            // `uv_vectors` may also stand among the items, before the control points.
+            if self.peek_ident().as_deref() == Some("uv_vectors") {
+                self.patch_uv_vectors()?;
+                continue;
+            }
+            let Some(word) = self.peek_ident().filter(|w| PATCH_ITEMS.contains(&&**w)) else { break };
             let span = self.bump().span;
             let e = self.expr()?;
             let value = self.low.float(&e)?;
@@ -90,16 +96,22 @@ impl Parser<'_, '_> {
             *slot = self.low.vec3(&e)?;
         }
         if self.peek_ident().as_deref() == Some("uv_vectors") {
-            let span = self.bump().span;
-            for i in 0..4 {
-                if i > 0 {
-                    self.eat_punct(',');
-                }
-                self.expr()?;
-            }
-            self.low.warn(Diag::new(span, "bicubic_patch: uv coordinates are not modelled (no uv_mapping)"));
+            self.patch_uv_vectors()?;
         }
         let _ = kw;
         Ok(ShapeDesc::Mesh { mesh: Arc::new(tessellate(&points, u_steps, v_steps)), inside_vector: None })
+    }
+
+    /// `uv_vectors <u,v>, <u,v>, <u,v>, <u,v>`: the patch corners' uv, read and warned about.
+    fn patch_uv_vectors(&mut self) -> PResult<()> {
+        let span = self.bump().span;
+        for i in 0..4 {
+            if i > 0 {
+                self.eat_punct(',');
+            }
+            self.expr()?;
+        }
+        self.low.warn(Diag::new(span, "bicubic_patch: uv coordinates are not modelled (no uv_mapping)"));
+        Ok(())
     }
 }

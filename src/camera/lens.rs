@@ -20,9 +20,9 @@
 //! | cylinder 4 | horizontal axis, eye moves: from `location + px·R` along `sin y·Un + cos y·Dn` |
 //! | spherical | lon = px·h, lat = py·v; `cos lat sin lon·Rn + sin lat·Un + cos lat cos lon·Dn` |
 //!
-//! Focal blur moves each ray's origin to a point of the lens (a disc of diameter `aperture`
+//! Focal blur moves each ray's origin to a point of the lens (a disc of radius `aperture`/4
 //! across `Rn`, `Un`) and aims it at the point where the unblurred ray meets the focal plane
-//! (through `focal_point`, facing `Dn`). The lens point and a jitter inside the pixel come from
+//! (facing `Dn`, as far from `location` as `focal_point` is). The lens point and a jitter inside the pixel come from
 //! a hash of (pixel, sub-sample, blur sample): never a shared generator, so an image is the
 //! same whatever the thread count or tile order.
 
@@ -135,12 +135,26 @@ pub struct LensRays {
 }
 
 impl LensRays {
-    pub fn new(lens: &Lens, location: DVec3, direction: DVec3, right: DVec3, up: DVec3, scale: f64) -> LensRays {
+    /// `location` and the vectors in render space (`scale` render units per world unit);
+    /// `world_location` is the camera's location in the scene, where `focal_point` is measured.
+    pub fn new(
+        lens: &Lens,
+        (location, world_location): (DVec3, DVec3),
+        direction: DVec3,
+        right: DVec3,
+        up: DVec3,
+        scale: f64,
+    ) -> LensRays {
         let unit = |v: DVec3| v.try_normalize().unwrap_or(DVec3::ZERO);
         let dn = unit(direction);
         let blur = lens.blur.map(|b| {
-            let focal = (b.focal_point * scale - location).dot(dn);
-            (0.5 * b.aperture * scale, focal)
+            // The focal plane lies as far along `dn` as `focal_point` is from the camera (its
+            // distance, not its depth: measured, an off-axis focal point moves the plane away).
+            let focal = (b.focal_point - world_location).length() * scale;
+            // Measured on POV-Ray 3.7 (a thin line behind the focal plane, its blur's width for
+            // several apertures, focal distances and angles): the lens disc has radius
+            // aperture/4, half of what `aperture` as a diameter would give.
+            (0.25 * b.aperture * scale, focal)
         });
         LensRays {
             projection: lens.projection,
@@ -284,7 +298,7 @@ mod tests {
 
     fn gen(projection: Projection) -> LensRays {
         let lens = Lens { projection, blur: None };
-        LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0)
+        LensRays::new(&lens, (DVec3::ZERO, DVec3::ZERO), DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0)
     }
 
     fn dir(g: &LensRays, u: f64, v: f64) -> DVec3 {
@@ -358,9 +372,9 @@ mod tests {
     #[test]
     fn panoramic_is_spherical_180_180_with_unit_vectors() {
         let lens = Lens { projection: Projection::Panoramic, blur: None };
-        let p = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::X, DVec3::Y, 1.0);
+        let p = LensRays::new(&lens, (DVec3::ZERO, DVec3::ZERO), DVec3::Z, DVec3::X, DVec3::Y, 1.0);
         let lens = Lens { projection: Projection::Spherical { h: 180.0, v: 180.0 }, blur: None };
-        let s = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::X, DVec3::Y, 1.0);
+        let s = LensRays::new(&lens, (DVec3::ZERO, DVec3::ZERO), DVec3::Z, DVec3::X, DVec3::Y, 1.0);
         for (u, v) in [(0.0, 0.0), (1.0, 0.3), (0.25, 0.9)] {
             close(dir(&p, u, v), dir(&s, u, v));
         }
@@ -394,23 +408,30 @@ mod tests {
 
     #[test]
     fn focal_blur_keeps_the_focal_plane_sharp() {
-        let lens = Lens {
-            projection: Projection::Perspective,
-            blur: Some(FocalBlur {
-                aperture: 0.5,
-                max_samples: 8,
-                focal_point: DVec3::new(0.0, 0.0, 4.0),
-                ..Default::default()
-            }),
-        };
-        let g = LensRays::new(&lens, DVec3::ZERO, DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0);
-        let ray = g.ray(0.2, 0.7).unwrap();
-        let on_plane = ray.1 * (4.0 / ray.1.z);
-        for s in 0..8 {
-            let j = blur_jitter(3, 4, 0, 0, s);
-            let (o, d) = g.blurred(ray, (j[0], j[1]));
-            assert!(o.length() <= 0.25 + 1e-12);
-            close(o + d * ((4.0 - o.z) / d.z), on_plane);
+        // The scene's camera at the origin, and far from it (render space is camera-relative,
+        // so the focal distance must be measured in the scene). An off-axis focal point puts
+        // the plane at its distance (5), not its depth (4).
+        for (world, focal_point, plane) in [
+            (DVec3::ZERO, DVec3::new(0.0, 0.0, 4.0), 4.0),
+            (DVec3::new(1e3, -50.0, 7.0), DVec3::new(1e3, -50.0, 11.0), 4.0),
+            (DVec3::ZERO, DVec3::new(3.0, 0.0, 4.0), 5.0),
+        ] {
+            let lens = Lens {
+                projection: Projection::Perspective,
+                blur: Some(FocalBlur { aperture: 0.5, max_samples: 8, focal_point, ..Default::default() }),
+            };
+            let g = LensRays::new(&lens, (DVec3::ZERO, world), DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0);
+            let ray = g.ray(0.2, 0.7).unwrap();
+            let on_plane = ray.1 * (plane / ray.1.z);
+            let mut widest = 0.0f64;
+            for s in 0..64 {
+                let j = blur_jitter(3, 4, 0, 0, s);
+                let (o, d) = g.blurred(ray, (j[0], j[1]));
+                widest = widest.max(o.length());
+                close(o + d * ((plane - o.z) / d.z), on_plane);
+            }
+            // POV-Ray's lens radius is aperture/4 (measured).
+            assert!(widest <= 0.125 + 1e-12 && widest > 0.1, "{widest}");
         }
     }
 

@@ -119,7 +119,7 @@ impl RayGen {
         let lens = (camera.lens != Lens::default()).then(|| {
             LensRays::new(
                 &camera.lens,
-                frame.point(camera.location),
+                (frame.point(camera.location), camera.location),
                 frame.vector(camera.direction),
                 frame.vector(camera.right),
                 frame.vector(camera.up),

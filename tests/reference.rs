@@ -385,14 +385,16 @@ fn seed_scene_matches_povray_by_region() {
 }
 
 /// One reference scene per camera projection and its PSNR floor against POV-Ray 3.7.
-/// `cameras_omnimax` is left out: strahl's omnimax is a fisheye-like approximation that does
-/// not match POV-Ray's (9.5 dB; POV-Ray's centre looks 17° up and its black region differs),
-/// a known gap; it is still in the packets test.
+/// `cameras_omnimax` is fitted to POV-Ray's measured ray directions (0.003° rms) but its image
+/// edge still differs by about a pixel along the rim (742 pixels where one image has a ray and
+/// the other none), so it reaches 28.6 dB (33.6 dB where both have rays): its floor of 28 is a
+/// regression guard, below 35 for that reason.
 const CAMERAS: &[(&str, f64)] = &[
     ("cameras_ortho", 35.0),
     ("cameras_ortho_plain", 35.0),
     ("cameras_ortho_area", 35.0),
     ("cameras_fisheye", 35.0),
+    ("cameras_omnimax", 28.0),
     ("cameras_ultra", 35.0),
     ("cameras_panoramic", 35.0),
     ("cameras_cylinder", 35.0),
@@ -428,7 +430,7 @@ fn packets_and_single_rays_give_identical_images() {
     let mut scenes: Vec<PathBuf> = ["flat", "reflection", "refraction", "shadows", "legacy"]
         .iter()
         .chain(CAMERAS.iter().map(|(n, _)| n))
-        .chain(&["cameras_omnimax", "cameras_focal_blur"])
+        .chain(&["cameras_focal_blur"])
         .map(|n| scene(n))
         .collect();
     scenes.push(root().join("scenes/seed.pov"));

@@ -12,7 +12,7 @@
 //! | orthographic | from `location + px·R + py·U` along `Dn` |
 //! | fisheye | polar (r, φ) of (2px, 2py) stretched to a circle; θ = r·angle/2 off `Dn`; none past r = 1 |
 //! | ultra_wide_angle | x = px·angle, y = py·angle·\|U\|/\|R\|; `sin x·Rn + sin y·Un + cos x cos y·Dn` |
-//! | omnimax | as fisheye with θ = 1.411269 r − 0.09439 r³ (approximate: POV-Ray's differs, see docs) |
+//! | omnimax | r from a centre 0.1417 below the image's, x in units of |R|/|U|; θ = 2.19928 r − 0.35762 r³ + 2.36026 r⁵ (fitted), none outside the disc touching the top or the inscribed ellipse |
 //! | panoramic | lon = px·π, lat = py·π; `cos lat (sin lon·R + cos lon·D) + sin lat·U` (the vectors' lengths are the ellipsoid's axes) |
 //! | cylinder 1 | vertical axis, fixed eye: x = px·angle; `sin x·Rn + py·U + cos x·Dn` |
 //! | cylinder 2 | horizontal axis, fixed eye: y = py·angle; `px·R + sin y·Un + cos y·Dn` |
@@ -201,9 +201,23 @@ impl LensRays {
                 (o, self.off_axis(phi, theta))
             }
             Projection::Omnimax => {
-                let (phi, r) = self.polar(px, py)?;
-                let theta = 1.411269 * r - 0.09439 * r * r * r;
-                (o, self.off_axis(phi, theta))
+                // Fitted to POV-Ray 3.7's ray directions (three renders coding x, y, z as
+                // 16-bit grey, 640×480; rms error 0.003°): a fisheye centred OMNIMAX_CENTRE
+                // below the image centre, so the dome's spring line lies low in the frame,
+                // with θ an odd quintic of the distance from that centre. A pixel has a ray
+                // inside the ellipse inscribed in the image and inside the disc.
+                let x = px * self.aspect;
+                if (x / 0.665).powi(2) + (2.0 * py).powi(2) > 1.0 {
+                    return None;
+                }
+                let y = py + OMNIMAX_CENTRE;
+                let r2 = x * x + y * y;
+                // The disc reaches the image's top edge: about 90° off the axis there.
+                if r2 > (0.5 + OMNIMAX_CENTRE).powi(2) {
+                    return None;
+                }
+                let theta = r2.sqrt() * (2.19928 + r2 * (-0.35762 + r2 * 2.36026));
+                (o, self.off_axis(y.atan2(x), theta))
             }
             Projection::UltraWideAngle { angle } => {
                 let a = angle.to_radians();
@@ -271,6 +285,9 @@ impl LensRays {
         (origin, dir)
     }
 }
+
+/// How far below the image centre (in image heights) an omnimax image's axis lies (measured).
+const OMNIMAX_CENTRE: f64 = 0.1417;
 
 /// A well-mixed 64-bit hash (SplitMix64's finaliser) of a few words: the jitter of one sample.
 pub fn hash_words(words: &[u64]) -> u64 {
@@ -355,8 +372,13 @@ mod tests {
     #[test]
     fn omnimax_rim_angle() {
         let g = gen(Projection::Omnimax);
-        let theta: f64 = 1.411269 - 0.09439;
-        close(dir(&g, 0.5, 0.0), DVec3::new(0.0, theta.sin(), theta.cos()));
+        // The image centre looks 17.3° above the axis (POV-Ray: 17.29° at 160×120's centre).
+        let theta: f64 = 0.1417 * (2.19928 + 0.1417f64.powi(2) * (-0.35762 + 0.1417f64.powi(2) * 2.36026));
+        close(dir(&g, 0.5, 0.5), DVec3::new(0.0, theta.sin(), theta.cos()));
+        assert!((theta.to_degrees() - 17.3).abs() < 0.1, "{}", theta.to_degrees());
+        // The left and right edges and the top are past 90° or outside the ellipse.
+        assert!(g.ray(0.0, 0.5).is_none() && g.ray(1.0, 0.5).is_none() && g.ray(0.5, 0.0).is_none());
+        assert!(g.ray(0.5, 1.0).is_some(), "the bottom centre looks 45° down");
     }
 
     #[test]

@@ -476,6 +476,7 @@ mod tests {
 mod regressions {
     use super::*;
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
     use glam::{DMat4, DVec4};
 
     #[test]

@@ -250,7 +250,7 @@ mod tests {
     use crate::geometry::ray::Ray;
     use crate::geometry::ray::RayLanes;
     use crate::geometry::Shape;
-    use crate::lanes::{Lane, V3};
+    use crate::lanes::V3;
 
     fn sphere_fn(r: f64) -> Program {
         let body =

@@ -37,7 +37,7 @@ enum Command {
     View(ViewCmd),
     /// BVH build and frame time against object count on generated scenes (or --intersection-share).
     Scaling(headless::scaling::ScalingCmd),
-    /// Write a generated many-object scene (spheres, boxes, triangles, cylinders, mixed) as a POV-Ray file.
+    /// Write a generated many-object scene (spheres, boxes, triangles, cylinders, mixed, mesh, tori) as a POV-Ray file.
     Gen(headless::scaling::GenCmd),
     /// Render every .pov under a folder (e.g. POV-Ray's samples) at a small size and count how
     /// many render, grouping the others by their first error.

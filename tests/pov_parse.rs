@@ -1737,9 +1737,12 @@ fn light_group_lights_only_its_objects_and_nests() {
     let groups: Vec<Option<u32>> = s.objects.iter().map(|o| o.light_group).collect();
     assert_eq!(groups, vec![Some(0), Some(1), Some(2), None]);
     assert_eq!(s.light_mask(Some(0)), Some(vec![false, true, false, false]));
+    // A group's lights join the scene where the group is placed, in written order: the outer
+    // group's own light (2), then Inner's, which came with `object { Inner }` (3).
+    assert_eq!(s.lights[3].light_group, Some(1));
     // Inner: its own light, its parent's, and the global one (global_lights on).
     assert_eq!(s.light_mask(Some(1)), Some(vec![true, false, true, true]));
-    assert_eq!(s.light_mask(Some(2)), Some(vec![true, false, false, true]));
+    assert_eq!(s.light_mask(Some(2)), Some(vec![true, false, true, false]));
     assert_eq!(s.light_mask(None), Some(vec![true, false, false, false]));
     let plain = load_text("lg_none", "light_source { 0 rgb 1 } sphere { 0, 1 }").unwrap();
     assert_eq!(plain.light_mask(None), None);

@@ -1089,10 +1089,17 @@ fn mesh_packets_single_rays_and_brute_force_agree() {
             let dirs: [Vec3; 8] = std::array::from_fn(|_| (aim + r.v(-0.5, 0.5).as_vec3() - origin).normalize());
             let packet = RayLanes::<F8>::new(V3::splat(origin), V3::from_lanes(|i| dirs[i]));
             let t8 = one.hit_prim(&prim, &packet, F8::splat(MISS));
+            // Lanes of one packet with limits of their own (an idle lane at 0, a short one, a
+            // few at a random distance): the packet's walk of the mesh BVH masks each lane.
+            let far = r.f(2.0, 16.0) as f32;
+            let limits = F8::from_fn(|i| [MISS, 0.0, far, MISS, 0.5, far, far * 0.5, MISS][i]);
+            let t8_limited = one.hit_prim(&prim, &packet, limits);
             for (i, d) in dirs.iter().enumerate() {
                 let ray = Ray::new(origin, *d);
                 let t1 = one.hit_prim(&prim, &ray.lanes(), MISS);
                 assert_eq!(t8.0[i].to_bits(), t1.to_bits(), "case {case}: lane {i} of the packet");
+                let t1_limited = one.hit_prim(&prim, &ray.lanes(), limits.0[i]);
+                assert_eq!(t8_limited.0[i].to_bits(), t1_limited.to_bits(), "case {case}: lane {i}, limited");
                 let hit = one.intersect(&ray, f32::INFINITY, &mut stats);
                 let truth = brute.intersect(&ray, f32::INFINITY, &mut stats);
                 rays += 1;

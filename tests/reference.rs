@@ -127,13 +127,13 @@ fn bicubic_patches_match_povray() {
 }
 
 /// Light groups: lights that light only their group, `global_lights`, a nested and declared
-/// group, a transformed group, and POV-Ray's difference of two groups.
-/// 34.06 dB, not 35: two known differences, left for the next session. The difference of two
-/// light groups is not lit by the groups' own lights the way POV-Ray lights it, and the
-/// declared group placed inside another differs in its green light.
+/// group, a transformed group, and POV-Ray's difference of two groups. A group's lights move
+/// with every object it is placed in, as POV-Ray's do (the difference's rotate puts its red
+/// light below the floor; the declared group's green light moves with the group around it):
+/// 63.78 dB (34.06 dB when they stayed where the group itself put them).
 #[test]
 fn light_groups_match_povray() {
-    check_psnr("light_groups", &scene("light_groups"), 34.0);
+    check_psnr("light_groups", &scene("light_groups"), 35.0);
 }
 
 /// Height fields from a PGM: flat and `smooth`, one cut by `water_level`, transformed.

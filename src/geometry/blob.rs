@@ -20,10 +20,8 @@ use std::cell::RefCell;
 use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, transformed_bounds, Shape};
-use crate::lanes::{Lane, V3};
+use super::{affine_f32, transformed_bounds};
 
 /// The form of one component, in its own space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -339,27 +337,13 @@ impl Blob {
     }
 }
 
-impl Shape for Blob {
-    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
-    // scenes without this kind do not pay for its code.
-    #[inline(never)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
-    }
-
-    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        super::normal_lanes_f64(&self.frame, p, |q| self.normal_unit(q))
-    }
-
-    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        super::inside_lanes_f64(&self.frame, p, |q| self.inside_unit(q))
-    }
-}
+shape_solved_in_f64!(Blob, normal: normal_unit, inside: inside_unit);
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
 
     fn sphere(center: DVec3, radius: f64, strength: f64) -> Component {
         Component {
@@ -492,6 +476,7 @@ mod tests {
 mod regressions {
     use super::*;
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
     use glam::{DMat4, DVec4};
 
     #[test]

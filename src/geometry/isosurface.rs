@@ -12,10 +12,8 @@
 use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
-use super::{affine_f32, transformed_bounds, Shape};
+use super::{affine_f32, transformed_bounds};
 use crate::function::Program;
-use crate::lanes::{Lane, V3};
 use crate::scene::desc::{Container, IsoParams};
 
 /// Most function evaluations one ray's search may take: a surface that grazes the threshold
@@ -243,28 +241,16 @@ fn refine(g: &impl Fn(f64) -> f64, (mut a, mut ga): (f64, f64), (mut b, mut gb):
     t.clamp(a, b)
 }
 
-impl Shape for Isosurface {
-    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
-    // scenes without this kind do not pay for its code.
-    #[inline(never)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
-    }
-
-    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
-    }
-
-    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        super::inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
-    }
-}
+shape_solved_in_f64!(Isosurface, normal: normal_object, inside: inside_object);
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::function::{Internal, Node};
     use crate::geometry::ray::Ray;
+    use crate::geometry::ray::RayLanes;
+    use crate::geometry::Shape;
+    use crate::lanes::V3;
 
     fn sphere_fn(r: f64) -> Program {
         let body =

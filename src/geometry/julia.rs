@@ -17,9 +17,7 @@
 use glam::{DAffine3, DVec3, DVec4, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
-use super::{affine_f32, transformed_bounds, Shape};
-use crate::lanes::{Lane, V3};
+use super::{affine_f32, transformed_bounds};
 
 /// The escape radius POV-Ray documents, squared.
 const BAILOUT2: f64 = 16.0;
@@ -379,27 +377,13 @@ impl Julia {
     }
 }
 
-impl Shape for Julia {
-    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
-    // scenes without this kind do not pay for its code.
-    #[inline(never)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
-    }
-
-    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
-    }
-
-    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        super::inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
-    }
-}
+shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object);
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
 
     fn q(a: f64, b: f64, c: f64, d: f64) -> DVec4 {
         DVec4::new(a, b, c, d)

@@ -17,8 +17,9 @@ use super::cuboid::{frame_for, BoxFrame};
 use super::ray::{Ray, RayLanes, MISS};
 use super::triangle::Triangle;
 use super::{transformed_bounds, Shape};
+use crate::accel::aabb::node_slabs;
 use crate::accel::aabb::Aabb;
-use crate::accel::bvh::Bvh;
+use crate::accel::bvh::{Bvh, BvhNode};
 use crate::lanes::{Lane, V3};
 
 /// `MeshData::smooth_of` for a flat face.
@@ -102,6 +103,80 @@ impl MeshData {
             })
         });
         best
+    }
+
+    /// `nearest`'s distances for a packet of object-space rays, walking the BVH once with all
+    /// lanes: a node is entered when any active lane's slab test (the same `node_slabs` the
+    /// single-ray walk uses) wants it, and each leaf's triangles are tested eight lanes at a time
+    /// with the single-ray kernel (`Triangle::hit` over `L`). Every lane's result is the least
+    /// `t` over the faces it hits in `(t_min, t_max)`, whatever the visiting order, so it is the
+    /// single-ray walk's `t` bit for bit (tests/properties.rs checks it on random meshes).
+    #[inline(always)]
+    pub fn nearest_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
+        let finite = |v: &V3<L>, i: usize| v.x.get(i).is_finite() && v.y.get(i).is_finite() && v.z.get(i).is_finite();
+        let active = L::mask_from_fn(|i| t_min.get(i) < t_max.get(i) && finite(&ray.o, i) && finite(&ray.d, i));
+        if self.bvh.nodes.is_empty() || !L::any(active) {
+            return L::splat(MISS);
+        }
+        // Each lane's current limit: -inf for idle lanes, which no node or face accepts.
+        let mut limit = L::select(active, t_max, L::splat(f32::NEG_INFINITY));
+        let mut best = L::splat(MISS);
+        let zero = L::splat(0.0);
+        let enters = |n: &BvhNode, limit: L| {
+            let (lo, hi) = (V3::splat(Vec3::from_array(n.min)), V3::splat(Vec3::from_array(n.max)));
+            let (near, far) = node_slabs(lo, hi, ray.o, ray.inv);
+            L::any(L::and(L::and(near.le(far), zero.le(far)), L::and(near.le(limit), active)))
+        };
+        let first_active = (0..L::WIDTH).find(|&i| L::mask_lane(active, i)).unwrap_or(0);
+        let dir = Vec3::new(ray.d.x.get(first_active), ray.d.y.get(first_active), ray.d.z.get(first_active));
+        let mut stack = [0u32; 64];
+        let mut sp = 0usize;
+        let mut node = 0u32;
+        loop {
+            let n = &self.bvh.nodes[node as usize];
+            if enters(n, limit) {
+                if n.is_leaf() {
+                    for f in n.first..n.first + n.count {
+                        let t = self.triangles[f as usize].hit(ray, t_min, limit);
+                        let mut hit = t.lt(limit);
+                        if self.floor != f32::NEG_INFINITY {
+                            let y = ray.o.y + t * ray.d.y;
+                            hit = L::and(hit, L::splat(self.floor).le(y));
+                        }
+                        limit = L::select(hit, t, limit);
+                        best = L::select(hit, t, best);
+                    }
+                } else {
+                    // Nearer child first, judged by the first active lane's direction along the
+                    // axis that separates the children most (the order changes no result).
+                    let (a, b) = (&self.bvh.nodes[n.first as usize], &self.bvh.nodes[n.first as usize + 1]);
+                    let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
+                    let cb = Vec3::from_array(b.min) + Vec3::from_array(b.max);
+                    let sep = (cb - ca).abs();
+                    let axis = if sep.x >= sep.y && sep.x >= sep.z {
+                        0
+                    } else if sep.y >= sep.z {
+                        1
+                    } else {
+                        2
+                    };
+                    let a_first = (cb[axis] - ca[axis]) * dir[axis] >= 0.0;
+                    let (near, far) = if a_first { (n.first, n.first + 1) } else { (n.first + 1, n.first) };
+                    if sp < stack.len() {
+                        stack[sp] = far;
+                        sp += 1;
+                    }
+                    node = near;
+                    continue;
+                }
+            }
+            if sp == 0 {
+                return best;
+            }
+            sp -= 1;
+            node = stack[sp];
+        }
     }
 
     /// How many faces the object-space `ray` crosses at `t > 0` (the inside test's parity).
@@ -213,14 +288,18 @@ impl Mesh {
 }
 
 impl Shape for Mesh {
-    /// Each lane traced on its own through the mesh's BVH (lanes of a packet part ways inside
-    /// a mesh as soon as they reach different faces).
+    /// Packets (`F8`) walk the mesh's BVH together, carried into object space as a packet
+    /// (`MeshData::nearest_lanes`); single rays (f32, and f64, whose lanes are traced in f32)
+    /// walk it alone (`MeshData::nearest`). Both give the same `t`.
     // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
     // scenes without this kind do not pay for its code.
     #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
+        if L::WIDTH > 1 {
+            return self.data.nearest_lanes(&RayLanes { o, d, inv: d.recip() }, t_min, t_max);
+        }
         L::from_fn(|i| {
             let r = self.object_ray(&o, &d, i);
             self.data.nearest(&r, t_min.get(i), t_max.get(i)).map_or(MISS, |(t, _)| t)

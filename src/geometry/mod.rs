@@ -6,6 +6,44 @@
 //! geometric normal, computed afterwards, only for the winning hit. The lane arithmetic is
 //! `crate::lanes`; what every test shares (rays, `MISS`, root picking, offsets) is `ray`.
 
+/// `Shape` for a shape solved lane by lane in f64 in its object space (`self.frame`), written
+/// once for julia_fractal, isosurface, sor, blob and parametric: `hit` is `self.solve(o, d,
+/// t_min, t_max)` through `hit_lanes_f64`, `normal` the named object-space normal through
+/// `normal_lanes_f64`, and `inside` the named object-space test through `inside_lanes_f64`
+/// (`inside: none` for a shell with no inside). `hit` is not inlined into `Scene::hit_prim`:
+/// the dispatch every shape shares stays small, so scenes without these kinds do not pay for
+/// their code.
+macro_rules! shape_solved_in_f64 {
+    ($ty:ty, normal: $normal:ident, inside: none) => {
+        shape_solved_in_f64!(@impl $ty, $normal, |_this: &$ty, _q: glam::DVec3| false);
+    };
+    ($ty:ty, normal: $normal:ident, inside: $inside:ident) => {
+        shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q));
+    };
+    (@impl $ty:ty, $normal:ident, $inside:expr) => {
+        impl $crate::geometry::Shape for $ty {
+            #[inline(never)]
+            fn hit<L: $crate::lanes::Lane>(
+                &self,
+                ray: &$crate::geometry::ray::RayLanes<L>,
+                t_min: L,
+                t_max: L,
+            ) -> L {
+                $crate::geometry::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+            }
+
+            fn normal<L: $crate::lanes::Lane>(&self, p: $crate::lanes::V3<L>) -> $crate::lanes::V3<L> {
+                $crate::geometry::normal_lanes_f64(&self.frame, p, |q| self.$normal(q))
+            }
+
+            fn inside<L: $crate::lanes::Lane>(&self, p: $crate::lanes::V3<L>) -> L::Mask {
+                let inside = $inside;
+                $crate::geometry::inside_lanes_f64(&self.frame, p, |q| inside(self, q))
+            }
+        }
+    };
+}
+
 pub mod blob;
 pub mod cone;
 pub mod cuboid;

@@ -14,10 +14,8 @@
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
-use super::{affine_f32, transformed_bounds, Shape};
+use super::{affine_f32, transformed_bounds};
 use crate::function::Program;
-use crate::lanes::{Lane, V3};
 use crate::scene::desc::{Container, ParametricParams};
 
 /// Cells along u and along v (a power of two, for the quadtree).
@@ -312,29 +310,14 @@ impl Parametric {
     }
 }
 
-impl Shape for Parametric {
-    // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
-    // scenes without this kind do not pay for its code.
-    #[inline(never)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
-    }
-
-    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
-    }
-
-    /// A shell: nothing is inside.
-    fn inside<L: Lane>(&self, _p: V3<L>) -> L::Mask {
-        L::mask_from_fn(|_| false)
-    }
-}
+shape_solved_in_f64!(Parametric, normal: normal_object, inside: none);
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::function::{Binary, Node as F, Unary};
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
 
     /// The unit sphere of POV-Ray's documentation: (sin u cos v, sin u sin v, cos u).
     fn sphere() -> Parametric {

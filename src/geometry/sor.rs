@@ -12,10 +12,8 @@
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, transformed_bounds, Shape};
-use crate::lanes::{Lane, V3};
+use super::{affine_f32, transformed_bounds};
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
@@ -240,25 +238,14 @@ impl Sor {
     }
 }
 
-impl Shape for Sor {
-    #[inline(always)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
-    }
-
-    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
-        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
-    }
-
-    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        super::inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
-    }
-}
+shape_solved_in_f64!(Sor, normal: normal_object, inside: inside_object);
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::geometry::ray::Ray;
+    use crate::geometry::Shape;
+    use crate::lanes::V3;
 
     /// Radius 1 from height 0 to 2 with straight ends: a cylinder (slopes 0 everywhere).
     fn can(xf: DAffine3, open: bool) -> Sor {

@@ -33,14 +33,15 @@ use crate::scene::desc::SceneDesc;
 use crate::scene::generate::{generate, write_generated, Kind};
 
 fn parse_kind(s: &str) -> Result<Kind, String> {
-    Kind::parse(s)
-        .ok_or_else(|| format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed, mesh)"))
+    Kind::parse(s).ok_or_else(|| {
+        format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed, mesh, tori)")
+    })
 }
 
 /// `strahl gen KIND N -o FILE`: writes a generated scene as POV-Ray text.
 #[derive(Args)]
 pub struct GenCmd {
-    /// spheres, boxes, triangles, cylinders or mixed.
+    /// spheres, boxes, triangles, cylinders, mixed, mesh or tori.
     #[arg(value_parser = parse_kind)]
     kind: Kind,
     /// Number of objects (plus the floor).
@@ -62,7 +63,7 @@ pub fn run_gen(c: &GenCmd) -> Result<(), CliError> {
 /// `strahl scaling`: BVH build and frame time against the number of objects.
 #[derive(Args)]
 pub struct ScalingCmd {
-    /// spheres, boxes, triangles, cylinders or mixed.
+    /// spheres, boxes, triangles, cylinders, mixed, mesh or tori.
     #[arg(long, default_value = "spheres", value_parser = parse_kind)]
     kind: Kind,
     /// Object counts, comma-separated.

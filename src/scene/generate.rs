@@ -20,7 +20,7 @@ use glam::DVec3;
 use crate::camera::Camera;
 use crate::scene::desc::{
     CameraDesc, Color, FinishDesc, GlobalSettings, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc,
-    ShapeDesc, SourceRef, TextureDesc,
+    ShapeDesc, SourceRef, TextureDesc, Transform,
 };
 
 /// Which primitive the generated cloud is made of.
@@ -35,10 +35,13 @@ pub enum Kind {
     Mixed,
     /// One `mesh2` of N triangles: a bumpy sphere filling the middle of the cube.
     Mesh,
+    /// Tori lying in one of the three axis planes (`rotate x*90`, `rotate z*90` or none).
+    Tori,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 6] = [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed, Kind::Mesh];
+    pub const ALL: [Kind; 7] =
+        [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed, Kind::Mesh, Kind::Tori];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -48,6 +51,7 @@ impl Kind {
             Kind::Cylinders => "cylinders",
             Kind::Mixed => "mixed",
             Kind::Mesh => "mesh",
+            Kind::Tori => "tori",
         }
     }
 
@@ -123,8 +127,35 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
     }
 }
 
-/// Shape `i` of kind `kind` (Mixed picks one per object) around `center`.
-fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
+/// Shape `i` of kind `kind` (Mixed picks one per object) around `center`, and its transform
+/// (identity but for tori, which POV-Ray only writes about the origin).
+fn shape(kind: Kind, i: u64, center: DVec3) -> (ShapeDesc, Transform) {
+    if kind == Kind::Tori {
+        return torus(i, center);
+    }
+    (untransformed(kind, i, center), Transform::default())
+}
+
+/// The three orientations of generated tori: `rotate x*90`, `rotate z*90`, none. Built from exact
+/// 0/±1 entries as the loader builds a rotation by a multiple of 90°, so the written file reads
+/// back to exactly this matrix.
+const TORUS_TURNS: [(&str, [f64; 9]); 3] = [
+    ("rotate x*90 ", [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0]),
+    ("rotate z*90 ", [0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 1.0]),
+    ("", [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]),
+];
+
+/// Torus `i`: major radius 0.3–0.5, minor 0.08–0.18, in one of three axis planes, at `center`.
+fn torus(i: u64, center: DVec3) -> (ShapeDesc, Transform) {
+    let u = |f: u64| unit(i, f);
+    let shape = ShapeDesc::Torus { major: q(0.3 + 0.2 * u(10)), minor: q(0.08 + 0.1 * u(11)) };
+    let turn = glam::DMat4::from_mat3(glam::DMat3::from_cols_array(&TORUS_TURNS[(i % 3) as usize].1));
+    let step = |m: glam::DMat4| Transform { matrix: m, inverse: m.inverse() };
+    (shape, step(turn).then(&step(glam::DMat4::from_translation(center))))
+}
+
+/// Shape `i` of an untransformed kind (Mixed picks one per object) around `center`.
+fn untransformed(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
     let u = |f: u64| unit(i, f);
     let kind = match kind {
         Kind::Mixed => [Kind::Spheres, Kind::Boxes, Kind::Triangles][(i % 3) as usize],
@@ -136,7 +167,7 @@ fn shape(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
             let half = DVec3::new(0.2 + 0.3 * u(10), 0.2 + 0.3 * u(11), 0.2 + 0.3 * u(12));
             ShapeDesc::Box { corner1: qv(center - half), corner2: qv(center + half) }
         }
-        Kind::Triangles | Kind::Mixed | Kind::Mesh => {
+        Kind::Triangles | Kind::Mixed | Kind::Mesh | Kind::Tori => {
             let corner = |f: u64| qv(center + DVec3::new(u(f) - 0.5, u(f + 1) - 0.5, u(f + 2) - 0.5) * 1.6);
             ShapeDesc::Triangle { a: corner(10), b: corner(13), c: corner(16) }
         }
@@ -220,12 +251,10 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
         } else {
             FinishDesc::default()
         };
-        objects.push(object(
-            shape(kind, i, center),
-            PigmentPattern::Solid(Color::rgb(r, g, b)),
-            finish,
-            i as usize + 1,
-        ));
+        let (shape, transform) = shape(kind, i, center);
+        let mut o = object(shape, PigmentPattern::Solid(Color::rgb(r, g, b)), finish, i as usize + 1);
+        o.transform = transform;
+        objects.push(o);
     }
     // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
     let look_at = DVec3::new(0.0, 0.5 * edge, 0.0);
@@ -291,6 +320,16 @@ pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
     write(desc, &format!("<{}, {}, {}>", r.x, r.y, r.z))
 }
 
+/// A generated torus's transform as `rotate … translate <…>` (one of TORUS_TURNS, then a move),
+/// or None for any other transform.
+fn torus_modifiers(t: &Transform) -> Option<String> {
+    let m = t.matrix;
+    let linear = glam::DMat3::from_mat4(m).to_cols_array();
+    let (turn, _) = TORUS_TURNS.iter().find(|(_, l)| *l == linear)?;
+    let p = m.w_axis.truncate();
+    Some(format!("{turn}translate <{}, {}, {}>", p.x, p.y, p.z))
+}
+
 /// `write_pov` with the camera's `right` written as the expression `right`.
 fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
     let mut o = String::with_capacity(128 * desc.objects.len() + 1024);
@@ -333,9 +372,14 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
     }
     let default_finish = FinishDesc::default();
     for obj in &desc.objects {
-        if !obj.transform.is_identity() || !obj.texture.pigment.transform.is_identity() {
+        // A torus may be turned by one of TORUS_TURNS and moved; nothing else is transformed.
+        let placed = match obj.shape {
+            ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform),
+            _ => obj.transform.is_identity().then(String::new),
+        };
+        let Some(placed) = placed.filter(|_| obj.texture.pigment.transform.is_identity()) else {
             return Err(format!("write_pov: transformed {} is not supported", obj.shape.keyword()));
-        }
+        };
         if obj.texture.normal.is_some() || obj.texture.pigment.turbulence.is_some() || obj.interior.ior != 1.0 {
             return Err(format!(
                 "write_pov: {} with normal, turbulence or interior is not supported",
@@ -370,12 +414,14 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
                 }
                 let _ = write!(o, "\n  }}\n ");
             }
+            ShapeDesc::Torus { major, minor } => {
+                let _ = write!(o, "torus {{ {major}, {minor} {placed}");
+            }
             other @ (ShapeDesc::Polygon { .. }
             | ShapeDesc::Mesh { .. }
             | ShapeDesc::HeightField { .. }
             | ShapeDesc::Cone { .. }
             | ShapeDesc::Disc { .. }
-            | ShapeDesc::Torus { .. }
             | ShapeDesc::Csg { .. }
             | ShapeDesc::Poly { .. }
             | ShapeDesc::Superellipsoid { .. }

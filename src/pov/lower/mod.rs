@@ -413,7 +413,7 @@ impl<'f> Lowerer<'f> {
                     return Err(Diag::new(o.span, format!("{place} would have more than {MAX_OBJECTS} objects")));
                 }
                 if self.csg_stack.is_empty() {
-                    self.scene.lights.extend(group.lights.iter().copied());
+                    self.place_lights(&group.lights);
                 } else {
                     self.child_lights.extend(group.lights.iter().copied());
                 }

@@ -56,8 +56,11 @@ impl Lowerer<'_> {
                     Some(on) => self.hollow(on.as_ref())?,
                     None => false,
                 };
-                self.light_group(&mut parts, lights, global, &o.modifiers)?;
-                Group { parts, csg: true, lights: Vec::new() }
+                let lights = self.light_group(&mut parts, lights, global);
+                // The group's lights travel with it, as a lamp's do: moved by its transforms
+                // and those of every object it is placed in (a CSG, a declared group placed
+                // inside another), and added to the scene where the whole is placed.
+                Group { parts, csg: true, lights }
             }
             ObjectKind::Csg { op: CsgOp::Union, children } => {
                 Group { parts: self.children(children, "union", o.span)?, csg: true, lights: Vec::new() }
@@ -224,34 +227,22 @@ impl Lowerer<'_> {
         Ok(parts)
     }
 
-    /// Registers a `light_group` (POV-Ray 3.4.4.2): its `lights`, moved by the group's
-    /// transforms, join the scene's lights, marked as lighting only `parts` (and, through
-    /// `parent`, the parts of the groups written inside this one).
+    /// Registers a `light_group` (POV-Ray 3.4.4.2) lighting only `parts` (and, through
+    /// `parent`, the parts of the groups written inside this one), and returns its `lights`
+    /// marked as the group's (those of groups inside it keep their own): they join the scene's
+    /// lights, and the group's list, where the group is placed (`Lowerer::place_lights`).
     fn light_group(
         &mut self,
         parts: &mut [Part],
         mut lights: Vec<crate::scene::desc::LightDesc>,
         global_lights: bool,
-        modifiers: &[Modifier],
-    ) -> PResult<()> {
-        for m in modifiers {
-            if let Modifier::Transform(t) = m {
-                let t = self.transform(t)?;
-                for light in &mut lights {
-                    light.position = t.matrix.transform_point3(light.position);
-                }
-            }
-        }
+    ) -> Vec<crate::scene::desc::LightDesc> {
         let id = self.scene.light_groups.len() as u32;
-        let first = self.scene.lights.len() as u32;
-        let count = lights.len() as u32;
-        self.scene.lights.extend(lights);
+        for light in &mut lights {
+            light.light_group.get_or_insert(id);
+        }
         let groups = &mut self.scene.light_groups;
-        groups.push(crate::scene::desc::LightGroupDesc {
-            lights: (first..first + count).collect(),
-            global_lights,
-            parent: None,
-        });
+        groups.push(crate::scene::desc::LightGroupDesc { lights: Vec::new(), global_lights, parent: None });
         let mut mark = |p: &mut Part| match p.desc.light_group {
             None => p.desc.light_group = Some(id),
             Some(inner) if inner != id && groups[inner as usize].parent.is_none() => {
@@ -264,7 +255,19 @@ impl Lowerer<'_> {
         for part in parts {
             part.for_each_leaf(&mut mark);
         }
-        Ok(())
+        lights
+    }
+
+    /// Lights placed in the scene (at the top level, or inside an object placed there): each
+    /// joins the scene's lights and, if it is in a `light_group`, that group's list.
+    pub(super) fn place_lights(&mut self, lights: &[crate::scene::desc::LightDesc]) {
+        for light in lights {
+            if let Some(group) = light.light_group {
+                let index = self.scene.lights.len() as u32;
+                self.scene.light_groups[group as usize].lights.push(index);
+            }
+            self.scene.lights.push(*light);
+        }
     }
 
     /// `hollow` alone is on; with a value, on unless it is 0.

@@ -27,6 +27,9 @@ pub struct LightDesc {
     /// `media_interaction`, `media_attenuation`: kept as written; strahl models no media.
     pub media_interaction: bool,
     pub media_attenuation: bool,
+    /// The innermost `light_group` the light is written in (an index into
+    /// `SceneDesc::light_groups`, whose `lights` list it), or `None`: a global light.
+    pub light_group: Option<u32>,
 }
 
 impl Default for LightDesc {
@@ -47,6 +50,7 @@ impl Default for LightDesc {
             area: None,
             media_interaction: true,
             media_attenuation: false,
+            light_group: None,
         }
     }
 }

@@ -1827,3 +1827,42 @@ fn string_comparisons_and_a_comma_before_the_bump_amount() {
     let (_, _, m) = err("string_float", "#if (\"a\" = 1) #end");
     assert!(m.contains("float") && m.contains("string"), "{m}");
 }
+
+#[test]
+fn materials_carry_texture_and_interior() {
+    let s = load_text(
+        "material",
+        "#declare M = material { texture { pigment { color rgb <1, 0, 0> } } interior { ior 1.5 } }\n\
+         sphere { 0, 1 material { M } }\n\
+         union { sphere { 0, 1 } sphere { x, 1 interior { ior 2 } } material { M scale 2 } }\n\
+         box { 0, 1 pigment { color rgb 1 } material { texture { pigment { color rgbt 1 } } } }\n\
+         #declare N = material { M texture { pigment { color rgbt 1 } } }\n\
+         sphere { 0, 1 material { N } }",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 5);
+    assert_eq!(s.objects[0].interior.ior, 1.5);
+    assert!(
+        matches!(s.objects[0].texture.pigment.pattern, PigmentPattern::Solid(c) if c.rgb == DVec3::new(1.0, 0.0, 0.0))
+    );
+    // A union's material goes to the children without their own interior or texture.
+    assert_eq!(s.objects[1].interior.ior, 1.5);
+    assert_eq!(s.objects[2].interior.ior, 2.0);
+    // Over an object's own texture (and over a declared base's) a material's texture is a layer.
+    assert!(matches!(&s.objects[3].texture.pigment.pattern, PigmentPattern::Layered(l) if l.len() == 2));
+    assert!(matches!(&s.objects[4].texture.pigment.pattern, PigmentPattern::Layered(l) if l.len() == 2));
+    assert_eq!(s.objects[4].interior.ior, 1.5);
+}
+
+#[test]
+fn material_errors_are_located() {
+    let (l, c, m) = err("material_word", "sphere { 0, 1\n  material { pigment { color rgb 1 } } }");
+    assert_eq!((l, c), (2, 14), "{m}");
+    assert!(m.starts_with("`pigment` is not supported in material (supported: texture, interior"), "{m}");
+    let (l, c, m) =
+        err("material_base", "#declare T = texture { pigment { color rgb 1 } }\nsphere { 0, 1 material { T } }");
+    assert_eq!((l, c), (2, 26), "{m}");
+    assert!(m.contains("a declared material") && m.contains("texture"), "{m}");
+    let (l, c, m) = err("material_open", "sphere { 0, 1 material { texture { } }");
+    assert!(m.contains("material") || m.contains("sphere"), "{l}:{c} {m}");
+}

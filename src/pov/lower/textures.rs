@@ -51,7 +51,7 @@ impl TurbState {
 
 impl Lowerer<'_> {
     /// A leading name in a block: the declared value, or an error naming what it is.
-    fn declared<'v>(&'v self, e: &'v Expr) -> PResult<Option<&'v Value>> {
+    pub(super) fn declared<'v>(&'v self, e: &'v Expr) -> PResult<Option<&'v Value>> {
         match &e.kind {
             ExprKind::Value(v) => match &**v {
                 Value::Unmodelled(u) => Err(u.used_at(e.span)),
@@ -534,16 +534,7 @@ impl Lowerer<'_> {
                 }
                 TextureItem::Layer(t) => {
                     let upper = self.texture(t)?;
-                    let below = std::mem::take(&mut out.pigment);
-                    let mut layers = match below.pattern {
-                        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
-                        _ => vec![below],
-                    };
-                    layers.push(upper.pigment);
-                    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
-                    if upper.normal.is_some() {
-                        out.normal = upper.normal;
-                    }
+                    layer_over(&mut out, upper);
                 }
             }
         }
@@ -696,6 +687,21 @@ fn sorted_lookup(entries: &[ColorMapEntry], v: f64) -> Color {
 }
 
 /// Carries a texture's patterns along with a transform applied after them.
+/// Puts `upper` over `out` as a texture layer: the pigments stack, the upper normal (if any)
+/// replaces the lower one.
+pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
+    let below = std::mem::take(&mut out.pigment);
+    let mut layers = match below.pattern {
+        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
+        _ => vec![below],
+    };
+    layers.push(upper.pigment);
+    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
+    if upper.normal.is_some() {
+        out.normal = upper.normal;
+    }
+}
+
 pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
     t.pigment.transform_by(tr);
     if let Some(n) = &mut t.normal {

@@ -1866,3 +1866,18 @@ fn material_errors_are_located() {
     let (l, c, m) = err("material_open", "sphere { 0, 1 material { texture { } }");
     assert!(m.contains("material") || m.contains("sphere"), "{l}:{c} {m}");
 }
+
+#[test]
+fn tiles_is_a_checker_of_textures_with_located_errors() {
+    let s = load_text(
+        "tiles",
+        "plane { y, 0 texture { tiles { texture { pigment { color rgb 1 } } tile2 texture { pigment { color rgb 0 } } } scale 2 } }",
+    )
+    .unwrap();
+    assert!(matches!(&s.objects[0].texture.pigment.pattern, PigmentPattern::List(_, l) if l.len() == 2));
+    let (l, c, m) = err("tiles_no_tile2", "plane { y, 0 texture { tiles {\n texture { pigment { color rgb 1 } } } } }");
+    assert_eq!((l, c), (2, 38), "{m}");
+    assert!(m.starts_with("expected `tile2` in `tiles`"), "{m}");
+    let (l, c, m) = err("tiles_no_brace", "plane { y, 0 texture { tiles texture { } } }");
+    assert_eq!((l, c), (1, 30), "{m}");
+}

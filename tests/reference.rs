@@ -111,6 +111,13 @@ fn materials_match_povray() {
     check_psnr("materials", &scene("materials"), 35.0);
 }
 
+/// The old `tiles` texture (a checker of two textures, `tile2` in checker's first cells), moved
+/// by the transforms after it; one of its textures layered.
+#[test]
+fn tiles_match_povray() {
+    check_psnr("tiles", &scene("tiles"), 35.0);
+}
+
 /// Layered textures: upper layers composited over lower ones by their filter and transmit.
 #[test]
 #[ignore = "22.8 dB so far: the sphere's filtered layer composites differently from POV-Ray's; plane and box match"]

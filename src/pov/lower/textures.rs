@@ -494,6 +494,7 @@ impl Lowerer<'_> {
         let mut out = self.default_texture.clone();
         let mut pattern: Option<(PatternDesc, Vec<TextureDesc>)> = None;
         let mut texture_map: Option<Vec<(f64, TextureDesc)>> = None;
+        let mut pattern_transform = Transform::default();
         for item in &t.items {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
@@ -509,6 +510,8 @@ impl Lowerer<'_> {
                     transform_texture(&mut out, &tr);
                     if let Some((_, list)) = &mut pattern {
                         list.iter_mut().for_each(|t| transform_texture(t, &tr));
+                        // The pattern that picks the textures moves with them.
+                        pattern_transform = pattern_transform.then(&tr);
                     }
                 }
                 TextureItem::Pattern(pa) => {
@@ -553,7 +556,7 @@ impl Lowerer<'_> {
                 Some(m) => PigmentPattern::PigmentMap(pd, m.into_iter().map(|(v, t)| (v, t.pigment)).collect()),
                 None => PigmentPattern::List(pd, list.into_iter().map(|t| t.pigment).collect()),
             };
-            out.pigment = PigmentDesc { pattern, ..Default::default() };
+            out.pigment = PigmentDesc { pattern, transform: pattern_transform, ..Default::default() };
         }
         Ok(out)
     }

@@ -1843,3 +1843,57 @@ fn bicubic_patch_uv_vectors_may_stand_before_the_control_points() {
         assert_eq!(mesh.faces.len(), 4 * 4 * 2, "{body}");
     }
 }
+
+#[test]
+fn materials_carry_texture_and_interior() {
+    let s = load_text(
+        "material",
+        "#declare M = material { texture { pigment { color rgb <1, 0, 0> } } interior { ior 1.5 } }\n\
+         sphere { 0, 1 material { M } }\n\
+         union { sphere { 0, 1 } sphere { x, 1 interior { ior 2 } } material { M scale 2 } }\n\
+         box { 0, 1 pigment { color rgb 1 } material { texture { pigment { color rgbt 1 } } } }\n\
+         #declare N = material { M texture { pigment { color rgbt 1 } } }\n\
+         sphere { 0, 1 material { N } }",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 5);
+    assert_eq!(s.objects[0].interior.ior, 1.5);
+    assert!(
+        matches!(s.objects[0].texture.pigment.pattern, PigmentPattern::Solid(c) if c.rgb == DVec3::new(1.0, 0.0, 0.0))
+    );
+    // A union's material goes to the children without their own interior or texture.
+    assert_eq!(s.objects[1].interior.ior, 1.5);
+    assert_eq!(s.objects[2].interior.ior, 2.0);
+    // Over an object's own texture (and over a declared base's) a material's texture is a layer.
+    assert!(matches!(&s.objects[3].texture.pigment.pattern, PigmentPattern::Layered(l) if l.len() == 2));
+    assert!(matches!(&s.objects[4].texture.pigment.pattern, PigmentPattern::Layered(l) if l.len() == 2));
+    assert_eq!(s.objects[4].interior.ior, 1.5);
+}
+
+#[test]
+fn material_errors_are_located() {
+    let (l, c, m) = err("material_word", "sphere { 0, 1\n  material { pigment { color rgb 1 } } }");
+    assert_eq!((l, c), (2, 14), "{m}");
+    assert!(m.starts_with("`pigment` is not supported in material (supported: texture, interior"), "{m}");
+    let (l, c, m) =
+        err("material_base", "#declare T = texture { pigment { color rgb 1 } }\nsphere { 0, 1 material { T } }");
+    assert_eq!((l, c), (2, 26), "{m}");
+    assert!(m.contains("a declared material") && m.contains("texture"), "{m}");
+    let (l, c, m) = err("material_open", "sphere { 0, 1 material { texture { } }");
+    assert!(m.contains("material") || m.contains("sphere"), "{l}:{c} {m}");
+}
+
+#[test]
+fn tiles_is_a_checker_of_textures_with_located_errors() {
+    let s = load_text(
+        "tiles",
+        "plane { y, 0 texture { tiles { texture { pigment { color rgb 1 } } tile2 texture { pigment { color rgb 0 } } } scale 2 } }",
+    )
+    .unwrap();
+    assert!(matches!(&s.objects[0].texture.pigment.pattern, PigmentPattern::List(_, l) if l.len() == 2));
+    let (l, c, m) = err("tiles_no_tile2", "plane { y, 0 texture { tiles {\n texture { pigment { color rgb 1 } } } } }");
+    assert_eq!((l, c), (2, 38), "{m}");
+    assert!(m.starts_with("expected `tile2` in `tiles`"), "{m}");
+    let (l, c, m) = err("tiles_no_brace", "plane { y, 0 texture { tiles texture { } } }");
+    assert_eq!((l, c), (1, 30), "{m}");
+}

@@ -84,6 +84,7 @@ pub enum DeclValue {
     Finish(Finish),
     Texture(Texture),
     Interior(Interior),
+    Material(Material),
     ColorMap(ColorMap),
     Object(Object),
     Camera(Vec<CameraItem>),
@@ -490,6 +491,24 @@ pub struct Interior {
     pub span: Span,
 }
 
+/// One item of `material { }` (POV-Ray 3.5.5 Material).
+#[derive(Clone, Debug, PartialEq)]
+pub enum MaterialItem {
+    /// A declared material to start from.
+    Base(Expr),
+    Texture(Texture),
+    Interior(Interior),
+    /// Moves the material's texture (and interior) only.
+    Transform(TransformItem),
+}
+
+/// `material { [M] texture {..} interior {..} transforms }`: a texture and an interior as one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    pub items: Vec<MaterialItem>,
+    pub span: Span,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ShapeKind {
     Sphere,
@@ -599,6 +618,8 @@ pub enum Modifier {
     Finish(Finish),
     Texture(Texture),
     Interior(Interior),
+    /// `material { }`: a texture and an interior given together.
+    Material(Material),
     Transform(TransformItem),
     NoShadow,
     /// `hollow [on|off]`: kept for media (not modelled yet); changes nothing else in POV-Ray.

@@ -26,6 +26,8 @@ pub enum Value {
     Finish(FinishDesc),
     Texture(Box<TextureDesc>),
     Interior(InteriorDesc),
+    /// A declared `material`: what it carries to an object.
+    Material(Box<MaterialValue>),
     /// A declared `color_map`, already in the sorted form the renderer reads.
     ColorMap(Vec<ColorMapEntry>),
     Object(Box<Group>),
@@ -44,6 +46,14 @@ pub enum Value {
     /// yet: using it is the error, not declaring it (include files declare far more than a
     /// scene uses).
     Unmodelled(Rc<Unmodelled>),
+}
+
+/// A `material { }` lowered: the texture and interior it carries (POV-Ray 3.4.5.5.3), each
+/// only if written (a material without a texture leaves the object's own).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MaterialValue {
+    pub texture: Option<TextureDesc>,
+    pub interior: Option<InteriorDesc>,
 }
 
 /// A camera as its items leave it, before `look_at`, `angle` and the transforms are resolved:
@@ -208,6 +218,7 @@ impl Value {
             Value::Finish(_) => "a finish",
             Value::Texture(_) => "a texture",
             Value::Interior(_) => "an interior",
+            Value::Material(_) => "a material",
             Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",

@@ -43,3 +43,6 @@ done
 for s in patterns_simple layered; do
     render "$here/scenes/$s.pov" "$s"
 done
+for s in materials tiles; do
+    render "$here/scenes/$s.pov" "$s"
+done

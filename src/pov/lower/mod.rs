@@ -14,6 +14,7 @@ mod height_field;
 mod isosurface;
 mod julia;
 mod lights;
+mod material;
 mod objects;
 mod sweeps;
 mod text;
@@ -284,6 +285,7 @@ impl<'f> Lowerer<'f> {
             DeclValue::Finish(f) => Value::Finish(self.finish_block(f)?),
             DeclValue::Texture(t) => Value::Texture(Box::new(self.texture(t)?)),
             DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
+            DeclValue::Material(m) => Value::Material(Box::new(self.material(m)?)),
             DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
             DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
             DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),

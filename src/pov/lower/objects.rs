@@ -6,13 +6,13 @@
 
 use glam::DVec3;
 
-use super::textures::transform_texture;
+use super::textures::{layer_over, transform_texture};
 use super::Lowerer;
 use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
 use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::pov::value::{Group, Part, Value};
+use crate::pov::value::{Group, MaterialValue, Part, Value};
 use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
 
 impl Lowerer<'_> {
@@ -170,6 +170,23 @@ impl Lowerer<'_> {
                 obj.interior = self.interior(i)?;
                 part.has_interior = true;
             }
+            // POV-Ray 3.4.5.5.3: a material's texture goes over the object's own as a layer;
+            // its interior replaces the object's.
+            Modifier::Material(m) => {
+                let MaterialValue { texture, interior } = self.material(m)?;
+                let obj = &mut part.desc;
+                if let Some(tex) = texture {
+                    match part.textured {
+                        true => layer_over(&mut obj.texture, tex),
+                        false => obj.texture = tex,
+                    }
+                    part.textured = true;
+                }
+                if let Some(i) = interior {
+                    obj.interior = i;
+                    part.has_interior = true;
+                }
+            }
             Modifier::Transform(t) => {
                 let t = self.transform(t)?;
                 obj.transform = obj.transform.then(&t);
@@ -309,6 +326,18 @@ impl Lowerer<'_> {
             Modifier::Texture(t) if pending.texture.is_some() => return Err(Diag::new(t.span, LAYERED)),
             Modifier::Texture(t) => pending.texture = Some(self.texture(t)?),
             Modifier::Interior(i) => pending.interior = Some(self.interior(i)?),
+            Modifier::Material(m) => {
+                let MaterialValue { texture, interior } = self.material(m)?;
+                if let Some(tex) = texture {
+                    match &mut pending.texture {
+                        Some(below) => layer_over(below, tex),
+                        None => pending.texture = Some(tex),
+                    }
+                }
+                if interior.is_some() {
+                    pending.interior = interior;
+                }
+            }
             Modifier::Transform(t) => {
                 let t = self.transform(t)?;
                 each(parts, &mut |leaf| {

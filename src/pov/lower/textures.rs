@@ -51,7 +51,7 @@ impl TurbState {
 
 impl Lowerer<'_> {
     /// A leading name in a block: the declared value, or an error naming what it is.
-    fn declared<'v>(&'v self, e: &'v Expr) -> PResult<Option<&'v Value>> {
+    pub(super) fn declared<'v>(&'v self, e: &'v Expr) -> PResult<Option<&'v Value>> {
         match &e.kind {
             ExprKind::Value(v) => match &**v {
                 Value::Unmodelled(u) => Err(u.used_at(e.span)),
@@ -494,6 +494,7 @@ impl Lowerer<'_> {
         let mut out = self.default_texture.clone();
         let mut pattern: Option<(PatternDesc, Vec<TextureDesc>)> = None;
         let mut texture_map: Option<Vec<(f64, TextureDesc)>> = None;
+        let mut pattern_transform = Transform::default();
         for item in &t.items {
             match item {
                 TextureItem::Base(e) => match self.declared(e)? {
@@ -509,6 +510,8 @@ impl Lowerer<'_> {
                     transform_texture(&mut out, &tr);
                     if let Some((_, list)) = &mut pattern {
                         list.iter_mut().for_each(|t| transform_texture(t, &tr));
+                        // The pattern that picks the textures moves with them.
+                        pattern_transform = pattern_transform.then(&tr);
                     }
                 }
                 TextureItem::Pattern(pa) => {
@@ -534,16 +537,7 @@ impl Lowerer<'_> {
                 }
                 TextureItem::Layer(t) => {
                     let upper = self.texture(t)?;
-                    let below = std::mem::take(&mut out.pigment);
-                    let mut layers = match below.pattern {
-                        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
-                        _ => vec![below],
-                    };
-                    layers.push(upper.pigment);
-                    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
-                    if upper.normal.is_some() {
-                        out.normal = upper.normal;
-                    }
+                    layer_over(&mut out, upper);
                 }
             }
         }
@@ -562,7 +556,7 @@ impl Lowerer<'_> {
                 Some(m) => PigmentPattern::PigmentMap(pd, m.into_iter().map(|(v, t)| (v, t.pigment)).collect()),
                 None => PigmentPattern::List(pd, list.into_iter().map(|t| t.pigment).collect()),
             };
-            out.pigment = PigmentDesc { pattern, ..Default::default() };
+            out.pigment = PigmentDesc { pattern, transform: pattern_transform, ..Default::default() };
         }
         Ok(out)
     }
@@ -696,6 +690,21 @@ fn sorted_lookup(entries: &[ColorMapEntry], v: f64) -> Color {
 }
 
 /// Carries a texture's patterns along with a transform applied after them.
+/// Puts `upper` over `out` as a texture layer: the pigments stack, the upper normal (if any)
+/// replaces the lower one.
+pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
+    let below = std::mem::take(&mut out.pigment);
+    let mut layers = match below.pattern {
+        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
+        _ => vec![below],
+    };
+    layers.push(upper.pigment);
+    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
+    if upper.normal.is_some() {
+        out.normal = upper.normal;
+    }
+}
+
 pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
     t.pigment.transform_by(tr);
     if let Some(n) = &mut t.normal {

@@ -140,6 +140,7 @@ impl Parser<'_, '_> {
                 DeclValue::Texture(t)
             }
             Some("interior") => DeclValue::Interior(self.interior()?),
+            Some("material") => DeclValue::Material(self.material()?),
             Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
             Some("camera") => DeclValue::Camera(self.camera_items()?.0),
             Some("light_source") => DeclValue::Light(self.light()?),
@@ -259,6 +260,7 @@ pub(super) fn starts_declared_block(word: &str) -> bool {
             | "finish"
             | "texture"
             | "interior"
+            | "material"
             | "color_map"
             | "colour_map"
             | "camera"
@@ -279,7 +281,6 @@ enum Declared {
 /// Values POV-Ray can declare that strahl does not model yet: their declarations are kept as
 /// unmodelled (an error only where they are used).
 const DECLARABLE_UNMODELLED: &[&str] = &[
-    "material",
     "media",
     "density",
     "pigment_map",

@@ -23,6 +23,7 @@ mod keywords;
 mod light;
 mod light_group;
 mod macros;
+mod material;
 mod mesh;
 mod scene;
 mod stream;

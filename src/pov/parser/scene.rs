@@ -71,6 +71,7 @@ pub const MODIFIERS: &[&str] = &[
     "finish",
     "texture",
     "interior",
+    "material",
     "rotate",
     "scale",
     "translate",
@@ -280,6 +281,7 @@ impl Parser<'_, '_> {
                 Some("finish") => Modifier::Finish(self.finish()?),
                 Some("texture") => Modifier::Texture(self.texture()?),
                 Some("interior") => Modifier::Interior(self.interior()?),
+                Some("material") => Modifier::Material(self.material()?),
                 Some("rotate" | "scale" | "translate") => Modifier::Transform(self.transform_item()?),
                 Some("no_shadow") => {
                     self.bump();

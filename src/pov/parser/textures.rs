@@ -152,7 +152,7 @@ const NORMAL: &[&str] = &[
     "accuracy",
 ];
 const TEXTURE: &[&str] =
-    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map"];
+    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "tiles"];
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,
@@ -394,6 +394,7 @@ impl Parser<'_, '_> {
                     TextureItem::Transform(self.transform_item()?)
                 }
                 Some(w) if PATTERNS.contains(&w) => TextureItem::Pattern(self.pattern(TEXTURE, "texture")?),
+                Some("tiles") => TextureItem::Pattern(self.tiles()?),
                 Some(w) if PATTERN_MODS.contains(&w) || turb_kind(w).is_some() => TextureItem::Mod(self.pattern_mod()?),
                 Some("texture_map") => {
                     let span = self.bump().span;

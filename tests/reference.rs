@@ -112,6 +112,13 @@ fn function_patterns_match_povray() {
     check_psnr("patterns_function", &scene("patterns_function"), 35.0);
 }
 
+/// Transforms as values: `matrix` (a shear on a box and a cylinder), declared `transform { }`
+/// blocks with `inverse`, in objects, pigments and a macro. 44.8 dB.
+#[test]
+fn transforms_match_povray() {
+    check_psnr("transforms", &scene("transforms"), 35.0);
+}
+
 /// Layered textures: upper layers composited over lower ones by their filter and transmit.
 #[test]
 #[ignore = "22.8 dB so far: the sphere's filtered layer composites differently from POV-Ray's; plane and box match"]

@@ -40,6 +40,6 @@ done
 for s in lights_spot lights_area fog sky_sphere rainbow; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in patterns_simple layered patterns_function; do
+for s in patterns_simple layered patterns_function transforms; do
     render "$here/scenes/$s.pov" "$s"
 done

@@ -335,3 +335,34 @@ fn transform_errors_are_located() {
     assert_eq!((e.line, e.col), (2, 27), "{e}");
     assert_eq!(e.message, "expected a transform in `transform { }`, found a pigment");
 }
+
+/// `min_extent`, `max_extent`, `trace` (with its normal variable) and `inside` on a declared
+/// union, with the values POV-Ray 3.7 prints for the same scene (`#debug`).
+#[test]
+fn object_probes_match_povray() {
+    let out = debug(
+        "probes",
+        "#declare S = union { sphere { <1, 2, 3>, 1 } box { <-1, -1, -1>, <0, 0.5, 0> } }\n\
+         #debug concat(vstr(3, min_extent(S), \",\", 0, 4), \" \", vstr(3, max_extent(S), \",\", 0, 4), \"\\n\")\n\
+         #declare N = <9, 9, 9>;\n\
+         #declare P = trace(S, <1, 2, -10>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #declare P = trace(S, <10, 20, -10>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #declare P = trace(S, <1, 2, 3>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #debug concat(str(inside(S, <1,2,3.5>), 0, 0), str(inside(S, <-0.5,0,-0.5>), 0, 0), str(inside(S, <5,5,5>), 0, 0))",
+    );
+    assert_eq!(
+        out,
+        "-1.0000,-1.0000,-1.0000 2.0000,3.0000,4.0000\n\
+         1.0000,2.0000,2.0000 0.0000,0.0000,-1.0000\n\
+         0.0000,0.0000,0.0000 0.0000,0.0000,0.0000\n\
+         1.0000,2.0000,4.0000 0.0000,0.0000,1.0000\n\
+         110"
+    );
+    let e = error("e_probe", "#declare P = pigment { rgb 1 }\n#declare A = max_extent(P);");
+    assert_eq!((e.line, e.col, e.message.as_str()), (2, 25, "`max_extent` needs a declared object, found a pigment"));
+    let e = error("e_trace_n", "#declare S = sphere { 0, 1 }\n#declare A = trace(S, -5*z, z, Nope);");
+    assert_eq!((e.line, e.col), (2, 32), "{e}");
+}

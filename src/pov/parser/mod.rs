@@ -24,6 +24,7 @@ mod light;
 mod light_group;
 mod macros;
 mod mesh;
+mod probe;
 mod scene;
 mod stream;
 mod textures;

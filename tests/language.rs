@@ -330,7 +330,10 @@ fn transform_errors_are_located() {
     assert_eq!((e.line, e.col), (2, 27), "{e}");
     assert!(e.message.contains("between the 12 values of `matrix`"), "{e}");
     let e = error("e_matrix_flat", "sphere { 0, 1\n  matrix <1,0,0, 0,0,0, 0,0,1, 0,0,0> }");
-    assert_eq!((e.line, e.col, e.message.as_str()), (2, 3, "`matrix` is singular (it flattens space), so it has no inverse"));
+    assert_eq!(
+        (e.line, e.col, e.message.as_str()),
+        (2, 3, "`matrix` is singular (it flattens space), so it has no inverse")
+    );
     let e = error("e_transform_kind", "#declare P = pigment { rgb 1 }\nsphere { 0, 1 transform { P } }");
     assert_eq!((e.line, e.col), (2, 27), "{e}");
     assert_eq!(e.message, "expected a transform in `transform { }`, found a pigment");

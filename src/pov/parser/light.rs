@@ -59,7 +59,9 @@ impl Parser<'_, '_> {
         while !self.at_block_end() {
             let word = self.peek_ident();
             match word.as_deref() {
-                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => items.push(LightItem::Transform(self.transform_item()?)),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    items.push(LightItem::Transform(self.transform_item()?))
+                }
                 Some("shadowless") => {
                     self.bump();
                     shadowless = true;

@@ -277,7 +277,10 @@ impl Parser<'_, '_> {
             let e = self.expr()?;
             return match self.low.eval(&e)? {
                 Value::Transform(t) => Ok((t, kw.to(e.span))),
-                other => Err(Diag::new(e.span, format!("`transform` needs a declared transform, found {}", other.kind_name()))),
+                other => Err(Diag::new(
+                    e.span,
+                    format!("`transform` needs a declared transform, found {}", other.kind_name()),
+                )),
             };
         }
         self.open_block("transform", kw)?;

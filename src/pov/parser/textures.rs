@@ -6,8 +6,8 @@ use super::Parser;
 use std::rc::Rc;
 
 use crate::pov::ast::{
-    ColorMap, ColorMapBody, Expr, ExprKind, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, Texture,
-    TextureItem, Turb, TurbKind, WarpAst,
+    ColorMap, ColorMapBody, Expr, ExprKind, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem,
+    Texture, TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};

@@ -301,3 +301,71 @@ fn a_runaway_loop_that_prints_stops_at_the_output_limit() {
     assert_eq!((e.line, e.col), (2, 12), "{e}");
     assert!(e.message.starts_with("the scene printed more than"), "{e}");
 }
+
+/// `matrix`, `transform { }` and declared transforms (3.3.1.12.4–5) in objects, with
+/// `inverse`, and from a macro that writes the block (transforms.inc's Reorient_Trans does).
+#[test]
+fn transforms_as_values_and_matrices() {
+    let (s, _) = load(
+        "transforms",
+        "#declare T = transform { scale 2 translate x }\n\
+         #macro M() transform { T inverse } #end\n\
+         sphere { 0, 1 transform T }\n\
+         sphere { 0, 1 transform { T translate y } }\n\
+         sphere { 0, 1 M() }\n\
+         sphere { 0, 1 matrix <1, 0, 0, 0.5, 1, 0, 0, 0, 1, 0, 0, 3> }",
+    )
+    .unwrap();
+    let at = |i: usize, p: DVec3| s.objects[i].transform.matrix.transform_point3(p);
+    assert!((at(0, DVec3::X) - DVec3::new(3.0, 0.0, 0.0)).length() < 1e-12);
+    assert!((at(1, DVec3::X) - DVec3::new(3.0, 1.0, 0.0)).length() < 1e-12);
+    assert!((at(2, DVec3::new(3.0, 0.0, 0.0)) - DVec3::X).length() < 1e-12);
+    // The second row is where y goes: a shear of x by y, then the last row's translation.
+    assert!((at(3, DVec3::Y) - DVec3::new(0.5, 1.0, 3.0)).length() < 1e-12);
+}
+
+#[test]
+fn transform_errors_are_located() {
+    let e = error("e_matrix_short", "sphere { 0, 1\n  matrix <1, 0, 0, 0, 1, 0> }");
+    assert_eq!((e.line, e.col), (2, 27), "{e}");
+    assert!(e.message.contains("between the 12 values of `matrix`"), "{e}");
+    let e = error("e_matrix_flat", "sphere { 0, 1\n  matrix <1,0,0, 0,0,0, 0,0,1, 0,0,0> }");
+    assert_eq!(
+        (e.line, e.col, e.message.as_str()),
+        (2, 3, "`matrix` is singular (it flattens space), so it has no inverse")
+    );
+    let e = error("e_transform_kind", "#declare P = pigment { rgb 1 }\nsphere { 0, 1 transform { P } }");
+    assert_eq!((e.line, e.col), (2, 27), "{e}");
+    assert_eq!(e.message, "expected a transform in `transform { }`, found a pigment");
+}
+
+/// `min_extent`, `max_extent`, `trace` (with its normal variable) and `inside` on a declared
+/// union, with the values POV-Ray 3.7 prints for the same scene (`#debug`).
+#[test]
+fn object_probes_match_povray() {
+    let out = debug(
+        "probes",
+        "#declare S = union { sphere { <1, 2, 3>, 1 } box { <-1, -1, -1>, <0, 0.5, 0> } }\n\
+         #debug concat(vstr(3, min_extent(S), \",\", 0, 4), \" \", vstr(3, max_extent(S), \",\", 0, 4), \"\\n\")\n\
+         #declare N = <9, 9, 9>;\n\
+         #declare P = trace(S, <1, 2, -10>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #declare P = trace(S, <10, 20, -10>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #declare P = trace(S, <1, 2, 3>, z, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", vstr(3, N, \",\", 0, 4), \"\\n\")\n\
+         #debug concat(str(inside(S, <1,2,3.5>), 0, 0), str(inside(S, <-0.5,0,-0.5>), 0, 0), str(inside(S, <5,5,5>), 0, 0))",
+    );
+    assert_eq!(
+        out,
+        "-1.0000,-1.0000,-1.0000 2.0000,3.0000,4.0000\n\
+         1.0000,2.0000,2.0000 0.0000,0.0000,-1.0000\n\
+         0.0000,0.0000,0.0000 0.0000,0.0000,0.0000\n\
+         1.0000,2.0000,4.0000 0.0000,0.0000,1.0000\n\
+         110"
+    );
+    let e = error("e_probe", "#declare P = pigment { rgb 1 }\n#declare A = max_extent(P);");
+    assert_eq!((e.line, e.col, e.message.as_str()), (2, 25, "`max_extent` needs a declared object, found a pigment"));
+    let e = error("e_trace_n", "#declare S = sphere { 0, 1 }\n#declare A = trace(S, -5*z, z, Nope);");
+    assert_eq!((e.line, e.col), (2, 32), "{e}");
+}

@@ -838,7 +838,7 @@ fn patterns_parse_and_unknown_ones_are_located_errors() {
     )
     .unwrap();
     let PigmentPattern::Mapped(pd, _) = &s.objects[0].texture.pigment.pattern else { panic!() };
-    assert_eq!((pd.kind, pd.wave, pd.frequency), (PatternKind::Gradient(DVec3::Y), Wave::Triangle, 2.0));
+    assert_eq!((pd.kind.clone(), pd.wave, pd.frequency), (PatternKind::Gradient(DVec3::Y), Wave::Triangle, 2.0));
     let PigmentPattern::List(pd, list) = &s.objects[1].texture.pigment.pattern else { panic!() };
     assert_eq!(pd.kind, PatternKind::Brick { size: DVec3::new(1.0, 0.5, 1.0), mortar: 0.1 });
     assert_eq!(list.len(), 2);
@@ -848,7 +848,7 @@ fn patterns_parse_and_unknown_ones_are_located_errors() {
     let Some(NormalPattern::Pattern(pd, a)) = s.objects[4].texture.normal.as_ref().map(|n| n.pattern.clone()) else {
         panic!()
     };
-    assert_eq!((pd.kind, a), (PatternKind::Dents, 0.7));
+    assert_eq!((pd.kind.clone(), a), (PatternKind::Dents, 0.7));
     assert!(matches!(&s.objects[5].texture.pigment.pattern, PigmentPattern::PigmentMap(_, e) if e.len() == 2));
     // An unknown word where a pattern could be is a located error naming it.
     let (l, c, m) = err("pattern_unknown", "sphere { 0, 1\n pigment { gradient x foo_wave } }");

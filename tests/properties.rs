@@ -736,7 +736,9 @@ fn shipped_scenes_print_and_load_back() {
         // Scenes only, not the images they read (hf.pgm); and not those with functions, which
         // are kept compiled and printed as a comment (no source to write back), nor layered
         // textures, whose layers above the bottom one the printer does not write yet.
-        let compiled = ["isosurfaces.pov", "parametrics.pov", "layered.pov"].iter().any(|n| path.ends_with(n));
+        let compiled = ["isosurfaces.pov", "parametrics.pov", "patterns_function.pov", "layered.pov"]
+            .iter()
+            .any(|n| path.ends_with(n));
         if path.extension().is_some_and(|x| x == "pov") && !compiled {
             scenes.push(path);
         }

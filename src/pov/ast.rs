@@ -190,6 +190,9 @@ pub enum TransformKind {
     Rotate,
     Scale,
     Translate,
+    /// `matrix <..12..>`, `transform { ... }` or `transform T`: the value is a
+    /// `Value::Transform` (composed when read, as the parser reads every block's names).
+    Transform,
 }
 
 #[derive(Clone, Debug, PartialEq)]

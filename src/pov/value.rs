@@ -42,6 +42,8 @@ pub enum Value {
     Macro(Rc<Macro>),
     /// `function { ... }`: a user-defined float function, parsed into its tree.
     Function(Rc<crate::function::Function>),
+    /// `transform { ... }`, composed.
+    Transform(Transform),
     /// A declaration whose syntax was read but which needs a feature strahl does not model
     /// yet: using it is the error, not declaring it (include files declare far more than a
     /// scene uses).
@@ -232,6 +234,7 @@ impl Value {
             Value::Array(_) => "an array",
             Value::Macro(_) => "a macro",
             Value::Function(_) => "a function",
+            Value::Transform(_) => "a transform",
             Value::Unmodelled(_) => "a declaration strahl does not model yet",
         }
     }

@@ -10,3 +10,4 @@ pub mod generate;
 pub mod material;
 pub mod place;
 pub mod print;
+pub mod probe;

@@ -384,13 +384,14 @@ fn albedo(set: bool) -> &'static str {
 fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     use crate::scene::desc::{PatternKind as K, Warp, Wave};
     let v = |d: glam::DVec3| format!("<{}, {}, {}>", num(d.x), num(d.y), num(d.z));
-    let mut out = match p.kind {
-        K::Gradient(d) => format!("gradient {}", v(d)),
+    let mut out = match &p.kind {
+        K::Function(f) => format!("function {{ /* {} instructions */ }}", f.len()),
+        &K::Gradient(d) => format!("gradient {}", v(d)),
         K::Bozo => "bozo".into(),
         K::Granite => "granite".into(),
         K::Marble => "marble".into(),
-        K::Agate { turb } => format!("agate agate_turb {}", num(turb)),
-        K::Crackle { form, metric, offset, solid } => format!(
+        &K::Agate { turb } => format!("agate agate_turb {}", num(turb)),
+        &K::Crackle { form, metric, offset, solid } => format!(
             "crackle form {} metric {} offset {}{}",
             v(form),
             num(metric),
@@ -405,17 +406,17 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Waves => "waves".into(),
         K::Radial => "radial".into(),
         K::Onion => "onion".into(),
-        K::Spiral1(n) => format!("spiral1 {}", num(n)),
-        K::Spiral2(n) => format!("spiral2 {}", num(n)),
-        K::Brick { size, mortar } => format!("brick brick_size {} mortar {}", v(size), num(mortar)),
+        &K::Spiral1(n) => format!("spiral1 {}", num(n)),
+        &K::Spiral2(n) => format!("spiral2 {}", num(n)),
+        &K::Brick { size, mortar } => format!("brick brick_size {} mortar {}", v(size), num(mortar)),
         K::Hexagon => "hexagon".into(),
         K::Checker => "checker".into(),
         K::Boxed => "boxed".into(),
         K::Cylindrical => "cylindrical".into(),
         K::Spherical => "spherical".into(),
         K::Planar => "planar".into(),
-        K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
-        K::Mandel(n) => format!("mandel {n}"),
+        &K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
+        &K::Mandel(n) => format!("mandel {n}"),
         K::Wood => "wood".into(),
         K::Average => "average".into(),
     };

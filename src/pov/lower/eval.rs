@@ -228,7 +228,13 @@ impl Lowerer<'_> {
     }
 
     /// `rotate` (degrees; about x, then y, then z), `scale` or `translate`.
-    pub(super) fn transform(&mut self, t: &TransformItem) -> PResult<Transform> {
+    pub(crate) fn transform(&mut self, t: &TransformItem) -> PResult<Transform> {
+        if t.kind == TransformKind::Transform {
+            return match self.eval(&t.value)? {
+                Value::Transform(tr) => Ok(tr),
+                other => Err(Diag::new(t.span, format!("expected a transform, found {}", other.kind_name()))),
+            };
+        }
         let v = self.vec3(&t.value)?;
         let matrix = match t.kind {
             // glam's rotation matrices turn the same way as POV-Ray's: `rotate y*90` takes +x
@@ -252,6 +258,7 @@ impl Lowerer<'_> {
                 DMat4::from_scale(s)
             }
             TransformKind::Translate => DMat4::from_translation(v),
+            TransformKind::Transform => unreachable!("returned above"),
         };
         Ok(Transform { matrix, inverse: matrix.inverse() })
     }

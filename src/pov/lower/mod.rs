@@ -233,6 +233,18 @@ impl<'f> Lowerer<'f> {
         Ok(())
     }
 
+    /// Sets a declared name where it is declared (the innermost scope that holds it), as
+    /// `trace`'s normal argument is written; `false` when it is not declared.
+    pub(crate) fn reassign(&mut self, name: &str, value: Value) -> bool {
+        match self.scopes.iter_mut().rev().find(|s| s.vars.contains_key(name)) {
+            Some(s) => {
+                s.vars.insert(Rc::from(name), value);
+                true
+            }
+            None => false,
+        }
+    }
+
     /// `#macro`: macros are global, as in POV-Ray.
     pub(crate) fn define_macro(&mut self, name: &str, m: Value) {
         self.scopes[0].vars.insert(Rc::from(name), m);

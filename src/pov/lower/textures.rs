@@ -243,6 +243,10 @@ impl Lowerer<'_> {
             }
             "wood" => PatternKind::Wood,
             "average" => PatternKind::Average,
+            "function" => match pa.arg.as_ref().map(|e| self.eval(e)).transpose()? {
+                Some(Value::Function(f)) => PatternKind::Function(std::sync::Arc::new(f.compile())),
+                _ => return Err(Diag::new(pa.span, "function pattern needs a function body")),
+            },
             other => return Err(Diag::new(pa.span, format!("unknown pattern `{other}`"))),
         })
     }

@@ -75,7 +75,9 @@ impl Parser<'_, '_> {
         while !self.at_block_end() {
             let word = self.peek_ident();
             let item = match word.as_deref() {
-                Some("rotate" | "scale" | "translate") => AtmoItem::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    AtmoItem::Transform(self.transform_item()?)
+                }
                 Some("pigment") if kind == AtmosphereKind::SkySphere => AtmoItem::Pigment(self.pigment()?),
                 Some("emission") if kind == AtmosphereKind::SkySphere => {
                     let span = self.bump().span;

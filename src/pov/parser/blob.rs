@@ -71,7 +71,9 @@ impl Parser<'_, '_> {
                 let mut modifiers = Vec::new();
                 while !self.at_block_end() {
                     modifiers.push(match self.peek_ident().as_deref() {
-                        Some("rotate" | "scale" | "translate") => Modifier::Transform(self.transform_item()?),
+                        Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                            Modifier::Transform(self.transform_item()?)
+                        }
                         Some("pigment") => Modifier::Pigment(self.pigment()?),
                         Some("normal") => Modifier::Normal(self.normal()?),
                         Some("finish") => Modifier::Finish(self.finish()?),

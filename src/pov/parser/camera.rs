@@ -30,6 +30,8 @@ const CAMERA: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "matrix",
+    "transform",
 ];
 /// Camera items that only the first statement of a camera may give (not after a declared one).
 const CAMERA_TYPES: &[&str] =
@@ -69,7 +71,9 @@ impl Parser<'_, '_> {
             let item = match self.peek_ident().as_deref() {
                 // POV-Ray 3.7 accepts only transforms after a declared camera (checked by parsing).
                 Some(word)
-                    if declared && CAMERA.contains(&word) && !matches!(word, "rotate" | "scale" | "translate") =>
+                    if declared
+                        && CAMERA.contains(&word)
+                        && !matches!(word, "rotate" | "scale" | "translate" | "matrix" | "transform") =>
                 {
                     return Err(Diag::new(
                         self.peek().span,
@@ -114,7 +118,9 @@ impl Parser<'_, '_> {
                         CameraItem::Unmodelled("focal blur `bokeh` (the lens samples a uniform disc)", span)
                     }
                 }
-                Some("rotate" | "scale" | "translate") => CameraItem::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    CameraItem::Transform(self.transform_item()?)
+                }
                 Some("blur_samples") => {
                     self.bump();
                     let first = self.expr()?;

@@ -157,6 +157,10 @@ impl Parser<'_, '_> {
             }
             Some("array") => return self.array().map(Declared::Value),
             Some("function") => return self.function().map(|f| Declared::Value(Value::Function(Rc::new(f)))),
+            Some("transform") => {
+                let kw = self.bump().span;
+                return self.transform_after(kw).map(|(t, _)| Declared::Value(Value::Transform(t)));
+            }
             Some(word) if super::scene::is_object_keyword(word) || UNSUPPORTED_SHAPES.contains(&word) => {
                 DeclValue::Object(self.object()?)
             }
@@ -267,6 +271,7 @@ pub(super) fn starts_declared_block(word: &str) -> bool {
             | "array"
             | "light_source"
             | "function"
+            | "transform"
     ) || super::scene::is_object_keyword(word)
         || UNSUPPORTED_SHAPES.contains(&word)
         || DECLARABLE_UNMODELLED.contains(&word)
@@ -289,7 +294,6 @@ const DECLARABLE_UNMODELLED: &[&str] = &[
     "slope_map",
     "density_map",
     "spline",
-    "transform",
     "photons",
     "radiosity",
     "matrix",

@@ -422,6 +422,9 @@ impl Parser<'_, '_> {
             self.leave();
             return c;
         }
+        if super::probe::PROBES.contains(&word) {
+            return self.probe(word, span);
+        }
         if let Some(&(_, (least, most))) = FUNCTIONS.iter().find(|(name, _)| *name == word) {
             self.bump();
             self.expect_punct('(', &format!("after `{word}`"))?;

@@ -18,6 +18,11 @@ impl Parser<'_, '_> {
     /// `function [(a, b, ...)] { ... }` at the cursor.
     pub(super) fn function(&mut self) -> PResult<Function> {
         let kw = self.bump().span;
+        self.function_after(kw)
+    }
+
+    /// The rest of `function [(a, b, ...)] { ... }` after its keyword at `kw`.
+    pub(super) fn function_after(&mut self, kw: Span) -> PResult<Function> {
         let mut params: Vec<String> = Vec::new();
         let named = self.eat_punct('(');
         if named {

@@ -14,6 +14,8 @@ const LIGHT: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "matrix",
+    "transform",
     "shadowless",
     "spotlight",
     "cylinder",
@@ -57,7 +59,9 @@ impl Parser<'_, '_> {
         while !self.at_block_end() {
             let word = self.peek_ident();
             match word.as_deref() {
-                Some("rotate" | "scale" | "translate") => items.push(LightItem::Transform(self.transform_item()?)),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    items.push(LightItem::Transform(self.transform_item()?))
+                }
                 Some("shadowless") => {
                     self.bump();
                     shadowless = true;

@@ -25,6 +25,7 @@ mod light_group;
 mod macros;
 mod material;
 mod mesh;
+mod probe;
 mod scene;
 mod stream;
 mod textures;

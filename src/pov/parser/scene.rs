@@ -6,11 +6,16 @@ use std::rc::Rc;
 use super::blob::BLOB_ITEMS;
 use super::julia::JULIA_ITEMS;
 use super::{Parser, UNSUPPORTED_SHAPES};
+use glam::{DMat4, DVec4};
+
 use crate::pov::ast::{
-    AtmosphereKind, Clip, CsgOp, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem, TransformKind,
+    AtmosphereKind, Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
+    TransformKind,
 };
 use crate::pov::lexer::TokenKind;
-use crate::pov::source::{Diag, PResult};
+use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::Value;
+use crate::scene::desc::Transform;
 
 const TOP_LEVEL: &[&str] = &[
     "camera",
@@ -64,6 +69,15 @@ const BUILT: &[&str] = &["mesh", "mesh2", "height_field", "smooth_triangle", "bi
 /// Keywords that may precede a prism's numbers (POV-Ray 3.4.6.x Prism), in any order.
 pub const PRISM_ITEMS: &[&str] =
     &["linear_spline", "quadratic_spline", "cubic_spline", "bezier_spline", "linear_sweep", "conic_sweep"];
+/// What a `transform { }` block holds, besides declared transforms.
+const TRANSFORM: &[&str] = &["rotate", "scale", "translate", "matrix", "transform", "inverse"];
+
+/// A composed transform as a transform item.
+fn transform_value(tr: Transform, span: Span) -> TransformItem {
+    let value = Expr { kind: ExprKind::Value(Rc::new(Value::Transform(tr))), span };
+    TransformItem { kind: TransformKind::Transform, value, span }
+}
+
 /// What may follow an object's arguments.
 pub const MODIFIERS: &[&str] = &[
     "pigment",
@@ -75,6 +89,8 @@ pub const MODIFIERS: &[&str] = &[
     "rotate",
     "scale",
     "translate",
+    "matrix",
+    "transform",
     "no_shadow",
     "hollow",
     "open",
@@ -205,16 +221,104 @@ impl Parser<'_, '_> {
         Ok(Some(!self.low.float(&e).is_ok_and(|v| v == 0.0)))
     }
 
-    /// `rotate V`, `scale V` or `translate V`.
+    /// `rotate V`, `scale V`, `translate V`, `matrix <..>`, `transform { ... }` or
+    /// `transform T`.
     pub(super) fn transform_item(&mut self) -> PResult<TransformItem> {
         let t = self.bump();
         let kind = match &t.kind {
             TokenKind::Ident(w) if &**w == "rotate" => TransformKind::Rotate,
             TokenKind::Ident(w) if &**w == "scale" => TransformKind::Scale,
+            TokenKind::Ident(w) if &**w == "matrix" => {
+                let (tr, span) = self.matrix_after(t.span)?;
+                return Ok(transform_value(tr, t.span.to(span)));
+            }
+            TokenKind::Ident(w) if &**w == "transform" => {
+                let (tr, span) = self.transform_after(t.span)?;
+                return Ok(transform_value(tr, span));
+            }
             _ => TransformKind::Translate,
         };
         let value = self.expr()?;
         Ok(TransformItem { kind, span: t.span.to(value.span), value })
+    }
+
+    /// `matrix <m00, m01, m02, m10, ..., m32>` after its keyword (3.3.1.12.4): the rows are
+    /// where x, y and z go and the last is the translation.
+    fn matrix_after(&mut self, kw: Span) -> PResult<(Transform, Span)> {
+        let open = self.expect_punct('<', "after `matrix`")?;
+        self.enter(open)?;
+        let mut m = [0.0; 12];
+        for (i, slot) in m.iter_mut().enumerate() {
+            if i > 0 {
+                self.expect_punct(',', "between the 12 values of `matrix`")?;
+            }
+            let e = self.expr()?;
+            *slot = self.low.float(&e)?;
+        }
+        self.eat_punct(',');
+        let close = self.expect_punct('>', "to close the 12 values of `matrix`")?;
+        self.leave();
+        let matrix = DMat4::from_cols(
+            DVec4::new(m[0], m[1], m[2], 0.0),
+            DVec4::new(m[3], m[4], m[5], 0.0),
+            DVec4::new(m[6], m[7], m[8], 0.0),
+            DVec4::new(m[9], m[10], m[11], 1.0),
+        );
+        let det = matrix.determinant();
+        if !det.is_finite() || det.abs() < 1e-12 {
+            return Err(Diag::new(kw.to(close), "`matrix` is singular (it flattens space), so it has no inverse"));
+        }
+        Ok((Transform { matrix, inverse: matrix.inverse() }, close))
+    }
+
+    /// `transform { items [inverse] }` or `transform T` after its keyword (3.3.1.12.5): the
+    /// items compose left to right; `inverse` anywhere inverts the whole.
+    pub(super) fn transform_after(&mut self, kw: Span) -> PResult<(Transform, Span)> {
+        if !self.is_punct('{') {
+            let e = self.expr()?;
+            return match self.low.eval(&e)? {
+                Value::Transform(t) => Ok((t, kw.to(e.span))),
+                other => Err(Diag::new(
+                    e.span,
+                    format!("`transform` needs a declared transform, found {}", other.kind_name()),
+                )),
+            };
+        }
+        self.open_block("transform", kw)?;
+        let mut tr = Transform::default();
+        let mut inverse = false;
+        while !self.at_block_end() {
+            match self.peek_ident().as_deref() {
+                Some("inverse") => {
+                    self.bump();
+                    inverse = true;
+                }
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    let item = self.transform_item()?;
+                    tr = tr.then(&self.low.transform(&item)?);
+                }
+                Some(_) if self.starts_expr(&[]) => {
+                    // A declared transform named alone (`transform { T }`).
+                    let e = self.expr()?;
+                    match self.low.eval(&e)? {
+                        Value::Transform(t) => tr = tr.then(&t),
+                        other => {
+                            return Err(Diag::new(
+                                e.span,
+                                format!("expected a transform in `transform {{ }}`, found {}", other.kind_name()),
+                            ))
+                        }
+                    }
+                }
+                _ => return Err(self.unknown_in("transform", TRANSFORM)),
+            }
+        }
+        let close = self.peek().span;
+        self.close_block("transform", kw)?;
+        if inverse {
+            tr = Transform { matrix: tr.inverse, inverse: tr.matrix };
+        }
+        Ok((tr, kw.to(close)))
     }
 
     /// A shape or `object { ... }` with its modifiers.
@@ -282,7 +386,9 @@ impl Parser<'_, '_> {
                 Some("texture") => Modifier::Texture(self.texture()?),
                 Some("interior") => Modifier::Interior(self.interior()?),
                 Some("material") => Modifier::Material(self.material()?),
-                Some("rotate" | "scale" | "translate") => Modifier::Transform(self.transform_item()?),
+                Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
+                    Modifier::Transform(self.transform_item()?)
+                }
                 Some("no_shadow") => {
                     self.bump();
                     Modifier::NoShadow

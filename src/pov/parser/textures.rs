@@ -3,12 +3,15 @@
 
 use super::expr::color_key;
 use super::Parser;
+use std::rc::Rc;
+
 use crate::pov::ast::{
-    ColorMap, ColorMapBody, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, Texture,
-    TextureItem, Turb, TurbKind, WarpAst,
+    ColorMap, ColorMapBody, Expr, ExprKind, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem,
+    Texture, TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
+use crate::pov::value::Value;
 
 const PIGMENT: &[&str] = &[
     "color",
@@ -112,6 +115,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "average",
     "checker",
     "wood",
+    "function",
 ];
 /// Modifiers of a pattern's value, in any block that has a pattern.
 const PATTERN_MODS: &[&str] = &[
@@ -430,6 +434,12 @@ impl Parser<'_, '_> {
             PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
         match pat.name.as_str() {
             "gradient" => pat.arg = Some(self.expr()?),
+            "function" => {
+                // The body is read as a declared function is; the argument carries it.
+                let f = self.function_after(span)?;
+                let value = Rc::new(Value::Function(Rc::new(f)));
+                pat.arg = Some(Expr { kind: ExprKind::Value(value), span });
+            }
             "spiral1" | "spiral2" | "mandel" if self.starts_expr(stop) && !self.starts_mod() => {
                 pat.arg = Some(self.expr()?)
             }

@@ -45,7 +45,7 @@ pub enum PigmentPattern {
 }
 
 /// The pattern functions (`shading::patterns`), with their own parameters.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum PatternKind {
     /// `gradient V`: V is normalised.
     Gradient(DVec3),
@@ -94,6 +94,9 @@ pub enum PatternKind {
     Wood,
     /// `average`: a `pigment_map`'s pigments averaged, weighted by their entry values.
     Average,
+    /// `function { ... }` (3.4.7.1.12): the user function of (x, y, z), wrapped into [0, 1)
+    /// as POV-Ray wraps it (`function { x }` repeats every unit, checked by rendering).
+    Function(std::sync::Arc<crate::function::Program>),
 }
 
 impl PatternKind {

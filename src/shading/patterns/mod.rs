@@ -17,7 +17,7 @@ use crate::scene::desc::{PatternDesc, PatternKind, Warp, Wave};
 use crate::shading::noise::{warp_lanes, TurbulenceF32};
 use cells::Crackle;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Kind32 {
     Gradient(Vec3),
     Bozo,
@@ -47,6 +47,9 @@ pub enum Kind32 {
     Wood,
     /// `average` has no value of its own (the pigment averages its map).
     Average,
+    /// A user function, run in f64 lane by lane (the compiled register code has no lane
+    /// arithmetic), its value wrapped into [0, 1).
+    Function(std::sync::Arc<crate::function::Program>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -78,7 +81,7 @@ pub struct Pattern32 {
 
 impl Pattern32 {
     pub fn from_desc(d: &PatternDesc) -> Pattern32 {
-        let kind = match d.kind {
+        let kind = match d.kind.clone() {
             PatternKind::Gradient(v) => Kind32::Gradient(v.normalize_or_zero().as_vec3()),
             PatternKind::Bozo => Kind32::Bozo,
             PatternKind::Granite => Kind32::Granite,
@@ -108,6 +111,7 @@ impl Pattern32 {
             PatternKind::Mandel(n) => Kind32::Mandel(n),
             PatternKind::Wood => Kind32::Wood,
             PatternKind::Average => Kind32::Average,
+            PatternKind::Function(f) => Kind32::Function(f),
         };
         let wave = match d.wave {
             Wave::Ramp => Wave32::Ramp,
@@ -202,6 +206,9 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         Kind32::Mandel(n) => simple::mandel(p, n),
         Kind32::Wood => simple::wood_rings(p),
         Kind32::Average => L::splat(0.0),
+        Kind32::Function(ref f) => {
+            simple::frac(L::from_fn_f64(|i| f.eval(&[p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i)])))
+        }
     }
 }
 
@@ -256,6 +263,7 @@ fn apply_warp<L: Lane>(w: &Warp32, p: V3<L>, max_octaves: Option<u32>) -> V3<L> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::function::{Binary, Node, Program};
     use crate::lanes::F8;
     use crate::scene::desc::Turbulence;
     use glam::DVec3;
@@ -289,6 +297,11 @@ mod tests {
             PatternKind::Quilted { c0: 1.0, c1: 1.0 },
             PatternKind::Mandel(25),
             PatternKind::Wood,
+            // `function { x * 1.5 - y }`: wrapped into [0, 1).
+            PatternKind::Function(std::sync::Arc::new(Program::compile(
+                &Node::binary(Binary::Sub, Node::binary(Binary::Mul, Node::Param(0), Node::Const(1.5)), Node::Param(1)),
+                3,
+            ))),
         ]
     }
 
@@ -305,7 +318,7 @@ mod tests {
                 (Wave::Sine, vec![Warp::Turbulence(Turbulence { amount: DVec3::splat(0.3), ..Default::default() })]),
                 (Wave::Poly(2.0), vec![Warp::Repeat { dir: DVec3::X, offset: DVec3::Y, flip: DVec3::X }]),
             ] {
-                let mut d = PatternDesc::new(kind);
+                let mut d = PatternDesc::new(kind.clone());
                 d.wave = wave;
                 d.warps = warps;
                 d.frequency = 2.0;
@@ -332,7 +345,7 @@ mod tests {
             (PatternKind::Wrinkles, 0.528, 0.142),
             (PatternKind::Dents, 0.172, 0.12),
         ] {
-            let pat = Pattern32::from_desc(&PatternDesc::new(kind));
+            let pat = Pattern32::from_desc(&PatternDesc::new(kind.clone()));
             let v: Vec<f32> = (0..20_000)
                 .map(|k| {
                     pat.value_lanes(

@@ -336,6 +336,10 @@ pub enum PigmentItem {
     Mod(PatternMod),
     /// `pigment_map { [v pigment {..}] ... }`.
     PigmentMap(Vec<(Expr, Pigment)>, Span),
+    /// `image_map { }`, read (and its file decoded) as it is parsed, as `height_field` is.
+    ImageMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    /// `image_pattern { }` as the pigment's pattern.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
 }
 
 /// A pattern keyword with its argument and, for list patterns, what each cell shows.
@@ -402,6 +406,10 @@ pub enum NormalItem {
     BumpSize(Expr),
     /// `slope_map`, `normal_map` and the like: read, not modelled.
     Ignored(String, Span),
+    /// `bump_map { ... [bump_size F] }` with its bump size, if given inside.
+    BumpMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
+    /// `image_pattern { }` with its optional amount.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -470,6 +478,8 @@ pub enum TextureItem {
     TextureMap(Vec<(Expr, Texture)>, Span),
     /// A further `texture { }` written right after this one: a layer over it.
     Layer(Box<Texture>),
+    /// `image_pattern { }` as the pattern of a `texture_map`.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]

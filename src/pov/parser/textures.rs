@@ -79,6 +79,8 @@ const PIGMENT: &[&str] = &[
     "noise_generator",
     "quick_color",
     "quick_colour",
+    "image_map",
+    "image_pattern",
 ];
 /// Pattern keywords of the kernel layer (`shading::patterns`); `checker` and `wood` have their
 /// own items in a pigment.
@@ -150,9 +152,11 @@ const NORMAL: &[&str] = &[
     "slope_map",
     "normal_map",
     "accuracy",
+    "bump_map",
+    "image_pattern",
 ];
 const TEXTURE: &[&str] =
-    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map"];
+    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "image_pattern"];
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,
@@ -253,6 +257,14 @@ impl Parser<'_, '_> {
                     continue;
                 }
                 Some("color_map" | "colour_map") => PigmentItem::ColorMap(self.color_map()?),
+                Some("image_map") => {
+                    let (im, _, span) = self.image_block("image_map")?;
+                    PigmentItem::ImageMap(im, span)
+                }
+                Some("image_pattern") => {
+                    let (im, _, span) = self.image_block("image_pattern")?;
+                    PigmentItem::ImagePattern(im, span)
+                }
                 Some(w) if turb_kind(w).is_some() => {
                     PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
@@ -351,6 +363,20 @@ impl Parser<'_, '_> {
                     self.bump();
                     NormalItem::BumpSize(self.expr()?)
                 }
+                Some("bump_map") => {
+                    let (im, size, _) = self.image_block("bump_map")?;
+                    NormalItem::BumpMap(im, size)
+                }
+                Some("image_pattern") => {
+                    let (im, _, _) = self.image_block("image_pattern")?;
+                    let comma = self.eat_punct(',');
+                    let amount = if comma || (self.starts_expr(NORMAL) && !self.starts_mod()) {
+                        Some(self.expr()?)
+                    } else {
+                        None
+                    };
+                    NormalItem::ImagePattern(im, amount)
+                }
                 Some("accuracy") => {
                     self.bump();
                     self.expr()?;
@@ -398,6 +424,10 @@ impl Parser<'_, '_> {
                 Some("texture_map") => {
                     let span = self.bump().span;
                     TextureItem::TextureMap(self.block_map("texture_map", span, |p| p.texture_one())?, span)
+                }
+                Some("image_pattern") => {
+                    let (im, _, span) = self.image_block("image_pattern")?;
+                    TextureItem::ImagePattern(im, span)
                 }
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };

@@ -17,7 +17,7 @@ use crate::scene::desc::{PatternDesc, PatternKind, Warp, Wave};
 use crate::shading::noise::{warp_lanes, TurbulenceF32};
 use cells::Crackle;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Kind32 {
     Gradient(Vec3),
     Bozo,
@@ -47,6 +47,8 @@ pub enum Kind32 {
     Wood,
     /// `average` has no value of its own (the pigment averages its map).
     Average,
+    /// `image_pattern` / `bump_map`: looked up lane by lane (`shading::image_map`).
+    Image(std::sync::Arc<crate::shading::image_map::ImageLookup>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -78,13 +80,13 @@ pub struct Pattern32 {
 
 impl Pattern32 {
     pub fn from_desc(d: &PatternDesc) -> Pattern32 {
-        let kind = match d.kind {
-            PatternKind::Gradient(v) => Kind32::Gradient(v.normalize_or_zero().as_vec3()),
+        let kind = match &d.kind {
+            &PatternKind::Gradient(v) => Kind32::Gradient(v.normalize_or_zero().as_vec3()),
             PatternKind::Bozo => Kind32::Bozo,
             PatternKind::Granite => Kind32::Granite,
             PatternKind::Marble => Kind32::Marble,
-            PatternKind::Agate { turb } => Kind32::Agate(turb as f32),
-            PatternKind::Crackle { form, metric, offset, solid } => {
+            &PatternKind::Agate { turb } => Kind32::Agate(turb as f32),
+            &PatternKind::Crackle { form, metric, offset, solid } => {
                 Kind32::Crackle(Crackle { form: form.as_vec3(), metric: metric as f32, offset: offset as f32, solid })
             }
             PatternKind::Cells => Kind32::Cells,
@@ -95,19 +97,22 @@ impl Pattern32 {
             PatternKind::Waves => Kind32::Waves,
             PatternKind::Radial => Kind32::Radial,
             PatternKind::Onion => Kind32::Onion,
-            PatternKind::Spiral1(n) => Kind32::Spiral1(n as f32),
-            PatternKind::Spiral2(n) => Kind32::Spiral2(n as f32),
-            PatternKind::Brick { size, mortar } => Kind32::Brick(size.as_vec3(), mortar as f32),
+            &PatternKind::Spiral1(n) => Kind32::Spiral1(n as f32),
+            &PatternKind::Spiral2(n) => Kind32::Spiral2(n as f32),
+            &PatternKind::Brick { size, mortar } => Kind32::Brick(size.as_vec3(), mortar as f32),
             PatternKind::Hexagon => Kind32::Hexagon,
             PatternKind::Checker => Kind32::Checker,
             PatternKind::Boxed => Kind32::Boxed,
             PatternKind::Cylindrical => Kind32::Cylindrical,
             PatternKind::Spherical => Kind32::Spherical,
             PatternKind::Planar => Kind32::Planar,
-            PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
-            PatternKind::Mandel(n) => Kind32::Mandel(n),
+            &PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
+            &PatternKind::Mandel(n) => Kind32::Mandel(n),
             PatternKind::Wood => Kind32::Wood,
             PatternKind::Average => Kind32::Average,
+            PatternKind::Image(im) => {
+                Kind32::Image(std::sync::Arc::new(crate::shading::image_map::ImageLookup::from_desc(im)))
+            }
         };
         let wave = match d.wave {
             Wave::Ramp => Wave32::Ramp,
@@ -202,6 +207,7 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         Kind32::Mandel(n) => simple::mandel(p, n),
         Kind32::Wood => simple::wood_rings(p),
         Kind32::Average => L::splat(0.0),
+        Kind32::Image(ref im) => im.value_lanes(p),
     }
 }
 

@@ -45,7 +45,6 @@ pub fn read_gif(bytes: &[u8], max_side: usize) -> Result<IndexedImage, String> {
     Ok(IndexedImage { width, height, indices, palette })
 }
 
-
 /// What one pixel's samples are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Channels {

@@ -838,7 +838,7 @@ fn patterns_parse_and_unknown_ones_are_located_errors() {
     )
     .unwrap();
     let PigmentPattern::Mapped(pd, _) = &s.objects[0].texture.pigment.pattern else { panic!() };
-    assert_eq!((pd.kind, pd.wave, pd.frequency), (PatternKind::Gradient(DVec3::Y), Wave::Triangle, 2.0));
+    assert_eq!((pd.kind.clone(), pd.wave, pd.frequency), (PatternKind::Gradient(DVec3::Y), Wave::Triangle, 2.0));
     let PigmentPattern::List(pd, list) = &s.objects[1].texture.pigment.pattern else { panic!() };
     assert_eq!(pd.kind, PatternKind::Brick { size: DVec3::new(1.0, 0.5, 1.0), mortar: 0.1 });
     assert_eq!(list.len(), 2);
@@ -1869,4 +1869,11 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
     assert!(m.contains("map_type 3 is not supported"), "{m}");
     let (_, _, m) = err("im_word", "plane { y, 0 pigment { image_map { png \"x.png\" wobble } } }");
     assert!(m.contains("wobble"), "{m}");
+}
+
+#[test]
+fn uv_mapping_is_read_and_noted_as_not_modelled() {
+    let s = load_text("uv_mapping", "plane { y, 0 texture { uv_mapping pigment { uv_mapping checker } normal { uv_mapping bumps } } }")
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.unmodelled.iter().filter(|f| f.name == "uv_mapping").count(), 1);
 }

@@ -29,6 +29,13 @@ const IMAGE_ITEMS: &[&str] = &[
 ];
 
 impl Parser<'_, '_> {
+    /// `uv_mapping` in a pigment, normal or texture: read; the pattern stays in 3-D pattern
+    /// space (strahl's hits carry no uv yet), noted once as not modelled.
+    pub(super) fn uv_mapping(&mut self) {
+        let span = self.bump().span;
+        self.low.not_modelled("uv_mapping", span);
+    }
+
     /// One image block after its keyword `word`: the decoded image with its modifiers, the
     /// `bump_size` written inside (bump_map), and the block's span.
     pub(super) fn image_block(&mut self, word: &str) -> PResult<(Arc<ImageMapDesc>, Option<Expr>, Span)> {
@@ -62,7 +69,9 @@ impl Parser<'_, '_> {
                         n => {
                             return Err(Diag::new(
                                 e.span,
-                                format!("map_type {n} is not supported (0 planar, 1 spherical, 2 cylindrical, 5 torus)"),
+                                format!(
+                                    "map_type {n} is not supported (0 planar, 1 spherical, 2 cylindrical, 5 torus)"
+                                ),
                             ))
                         }
                     };
@@ -75,7 +84,9 @@ impl Parser<'_, '_> {
                         n => {
                             self.low.warn(Diag::new(
                                 e.span,
-                                format!("interpolate {n} is not modelled (0, 2 bilinear, 4 normalized distance); none used"),
+                                format!(
+                                    "interpolate {n} is not modelled (0, 2 bilinear, 4 normalized distance); none used"
+                                ),
                             ));
                             0
                         }

@@ -81,6 +81,7 @@ const PIGMENT: &[&str] = &[
     "quick_colour",
     "image_map",
     "image_pattern",
+    "uv_mapping",
 ];
 /// Pattern keywords of the kernel layer (`shading::patterns`); `checker` and `wood` have their
 /// own items in a pigment.
@@ -154,9 +155,10 @@ const NORMAL: &[&str] = &[
     "accuracy",
     "bump_map",
     "image_pattern",
+    "uv_mapping",
 ];
 const TEXTURE: &[&str] =
-    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "image_pattern"];
+    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "image_pattern", "uv_mapping"];
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,
@@ -260,6 +262,10 @@ impl Parser<'_, '_> {
                 Some("image_map") => {
                     let (im, _, span) = self.image_block("image_map")?;
                     PigmentItem::ImageMap(im, span)
+                }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
                 }
                 Some("image_pattern") => {
                     let (im, _, span) = self.image_block("image_pattern")?;
@@ -367,6 +373,10 @@ impl Parser<'_, '_> {
                     let (im, size, _) = self.image_block("bump_map")?;
                     NormalItem::BumpMap(im, size)
                 }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
+                }
                 Some("image_pattern") => {
                     let (im, _, _) = self.image_block("image_pattern")?;
                     let comma = self.eat_punct(',');
@@ -428,6 +438,10 @@ impl Parser<'_, '_> {
                 Some("image_pattern") => {
                     let (im, _, span) = self.image_block("image_pattern")?;
                     TextureItem::ImagePattern(im, span)
+                }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
                 }
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };

@@ -311,7 +311,7 @@ mod tests {
                 (Wave::Sine, vec![Warp::Turbulence(Turbulence { amount: DVec3::splat(0.3), ..Default::default() })]),
                 (Wave::Poly(2.0), vec![Warp::Repeat { dir: DVec3::X, offset: DVec3::Y, flip: DVec3::X }]),
             ] {
-                let mut d = PatternDesc::new(kind);
+                let mut d = PatternDesc::new(kind.clone());
                 d.wave = wave;
                 d.warps = warps;
                 d.frequency = 2.0;
@@ -338,7 +338,7 @@ mod tests {
             (PatternKind::Wrinkles, 0.528, 0.142),
             (PatternKind::Dents, 0.172, 0.12),
         ] {
-            let pat = Pattern32::from_desc(&PatternDesc::new(kind));
+            let pat = Pattern32::from_desc(&PatternDesc::new(kind.clone()));
             let v: Vec<f32> = (0..20_000)
                 .map(|k| {
                     pat.value_lanes(

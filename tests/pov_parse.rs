@@ -1853,7 +1853,7 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
     assert!(matches!(&pd.kind, PatternKind::Image(b) if b.use_alpha));
 
     let (l, c, m) = err("im_missing", "\nplane { y, 0 pigment { image_map { png \"nowhere.png\" } } }");
-    assert_eq!((l, c), (2, 37));
+    assert_eq!((l, c), (2, 40));
     assert!(m.starts_with("image_map image \"nowhere.png\" not found"), "{m}");
     let d = dir("im_bad");
     std::fs::write(d.join("bad.png"), "not a png").unwrap();

@@ -9,7 +9,7 @@ use std::process::Command;
 const SAMPLES: &str = "/usr/share/povray-3.7/scenes";
 
 /// Scenes that rendered when this floor was last raised; raise it as features land.
-const FLOOR: usize = 296;
+const FLOOR: usize = 298;
 
 #[test]
 #[ignore = "needs Debian's povray-examples (/usr/share/povray-3.7/scenes): .ci/run runs it with --ignored"]

@@ -1897,3 +1897,53 @@ fn tiles_is_a_checker_of_textures_with_located_errors() {
     let (l, c, m) = err("tiles_no_brace", "plane { y, 0 texture { tiles texture { } } }");
     assert_eq!((l, c), (1, 30), "{m}");
 }
+
+// ---- image_map, bump_map, image_pattern -----------------------------------------------------
+
+#[test]
+fn image_map_reads_its_modifiers_and_locates_bad_files() {
+    use strahl::scene::desc::{ImageMapping, NormalPattern, PatternKind};
+    let d = dir("image_map");
+    std::fs::write(d.join("i.ppm"), "P3 2 1 255 255 0 0 0 0 255").unwrap();
+    let text = "#version 3.7;\nsphere { 0, 1 pigment { image_map { ppm \"i.ppm\" map_type 1 interpolate 2 once \
+                filter all 0.5 transmit 1, 0.25 } } normal { bump_map { \"i.ppm\" bump_size 3 } } }\n\
+                plane { y, 0 pigment { image_pattern { ppm \"i.ppm\" use_alpha } color_map { [0 rgb 0] [1 rgb 1] } } }";
+    let path = write(&d, "scene.pov", text);
+    let s = load_scene(&path, &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    let PigmentPattern::ImageMap(im) = &s.objects[0].texture.pigment.pattern else { panic!("image_map") };
+    assert_eq!((im.image.width, im.image.height, im.mapping, im.interpolate, im.once), (2, 1, ImageMapping::Spherical, 2, true));
+    assert_eq!((im.filter.clone(), im.transmit.clone()), (vec![(None, 0.5)], vec![(Some(1), 0.25)]));
+    assert_eq!(im.decode_gamma, Some(1.0));
+    let Some(NormalPattern::Pattern(pd, amount)) = s.objects[0].texture.normal.as_ref().map(|n| &n.pattern) else {
+        panic!("bump_map")
+    };
+    assert!(matches!(&pd.kind, PatternKind::Image(b) if b.format == "ppm" && b.use_index));
+    assert_eq!(*amount, 3.0);
+    let PigmentPattern::Mapped(pd, _) = &s.objects[1].texture.pigment.pattern else { panic!("image_pattern") };
+    assert!(matches!(&pd.kind, PatternKind::Image(b) if b.use_alpha));
+
+    let (l, c, m) = err("im_missing", "\nplane { y, 0 pigment { image_map { png \"nowhere.png\" } } }");
+    assert_eq!((l, c), (2, 40));
+    assert!(m.starts_with("image_map image \"nowhere.png\" not found"), "{m}");
+    let d = dir("im_bad");
+    std::fs::write(d.join("bad.png"), "not a png").unwrap();
+    std::fs::write(d.join("a.jpg"), "\u{ff}").unwrap();
+    let path = write(&d, "scene.pov", "plane { y, 0 normal { bump_map { png \"bad.png\" } } }");
+    let e = load_scene(&path, &std_include()).expect_err("bad image");
+    assert_eq!((e.line, e.col), (1, 38));
+    assert!(e.message.contains("not a readable PNG"), "{}", e.message);
+    let path = write(&d, "scene.pov", "plane { y, 0 pigment { image_map { jpeg \"a.jpg\" } } }");
+    let e = load_scene(&path, &std_include()).expect_err("jpeg");
+    assert!(e.message.contains("jpeg images are not read"), "{}", e.message);
+    let (_, _, m) = err("im_maptype", "plane { y, 0 pigment { image_map { png \"x.png\" map_type 3 } } }");
+    assert!(m.contains("map_type 3 is not supported"), "{m}");
+    let (_, _, m) = err("im_word", "plane { y, 0 pigment { image_map { png \"x.png\" wobble } } }");
+    assert!(m.contains("wobble"), "{m}");
+}
+
+#[test]
+fn uv_mapping_is_read_and_noted_as_not_modelled() {
+    let s = load_text("uv_mapping", "plane { y, 0 texture { uv_mapping pigment { uv_mapping checker } normal { uv_mapping bumps } } }")
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.unmodelled.iter().filter(|f| f.name == "uv_mapping").count(), 1);
+}

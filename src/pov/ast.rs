@@ -340,6 +340,10 @@ pub enum PigmentItem {
     Mod(PatternMod),
     /// `pigment_map { [v pigment {..}] ... }`.
     PigmentMap(Vec<(Expr, Pigment)>, Span),
+    /// `image_map { }`, read (and its file decoded) as it is parsed, as `height_field` is.
+    ImageMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    /// `image_pattern { }` as the pigment's pattern.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
 }
 
 /// A pattern keyword with its argument and, for list patterns, what each cell shows.
@@ -406,6 +410,10 @@ pub enum NormalItem {
     BumpSize(Expr),
     /// `slope_map`, `normal_map` and the like: read, not modelled.
     Ignored(String, Span),
+    /// `bump_map { ... [bump_size F] }` with its bump size, if given inside.
+    BumpMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
+    /// `image_pattern { }` with its optional amount.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -474,6 +482,8 @@ pub enum TextureItem {
     TextureMap(Vec<(Expr, Texture)>, Span),
     /// A further `texture { }` written right after this one: a layer over it.
     Layer(Box<Texture>),
+    /// `image_pattern { }` as the pattern of a `texture_map`.
+    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]

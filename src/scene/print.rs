@@ -358,6 +358,7 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
             write!(s, "{options}")
         }
         PigmentPattern::Layered(_) => unreachable!("handled above"),
+        PigmentPattern::ImageMap(im) => write!(s, "image_map {{ {} }}", image_text(im)),
     };
     turbulence(s, p.turbulence.as_ref());
     let _ = write!(s, "{} }}", modifiers(&(*object_inverse * p.transform.matrix)));
@@ -378,6 +379,32 @@ fn albedo(set: bool) -> &'static str {
     } else {
         ""
     }
+}
+
+/// The inside of an `image_map { }` / `image_pattern { }` block.
+fn image_text(im: &crate::scene::desc::ImageMapDesc) -> String {
+    use crate::scene::desc::ImageMapping;
+    let map_type = match im.mapping {
+        ImageMapping::Planar => 0,
+        ImageMapping::Spherical => 1,
+        ImageMapping::Cylindrical => 2,
+        ImageMapping::Torus => 5,
+    };
+    let mut out = format!("{} \"{}\" map_type {map_type} interpolate {}", im.format, im.file.replace('"', "\\\""), im.interpolate);
+    for (word, list) in [("filter", &im.filter), ("transmit", &im.transmit)] {
+        for (i, v) in list {
+            match i {
+                Some(i) => out += &format!(" {word} {i} {}", num(*v)),
+                None => out += &format!(" {word} all {}", num(*v)),
+            }
+        }
+    }
+    for (flag, word) in [(im.once, " once"), (im.use_index, " use_index"), (im.use_alpha, " use_alpha")] {
+        if flag {
+            out += word;
+        }
+    }
+    out
 }
 
 /// A pattern keyword with its parameters and value modifiers.
@@ -419,6 +446,7 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         &K::Mandel(n) => format!("mandel {n}"),
         K::Wood => "wood".into(),
         K::Average => "average".into(),
+        K::Image(ref im) => format!("image_pattern {{ {} }}", image_text(im)),
     };
     let wave = match p.wave {
         Wave::Ramp => "ramp_wave".to_string(),

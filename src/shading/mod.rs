@@ -5,6 +5,7 @@
 //! conversion from `scene::desc` happens once, in f64, in the `from_desc` constructors. Lighting
 //! and finishes are left to the renderer.
 
+pub mod image_map;
 pub mod noise;
 pub mod normal;
 pub mod pattern;

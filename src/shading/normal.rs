@@ -11,7 +11,7 @@
 use glam::{DMat4, Mat3A, Vec3};
 
 use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
-use super::patterns::Pattern32;
+use super::patterns::{Kind32, Pattern32};
 use super::pigment::{pattern_from_render, PatternQuality, Period};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern};
@@ -101,11 +101,18 @@ fn pattern_normal<L: Lane>(
 ) -> V3<L> {
     let at = |d: Vec3| pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
     let v0 = at(Vec3::ZERO);
-    let inv = L::splat(1.0 / NORMAL_DELTA);
+    // Images (`bump_map`) step one texel and tilt by the height difference itself
+    // (`shading::image_map::ImageLookup::normal_step`); other patterns take the gradient.
+    let (delta, inv) = match &pat.kind {
+        Kind32::Image(im) => im.normal_step(),
+        _ => (NORMAL_DELTA, 1.0 / NORMAL_DELTA),
+    };
+    let dy = if matches!(pat.kind, Kind32::Image(_)) { -delta } else { delta };
+    let (inv, inv_y) = (L::splat(inv), L::splat(inv * dy.signum()));
     let grad = V3 {
-        x: (at(Vec3::X * NORMAL_DELTA) - v0) * inv,
-        y: (at(Vec3::Y * NORMAL_DELTA) - v0) * inv,
-        z: (at(Vec3::Z * NORMAL_DELTA) - v0) * inv,
+        x: (at(Vec3::X * delta) - v0) * inv,
+        y: (at(Vec3::Y * dy) - v0) * inv_y,
+        z: (at(Vec3::Z * delta) - v0) * inv,
     };
     let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
     let bumped = np.sub(grad.scale(L::splat(amount)));

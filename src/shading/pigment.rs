@@ -31,6 +31,8 @@ pub enum PigmentPattern32 {
     List(Box<Pattern32>, Vec<Pigment>),
     /// Layered textures' pigments, bottom first.
     Layered(Vec<Pigment>),
+    /// `image_map`: texels looked up lane by lane.
+    ImageMap(std::sync::Arc<super::image_map::ImageLookup>),
 }
 
 impl PigmentPattern32 {
@@ -47,6 +49,7 @@ impl PigmentPattern32 {
             PigmentPattern32::List(_, l) => l.iter().any(|p| p.pattern.may_be_transparent()),
             // Each layer passes on only what shows through it: the bottom decides.
             PigmentPattern32::Layered(l) => l.first().is_some_and(|p| p.pattern.may_be_transparent()),
+            PigmentPattern32::ImageMap(im) => im.may_be_transparent(),
         }
     }
 }
@@ -224,6 +227,9 @@ impl Pigment {
             PigmentPattern::Layered(list) => {
                 PigmentPattern32::Layered(list.iter().map(|p| Pigment::from_desc(p, world_from_render)).collect())
             }
+            PigmentPattern::ImageMap(im) => {
+                PigmentPattern32::ImageMap(std::sync::Arc::new(super::image_map::ImageLookup::from_desc(im)))
+            }
         };
         let periods = match &d.pattern {
             PigmentPattern::Solid(_) => [Period::Any; 3],
@@ -324,6 +330,7 @@ fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuali
             }
             out
         }
+        PigmentPattern32::ImageMap(im) => im.color_lanes(pig.pattern_point(p_render, q)),
         PigmentPattern32::Layered(list) => {
             let mut out = RgbftLanes::splat(Rgbft::default());
             for (k, p) in list.iter().enumerate() {

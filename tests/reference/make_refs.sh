@@ -46,3 +46,7 @@ done
 for s in materials tiles; do
     render "$here/scenes/$s.pov" "$s"
 done
+# images.pov and bump_maps.pov read ../images/*.png (made by tests/reference/images/make_images.py).
+for s in images bump_maps; do
+    (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
+done

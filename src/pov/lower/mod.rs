@@ -11,6 +11,7 @@ mod eval;
 mod fileio;
 mod functions;
 mod height_field;
+mod images;
 mod isosurface;
 mod julia;
 mod lights;
@@ -30,6 +31,7 @@ use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
 use crate::scene::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc, UnmodelledFeature};
 pub(crate) use fileio::Mode as FileMode;
+pub(crate) use images::ImageOptions;
 
 /// Total loop iterations (`#while`, `#for`) allowed in one scene: far beyond real scenes (a
 /// 100³ grid of spheres is a million), small enough that a loop that never ends fails in

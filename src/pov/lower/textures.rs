@@ -17,6 +17,8 @@ use crate::scene::desc::{
 
 /// POV-Ray's `bumps` amount when none is written.
 const DEFAULT_BUMPS: f64 = 0.5;
+/// `bump_map`'s `bump_size` when none is written.
+const DEFAULT_BUMP_MAP: f64 = 1.0;
 
 /// The pattern while a pigment block is read; the map is checked against it at the end.
 enum Pattern {
@@ -150,6 +152,10 @@ impl Lowerer<'_> {
                     if let Pattern::Generic(pd, _) = &mut pattern {
                         self.pattern_mod(m, pd)?;
                     }
+                }
+                PigmentItem::ImageMap(im, _) => pattern = Pattern::Done(PigmentPattern::ImageMap(im.clone())),
+                PigmentItem::ImagePattern(im, _) => {
+                    pattern = Pattern::Generic(PatternDesc::new(PatternKind::Image(im.clone())), Vec::new())
                 }
                 PigmentItem::PigmentMap(entries, span) => {
                     let mut out = Vec::with_capacity(entries.len());
@@ -416,6 +422,20 @@ impl Lowerer<'_> {
                         None => {}
                     }
                 }
+                NormalItem::BumpMap(im, size) => {
+                    let a = match size {
+                        Some(e) => self.float(e)?,
+                        None => DEFAULT_BUMP_MAP,
+                    };
+                    pattern = Some(NormalPattern::Pattern(PatternDesc::new(PatternKind::Image(im.clone())), a));
+                }
+                NormalItem::ImagePattern(im, amount) => {
+                    let a = match amount {
+                        Some(e) => self.float(e)?,
+                        None => DEFAULT_BUMPS,
+                    };
+                    pattern = Some(NormalPattern::Pattern(PatternDesc::new(PatternKind::Image(im.clone())), a));
+                }
                 NormalItem::Ignored(word, span) => {
                     self.warn(Diag::new(*span, format!("`{word}` in a normal is not modelled; ignored")));
                 }
@@ -525,6 +545,9 @@ impl Lowerer<'_> {
                         list.push(self.texture(t)?);
                     }
                     pattern = Some((PatternDesc::new(kind), list));
+                }
+                TextureItem::ImagePattern(im, _) => {
+                    pattern = Some((PatternDesc::new(PatternKind::Image(im.clone())), Vec::new()));
                 }
                 TextureItem::Mod(m) => {
                     if let Some((pd, _)) = &mut pattern {

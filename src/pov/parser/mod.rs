@@ -16,6 +16,7 @@ mod directives;
 mod expr;
 mod finish;
 mod function;
+mod image;
 mod global;
 mod isosurface;
 mod julia;

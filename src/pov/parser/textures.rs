@@ -82,6 +82,9 @@ const PIGMENT: &[&str] = &[
     "noise_generator",
     "quick_color",
     "quick_colour",
+    "image_map",
+    "image_pattern",
+    "uv_mapping",
 ];
 /// Pattern keywords of the kernel layer (`shading::patterns`); `checker` and `wood` have their
 /// own items in a pigment.
@@ -154,9 +157,12 @@ const NORMAL: &[&str] = &[
     "slope_map",
     "normal_map",
     "accuracy",
+    "bump_map",
+    "image_pattern",
+    "uv_mapping",
 ];
 const TEXTURE: &[&str] =
-    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "tiles"];
+    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "image_pattern", "uv_mapping", "tiles"];
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,
@@ -257,6 +263,18 @@ impl Parser<'_, '_> {
                     continue;
                 }
                 Some("color_map" | "colour_map") => PigmentItem::ColorMap(self.color_map()?),
+                Some("image_map") => {
+                    let (im, _, span) = self.image_block("image_map")?;
+                    PigmentItem::ImageMap(im, span)
+                }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
+                }
+                Some("image_pattern") => {
+                    let (im, _, span) = self.image_block("image_pattern")?;
+                    PigmentItem::ImagePattern(im, span)
+                }
                 Some(w) if turb_kind(w).is_some() => {
                     PigmentItem::Turb(self.turb(turb_kind(w).unwrap_or(TurbKind::Turbulence))?)
                 }
@@ -355,6 +373,24 @@ impl Parser<'_, '_> {
                     self.bump();
                     NormalItem::BumpSize(self.expr()?)
                 }
+                Some("bump_map") => {
+                    let (im, size, _) = self.image_block("bump_map")?;
+                    NormalItem::BumpMap(im, size)
+                }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
+                }
+                Some("image_pattern") => {
+                    let (im, _, _) = self.image_block("image_pattern")?;
+                    let comma = self.eat_punct(',');
+                    let amount = if comma || (self.starts_expr(NORMAL) && !self.starts_mod()) {
+                        Some(self.expr()?)
+                    } else {
+                        None
+                    };
+                    NormalItem::ImagePattern(im, amount)
+                }
                 Some("accuracy") => {
                     self.bump();
                     self.expr()?;
@@ -403,6 +439,14 @@ impl Parser<'_, '_> {
                 Some("texture_map") => {
                     let span = self.bump().span;
                     TextureItem::TextureMap(self.block_map("texture_map", span, |p| p.texture_one())?, span)
+                }
+                Some("image_pattern") => {
+                    let (im, _, span) = self.image_block("image_pattern")?;
+                    TextureItem::ImagePattern(im, span)
+                }
+                Some("uv_mapping") => {
+                    self.uv_mapping();
+                    continue;
                 }
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };

@@ -2,6 +2,7 @@
 
 use super::{Color, Transform};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// Turbulence (`turbulence`, `octaves`, `omega`, `lambda`) of a pattern.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,6 +43,48 @@ pub enum PigmentPattern {
     /// Layered textures' pigments, bottom first: each upper layer shows what is below it
     /// through its filter and transmit.
     Layered(Vec<PigmentDesc>),
+    /// `image_map { }`: the image's colours wrapped onto pattern space.
+    ImageMap(Arc<ImageMapDesc>),
+}
+
+/// How `image_map`, `bump_map` and `image_pattern` wrap an image onto pattern space
+/// (`map_type`): the unit square of the x-y plane, a sphere, a cylinder or a torus around y.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageMapping {
+    Planar,
+    Spherical,
+    Cylindrical,
+    /// `map_type 5`: a torus of major radius 1 around y.
+    Torus,
+}
+
+/// An image with the modifiers `image_map`, `bump_map` and `image_pattern` share.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ImageMapDesc {
+    /// The file as found (for messages and the printer).
+    pub file: String,
+    /// The type keyword written (`png`, `gif`, ..., `sys`).
+    pub format: String,
+    pub image: Arc<crate::image_file::Image>,
+    pub mapping: ImageMapping,
+    /// `interpolate`: 0 none, 2 bilinear, 4 normalized distance.
+    pub interpolate: u32,
+    /// `once`: no repetition; outside the image is clear (transmit 1).
+    pub once: bool,
+    /// `use_index`: a palette image's value is its index over 255 rather than its colour's
+    /// intensity (`bump_map`, `image_pattern`).
+    pub use_index: bool,
+    /// `use_alpha` (`image_pattern`): the value is the alpha channel.
+    pub use_alpha: bool,
+    /// `filter N F` / `filter all F`, in written order (`None`: all entries).
+    pub filter: Vec<(Option<usize>, f64)>,
+    pub transmit: Vec<(Option<usize>, f64)>,
+    /// How stored values become working colours: `Some(g)`: sRGB-decoded then raised to
+    /// 1 / g (the scene's `assumed_gamma`, so that an image shows its own values on an
+    /// `ambient 1` surface, as POV-Ray 3.7 renders it); `None`: as stored (legacy scenes).
+    pub decode_gamma: Option<f64>,
+    /// `gamma G` in the block: the file's values are raised to G instead of sRGB-decoded.
+    pub file_gamma: Option<f64>,
 }
 
 /// The pattern functions (`shading::patterns`), with their own parameters.
@@ -97,6 +140,8 @@ pub enum PatternKind {
     /// `function { ... }` (3.4.7.1.12): the user function of (x, y, z), wrapped into [0, 1)
     /// as POV-Ray wraps it (`function { x }` repeats every unit, checked by rendering).
     Function(std::sync::Arc<crate::function::Program>),
+    /// `image_pattern { }` (and `bump_map`'s heights): the image's intensity (or alpha).
+    Image(Arc<ImageMapDesc>),
 }
 
 impl PatternKind {

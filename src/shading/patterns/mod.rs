@@ -50,6 +50,8 @@ pub enum Kind32 {
     /// A user function, run in f64 lane by lane (the compiled register code has no lane
     /// arithmetic), its value wrapped into [0, 1).
     Function(std::sync::Arc<crate::function::Program>),
+    /// `image_pattern` / `bump_map`: looked up lane by lane (`shading::image_map`).
+    Image(std::sync::Arc<crate::shading::image_map::ImageLookup>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,13 +83,13 @@ pub struct Pattern32 {
 
 impl Pattern32 {
     pub fn from_desc(d: &PatternDesc) -> Pattern32 {
-        let kind = match d.kind.clone() {
-            PatternKind::Gradient(v) => Kind32::Gradient(v.normalize_or_zero().as_vec3()),
+        let kind = match &d.kind {
+            &PatternKind::Gradient(v) => Kind32::Gradient(v.normalize_or_zero().as_vec3()),
             PatternKind::Bozo => Kind32::Bozo,
             PatternKind::Granite => Kind32::Granite,
             PatternKind::Marble => Kind32::Marble,
-            PatternKind::Agate { turb } => Kind32::Agate(turb as f32),
-            PatternKind::Crackle { form, metric, offset, solid } => {
+            &PatternKind::Agate { turb } => Kind32::Agate(turb as f32),
+            &PatternKind::Crackle { form, metric, offset, solid } => {
                 Kind32::Crackle(Crackle { form: form.as_vec3(), metric: metric as f32, offset: offset as f32, solid })
             }
             PatternKind::Cells => Kind32::Cells,
@@ -98,20 +100,23 @@ impl Pattern32 {
             PatternKind::Waves => Kind32::Waves,
             PatternKind::Radial => Kind32::Radial,
             PatternKind::Onion => Kind32::Onion,
-            PatternKind::Spiral1(n) => Kind32::Spiral1(n as f32),
-            PatternKind::Spiral2(n) => Kind32::Spiral2(n as f32),
-            PatternKind::Brick { size, mortar } => Kind32::Brick(size.as_vec3(), mortar as f32),
+            &PatternKind::Spiral1(n) => Kind32::Spiral1(n as f32),
+            &PatternKind::Spiral2(n) => Kind32::Spiral2(n as f32),
+            &PatternKind::Brick { size, mortar } => Kind32::Brick(size.as_vec3(), mortar as f32),
             PatternKind::Hexagon => Kind32::Hexagon,
             PatternKind::Checker => Kind32::Checker,
             PatternKind::Boxed => Kind32::Boxed,
             PatternKind::Cylindrical => Kind32::Cylindrical,
             PatternKind::Spherical => Kind32::Spherical,
             PatternKind::Planar => Kind32::Planar,
-            PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
-            PatternKind::Mandel(n) => Kind32::Mandel(n),
+            &PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
+            &PatternKind::Mandel(n) => Kind32::Mandel(n),
             PatternKind::Wood => Kind32::Wood,
             PatternKind::Average => Kind32::Average,
-            PatternKind::Function(f) => Kind32::Function(f),
+            PatternKind::Function(f) => Kind32::Function(f.clone()),
+            PatternKind::Image(im) => {
+                Kind32::Image(std::sync::Arc::new(crate::shading::image_map::ImageLookup::from_desc(im)))
+            }
         };
         let wave = match d.wave {
             Wave::Ramp => Wave32::Ramp,
@@ -209,6 +214,7 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         Kind32::Function(ref f) => {
             simple::frac(L::from_fn_f64(|i| f.eval(&[p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i)])))
         }
+        Kind32::Image(ref im) => im.value_lanes(p),
     }
 }
 

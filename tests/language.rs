@@ -254,12 +254,12 @@ fn dir_path(test: &str) -> PathBuf {
 #[test]
 fn unmodelled_declarations_fail_only_where_they_are_used() {
     let text =
-        "#declare T = texture { pigment { image_map { png \"x.png\" } } }\n#declare U = texture { T }\n#declare C = sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n";
+        "#declare T = texture { pigment { tiling 1 } }\n#declare U = texture { T }\n#declare C = sphere_sweep { linear_spline 2, 0, 1, x, 1 }\n";
     assert!(load("lazy_unused", &format!("{text}sphere {{ 0, 1 }}")).is_ok());
     let e = error("lazy_used", &format!("{text}sphere {{ 0, 1 texture {{ U }} }}"));
     assert_eq!((e.line, e.col), (4, 25), "{e}");
-    assert!(e.message.starts_with("this declaration cannot be used: `image_map` is not supported in pigment"), "{e}");
-    assert!(e.message.contains("scene.pov:1:34"), "the note points at `image_map`: {e}");
+    assert!(e.message.starts_with("this declaration cannot be used: `tiling` is not supported in pigment"), "{e}");
+    assert!(e.message.contains("scene.pov:1:34"), "the note points at `tiling`: {e}");
     let e = error("lazy_object", &format!("{text}object {{ C }}"));
     assert!(e.message.contains("`sphere_sweep` is not supported"), "{e}");
     // A misspelt keyword in a declaration is still an error where it is written.

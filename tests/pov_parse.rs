@@ -1911,7 +1911,10 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
     let path = write(&d, "scene.pov", text);
     let s = load_scene(&path, &std_include()).unwrap_or_else(|e| panic!("{e}"));
     let PigmentPattern::ImageMap(im) = &s.objects[0].texture.pigment.pattern else { panic!("image_map") };
-    assert_eq!((im.image.width, im.image.height, im.mapping, im.interpolate, im.once), (2, 1, ImageMapping::Spherical, 2, true));
+    assert_eq!(
+        (im.image.width, im.image.height, im.mapping, im.interpolate, im.once),
+        (2, 1, ImageMapping::Spherical, 2, true)
+    );
     assert_eq!((im.filter.clone(), im.transmit.clone()), (vec![(None, 0.5)], vec![(Some(1), 0.25)]));
     assert_eq!(im.decode_gamma, Some(1.0));
     let Some(NormalPattern::Pattern(pd, amount)) = s.objects[0].texture.normal.as_ref().map(|n| &n.pattern) else {
@@ -1943,7 +1946,10 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
 
 #[test]
 fn uv_mapping_is_read_and_noted_as_not_modelled() {
-    let s = load_text("uv_mapping", "plane { y, 0 texture { uv_mapping pigment { uv_mapping checker } normal { uv_mapping bumps } } }")
-        .unwrap_or_else(|e| panic!("{e}"));
+    let s = load_text(
+        "uv_mapping",
+        "plane { y, 0 texture { uv_mapping pigment { uv_mapping checker } normal { uv_mapping bumps } } }",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.unmodelled.iter().filter(|f| f.name == "uv_mapping").count(), 1);
 }

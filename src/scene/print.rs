@@ -390,7 +390,12 @@ fn image_text(im: &crate::scene::desc::ImageMapDesc) -> String {
         ImageMapping::Cylindrical => 2,
         ImageMapping::Torus => 5,
     };
-    let mut out = format!("{} \"{}\" map_type {map_type} interpolate {}", im.format, im.file.replace('"', "\\\""), im.interpolate);
+    let mut out = format!(
+        "{} \"{}\" map_type {map_type} interpolate {}",
+        im.format,
+        im.file.replace('"', "\\\""),
+        im.interpolate
+    );
     for (word, list) in [("filter", &im.filter), ("transmit", &im.transmit)] {
         for (i, v) in list {
             match i {

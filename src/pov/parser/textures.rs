@@ -161,8 +161,20 @@ const NORMAL: &[&str] = &[
     "image_pattern",
     "uv_mapping",
 ];
-const TEXTURE: &[&str] =
-    &["pigment", "normal", "finish", "rotate", "scale", "translate", "matrix", "transform", "texture_map", "image_pattern", "uv_mapping", "tiles"];
+const TEXTURE: &[&str] = &[
+    "pigment",
+    "normal",
+    "finish",
+    "rotate",
+    "scale",
+    "translate",
+    "matrix",
+    "transform",
+    "texture_map",
+    "image_pattern",
+    "uv_mapping",
+    "tiles",
+];
 fn turb_kind(word: &str) -> Option<TurbKind> {
     Some(match word {
         "turbulence" => TurbKind::Turbulence,

@@ -108,6 +108,25 @@ impl Image {
 /// The image types POV-Ray names, and whether `read_image` reads them.
 pub const READ_TYPES: &[&str] = &["png", "gif", "ppm", "pgm", "tga", "sys"];
 
+/// The image type a file name's extension names (for blocks that give no type keyword).
+pub fn type_from_extension(name: &str) -> Option<&'static str> {
+    let ext = std::path::Path::new(name).extension()?.to_str()?.to_ascii_lowercase();
+    Some(match ext.as_str() {
+        "png" => "png",
+        "gif" => "gif",
+        "tga" => "tga",
+        "ppm" => "ppm",
+        "pgm" => "pgm",
+        "iff" => "iff",
+        "jpg" | "jpeg" => "jpeg",
+        "tif" | "tiff" => "tiff",
+        "bmp" => "bmp",
+        "exr" => "exr",
+        "hdr" => "hdr",
+        _ => return None,
+    })
+}
+
 /// Decodes `bytes` as the POV-Ray image type `format` (`sys`: whichever of the types read the
 /// bytes are). Images wider or taller than `max_side` are refused.
 pub fn read_image(format: &str, bytes: &[u8], max_side: usize) -> Result<Image, String> {

@@ -1424,6 +1424,21 @@ fn height_field_reads_pgm_and_locates_a_missing_file() {
     assert!(e.message.ends_with("as pgm: too few pixels"), "{}", e.message);
 }
 
+#[test]
+fn height_field_without_a_type_takes_it_from_the_extension() {
+    let d = dir("hf_ext");
+    std::fs::write(d.join("f.PGM"), "P2 3 2 255 255 0 0 0 0 128").unwrap();
+    let path = write(&d, "scene.pov", "height_field { \"f.PGM\" smooth }");
+    let s = load_scene(&path, &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    let ShapeDesc::HeightField { field, smooth, .. } = &s.objects[0].shape else { panic!("height field") };
+    assert_eq!((field.width, field.height, *smooth, field.heights[0]), (3, 2, true, 1.0));
+    let (l, c, m) = err("hf_ext_jpeg", "height_field {\n  \"a.jpg\" }");
+    assert_eq!((l, c), (2, 3), "{m}");
+    assert!(m.contains("`jpeg` images are not supported"), "{m}");
+    let (_, _, m) = err("hf_ext_none", "height_field { \"noext\" }");
+    assert!(m.contains("no image type given and none known from \"noext\"'s extension"), "{m}");
+}
+
 /// User-defined functions: declared, called at parse time and inside other functions,
 /// `functions.inc`'s internal ones; unknown names and wrong argument counts are located errors.
 #[test]

@@ -42,25 +42,6 @@ impl Default for ImageOptions {
     }
 }
 
-/// The image type a file name's extension names (for blocks that give no type keyword).
-fn type_from_extension(name: &str) -> Option<&'static str> {
-    let ext = std::path::Path::new(name).extension()?.to_str()?.to_ascii_lowercase();
-    Some(match ext.as_str() {
-        "png" => "png",
-        "gif" => "gif",
-        "tga" => "tga",
-        "ppm" => "ppm",
-        "pgm" => "pgm",
-        "iff" => "iff",
-        "jpg" | "jpeg" => "jpeg",
-        "tif" | "tiff" => "tiff",
-        "bmp" => "bmp",
-        "exr" => "exr",
-        "hdr" => "hdr",
-        _ => return None,
-    })
-}
-
 impl Lowerer<'_> {
     /// Finds and decodes the image of a `word` block (`image_map`, `bump_map`, `image_pattern`).
     pub(crate) fn image_map_desc(
@@ -71,7 +52,7 @@ impl Lowerer<'_> {
         span: Span,
         opts: ImageOptions,
     ) -> PResult<Arc<ImageMapDesc>> {
-        let format = format.or_else(|| type_from_extension(name)).unwrap_or("sys").to_string();
+        let format = format.or_else(|| crate::image_file::type_from_extension(name)).unwrap_or("sys").to_string();
         let path = if std::path::Path::new(name).is_file() {
             std::path::PathBuf::from(name)
         } else {

@@ -255,6 +255,8 @@ impl Parser<'_, '_> {
                     format!("height_field: `{w}` images are not supported (supported: {})", HF_TYPES.join(", ")),
                 ));
             }
+            // No type keyword: POV-Ray 3.7 takes the type from the file name's extension.
+            _ if self.starts_expr(&[]) => String::new(),
             _ => {
                 return Err(Diag::new(
                     self.peek().span,
@@ -266,6 +268,29 @@ impl Parser<'_, '_> {
         let name = match self.low.eval(&name_expr)? {
             Value::Str(s) => s.to_string(),
             other => return Err(other.wrong_kind(name_expr.span, "the image's file name")),
+        };
+        let format = if !format.is_empty() {
+            format
+        } else {
+            match crate::image_file::type_from_extension(&name) {
+                Some(t) if HF_TYPES.contains(&t) => t.to_string(),
+                Some(t) => {
+                    return Err(Diag::unmodelled(
+                        name_expr.span,
+                        format!("height_field: `{t}` images are not supported (supported: {})", HF_TYPES.join(", ")),
+                    ));
+                }
+                None => {
+                    return Err(Diag::new(
+                        name_expr.span,
+                        format!(
+                            "height_field: no image type given and none known from \"{name}\"'s extension \
+                             (write one of {})",
+                            HF_TYPES.join(", ")
+                        ),
+                    ));
+                }
+            }
         };
         let (mut smooth, mut water_level) = (false, 0.0);
         loop {

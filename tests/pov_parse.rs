@@ -1852,7 +1852,7 @@ fn bicubic_patch_uv_vectors_may_stand_before_the_control_points() {
         format!("type 1 u_steps 2 v_steps 2 uv_vectors <0,0> <1,0> <1,1> <0,1> {SADDLE}"),
         format!("type 1 u_steps 2 v_steps 2 {SADDLE} uv_vectors <0,0>, <1,0>, <1,1>, <0,1>"),
     ] {
-        let s = load_text("bp_uv", &format!("bicubic_patch {{ {body} pigment {{ rgb 1 }} }}"))
+        let s = load_text("bp_uv", &format!("bicubic_patch {{ {body} pigment {{ rgb 1 }} uv_mapping }}"))
             .unwrap_or_else(|e| panic!("{body}: {e}"));
         let ShapeDesc::Mesh { mesh, .. } = &s.objects[0].shape else { panic!("a mesh") };
         assert_eq!(mesh.faces.len(), 4 * 4 * 2, "{body}");

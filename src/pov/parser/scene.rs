@@ -101,6 +101,7 @@ pub const MODIFIERS: &[&str] = &[
     "inside_vector",
     "hierarchy",
     "no_image",
+    "uv_mapping",
     "no_reflection",
     "double_illuminate",
     "no_radiosity",
@@ -419,6 +420,11 @@ impl Parser<'_, '_> {
                     if self.flag_value()?.is_none_or(|on| on) && w != "no_radiosity" {
                         self.low.not_modelled(&w, at);
                     }
+                    continue;
+                }
+                // POV-Ray 3.7 lets `uv_mapping` stand on the object for all its textures.
+                Some("uv_mapping") => {
+                    self.uv_mapping();
                     continue;
                 }
                 Some(w @ ("photons" | "radiosity")) => {

@@ -546,3 +546,26 @@ fn render_with_an_ini_parses_the_scene_at_the_animations_frame() {
     assert!(err.contains("--frame 4 is outside the animation's frames 1..3"), "{err}");
     assert!(!dir.join("x.png").exists(), "nothing written on an error");
 }
+
+#[test]
+fn survey_renders_a_scratch_copy_so_scenes_may_write_and_the_folder_is_untouched() {
+    let dir = scratch("survey_copy");
+    std::fs::create_dir_all(dir.join("sub")).unwrap_or_else(|e| panic!("{e}"));
+    let write = |name: &str, text: &str| std::fs::write(dir.join(name), text).unwrap_or_else(|e| panic!("{e}"));
+    // As POV-Ray's portfolio samples do: a scene writes a file beside itself.
+    write(
+        "writes.pov",
+        "#fopen F \"out.txt\" write\n#write (F, \"x\")\n#fclose F\nsphere { 0, 1 pigment { rgb 1 } }\n",
+    );
+    write("sub/plain.pov", "sphere { 0, 1 pigment { rgb 1 } }\n");
+    write("sub/bad.pov", "sphere { 0, 1 nonsense }\n");
+    let d = dir.display().to_string();
+    let out = ok(&["survey", &d, "-q", "--list"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("2 of 3 scenes render"), "{text}");
+    assert!(
+        text.contains(&format!("{}: Rendered", dir.join("writes.pov").display())),
+        "listed by their own path: {text}"
+    );
+    assert!(!dir.join("out.txt").exists(), "the surveyed folder is never written");
+}

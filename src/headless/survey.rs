@@ -78,6 +78,24 @@ pub fn scene_files(dir: &Path) -> Result<Vec<PathBuf>, CliError> {
     Ok(found)
 }
 
+/// Copies the folder `from` (following links) into `to`, recursively.
+fn copy_tree(from: &Path, to: &Path) -> Result<(), CliError> {
+    std::fs::create_dir_all(to).map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", to.display())))?;
+    let entries =
+        std::fs::read_dir(from).map_err(|e| CliError::user(format!("{}: cannot read folder: {e}", from.display())))?;
+    for entry in entries.flatten() {
+        let (src, dst) = (entry.path(), to.join(entry.file_name()));
+        if src.is_dir() {
+            copy_tree(&src, &dst)?;
+        } else {
+            std::fs::copy(&src, &dst).map_err(|e| {
+                CliError::user(format!("{}: cannot copy into the survey's scratch: {e}", src.display()))
+            })?;
+        }
+    }
+    Ok(())
+}
+
 /// The message of the first `error:` line in a render's stderr, without its location.
 pub fn first_error(stderr: &str) -> Option<String> {
     let line = stderr.lines().find_map(|l| l.strip_prefix("error: "))?;
@@ -271,20 +289,31 @@ pub fn run(args: &SurveyCmd) -> Result<(), CliError> {
     }
     let exe =
         std::env::current_exe().map_err(|e| CliError::user(format!("cannot find strahl's own executable: {e}")))?;
-    let scenes = scene_files(&args.dir)?;
-    if scenes.is_empty() {
+    if scene_files(&args.dir)?.is_empty() {
         return Err(CliError::user(format!("{}: no .pov files under it", args.dir.display())));
     }
     let scratch = std::env::temp_dir().join(format!("strahl-survey.{}", std::process::id()));
     std::fs::create_dir_all(&scratch)
         .map_err(|e| CliError::user(format!("{}: cannot create folder: {e}", scratch.display())))?;
+    // Scenes run in a scratch copy of the folder: samples that write files beside themselves
+    // (`#fopen`: the portfolio's HTML pages, mesh_camera's meshes) can, as in a user's own copy
+    // of the samples, whoever owns DIR; and DIR itself is never written.
+    let tree = scratch.join("tree");
+    let copied = copy_tree(&args.dir, &tree).and_then(|()| scene_files(&tree));
+    let scenes = match copied {
+        Ok(scenes) => scenes,
+        Err(e) => {
+            let _ = std::fs::remove_dir_all(&scratch);
+            return Err(e);
+        }
+    };
     let progress = Progress::new(scenes.len() as u64, "scenes", args.quiet);
     let mut results = Vec::with_capacity(scenes.len());
     for (i, scene) in scenes.iter().enumerate() {
         let outcome = survey_one(&exe, scene, args, &scratch);
         if args.list {
             if let Ok(o) = &outcome {
-                println!("{}: {o:?}", scene.display());
+                println!("{}: {o:?}", args.dir.join(scene.strip_prefix(&tree).unwrap_or(scene)).display());
             }
         }
         results.push((scene.clone(), outcome));
@@ -292,7 +321,10 @@ pub fn run(args: &SurveyCmd) -> Result<(), CliError> {
     }
     progress.finish();
     let _ = std::fs::remove_dir_all(&scratch);
-    let results = results.into_iter().map(|(s, r)| r.map(|r| (s, r))).collect::<Result<Vec<_>, _>>()?;
+    let results = results
+        .into_iter()
+        .map(|(s, r)| r.map(|r| (args.dir.join(s.strip_prefix(&tree).unwrap_or(&s)), r)))
+        .collect::<Result<Vec<_>, _>>()?;
     print!("{}", summary(&args.dir, &results, args.top));
     output::flush_stdout();
     Ok(())

@@ -265,7 +265,7 @@ fn read_pnm(bytes: &[u8], max_side: usize) -> Result<Image, String> {
 }
 
 /// The next decimal number of a PNM header or ASCII body, skipping whitespace and `#` comments.
-fn pnm_number(bytes: &[u8], pos: &mut usize) -> Option<usize> {
+pub(crate) fn pnm_number(bytes: &[u8], pos: &mut usize) -> Option<usize> {
     loop {
         match bytes.get(*pos)? {
             b'#' => {

@@ -9,6 +9,7 @@
 use std::sync::Arc;
 
 use super::Lowerer;
+use crate::image_file::pnm_number;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{HeightFieldDesc, ShapeDesc};
 
@@ -186,26 +187,6 @@ fn pnm_heights(bytes: &[u8]) -> Result<Heights, String> {
         })
         .collect();
     Ok((w, h, heights))
-}
-
-/// The next decimal number of a PNM header or ASCII body, skipping whitespace and `#` comments.
-fn pnm_number(bytes: &[u8], pos: &mut usize) -> Option<usize> {
-    loop {
-        match bytes.get(*pos)? {
-            b'#' => {
-                while *bytes.get(*pos)? != b'\n' {
-                    *pos += 1;
-                }
-            }
-            c if c.is_ascii_whitespace() => *pos += 1,
-            _ => break,
-        }
-    }
-    let start = *pos;
-    while bytes.get(*pos).is_some_and(u8::is_ascii_digit) {
-        *pos += 1;
-    }
-    std::str::from_utf8(&bytes[start..*pos]).ok()?.parse().ok()
 }
 
 /// TGA: colour-mapped (1, 9: the index), true colour (2, 10: red and green) and grey (3, 11),

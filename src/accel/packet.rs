@@ -173,23 +173,9 @@ impl Bvh {
                         }
                     }
                 } else {
-                    // Nearer child first, judged by the first active ray along the axis that
-                    // separates the children most.
-                    let a = &self.nodes[n.first as usize];
-                    let b = &self.nodes[n.first as usize + 1];
-                    let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
-                    let cb = Vec3::from_array(b.min) + Vec3::from_array(b.max);
-                    let sep = (cb - ca).abs();
-                    let axis = if sep.x >= sep.y && sep.x >= sep.z {
-                        0
-                    } else if sep.y >= sep.z {
-                        1
-                    } else {
-                        2
-                    };
-                    let d = [rows[first].d.x.0[0], rows[first].d.y.0[0], rows[first].d.z.0[0]][axis];
-                    let a_first = (cb[axis] - ca[axis]) * d >= 0.0;
-                    let (near, far) = if a_first { (n.first, n.first + 1) } else { (n.first + 1, n.first) };
+                    // Nearer child first, judged by the first active ray.
+                    let d = Vec3::new(rows[first].d.x.0[0], rows[first].d.y.0[0], rows[first].d.z.0[0]);
+                    let (near, far) = self.near_far(n, d);
                     if sp < stack.len() {
                         stack[sp] = (far, first as u8, last as u8);
                         sp += 1;

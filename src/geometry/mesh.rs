@@ -113,6 +113,20 @@ impl MeshData {
     /// single-ray walk's `t` bit for bit (tests/properties.rs checks it on random meshes).
     #[inline(always)]
     pub fn nearest_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.walk_lanes::<L, false>(ray, t_min, t_max)
+    }
+
+    /// For shadow rays: a hit in `(t_min, t_max)` for each lane that has one, not necessarily
+    /// the nearest (pbrt's `IntersectP`). A lane stops at its first hit and the walk ends when
+    /// every active lane has stopped, so a blocked ray does not search on for a nearer face.
+    #[inline(always)]
+    pub fn first_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.walk_lanes::<L, true>(ray, t_min, t_max)
+    }
+
+    /// The walk behind `nearest_lanes` (`FIRST` false) and `first_lanes` (`FIRST` true).
+    #[inline(always)]
+    fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
         let finite = |v: &V3<L>, i: usize| v.x.get(i).is_finite() && v.y.get(i).is_finite() && v.z.get(i).is_finite();
         let active = L::mask_from_fn(|i| t_min.get(i) < t_max.get(i) && finite(&ray.o, i) && finite(&ray.d, i));
@@ -144,25 +158,20 @@ impl MeshData {
                             let y = ray.o.y + t * ray.d.y;
                             hit = L::and(hit, L::splat(self.floor).le(y));
                         }
-                        limit = L::select(hit, t, limit);
                         best = L::select(hit, t, best);
+                        if FIRST {
+                            // A lane that has hit is done: no node or face accepts -inf.
+                            limit = L::select(hit, L::splat(f32::NEG_INFINITY), limit);
+                            if !L::any(L::lt(L::splat(f32::NEG_INFINITY), limit)) {
+                                return best;
+                            }
+                        } else {
+                            limit = L::select(hit, t, limit);
+                        }
                     }
                 } else {
-                    // Nearer child first, judged by the first active lane's direction along the
-                    // axis that separates the children most (the order changes no result).
-                    let (a, b) = (&self.bvh.nodes[n.first as usize], &self.bvh.nodes[n.first as usize + 1]);
-                    let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
-                    let cb = Vec3::from_array(b.min) + Vec3::from_array(b.max);
-                    let sep = (cb - ca).abs();
-                    let axis = if sep.x >= sep.y && sep.x >= sep.z {
-                        0
-                    } else if sep.y >= sep.z {
-                        1
-                    } else {
-                        2
-                    };
-                    let a_first = (cb[axis] - ca[axis]) * dir[axis] >= 0.0;
-                    let (near, far) = if a_first { (n.first, n.first + 1) } else { (n.first + 1, n.first) };
+                    // Nearer child first, judged by the first active lane's direction.
+                    let (near, far) = self.bvh.near_far(n, dir);
                     if sp < stack.len() {
                         stack[sp] = far;
                         sp += 1;
@@ -177,6 +186,29 @@ impl MeshData {
             sp -= 1;
             node = stack[sp];
         }
+    }
+
+    /// A face hit by the object-space `ray` in `(t_min, t_max)`, the first found: `nearest`
+    /// for shadow rays, which need only whether there is one.
+    #[inline]
+    pub fn first(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
+        if !(t_min < t_max && ray.origin.is_finite() && ray.dir.is_finite()) {
+            return None;
+        }
+        let lanes = ray.lanes();
+        let mut found = None;
+        self.bvh.traverse(ray, t_max, |f, t_max| {
+            if found.is_some() {
+                return None;
+            }
+            let t = self.triangles[f as usize].hit(&lanes, t_min, t_max);
+            (t != MISS && self.above_floor(ray, t)).then(|| {
+                found = Some(t);
+                // No node accepts a limit of -inf: the walk ends.
+                f32::NEG_INFINITY
+            })
+        });
+        found
     }
 
     /// How many faces the object-space `ray` crosses at `t > 0` (the inside test's parity).
@@ -248,6 +280,20 @@ impl Mesh {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
         self.data.nearest(&self.object_ray(&o, &d, 0), t_min, t_max)
+    }
+
+    /// For shadow rays: `Shape::hit`, but each lane's first hit found rather than its nearest.
+    #[inline(never)]
+    pub fn first_hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        if L::WIDTH > 1 {
+            return self.data.first_lanes(&RayLanes { o, d, inv: d.recip() }, t_min, t_max);
+        }
+        L::from_fn(|i| {
+            let r = self.object_ray(&o, &d, i);
+            self.data.first(&r, t_min.get(i), t_max.get(i)).unwrap_or(MISS)
+        })
     }
 
     /// `face`'s hit re-solved in f64 (`--precision f64`): the triangle kernel on the ray
@@ -383,6 +429,30 @@ mod tests {
         for (i, d) in dirs.iter().enumerate() {
             let one = m.hit(&Ray::new(o, *d).lanes(), 0.0, f32::INFINITY);
             assert_eq!(t8.0[i].to_bits(), one.to_bits());
+        }
+    }
+
+    /// Shadow rays' first hits: a hit exactly where the nearest search finds one (inside the
+    /// same interval), on one lane and eight, from outside the cube and from inside it.
+    #[test]
+    fn first_hits_are_hits_where_nearest_ones_are() {
+        let m = placed(true);
+        for o in [Vec3::new(0.4, 0.4, -1.0), Vec3::new(0.5, 0.5, 3.5)] {
+            let dirs: [Vec3; 8] =
+                std::array::from_fn(|i| Vec3::new(0.3 * i as f32 - 1.0, 0.7 - 0.2 * i as f32, 1.0).normalize());
+            let wide = RayLanes::<F8>::new(V3::splat(o), V3::from_lanes(|i| dirs[i]));
+            for t_max in [0.5, 2.0, 4.0, f32::INFINITY] {
+                let near8 = m.hit(&wide, F8::splat(0.0), F8::splat(t_max));
+                let first8 = m.first_hit(&wide, F8::splat(0.0), F8::splat(t_max));
+                for (i, d) in dirs.iter().enumerate() {
+                    let lanes = Ray::new(o, *d).lanes();
+                    let (near, first) = (m.hit(&lanes, 0.0, t_max), m.first_hit(&lanes, 0.0, t_max));
+                    assert_eq!(near == MISS, first == MISS, "{o} {d} {t_max}");
+                    assert_eq!(near8.0[i] == MISS, first8.0[i] == MISS, "{o} {d} {t_max}");
+                    assert_eq!(near == MISS, near8.0[i] == MISS);
+                    assert!(first == MISS || (first >= near && first < t_max), "{first} {near}");
+                }
+            }
         }
     }
 

@@ -41,6 +41,19 @@ impl Scene {
         self.hit_prim_in(p, ray, L::splat(0.0), t_max)
     }
 
+    /// For shadow rays: a hit on `p` below `t_max` where there is one, `MISS` elsewhere, not
+    /// necessarily the nearest. Meshes stop at the first face found; every other kind answers
+    /// `hit_prim`.
+    #[inline(always)]
+    pub fn blocks_prim<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> L {
+        match p.kind {
+            ShapeKind::Mesh | ShapeKind::HeightField => {
+                self.meshes[p.index as usize].first_hit(ray, L::splat(0.0), t_max)
+            }
+            _ => self.hit_prim(p, ray, t_max),
+        }
+    }
+
     /// `hit_prim` in `(t_min, t_max)`. A CSG node answers its nearest surface; which leaf
     /// that is, `resolve` finds afterwards.
     #[inline(always)]
@@ -106,6 +119,13 @@ impl Scene {
         let t = (t != MISS).then_some(t);
         stats.count_test(p.kind, t.is_some());
         t
+    }
+
+    /// `blocks_prim` for one ray, counted in `stats`.
+    fn test_blocks(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
+        let hit = self.blocks_prim(p, &ray.lanes(), t_max) != MISS;
+        stats.count_test(p.kind, hit);
+        hit
     }
 
     /// The nearest hit with `0 < t < t_max`.
@@ -227,20 +247,19 @@ impl Scene {
     fn bounded_occluded(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
         for prim in self.unbounded.clone() {
             let p = &self.prims[prim as usize];
-            if p.casts_shadow && self.test_prim(p, ray, t_max, stats).is_some() {
+            if p.casts_shadow && self.test_blocks(p, ray, t_max, stats) {
                 return true;
             }
         }
         let mut blocked = false;
         stats.nodes_visited += self.accel.traverse(ray, t_max, |prim, t_max| {
             let p = &self.prims[prim as usize];
-            if blocked || !p.casts_shadow {
+            if blocked || !p.casts_shadow || !self.test_blocks(p, ray, t_max, stats) {
                 return None;
             }
-            let t = self.test_prim(p, ray, t_max, stats)?;
             blocked = true;
-            // A zero limit culls every remaining node and cell.
-            Some(t.min(0.0))
+            // No node or cell accepts a limit of -inf: the walk ends.
+            Some(f32::NEG_INFINITY)
         }) as u64;
         blocked
     }

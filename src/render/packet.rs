@@ -527,7 +527,7 @@ impl RowTest for BlockedRows<'_, '_> {
         if !p.casts_shadow {
             return;
         }
-        let t_new = prim_row(self.scene, prim, &self.rows[r], *t);
+        let t_new = self.scene.blocks_prim(p, &self.rows[r], *t);
         let hit = F8::and(t_new.lt(F8::splat(MISS)), self.active[r]);
         self.stats.tests[p.kind as usize] += 8;
         self.stats.hits[p.kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;

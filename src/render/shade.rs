@@ -28,17 +28,20 @@ pub struct LightSample<L: Lane> {
 pub struct LocalHit<L: Lane> {
     /// Pigment colour.
     pub color: V3<L>,
-    /// `1 − filter − transmit`, at least 0: light passing through does not also light it.
+    /// `1 − filter − transmit`, as POV-Ray weighs the surface's own colour: not clamped, so
+    /// `filter + transmit > 1` subtracts it, the contrast filter of POV-Ray's samples
+    /// (textures/pigments/transmitfx.pov, advanced/bwstripe.pov).
     pub opacity: L,
     /// Shading normal (after bumps), facing the viewer.
     pub normal: V3<L>,
     pub ray_dir: V3<L>,
 }
 
-/// `1 − filter − transmit`, at least 0.
+/// `1 − filter − transmit`, negative where they add up past 1 (measured against POV-Ray 3.7:
+/// `rgb <0.5, 0.25, 1> filter 1 transmit 0.5` over a background B shows `B·(C + 0.5) − 0.5·C`).
 #[inline(always)]
 pub fn opacity<L: Lane>(filter: L, transmit: L) -> L {
-    (L::splat(1.0) - filter - transmit).max(L::splat(0.0))
+    L::splat(1.0) - filter - transmit
 }
 
 /// The mirror direction of `ray_dir` about `normal`.

@@ -56,7 +56,8 @@ impl Internal {
     }
 
     /// The numbers `from_number` knows, for messages.
-    pub const NUMBERS: &'static str = "17 (f_ellipsoid), 45 (f_paraboloid), 47 (f_ph), 57 (f_r), 59 (f_ridged_mf), 60 (f_rounded_box), \
+    pub const NUMBERS: &'static str =
+        "17 (f_ellipsoid), 45 (f_paraboloid), 47 (f_ph), 57 (f_r), 59 (f_ridged_mf), 60 (f_rounded_box), \
                                        61 (f_sphere), 68 (f_superellipsoid), 69 (f_th), 70 (f_torus), 76 (f_noise3d)";
 
     /// How many parameters it takes, x, y and z included.

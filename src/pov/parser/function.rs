@@ -318,7 +318,11 @@ impl Parser<'_, '_> {
                     Some(ch) => Ok(Node::Shade(shade.clone(), ch, args)),
                     None => Err(Diag::new(
                         t.span,
-                        format!("expected a colour channel ({}) after `{word}(...).`, found {}", Channel::NAMES, t.describe()),
+                        format!(
+                            "expected a colour channel ({}) after `{word}(...).`, found {}",
+                            Channel::NAMES,
+                            t.describe()
+                        ),
                     )),
                 }
             }

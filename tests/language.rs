@@ -369,3 +369,68 @@ fn object_probes_match_povray() {
     let e = error("e_trace_n", "#declare S = sphere { 0, 1 }\n#declare A = trace(S, -5*z, z, Nope);");
     assert_eq!((e.line, e.col), (2, 32), "{e}");
 }
+
+/// Pattern and pigment functions (`function { pattern {..} }`, `function { pigment {..} }`)
+/// with the values POV-Ray 3.7 prints for the same calls (`#debug`): a pigment function's
+/// call is a colour, `.gray` is 0.297 r + 0.589 g + 0.114 b, a body reads one channel, a
+/// pattern function gives the pattern's value (checker 0/1, gradient wrapped, wood's wave).
+#[test]
+fn pattern_and_pigment_functions_match_povray() {
+    let out = debug(
+        "shade_functions",
+        "#declare P = function { pigment { color rgbft <0.2, 0.5, 0.9, 0.3, 0.1> } }\n\
+         #debug concat(vstr(5, P(1, 2, 3), \",\", 0, 4), \" \", str(P(0, 0, 0).gray, 0, 4), \" \", str(P(0, 0, 0).t, 0, 4), \"\\n\")\n\
+         #declare G = function { P(x, y, z).gray * 2 }\n\
+         #debug concat(str(G(0, 0, 0), 0, 4), \"\\n\")\n\
+         #declare K = function { pattern { checker } }\n\
+         #declare Gx = function { pattern { gradient x scale 2 } }\n\
+         #declare W = function { pattern { wood } }\n\
+         #debug concat(str(K(0.5, 0.5, 0.5), 0, 1), str(K(1.5, 0.5, 0.5), 0, 1), \" \", str(Gx(0.5, 0, 0), 0, 4), \" \", str(Gx(-0.5, 0, 0), 0, 4), \" \", str(W(0.3, 0.4, 0), 0, 4), \"\\n\")\n\
+         #declare Pm = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } } }\n\
+         #debug concat(vstr(3, Pm(0.5, 0, 0), \",\", 0, 4), \" \", vstr(2, u + 2 * v, \",\", 0, 1), \"\\n\")",
+    );
+    assert_eq!(
+        out,
+        "0.2000,0.5000,0.9000,0.3000,0.1000 0.4565 0.3000\n\
+         0.9130\n\
+         0.01.0 0.2500 0.7500 1.0000\n\
+         0.5000,0.2500,0.0000 1.0,2.0\n"
+    );
+    let e = error("e_shade_channel", "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z) + 1 }");
+    assert_eq!((e.line, e.col), (2, 25), "{e}");
+    assert!(e.message.contains("is a pigment function"), "{e}");
+    let e = error("e_shade_member", "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z).w }");
+    assert_eq!((e.line, e.col), (2, 36), "{e}");
+}
+
+/// `height_field { function W, H { F } }`: F sampled at x = i / (W − 1), y = j / (H − 1) with
+/// row 0 at the field's far edge (z = 1), values beyond [0, 1] wrapped (POV-Ray 3.7's `trace`
+/// on 3×3 fields: 0.1 + 0.5x + 0.3y is 0.4 at the near left corner; 2x − 0.5 is 0.5 everywhere).
+#[test]
+fn height_field_functions_sample_the_unit_square() {
+    let (scene, _) = load(
+        "hf_function",
+        "height_field { function 3, 3 { 0.1 + 0.5 * x + 0.3 * y } smooth }\n\
+         height_field { function 3, 3 { 2 * x - 0.5 } }\n\
+         height_field { function 2, 2 { pigment { rgb <1, 0.5, 0> } } }",
+    )
+    .unwrap();
+    let fields: Vec<_> = scene
+        .objects
+        .iter()
+        .filter_map(|o| match &o.shape {
+            ShapeDesc::HeightField { field, smooth, .. } => Some((field.clone(), *smooth)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(fields.len(), 3);
+    let (f, smooth) = &fields[0];
+    assert!(*smooth);
+    assert_eq!((f.width, f.height), (3, 3));
+    let near = |a: f32, b: f32| (a - b).abs() < 1e-4;
+    assert!(near(f.heights[0], 0.1) && near(f.heights[2], 0.6) && near(f.heights[6], 0.4), "{:?}", f.heights);
+    assert!(fields[1].0.heights.iter().all(|&h| near(h, 0.5)), "{:?}", fields[1].0.heights);
+    assert!(near(fields[2].0.heights[0], 0.5915), "{:?}", fields[2].0.heights);
+    let e = error("e_hf_size", "height_field { function 1, 3 { x } }");
+    assert_eq!((e.line, e.col), (1, 16), "{e}");
+}

@@ -531,3 +531,11 @@ fn image_maps_match_povray() {
 fn bump_maps_match_povray() {
     check_psnr("bump_maps", &scene("bump_maps"), 26.5);
 }
+
+/// Pattern and pigment functions: a pigment function's channels in function patterns (the
+/// woods samples' gamma macro, `average` entries without weights), `.gray`, pattern functions
+/// and a height field from a function image.
+#[test]
+fn pattern_and_pigment_functions_match_povray() {
+    check_psnr("functions_pigment", &scene("functions_pigment"), 35.0);
+}

@@ -8,8 +8,11 @@
 //! in place, never copied. A call of another function is inlined: its arguments are computed
 //! into registers once and its body is compiled with its parameters mapped onto them.
 
+use std::sync::Arc;
+
 use super::internal::Internal;
 use super::ops::{Binary, Unary};
+use super::shade::{Channel, Shade};
 use super::Node;
 
 /// Registers kept on the stack while running; a deeper function uses a heap buffer.
@@ -52,6 +55,13 @@ enum Instr {
         d: Reg,
         a: Reg,
         n: u16,
+    },
+    /// `d = s(registers a, a + 1, a + 2)`'s channel `ch`.
+    Shade {
+        s: Arc<Shade>,
+        ch: Channel,
+        d: Reg,
+        a: Reg,
     },
 }
 
@@ -129,6 +139,10 @@ impl Compiler {
                 let a = self.arguments(args, env);
                 self.code.push(Instr::Internal { f: *f, d, a, n: args.len() as u16 });
             }
+            Node::Shade(s, ch, args) => {
+                let a = self.arguments(args, env);
+                self.code.push(Instr::Shade { s: s.clone(), ch: *ch, d, a });
+            }
             Node::Call(f, args) => {
                 // The arguments stay in their registers while the inlined body runs; one
                 // that is a parameter as it is (`F(x, y, z)`) is read where it stands.
@@ -190,20 +204,24 @@ impl Program {
         let mut pc = 0;
         while let Some(instr) = self.code.get(pc) {
             pc += 1;
-            match *instr {
-                Instr::Const { d, v } => r[d as usize] = v,
-                Instr::Copy { d, a } => r[d as usize] = r[a as usize],
-                Instr::Unary { op, d, a } => r[d as usize] = op.apply(r[a as usize]),
-                Instr::Binary { op, d, a, b } => r[d as usize] = op.apply(r[a as usize], r[b as usize]),
-                Instr::JumpIfZero { c, to } => {
+            match instr {
+                &Instr::Const { d, v } => r[d as usize] = v,
+                &Instr::Copy { d, a } => r[d as usize] = r[a as usize],
+                &Instr::Unary { op, d, a } => r[d as usize] = op.apply(r[a as usize]),
+                &Instr::Binary { op, d, a, b } => r[d as usize] = op.apply(r[a as usize], r[b as usize]),
+                &Instr::JumpIfZero { c, to } => {
                     if r[c as usize] == 0.0 {
                         pc = to as usize;
                     }
                 }
-                Instr::Jump { to } => pc = to as usize,
-                Instr::Internal { f, d, a, n } => {
+                &Instr::Jump { to } => pc = to as usize,
+                &Instr::Internal { f, d, a, n } => {
                     let a = a as usize;
                     r[d as usize] = f.eval(&r[a..a + n as usize]);
+                }
+                Instr::Shade { s, ch, d, a } => {
+                    let a = *a as usize;
+                    r[*d as usize] = s.value(*ch, &r[a..a + 3]);
                 }
             }
         }

@@ -15,6 +15,12 @@ pub enum Internal {
     Ph,
     /// 57: the distance from the origin.
     R,
+    /// 59: `(H, lacunarity, octaves, offset, gain, noise)`: Musgrave's ridged multifractal
+    /// ("Texturing and Modeling", 2nd ed., ch. 16) over strahl's lattice noise mapped to
+    /// [-1, 1]; octave i weighs λ^(−i·H), each octave's ridge (offset − |n|)² is damped by
+    /// the previous one times `gain` (clamped to [0, 1]). The noise generator number is read
+    /// and not modelled (one noise).
+    RidgedMf,
     /// 60: `(radius, sx, sy, sz)`: the distance outside a box of half-sizes s with its edges
     /// rounded by `radius`; inside, `-radius` (POV-Ray subtracts a further 1e-6 everywhere).
     RoundedBox,
@@ -38,6 +44,7 @@ impl Internal {
             45 => Internal::Paraboloid,
             47 => Internal::Ph,
             57 => Internal::R,
+            59 => Internal::RidgedMf,
             60 => Internal::RoundedBox,
             61 => Internal::Sphere,
             68 => Internal::Superellipsoid,
@@ -49,7 +56,8 @@ impl Internal {
     }
 
     /// The numbers `from_number` knows, for messages.
-    pub const NUMBERS: &'static str = "17 (f_ellipsoid), 45 (f_paraboloid), 47 (f_ph), 57 (f_r), 60 (f_rounded_box), \
+    pub const NUMBERS: &'static str =
+        "17 (f_ellipsoid), 45 (f_paraboloid), 47 (f_ph), 57 (f_r), 59 (f_ridged_mf), 60 (f_rounded_box), \
                                        61 (f_sphere), 68 (f_superellipsoid), 69 (f_th), 70 (f_torus), 76 (f_noise3d)";
 
     /// How many parameters it takes, x, y and z included.
@@ -60,6 +68,7 @@ impl Internal {
             Internal::Torus | Internal::Superellipsoid => 2,
             Internal::Ellipsoid => 3,
             Internal::RoundedBox => 4,
+            Internal::RidgedMf => 6,
         }
     }
 
@@ -86,6 +95,7 @@ impl Internal {
                 let (qx, qy, qz) = (q(x, p(4)), q(y, p(5)), q(z, p(6)));
                 (qx * qx + qy * qy + qz * qz).sqrt() - r - 1e-6
             }
+            Internal::RidgedMf => ridged_mf([x, y, z], p(3), p(4), p(5), p(6), p(7)),
             Internal::Sphere => (x * x + y * y + z * z).sqrt() - p(3),
             Internal::Superellipsoid => {
                 let (e, n) = (p(3), p(4));
@@ -100,4 +110,28 @@ impl Internal {
             Internal::Noise3d => f64::from(crate::shading::noise::noise(glam::Vec3::new(x as f32, y as f32, z as f32))),
         }
     }
+}
+
+/// Most octaves `f_ridged_mf` sums (each is one noise lookup).
+const MAX_OCTAVES: f64 = 32.0;
+
+/// Musgrave's ridged multifractal at `p` (see `Internal::RidgedMf`).
+fn ridged_mf(p: [f64; 3], h: f64, lacunarity: f64, octaves: f64, offset: f64, gain: f64) -> f64 {
+    let noise = |q: [f64; 3]| {
+        let n = crate::shading::noise::noise(glam::Vec3::new(q[0] as f32, q[1] as f32, q[2] as f32));
+        2.0 * f64::from(n) - 1.0
+    };
+    let octaves = if octaves.is_finite() { octaves.clamp(0.0, MAX_OCTAVES) as usize } else { 0 };
+    let mut q = p;
+    let mut signal = offset - noise(q).abs();
+    signal *= signal;
+    let mut result = signal;
+    for i in 1..octaves {
+        q = q.map(|c| c * lacunarity);
+        let weight = (signal * gain).clamp(0.0, 1.0);
+        signal = offset - noise(q).abs();
+        signal = signal * signal * weight;
+        result += signal * lacunarity.powf(-(i as f64) * h);
+    }
+    result
 }

@@ -9,12 +9,15 @@
 mod compile;
 pub mod internal;
 mod ops;
+pub mod shade;
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 pub use compile::Program;
 pub use internal::Internal;
 pub use ops::{Binary, Unary};
+pub use shade::{Channel, Shade};
 
 /// Most parameters a function may take, as in POV-Ray 3.7.
 pub const MAX_PARAMS: usize = 56;
@@ -38,6 +41,8 @@ pub enum Node {
     /// A call of another user function, inlined when compiled: the arguments are computed
     /// once and stand for the callee's parameters.
     Call(Rc<Function>, Vec<Node>),
+    /// One channel of a pattern or pigment function at the point of its three arguments.
+    Shade(Arc<Shade>, Channel, Vec<Node>),
 }
 
 /// A declared function: its parameter names (for messages) and body.
@@ -47,6 +52,9 @@ pub struct Function {
     pub body: Node,
     /// How deeply calls nest inside `body` (0 without calls).
     pub depth: usize,
+    /// A pigment function's pigment: a call gives its colour, and a body must pick a
+    /// channel of it (`body` reads its gray).
+    pub color: Option<Arc<Shade>>,
 }
 
 impl Function {
@@ -54,13 +62,23 @@ impl Function {
     /// `MAX_CALL_DEPTH`.
     pub fn new(params: Vec<String>, body: Node) -> Option<Function> {
         let depth = body.call_depth();
-        (depth <= MAX_CALL_DEPTH).then(|| Function { params, body: body.folded(), depth })
+        (depth <= MAX_CALL_DEPTH).then(|| Function { params, body: body.folded(), depth, color: None })
     }
 
     /// The function's value, walking the tree (for parse-time calls and as the compiler's
     /// slow twin in tests). Missing arguments read as 0.
     pub fn eval(&self, args: &[f64]) -> f64 {
         self.body.eval(args)
+    }
+
+    /// `function { pattern { ... } }` (`color` false) or `function { pigment { ... } }` of
+    /// x, y, z.
+    pub fn shade(shade: Shade, color: bool) -> Function {
+        let shade = Arc::new(shade);
+        let channel = if color { Channel::Gray } else { Channel::Pattern };
+        let body = Node::Shade(shade.clone(), channel, (0..3).map(Node::Param).collect());
+        let params = ["x", "y", "z"].iter().map(|s| s.to_string()).collect();
+        Function { params, body, depth: 0, color: color.then_some(shade) }
     }
 
     pub fn compile(&self) -> Program {
@@ -119,6 +137,10 @@ impl Node {
                 let v: Vec<f64> = args.iter().map(|a| a.eval(p)).collect();
                 f.eval(&v)
             }
+            Node::Shade(s, ch, args) => {
+                let v: Vec<f64> = args.iter().map(|a| a.eval(p)).collect();
+                s.value(*ch, &v)
+            }
         }
     }
 
@@ -128,7 +150,7 @@ impl Node {
             Node::Unary(_, a) => a.call_depth(),
             Node::Binary(_, a, b) => a.call_depth().max(b.call_depth()),
             Node::Cond(c, a, b) => c.call_depth().max(a.call_depth()).max(b.call_depth()),
-            Node::Internal(_, args) => args.iter().map(Node::call_depth).max().unwrap_or(0),
+            Node::Internal(_, args) | Node::Shade(_, _, args) => args.iter().map(Node::call_depth).max().unwrap_or(0),
             Node::Call(f, args) => (f.depth + 1).max(args.iter().map(Node::call_depth).max().unwrap_or(0)),
         }
     }
@@ -167,6 +189,13 @@ impl Node {
                         Node::Const(v) => Node::Const(*v),
                         _ => Node::Call(f.clone(), args),
                     },
+                }
+            }
+            Node::Shade(s, ch, args) => {
+                let args: Vec<Node> = args.iter().map(Node::folded).collect();
+                match constants(&args) {
+                    Some(v) => Node::Const(s.value(*ch, &v)),
+                    None => Node::Shade(s.clone(), *ch, args),
                 }
             }
         }

@@ -277,15 +277,47 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
             let slack = p_render.max_abs() * L::splat(pig.slack_per_render);
             RgbftLanes::select(checker_lanes(p, slack), RgbftLanes::splat(c[1]), RgbftLanes::splat(c[0]))
         }
-        PigmentPattern32::Wood(map) => {
-            let p = p_render.transform_point(&pig.pattern_from_render);
-            let p = match &pig.turbulence {
-                Some(t) => wood_cycloidal(p, t, q.max_octaves),
-                None => p,
-            };
-            map.lookup_lanes(wood_lanes(p))
-        }
+        PigmentPattern32::Wood(map) => map.lookup_lanes(wood_value(pig, p_render, q)),
         _ => eval_composite_lanes(pig, p_render, q),
+    }
+}
+
+/// Wood's ring value at a render-space point (its turbulence is cycloidal, not a warp).
+#[inline(always)]
+fn wood_value<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuality) -> L {
+    let p = p_render.transform_point(&pig.pattern_from_render);
+    let p = match &pig.turbulence {
+        Some(t) => wood_cycloidal(p, t, q.max_octaves),
+        None => p,
+    };
+    wood_lanes(p)
+}
+
+/// POV-Ray's `.gray` of a colour: 0.297 red + 0.589 green + 0.114 blue (measured with
+/// `#debug` on `function { pigment { rgb <0.2, 0.5, 0.9> } }(0, 0, 0).gray` = 0.4565).
+pub fn gray(c: &Rgbft) -> f32 {
+    0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z
+}
+
+/// The pattern value a pigment looks its colour up by, at a render-space point: what
+/// `function { pattern { ... } }` gives (checker 0 or 1, a list pattern its cell index, any
+/// other pattern its shaped value in [0, 1]); a pigment without a pattern gives its gray.
+pub fn pattern_value(pig: &Pigment, p_render: Vec3, q: PatternQuality) -> f32 {
+    let p = V3::from_vec3(p_render);
+    match &pig.pattern {
+        PigmentPattern32::Checker(_) => {
+            let slack = p.max_abs() * pig.slack_per_render;
+            if checker_lanes(pig.pattern_point(p, q), slack) {
+                1.0
+            } else {
+                0.0
+            }
+        }
+        PigmentPattern32::Wood(_) => wood_value(pig, p, q),
+        PigmentPattern32::Mapped(pat, _) | PigmentPattern32::PigmentMap(pat, _) | PigmentPattern32::List(pat, _) => {
+            pat.value_lanes(pig.pattern_point(p, q), q.max_octaves)
+        }
+        _ => gray(&eval_pigment(pig, p_render, q)),
     }
 }
 

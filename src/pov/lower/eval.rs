@@ -76,14 +76,19 @@ impl Lowerer<'_> {
 
     /// `v.x` and friends; `index` counts (x, y, z, filter, transmit).
     fn member(&self, inner: &Expr, index: usize) -> PResult<Value> {
-        let names = ["x", "y", "z", "t", "transmit"];
+        let names = ["x", "y", "z", "t", "transmit", "gray"];
         let comps = match self.eval(inner)? {
+            // `.gray`: 0.297 red + 0.589 green + 0.114 blue, as `shading::pigment::gray`.
+            Value::Color(c) if index == 5 => return Ok(Value::Float(0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z)),
+            Value::Vector(c) if index == 5 && c.len() >= 3 => {
+                return Ok(Value::Float(0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]))
+            }
             Value::Vector(c) => c,
             Value::Color(c) => vec![c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit],
             other => {
                 return Err(Diag::new(
                     inner.span,
-                    format!("`.{}` needs a vector or color, found {}", names[index.min(4)], other.kind_name()),
+                    format!("`.{}` needs a vector or color, found {}", names[index.min(5)], other.kind_name()),
                 ))
             }
         };
@@ -92,7 +97,7 @@ impl Lowerer<'_> {
                 inner.span,
                 format!(
                     "`.{}` needs a vector of at least {} components, found {}",
-                    names[index.min(4)],
+                    names[index.min(5)],
                     index + 1,
                     comps.len()
                 ),

@@ -165,7 +165,22 @@ impl Lowerer<'_> {
                 let m = DMat4::from_axis_angle(axis.normalize(), f(2)?.to_radians());
                 Ok(vector(m.transform_vector3(v(0)?)))
             })(),
-            "vturbulence" => Err(Diag::unmodelled(e.span, "`vturbulence` is not supported yet")),
+            // `vturbulence(Lambda, Omega, Octaves, A)`: the turbulence displacement at A, as
+            // the `turbulence` warp computes it (one shared noise, `shading::noise`).
+            "vturbulence" => (|| {
+                let octaves = f(2)?;
+                if !(0.0..=64.0).contains(&octaves) {
+                    return Err(Diag::new(args[2].span, "vturbulence takes 0 to 64 octaves"));
+                }
+                let t = crate::shading::noise::TurbulenceF32 {
+                    amount: glam::Vec3::ONE,
+                    octaves: octaves as u32,
+                    omega: f(1)? as f32,
+                    lambda: f(0)? as f32,
+                };
+                let d = crate::shading::noise::turbulence(v(3)?.as_vec3(), &t, None);
+                Ok(vector(d.as_dvec3()))
+            })(),
             _ => return None,
         };
         Some(result)

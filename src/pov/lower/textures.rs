@@ -85,7 +85,7 @@ impl Lowerer<'_> {
 
     /// A pigment block: it starts from the default pigment (POV-Ray: `pigment { scale 2 }`
     /// after `#default { pigment { Red } }` is red), or from the declared pigment it names.
-    pub(super) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
+    pub(crate) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
         let (mut pattern, mut map, mut turb, mut transform) = pigment_state(self.default_texture.pigment.clone());
         let mut own_transform = Transform::default();
         let mut pigment_map: Option<(Vec<(f64, PigmentDesc)>, Span)> = None;

@@ -99,6 +99,7 @@ fn member_index(word: &str) -> Option<usize> {
         "z" | "blue" => 2,
         "t" | "filter" => 3,
         "transmit" => 4,
+        "gray" | "grey" => 5,
         _ => return None,
     })
 }
@@ -398,6 +399,9 @@ impl Parser<'_, '_> {
             "x" => Some(ExprKind::Vector3([1.0, 0.0, 0.0])),
             "y" => Some(ExprKind::Vector3([0.0, 1.0, 0.0])),
             "z" => Some(ExprKind::Vector3([0.0, 0.0, 1.0])),
+            // POV-Ray's 2-D unit vectors `u` = <1, 0> and `v` = <0, 1> (3.3.1.4.2).
+            "u" => Some(ExprKind::Value(Rc::new(Value::Vector(vec![1.0, 0.0])))),
+            "v" => Some(ExprKind::Value(Rc::new(Value::Vector(vec![0.0, 1.0])))),
             "pi" => Some(ExprKind::Number(std::f64::consts::PI)),
             "true" | "yes" | "on" => Some(ExprKind::Number(1.0)),
             "false" | "no" | "off" => Some(ExprKind::Number(0.0)),
@@ -467,8 +471,10 @@ impl Parser<'_, '_> {
         self.bump();
         if let Value::Function(f) = &value {
             if self.peek_more().kind == TokenKind::Punct('(') {
-                let v = self.call_function(f.clone(), word, span)?;
-                return Ok(Expr { kind: ExprKind::Number(v), span });
+                return Ok(match self.call_function(f.clone(), word, span)? {
+                    Value::Float(v) => Expr { kind: ExprKind::Number(v), span },
+                    v => Expr { kind: ExprKind::Value(Rc::new(v)), span },
+                });
             }
         }
         if let Value::Unmodelled(u) = &value {

@@ -1,12 +1,13 @@
 //! `function [(params)] { body }`: the body read straight into a `function::Node` tree, names
 //! resolved as they are read (parameters, declared floats and functions, internal functions,
 //! POV-Ray's float functions), with a located error for an unknown name or a wrong number of
-//! arguments. Special bodies (`pattern`, `pigment`, `transform`, `spline`) are not modelled.
+//! arguments. `pattern { }` and `pigment { }` bodies are lowered at once into the function's
+//! `Shade`; `transform` and `spline` bodies are not modelled.
 
 use std::rc::Rc;
 
 use super::Parser;
-use crate::function::{Binary, Function, Internal, Node, Unary, MAX_PARAMS};
+use crate::function::{Binary, Channel, Function, Internal, Node, Shade, Unary, MAX_PARAMS};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
@@ -48,10 +49,13 @@ impl Parser<'_, '_> {
         }
         self.open_block("function", kw)?;
         if let Some(word) = self.peek_ident() {
-            if matches!(&*word, "pattern" | "pigment" | "transform" | "spline") {
+            if matches!(&*word, "pattern" | "pigment") {
+                return self.shade_function(&word, kw);
+            }
+            if matches!(&*word, "transform" | "spline") {
                 return Err(Diag::unmodelled(
                     self.peek().span,
-                    format!("`function {{ {word} {{ ... }} }}` is not supported yet (only float expressions)"),
+                    format!("`function {{ {word} {{ ... }} }}` is not supported yet (float, pattern and pigment functions are)"),
                 ));
             }
             if &*word == "internal" && !named {
@@ -82,7 +86,25 @@ impl Parser<'_, '_> {
         let params: Vec<String> =
             ["x", "y", "z"].iter().map(|s| s.to_string()).chain((0..f.arity() - 3).map(|i| format!("P{i}"))).collect();
         let body = Node::Internal(f, (0..f.arity() as u16).map(Node::Param).collect());
-        Ok(Function { params, body, depth: 0 })
+        Ok(Function { params, body, depth: 0, color: None })
+    }
+
+    /// `pattern { ... } }` or `pigment { ... } }` of a function at `kw`: the pigment lowered
+    /// now, once, into the function's one `Shade`. A pattern block is read as a pigment's items
+    /// (the pattern and its modifiers); its value is the pattern's, not a colour.
+    fn shade_function(&mut self, word: &str, kw: Span) -> PResult<Function> {
+        let ast = if word == "pigment" {
+            self.pigment()?
+        } else {
+            let at = self.bump().span;
+            self.open_block("pattern", at)?;
+            let items = self.pigment_items(false)?;
+            let end = self.close_block("pattern", at)?;
+            crate::pov::ast::Pigment { items, span: at.to(end) }
+        };
+        let desc = self.low.pigment(&ast)?;
+        self.close_block("function", kw)?;
+        Ok(Function::shade(Shade::new(&desc), word == "pigment"))
     }
 
     /// A body expression: `?:` lowest, then `|`, `&`, comparisons, `+ -`, `* /`, `^`, signs.
@@ -273,7 +295,36 @@ impl Parser<'_, '_> {
                 if f.depth + 1 > crate::function::MAX_CALL_DEPTH {
                     return Err(Diag::new(span, "function calls nest too deeply"));
                 }
-                Ok(Node::Call(f, args))
+                let Some(shade) = &f.color else {
+                    return Ok(Node::Call(f, args));
+                };
+                // A pigment function's call is a colour: the body reads one channel of it.
+                if !self.is_punct('.') {
+                    return Err(Diag::new(
+                        span,
+                        format!(
+                            "`{word}` is a pigment function, its value a colour: pick a channel ({})",
+                            Channel::NAMES
+                        ),
+                    ));
+                }
+                self.bump();
+                let t = self.bump();
+                let channel = match &t.kind {
+                    TokenKind::Ident(w) => Channel::named(w),
+                    _ => None,
+                };
+                match channel {
+                    Some(ch) => Ok(Node::Shade(shade.clone(), ch, args)),
+                    None => Err(Diag::new(
+                        t.span,
+                        format!(
+                            "expected a colour channel ({}) after `{word}(...).`, found {}",
+                            Channel::NAMES,
+                            t.describe()
+                        ),
+                    )),
+                }
             }
             Value::Vector(c) if self.is_punct('.') => {
                 self.bump();
@@ -322,7 +373,8 @@ impl Parser<'_, '_> {
     }
 
     /// `F(a, b, c)` in an ordinary expression, `F` a declared function: its value now.
-    pub(super) fn call_function(&mut self, f: Rc<Function>, word: &str, span: Span) -> PResult<f64> {
+    /// A pigment function's value is its colour.
+    pub(super) fn call_function(&mut self, f: Rc<Function>, word: &str, span: Span) -> PResult<Value> {
         let open = self.expect_punct('(', &format!("after `{word}`"))?;
         self.enter(open)?;
         let mut args = Vec::new();
@@ -348,7 +400,10 @@ impl Parser<'_, '_> {
                 ),
             ));
         }
-        Ok(f.eval(&args))
+        Ok(match &f.color {
+            Some(shade) => Value::Color(crate::pov::value::color_from(&shade.color(&args))),
+            None => Value::Float(f.eval(&args)),
+        })
     }
 }
 

@@ -20,7 +20,7 @@ const MESH2_SECTIONS: &[&str] =
 /// Image types a height field reads.
 pub const HF_TYPES: &[&str] = &["png", "pgm", "ppm", "tga", "gif", "pot"];
 /// Types POV-Ray reads that strahl does not.
-const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "jpeg", "sys", "tiff", "function"];
+const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "jpeg", "sys", "tiff"];
 
 /// Per-triangle features read but not modelled, for one warning each.
 #[derive(Default)]
@@ -244,6 +244,17 @@ impl Parser<'_, '_> {
 
     /// `height_field { TYPE "file" [smooth] [water_level w] ... }`, up to the modifiers.
     pub(super) fn height_field_body(&mut self, kw: Span) -> PResult<ShapeDesc> {
+        if self.peek_ident().as_deref() == Some("function") {
+            // `function W, H { BODY }`: the function sampled on a W × H grid.
+            let at = self.bump().span;
+            let w = self.expr()?;
+            self.eat_punct(',');
+            let h = self.expr()?;
+            let size = (self.low.float(&w)?, self.low.float(&h)?);
+            let f = self.function_after(at)?;
+            let (smooth, water_level) = self.height_field_options()?;
+            return self.low.function_height_field(&f, size, at.to(h.span), smooth, water_level);
+        }
         let format = match self.peek_ident() {
             Some(w) if HF_TYPES.contains(&&*w) => {
                 self.bump();
@@ -292,6 +303,13 @@ impl Parser<'_, '_> {
                 }
             }
         };
+        let (smooth, water_level) = self.height_field_options()?;
+        let _ = kw;
+        self.low.height_field(&format, &name, name_expr.span, smooth, water_level)
+    }
+
+    /// `smooth`, `water_level w` (and the unmodelled `gamma`, `premultiplied`) after the image.
+    fn height_field_options(&mut self) -> PResult<(bool, f64)> {
         let (mut smooth, mut water_level) = (false, 0.0);
         loop {
             match self.peek_ident().as_deref() {
@@ -312,8 +330,7 @@ impl Parser<'_, '_> {
                 _ => break,
             }
         }
-        let _ = kw;
-        self.low.height_field(&format, &name, name_expr.span, smooth, water_level)
+        Ok((smooth, water_level))
     }
 
     /// A section's entry count, the first thing in it.

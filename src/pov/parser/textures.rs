@@ -219,7 +219,7 @@ impl Parser<'_, '_> {
     }
 
     /// A pigment's items, up to its `}` (or the `]` of a `pigment_map` entry).
-    fn pigment_items(&mut self, in_entry: bool) -> PResult<Vec<PigmentItem>> {
+    pub(super) fn pigment_items(&mut self, in_entry: bool) -> PResult<Vec<PigmentItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(PIGMENT)? {
             items.push(PigmentItem::Base(b));
@@ -638,7 +638,17 @@ impl Parser<'_, '_> {
         let mut out = Vec::new();
         while !self.at_block_end() {
             let open = self.expect_punct('[', "to start a map entry")?;
-            let value = self.expr()?;
+            // `average`'s entries may leave out their weight (`[function { x } color_map
+            // {..}]`), which is then 1: POV-Ray 3.7 renders three such entries as equal thirds.
+            let weightless = match self.peek_ident() {
+                Some(w) => PATTERNS.contains(&&*w) || &*w == T::KEYWORD,
+                None => false,
+            };
+            let value = if weightless {
+                Expr { kind: crate::pov::ast::ExprKind::Number(1.0), span: open }
+            } else {
+                self.expr()?
+            };
             self.eat_punct(',');
             let inner = match self.peek_ident().as_deref() {
                 Some(w) if w == T::KEYWORD => item(self)?,

@@ -1968,3 +1968,18 @@ fn uv_mapping_is_read_and_noted_as_not_modelled() {
     .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(s.unmodelled.iter().filter(|f| f.name == "uv_mapping").count(), 1);
 }
+
+/// `checker rgb <..> rgb <..>`: the second `rgb` starts the second colour (POV-Ray 3.7 renders
+/// red and blue checks), while `red`, `green`, ... after a colour still modify it.
+#[test]
+fn a_second_rgb_vector_starts_the_next_colour() {
+    let s = load_text("checker_rgb", "plane { z, 0 pigment { checker rgb <1, 0, 0> rgb <0, 0, 1> } }").unwrap();
+    let PigmentPattern::Checker(a, b) = &s.objects[0].texture.pigment.pattern else {
+        panic!("{:?}", s.objects[0].texture.pigment.pattern)
+    };
+    assert_eq!((a.rgb, b.rgb), (DVec3::X, DVec3::Z));
+    let s = load_text("checker_mod", "plane { z, 0 pigment { checker rgb <1, 0, 0> green 1, rgbf <0, 0, 1, 0.5> } }")
+        .unwrap();
+    let PigmentPattern::Checker(a, b) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert_eq!((a.rgb, b.rgb, b.filter), (DVec3::new(1.0, 1.0, 0.0), DVec3::Z, 0.5));
+}

@@ -280,6 +280,13 @@ fn transparent_shadows_match_povray() {
     check_psnr("shadows", &scene("shadows"), 35.0);
 }
 
+/// Interior fading: fade_distance, fade_power (1, 2 and the exponential 1001), fade_color, a
+/// declared interior modified, on spheres, a box and a cylinder, and their coloured shadows.
+#[test]
+fn interior_fade_matches_povray() {
+    check_psnr("interior_fade", &scene("interior_fade"), 35.0);
+}
+
 #[test]
 fn legacy_scene_writes_linear_values_like_povray() {
     check_psnr("legacy", &scene("legacy"), 35.0);

@@ -496,6 +496,9 @@ pub struct Texture {
 pub enum InteriorItem {
     Base(Expr),
     Ior(Expr),
+    FadeDistance(Expr),
+    FadePower(Expr),
+    FadeColor(Expr),
 }
 
 #[derive(Clone, Debug, PartialEq)]

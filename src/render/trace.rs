@@ -197,6 +197,12 @@ impl<'a> Tracer<'a> {
                 color += transmit * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
             }
         }
+        if !entering {
+            // Leaving the object: what is seen here travelled through it from the ray's origin.
+            if let Some(fade) = &material.fade {
+                color *= fade.attenuation((p - ray.origin).length());
+            }
+        }
         color
     }
 
@@ -352,15 +358,19 @@ impl<'a> Tracer<'a> {
                 return pass;
             };
             let p = ray.at(hit.t);
+            let n = scene.normal_at(hit.shape, p);
             if scene.casts_shadow(hit.shape) {
                 let material = &scene.materials[scene.material_of(hit.shape) as usize];
                 let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
                 pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
+                // Leaving a fading object: the light crossed it since the last surface.
+                if let (Some(fade), true) = (&material.fade, n.dot(ray.dir) > 0.0) {
+                    pass *= fade.attenuation(hit.t * ray.dir.length());
+                }
                 if pass.max_element() < ADC_BAILOUT {
                     return Vec3::ZERO;
                 }
             }
-            let n = scene.normal_at(hit.shape, p);
             let next = offset_origin(p, n, ray.dir);
             t_max = shadow_t_max(next, shadow.light);
             ray = Ray::new(next, ray.dir);

@@ -95,21 +95,18 @@ impl Atmosphere {
     /// Fogs combine as POV-Ray 3.7 renders them (measured with two fogs and with transmit):
     /// what is behind is multiplied by every fog's transmittance, and each fog adds its colour
     /// times its own opacity, so layers add up rather than cover each other. A fog colour's
-    /// filter + transmit is a floor on its transmittance (`transmit 0.3`: at least 30% of
-    /// what is behind shows), the filtered part tinted by the fog colour.
+    /// transmit is a floor on its transmittance `T` (`transmit 0.3`: at least 30% of what is
+    /// behind shows) and its filter tints what passes: behind · T · (1 − filter + filter · C)
+    /// + (1 − T) · C (fitted to POV-Ray 3.7 to the unit in nine filter/transmit/distance
+    /// cases over a coloured object).
     pub fn along(&self, origin: Vec3, dir: Vec3, depth: f32, color: Vec3) -> Vec3 {
         let mut passed = Vec3::ONE;
         let mut added = Vec3::ZERO;
         for fog in &self.fogs {
-            let f = fog.transmittance(origin, dir, depth);
-            let floor = (fog.color.filter + fog.color.transmit).min(1.0);
-            let (att, through) = if f >= floor {
-                (f, Vec3::splat(f))
-            } else {
-                (floor, Vec3::splat(fog.color.transmit) + fog.color.rgb * fog.color.filter)
-            };
-            passed *= through;
-            added += fog.color.rgb * (1.0 - att);
+            let t = fog.transmittance(origin, dir, depth).max(fog.color.transmit.min(1.0));
+            let filter = fog.color.filter;
+            passed *= t * (Vec3::splat(1.0 - filter) + fog.color.rgb * filter);
+            added += fog.color.rgb * (1.0 - t);
         }
         let mut color = color * passed + added;
         for rainbow in &self.rainbows {

@@ -403,7 +403,7 @@ impl Scene {
         // A bounded list: a scene of a million different looks compares each object with
         // MATERIAL_CACHE entries at most and shares none, as before.
         if self.material_cache.len() < MATERIAL_CACHE {
-            self.material_cache.push((object.texture.clone(), object.interior, object.light_group, index));
+            self.material_cache.push((object.texture.clone(), object.interior.clone(), object.light_group, index));
         }
         index
     }

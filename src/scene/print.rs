@@ -228,7 +228,11 @@ fn object(s: &mut String, o: &ObjectDesc) {
     }
     let _ = write!(s, "\n    ");
     finish(s, &t.finish);
-    let _ = write!(s, "\n  }}\n  interior {{ ior {} }}\n", num(o.interior.ior));
+    let _ = write!(s, "\n  }}\n  interior {{ ior {}", num(o.interior.ior));
+    if let Some(f) = &o.interior.fade {
+        let _ = write!(s, " fade_distance {} fade_power {} fade_color {}", num(f.distance), num(f.power), vec(f.color));
+    }
+    let _ = writeln!(s, " }}");
     let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix).trim_start());
 }
 

@@ -16,7 +16,7 @@ render() {
     echo "wrote $out/$2.png"
 }
 render "$root/scenes/seed.pov" seed
-for s in flat reflection refraction shadows legacy gamma22 noversion cones tori csg; do
+for s in flat reflection refraction shadows interior_fade legacy gamma22 noversion cones tori csg; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in quadrics; do

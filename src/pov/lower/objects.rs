@@ -382,7 +382,7 @@ impl Lowerer<'_> {
                     leaf.textured = true;
                 }
                 if let (false, Some(int)) = (leaf.has_interior, &interior) {
-                    leaf.desc.interior = *int;
+                    leaf.desc.interior = int.clone();
                     leaf.has_interior = true;
                 }
             });

@@ -310,7 +310,7 @@ fn unmodelled_features_are_noted_once_each_and_the_scene_loads() {
         sphere { 2, 1 photons { target } radiosity { importance 0.5 } interior { media { } } }";
     let (scene, warnings) = lower(text).unwrap();
     let names: Vec<&str> = scene.unmodelled.iter().map(|f| f.name.as_str()).collect();
-    assert_eq!(names, ["radiosity", "photons", "media", "caustics", "interior fade_power", "no_image"]);
+    assert_eq!(names, ["radiosity", "photons", "media", "caustics", "no_image"]);
     assert_eq!(warnings.len(), names.len(), "{warnings:?}");
     assert!(warnings[0].message.contains("`radiosity` is not modelled"), "{}", warnings[0].message);
     assert_eq!((scene.unmodelled[0].at.line, scene.unmodelled[0].at.col), (2, 43));

@@ -11,7 +11,7 @@ use crate::pov::ast::{
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    Color, ColorMapEntry, FinishDesc, InteriorDesc, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
+    Color, ColorMapEntry, FinishDesc, FadeDesc, InteriorDesc, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
     PigmentPattern, TextureDesc, Transform, Turbulence, Warp, Wave,
 };
 
@@ -590,10 +590,17 @@ impl Lowerer<'_> {
 
     pub(super) fn interior(&mut self, i: &Interior) -> PResult<InteriorDesc> {
         let mut out = InteriorDesc::default();
+        // POV-Ray's defaults: distance and power 0 (no fading), colour black.
+        let mut fade = FadeDesc { distance: 0.0, power: 0.0, color: DVec3::ZERO };
         for item in &i.items {
             match item {
                 InteriorItem::Base(e) => match self.declared(e)? {
-                    Some(Value::Interior(base)) => out = *base,
+                    Some(Value::Interior(base)) => {
+                        out = base.clone();
+                        if let Some(f) = &base.fade {
+                            fade = **f;
+                        }
+                    }
                     Some(other) => return Err(other.wrong_kind(e.span, "a declared interior")),
                     None => return Err(Diag::new(e.span, "expected a declared interior")),
                 },
@@ -604,8 +611,13 @@ impl Lowerer<'_> {
                     }
                     out.ior = ior;
                 }
+                InteriorItem::FadeDistance(e) => fade.distance = self.float(e)?,
+                InteriorItem::FadePower(e) => fade.power = self.float(e)?,
+                InteriorItem::FadeColor(e) => fade.color = self.color(e)?.rgb,
             }
         }
+        // Off while either is 0, as POV-Ray documents.
+        out.fade = (fade.distance != 0.0 && fade.power != 0.0).then(|| Box::new(fade));
         Ok(out)
     }
 }

@@ -143,6 +143,12 @@ impl Parser<'_, '_> {
             items.push(ColorItem { key: ColorKey::Base, span: value.span, value });
         }
         while let Some(key) = self.more_ident().as_deref().and_then(color_key) {
+            // A second whole vector (`rgb <..> rgb <..>`) starts the next colour, as in
+            // `checker rgb <1, 0, 0> rgb <0, 0, 1>`; single components modify this one.
+            let whole = matches!(key, ColorKey::Rgb | ColorKey::Rgbf | ColorKey::Rgbt | ColorKey::Rgbft);
+            if whole && !items.is_empty() {
+                break;
+            }
             let key_span = self.bump().span;
             let value = self.expr()?;
             items.push(ColorItem { key, span: key_span.to(value.span), value });

@@ -167,16 +167,17 @@ impl Parser<'_, '_> {
                     self.bump();
                     self.expr()?;
                 }
-                // Light fading with the distance it travels inside: not modelled yet, noted.
-                Some(w @ ("fade_distance" | "fade_power")) => {
-                    let at = self.bump().span;
-                    let w = w.to_string();
-                    self.low.not_modelled(&format!("interior {w}"), at);
-                    self.expr()?;
+                Some("fade_distance") => {
+                    self.bump();
+                    items.push(InteriorItem::FadeDistance(self.expr()?));
+                }
+                Some("fade_power") => {
+                    self.bump();
+                    items.push(InteriorItem::FadePower(self.expr()?));
                 }
                 Some("fade_color" | "fade_colour") => {
                     self.bump();
-                    self.color()?;
+                    items.push(InteriorItem::FadeColor(self.color()?));
                 }
                 _ => return Err(self.unknown_in("interior", INTERIOR)),
             }

@@ -331,13 +331,25 @@ pub struct TextureDesc {
     pub finish: FinishDesc,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct InteriorDesc {
     pub ior: f64,
+    /// `fade_distance`, `fade_power`, `fade_color`: `None` unless a distance and a power are
+    /// given (boxed: most objects have none, and every object carries an interior).
+    pub fade: Option<Box<FadeDesc>>,
 }
 
 impl Default for InteriorDesc {
     fn default() -> Self {
-        InteriorDesc { ior: 1.0 }
+        InteriorDesc { ior: 1.0, fade: None }
     }
+}
+
+/// Light fading as it travels through an object (POV-Ray 3.4.8.1.6 Attenuation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FadeDesc {
+    pub distance: f64,
+    pub power: f64,
+    /// The colour light fades to; white does not fade.
+    pub color: DVec3,
 }

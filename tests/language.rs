@@ -433,4 +433,168 @@ fn height_field_functions_sample_the_unit_square() {
     assert!(near(fields[2].0.heights[0], 0.5915), "{:?}", fields[2].0.heights);
     let e = error("e_hf_size", "height_field { function 1, 3 { x } }");
     assert_eq!((e.line, e.col), (1, 16), "{e}");
+
+// ---- The sample scenes' language errors (objects/primitiv.pov, advanced/desk/desk.pov,
+// interior/media/media2.pov, language/trace.pov, language/tracevines.pov, incdemo/screen.pov,
+// gamma/gamma_showcase.pov, advanced/abyss.pov, animations/splinefollow/splinefollow.pov,
+// camera/mesh_camera/meshcam_persp_demo.pov): each checked against `povray` 3.7.
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-9
+}
+
+#[test]
+fn poly_coefficients_may_leave_out_commas_as_in_a_vector() {
+    // primitiv.pov's quartic: `0    1.5,` (POV-Ray reads `<1 2 3>` as `<1, 2, 3>` too).
+    let (s, _) = load(
+        "poly_commas",
+        "quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,\n\
+         1, 0, 0, 2, 0    1.5,     0, 0, 0,  0, 1, 0,    -2.5,       0, 0.5625> }",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 1);
+    let e = error("poly_commas_count", "quartic { <1 2 3> }");
+    assert!(e.to_string().contains("quartic takes 35 coefficients, found 3"), "{e}");
+}
+
+#[test]
+fn a_declared_light_placed_as_an_object_moves_with_its_transforms_and_looks_like() {
+    // desk.pov's `object { Lamp_Light_Source }` and media2.pov's `object { Spot rotate .. }`.
+    let (s, _) = load(
+        "light_object",
+        "#declare L = light_source { <1, 0, 0> color rgb 1 spotlight point_at <2, 0, 0>\n\
+           looks_like { sphere { 0, 0.5 } } }\n\
+         object { L rotate 90*z }\n\
+         union { object { L translate 5*y } }\n\
+         light_source { L translate z }",
+    )
+    .unwrap();
+    let at: Vec<(DVec3, DVec3)> = s.lights.iter().map(|l| (l.position, l.point_at)).collect();
+    assert_eq!(s.lights.len(), 3, "{at:?}");
+    assert!(close(at[0].0, DVec3::new(0.0, 1.0, 0.0)) && close(at[0].1, DVec3::new(0.0, 2.0, 0.0)), "{at:?}");
+    assert!(close(at[1].0, DVec3::new(1.0, 5.0, 0.0)) && close(at[1].1, DVec3::new(2.0, 5.0, 0.0)), "{at:?}");
+    assert!(close(at[2].0, DVec3::new(1.0, 0.0, 1.0)), "{at:?}");
+    // Each placement brings the looks_like sphere, centred on its light and casting no shadow.
+    assert_eq!(s.objects.len(), 3);
+    for (o, (p, _)) in s.objects.iter().zip(&at) {
+        assert!(close(o.transform.matrix.transform_point3(DVec3::ZERO), *p), "{:?} vs {p}", o.transform);
+        assert!(o.no_shadow);
+    }
+}
+
+#[test]
+fn a_local_takes_the_value_of_a_macro_that_ends_after_it() {
+    // tracevines.pov: `#local NewTmp = FindTmp(..)` where FindTmp ends in `#if (..) Q; #end`.
+    let out = debug(
+        "local_from_macro",
+        "#macro F(A) #local Q = A * 2; #if (1) Q; #else 0; #end #end\n\
+         #macro G() #local N = F(3) #debug str(N, 0, 1) #end\n\
+         G()",
+    );
+    assert_eq!(out, "6.0");
+}
+
+#[test]
+fn a_macro_call_after_a_declared_texture_runs_once_the_texture_is_stored() {
+    // incdemo/screen.pov: `#declare T = texture { .. }` then `Screen_Plane(T, ..)`.
+    let (s, _) = load(
+        "macro_after_texture",
+        "#macro P(Texture) box { 0, 1 texture { Texture } } #end\n\
+         #declare T0 = texture { pigment { rgb <1, 0, 0> } }\n\
+         P(T0)",
+    )
+    .unwrap();
+    assert_eq!(s.objects.len(), 1);
+}
+
+#[test]
+fn reflection_min_and_max_may_leave_out_the_comma() {
+    // gamma_showcase.pov: `reflection { 0.0 1.0 fresnel on }`.
+    let (s, _) = load("reflection_pair", "sphere { 0, 1 finish { reflection { 0.1 0.75 fresnel on } } }").unwrap();
+    let f = &s.objects[0].texture.finish;
+    assert_eq!(f.reflection_min, Some(DVec3::splat(0.1)));
+    assert_eq!(f.reflection, DVec3::splat(0.75));
+    let e = error("reflection_pair_bad", "sphere { 0, 1 finish { reflection { 0.1 0.75 0.5 } } }");
+    assert!(e.to_string().contains("reflection"), "{e}");
+}
+
+#[test]
+fn global_lights_may_follow_a_light_groups_modifiers() {
+    // abyss.pov: `light_group { object { .. } light_source { .. } translate .. global_lights on }`.
+    let (s, _) = load(
+        "global_lights_late",
+        "light_group { sphere { 0, 1 } light_source { <0, 5, 0> rgb 1 } translate x global_lights on }",
+    )
+    .unwrap();
+    assert_eq!(s.light_groups.len(), 1);
+    assert!(s.light_groups[0].global_lights);
+}
+
+#[test]
+fn trace_and_inside_look_into_csg_objects() {
+    // trace.pov traces a difference; biscuit.pov asks `inside` of a merge (logo.inc).
+    let out = debug(
+        "trace_csg",
+        "#declare G = difference {\n\
+           union { box { <-1.5, -0.6, -0.001>, <1.5, 0, 0.1> } cylinder { <-1, 0, -0.003>, <-1, 0, 0.11>, 0.5 } }\n\
+           cylinder { <0, 0, -0.003>, <0, 0, 0.11>, 0.5 } }\n\
+         #declare N = <0, 0, 0>;\n\
+         #declare P = trace(G, <-1.499, 2, 0>, <0, -1, 0>, N);\n\
+         #debug concat(vstr(3, P, \",\", 0, 4), \" \", str(vlength(N), 0, 3))\n\
+         #declare M = merge { sphere { 0, 1 } difference { box { -1, 1 } sphere { 0, 0.5 } translate 3*x } }\n\
+         #debug concat(\" \", str(inside(M, <3.8, 0, 0>), 0, 0), str(inside(M, <3, 0, 0>), 0, 0))",
+    );
+    // povray 3.7: -1.4990,0.0316,0.0000 and a unit normal; inside 1 then 0.
+    assert_eq!(out, "-1.4990,0.0316,0.0000 1.000 10");
+}
+
+#[test]
+fn splines_interpolate_as_pov_ray_3_7() {
+    // Figures printed by povray 3.7 for the same splines (uneven keys; cubic holds its second
+    // and next-to-last points outside them; a later point with the same key replaces one; the
+    // commas between key and point may be left out).
+    let out = debug(
+        "splines",
+        "#declare S = spline { cubic_spline 0, <0, 0>, 1, <1, 2>, 2.5, <3, 1>, 3, <4, 4>, 5, <6, 3> }\n\
+         #declare Q = spline { S quadratic_spline }\n\
+         #declare F = function { spline { S natural_spline } }\n\
+         #declare W = spline { 1, 2*x 0 x 1, 3*x }\n\
+         #debug concat(vstr(2, S(1.25), \",\", 0, 5), \" \", vstr(2, S(-1), \",\", 0, 5), \" \")\n\
+         #debug concat(vstr(2, Q(2.75), \",\", 0, 5), \" \", vstr(2, F(0.25), \",\", 0, 5), \" \")\n\
+         #debug concat(vstr(2, S(1.5, linear_spline), \",\", 0, 5), \" \", vstr(3, W(0.5), \",\", 0, 1), \" \")\n\
+         #declare V = S(2).x + S(2).y;\n\
+         #debug str(V, 0, 5)",
+    );
+    assert_eq!(
+        out,
+        "1.29282,1.94907 1.00000,2.00000 3.47917,2.29167 0.24777,0.78806 1.66667,1.66667 2.0,0.0,0.0 2.98148"
+    );
+}
+
+#[test]
+fn spline_mistakes_are_located_errors() {
+    let e = error("spline_no_point", "#declare S = spline { 0, <1, 2> 1 }\nsphere { 0, 1 }");
+    assert!(e.to_string().contains("scene.pov:1:"), "{e}");
+    let e = error("spline_kind", "#declare S = spline { 0, <1, 2> 1, <2, 3> }\nsphere { S(0.5, bezier_spline), 1 }");
+    assert!(e.to_string().contains("expected a spline kind"), "{e}");
+    let e = error("spline_float", "#declare S = spline { 0, 1 }\nsphere { 0, 1 }");
+    assert!(e.to_string().contains("spline point"), "{e}");
+}
+
+#[test]
+fn a_transform_function_gives_the_moved_point() {
+    // transforms.inc's vtransform, which meshcam_persp_demo.pov calls.
+    let out = debug(
+        "transform_function",
+        "#macro vtransform(vec, trans)\n\
+           #local fn = function { transform { trans } }\n\
+           #local result = (fn(vec.x, vec.y, vec.z));\n\
+           result\n\
+         #end\n\
+         #declare P = vtransform(<1, 2, 3>, transform { scale 2 translate x });\n\
+         #debug vstr(3, P, \",\", 0, 1)",
+    );
+    assert_eq!(out, "3.0,4.0,6.0");
+    let e = error("transform_function_arity", "#declare F = function { transform { scale 2 } }\nsphere { F(1, 2), 1 }");
+    assert!(e.to_string().contains("takes 3 arguments"), "{e}");
 }

@@ -9,6 +9,7 @@ mod lower;
 mod names;
 pub mod parser;
 pub mod source;
+pub mod spline;
 pub mod value;
 
 use std::fmt;

@@ -33,7 +33,9 @@ pub enum Value {
     Object(Box<Group>),
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
-    Light(Box<LightDesc>),
+    /// A declared `light_source`, with its `looks_like` objects lowered where the light is
+    /// (a `light_source { L .. }` or `object { L .. }` moves them with the light).
+    Light(Box<LightDesc>, Rc<[Part]>),
     /// A declared `sky_sphere`, `fog` or `rainbow`: its items as read (names resolved), which
     /// a block naming it starts from.
     Atmosphere(Rc<crate::pov::ast::Atmosphere>),
@@ -44,6 +46,11 @@ pub enum Value {
     Function(Rc<crate::function::Function>),
     /// `transform { ... }`, composed.
     Transform(Transform),
+    /// `spline { ... }` (also `function { spline { ... } }`): evaluated as `S(t)` where it
+    /// is read.
+    Spline(Rc<crate::pov::spline::Spline>),
+    /// `function { transform { ... } }`: `F(x, y, z)` is the point moved by the transform.
+    TransformFunction(Transform),
     /// A declaration whose syntax was read but which needs a feature strahl does not model
     /// yet: using it is the error, not declaring it (include files declare far more than a
     /// scene uses).
@@ -224,7 +231,7 @@ impl Value {
             Value::ColorMap(_) => "a color_map",
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",
-            Value::Light(_) => "a light_source",
+            Value::Light(..) => "a light_source",
             Value::Atmosphere(a) => match a.kind {
                 crate::pov::ast::AtmosphereKind::SkySphere => "a sky_sphere",
                 crate::pov::ast::AtmosphereKind::Fog => "a fog",
@@ -235,6 +242,8 @@ impl Value {
             Value::Macro(_) => "a macro",
             Value::Function(_) => "a function",
             Value::Transform(_) => "a transform",
+            Value::Spline(_) => "a spline",
+            Value::TransformFunction(_) => "a transform function",
             Value::Unmodelled(_) => "a declaration strahl does not model yet",
         }
     }

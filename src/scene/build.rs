@@ -489,9 +489,13 @@ impl Scene {
                 placed => self.store(placed),
             };
             let prim = PrimRef { kind, casts_shadow: !object.no_shadow, index, material, flip };
-            let surface = if kind == ShapeKind::Plane { EVERYWHERE } else { self.bounds_of(&prim) };
+            let bounds = if kind == ShapeKind::Plane {
+                ChildBounds::of_plane(&self.half_spaces[index as usize], object.inverse)
+            } else {
+                ChildBounds::of_leaf(self.bounds_of(&prim), object.inverse)
+            };
             leaves.push(prim);
-            return (CsgTarget::Leaf(leaves.len() as u32 - 1), ChildBounds::of_leaf(surface, object.inverse));
+            return (CsgTarget::Leaf(leaves.len() as u32 - 1), bounds);
         };
         let (rule, subtracts, all_surfaces) = op.rule();
         let mut kids = Vec::with_capacity(children.len());
@@ -504,6 +508,21 @@ impl Scene {
             bounds.push(b);
         }
         let surfaces = if all_surfaces { kids.len() } else { kids.len().min(1) };
+        if rule == CsgRule::All {
+            // A quadric's inside within what the other children allow (a cylinder cut by two
+            // planes): chess2.pov's pieces, unbounded otherwise, are then bounded.
+            let within = ChildBounds::of_node(rule, &bounds, surfaces, false).inside;
+            for (b, kid) in bounds.iter_mut().zip(&kids) {
+                let CsgTarget::Leaf(l) = kid.target else { continue };
+                let prim = leaves[l as usize];
+                if kid.inverse || prim.kind != ShapeKind::Poly {
+                    continue;
+                }
+                if let Some((lo, hi)) = self.polys[prim.index as usize].inside_bounds_within(within.min, within.max) {
+                    b.inside = Aabb::new(lo, hi);
+                }
+            }
+        }
         let b = ChildBounds::of_node(rule, &bounds, surfaces, object.inverse);
         let first = self.csg_children.len() as u32;
         self.csg_children.extend(kids);

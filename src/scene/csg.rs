@@ -90,6 +90,26 @@ impl ChildBounds {
         ChildBounds { surface, inside: if inverse { EVERYWHERE } else { surface } }
     }
 
+    /// A plane's: its surface is unbounded, and so is its inside unless the plane is
+    /// axis-aligned, when the inside is a half-space box (`plane { y, 10 }`: y ≤ 10) that
+    /// bounds an intersection with it.
+    pub fn of_plane(plane: &crate::geometry::plane::Plane, inverse: bool) -> ChildBounds {
+        let (n, d) = (plane.normal, plane.distance);
+        let mut inside = EVERYWHERE;
+        let axes: Vec<usize> = (0..3).filter(|&k| n[k] != 0.0).collect();
+        if let (&[k], false) = (axes.as_slice(), inverse) {
+            // n_k · p_k < d, padded for rounding.
+            let edge = d / n[k];
+            let edge = edge + edge.abs().max(1.0) * 1e-5 * n[k].signum();
+            if n[k] > 0.0 {
+                inside.max[k] = edge;
+            } else {
+                inside.min[k] = edge;
+            }
+        }
+        ChildBounds { surface: EVERYWHERE, inside }
+    }
+
     /// A node over children with these bounds (`surfaces` of them surfaces), under `rule`.
     pub fn of_node(rule: CsgRule, children: &[ChildBounds], surfaces: usize, inverse: bool) -> ChildBounds {
         let mut surface = Aabb::EMPTY;

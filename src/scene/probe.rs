@@ -46,6 +46,7 @@ pub fn trace(objects: &[ObjectDesc], start: DVec3, dir: DVec3) -> Option<(DVec3,
 pub fn inside(objects: &[ObjectDesc], p: DVec3) -> bool {
     let scene = scene_of(objects);
     let q = crate::lanes::V3::<f32>::from_vec3(scene.frame.point(p).as_vec3());
-    scene.prims.iter().any(|prim| f32::mask_lane(scene.inside_prim(prim, q), 0))
+    // The prims from `first_leaf` on are CSG leaves, inside only as their nodes say.
+    scene.prims[..scene.first_leaf as usize].iter().any(|prim| f32::mask_lane(scene.inside_prim(prim, q), 0))
         || scene.planes.iter().any(|pl| f32::mask_lane(pl.inside(q), 0))
 }

@@ -1,12 +1,14 @@
 //! `light_source` → `LightDesc`: kinds, spot and area parameters, fading, and the transforms
 //! in written order. `looks_like` objects are placed by `Lowerer::stmt` (they are objects).
 
-use glam::DVec3;
+use std::rc::Rc;
+
+use glam::{DMat4, DVec3};
 
 use super::Lowerer;
 use crate::pov::ast::{Light, LightItem};
 use crate::pov::source::{Diag, PResult};
-use crate::pov::value::Value;
+use crate::pov::value::{Group, Part, Value};
 use crate::scene::desc::{AreaLightDesc, LightDesc, LightKind};
 
 /// The most points one area light may have (rows × columns): far above the sample scenes'
@@ -14,17 +16,24 @@ use crate::scene::desc::{AreaLightDesc, LightDesc, LightKind};
 pub const MAX_AREA_POINTS: u32 = 65_536;
 
 impl Lowerer<'_> {
-    /// A `light_source`; its position may be a declared light, which it continues from.
-    /// Returns the light and its position before the transforms (where a `looks_like` object
-    /// starts).
-    pub(super) fn light(&mut self, l: &Light) -> PResult<LightDesc> {
-        Ok(self.light_placed(l)?.0)
+    /// `#declare L = light_source { .. }`: the light and its `looks_like` objects, lowered
+    /// (and not placed) as a declared object's are.
+    pub(super) fn declared_light(&mut self, l: &Light) -> PResult<Value> {
+        let (light, start, base_looks) = self.light_placed(l)?;
+        let mut parts = Vec::new();
+        for object in self.looks_like(l, start, &base_looks) {
+            parts.extend(self.object(&object)?.parts);
+        }
+        Ok(Value::Light(Box::new(light), parts.into()))
     }
 
-    pub(super) fn light_placed(&mut self, l: &Light) -> PResult<(LightDesc, DVec3)> {
-        let mut light = match self.eval(&l.position)? {
-            Value::Light(base) => *base,
-            v => LightDesc { position: v.as_vec3(l.position.span)?, ..LightDesc::default() },
+    /// A `light_source`; its position may be a declared light, which it continues from.
+    /// Returns the light, its position before the transforms (where a `looks_like` object
+    /// starts), and the `looks_like` objects of the declared light it continues from, if any.
+    pub(super) fn light_placed(&mut self, l: &Light) -> PResult<(LightDesc, DVec3, Rc<[Part]>)> {
+        let (mut light, base_looks) = match self.eval(&l.position)? {
+            Value::Light(base, looks) => (*base, looks),
+            v => (LightDesc { position: v.as_vec3(l.position.span)?, ..LightDesc::default() }, Rc::from([])),
         };
         let start = light.position;
         if let Some(c) = &l.color {
@@ -110,27 +119,38 @@ impl Lowerer<'_> {
                 LightItem::ProjectedThrough(span) => self.not_modelled("projected_through", *span),
                 LightItem::Transform(t) => {
                     let m = self.transform(t)?.matrix;
-                    light.position = m.transform_point3(light.position);
-                    light.point_at = m.transform_point3(light.point_at);
-                    if let Some(a) = &mut light.area {
-                        a.axis1 = m.transform_vector3(a.axis1);
-                        a.axis2 = m.transform_vector3(a.axis2);
-                    }
+                    transform_light(&mut light, &m);
                 }
             }
         }
         if light.fade_distance < 0.0 {
             return Err(Diag::new(l.span, "fade_distance must not be negative"));
         }
-        Ok((light, start))
+        Ok((light, start, base_looks))
     }
 
     /// The `looks_like` objects of `l`, as objects to place: each starts at the light's
     /// position, follows the light's transforms and casts no shadow (POV-Ray's implied
     /// `no_shadow`).
-    pub(super) fn looks_like(&mut self, l: &Light, start: DVec3) -> Vec<crate::pov::ast::Object> {
-        use crate::pov::ast::{Expr, ExprKind, Modifier, TransformItem, TransformKind};
+    /// A light continuing from a declared one keeps that light's `looks_like` objects (already
+    /// at the declared light's place; they follow the new transforms), unless it has its own.
+    pub(super) fn looks_like(&mut self, l: &Light, start: DVec3, base: &Rc<[Part]>) -> Vec<crate::pov::ast::Object> {
+        use crate::pov::ast::{Expr, ExprKind, Modifier, Object, ObjectKind, TransformItem, TransformKind};
         let mut out = Vec::new();
+        let own = l.items.iter().any(|item| matches!(item, LightItem::LooksLike(..)));
+        if !own && !base.is_empty() {
+            let group = Group { parts: base.to_vec(), csg: true, lights: Vec::new() };
+            let value = Expr { kind: ExprKind::Value(Rc::new(Value::Object(Box::new(group)))), span: l.span };
+            let modifiers = l
+                .items
+                .iter()
+                .filter_map(|t| match t {
+                    LightItem::Transform(t) => Some(Modifier::Transform(t.clone())),
+                    _ => None,
+                })
+                .collect();
+            out.push(Object { kind: ObjectKind::Ref(value), modifiers, span: l.span });
+        }
         for item in &l.items {
             let LightItem::LooksLike(object, span) = item else { continue };
             let mut o = (**object).clone();
@@ -148,5 +168,15 @@ impl Lowerer<'_> {
             out.push(o);
         }
         out
+    }
+}
+
+/// Moves a light by `m`: its position, where it points and its area axes.
+pub(super) fn transform_light(light: &mut LightDesc, m: &DMat4) {
+    light.position = m.transform_point3(light.position);
+    light.point_at = m.transform_point3(light.point_at);
+    if let Some(a) = &mut light.area {
+        a.axis1 = m.transform_vector3(a.axis1);
+        a.axis2 = m.transform_vector3(a.axis2);
     }
 }

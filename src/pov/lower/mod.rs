@@ -198,10 +198,30 @@ impl<'f> Lowerer<'f> {
     /// of `name`, or of one element of it with `index`.
     pub(crate) fn assign(&mut self, name: &str, local: bool, index: &[usize], value: Value, span: Span) -> PResult<()> {
         let innermost = self.scopes.len() - 1;
+        self.assign_in(name, local.then_some(innermost), index, value, span)
+    }
+
+    /// The innermost scope now: where a `#local` begun here writes.
+    pub(crate) fn innermost_scope(&self) -> usize {
+        self.scopes.len() - 1
+    }
+
+    /// `assign`, a `#local` writing into `local_scope`: the innermost scope when the
+    /// declaration began, since a macro that gives the value may end only after it
+    /// (`#local N = F(3)` where `F` ends in `Q;`, as in POV-Ray's tracevines.pov).
+    pub(crate) fn assign_in(
+        &mut self,
+        name: &str,
+        local_scope: Option<usize>,
+        index: &[usize],
+        value: Value,
+        span: Span,
+    ) -> PResult<()> {
+        let innermost = self.scopes.len() - 1;
         let holder = self.scopes.iter().rposition(|s| s.vars.contains_key(name));
         let param_scope = holder.filter(|&i| self.scopes[i].params.iter().any(|p| &**p == name));
-        let scope = if local {
-            innermost
+        let scope = if let Some(s) = local_scope {
+            s.min(innermost)
         } else if let Some(i) = param_scope {
             i
         } else if index.is_empty() {
@@ -303,7 +323,7 @@ impl<'f> Lowerer<'f> {
             DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
             DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
             DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
-            DeclValue::Light(l) => Value::Light(Box::new(self.light(l)?)),
+            DeclValue::Light(l) => self.declared_light(l)?,
             DeclValue::Atmosphere(a) => Value::Atmosphere(Rc::new(a.clone())),
         })
     }
@@ -352,14 +372,14 @@ impl<'f> Lowerer<'f> {
                 self.scene.camera = self.camera(items, *span)?
             }
             Stmt::Light(l) => {
-                let (light, start) = self.light_placed(l)?;
+                let (light, start, base_looks) = self.light_placed(l)?;
                 if self.csg_stack.is_empty() {
                     self.scene.lights.push(light);
                 } else {
                     // It moves with the object it is written in.
                     self.child_lights.push(light);
                 }
-                for object in self.looks_like(l, start) {
+                for object in self.looks_like(l, start, &base_looks) {
                     self.stmt(&Stmt::Object(object))?;
                 }
             }

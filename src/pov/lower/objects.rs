@@ -46,6 +46,11 @@ impl Lowerer<'_> {
             ObjectKind::Inner(inner) => self.object(inner)?,
             ObjectKind::Ref(e) => match (&e.kind, self.eval(e)?) {
                 (ExprKind::Value(_), Value::Object(group)) => *group,
+                // `object { L rotate .. }` on a declared light_source (POV-Ray's desk.pov,
+                // media2.pov): the light and its `looks_like` objects, moved as one.
+                (ExprKind::Value(_), Value::Light(light, looks)) => {
+                    Group { parts: looks.to_vec(), csg: true, lights: vec![*light] }
+                }
                 (_, other) => return Err(other.wrong_kind(e.span, "a declared object")),
             },
             ObjectKind::LightGroup { children, global_lights } => {
@@ -86,7 +91,7 @@ impl Lowerer<'_> {
                 if let Modifier::Transform(t) = m {
                     let t = self.transform(t)?;
                     for light in &mut group.lights {
-                        light.position = t.matrix.transform_point3(light.position);
+                        super::lights::transform_light(light, &t.matrix);
                     }
                 }
             }

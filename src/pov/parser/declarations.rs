@@ -50,8 +50,9 @@ impl Parser<'_, '_> {
         }
         let indices = self.indices()?;
         self.expect_punct('=', &format!("after `{directive} {name}`"))?;
+        let scope = self.low.innermost_scope();
         let value = self.declared_value()?;
-        self.low.assign(&name, local, &indices, value, start.to(name_span))?;
+        self.low.assign_in(&name, local.then_some(scope), &indices, value, start.to(name_span))?;
         self.eat_raw_semicolon();
         Ok(())
     }
@@ -65,9 +66,13 @@ impl Parser<'_, '_> {
             Ok(Declared::Value(v)) => return Ok(v),
             Ok(Declared::Syntax(decl)) => decl,
             Err(e) if e.unmodelled && self.pending.is_none() => {
+                // Nesting still open that is not a block: the `(` (or `<`) the error stopped
+                // in, whose `)` the skip must not take for the declaration's end
+                // (`#local R = (F(1, 2));` with `F` unmodelled).
+                let open = (self.depth.saturating_sub(depth)).saturating_sub(self.braces.saturating_sub(braces));
                 self.depth = depth;
                 self.in_csg = in_csg;
-                self.skip_declaration(braces);
+                self.skip_declaration(braces, open);
                 return Ok(Value::Unmodelled(Rc::new(Unmodelled::from_error(e))));
             }
             Err(e) => return Err(e),
@@ -81,12 +86,12 @@ impl Parser<'_, '_> {
 
     /// Skips the rest of a declaration: its open blocks, or to the `;` or directive that ends
     /// it when no block is open. Further `texture { }` layers belong to it too.
-    fn skip_declaration(&mut self, braces: usize) {
+    fn skip_declaration(&mut self, braces: usize, open_parens: usize) {
         // Whether a block of the declaration was open or has been skipped: what follows at
         // the declaration's level is then the next statement (or another texture layer).
         let mut had_block = self.braces > braces;
         // `(` minus `)` taken at the declaration's level (`function(x, y) { }`).
-        let mut parens = 0usize;
+        let mut parens = open_parens;
         loop {
             match &self.cur.kind {
                 TokenKind::Eof => return,
@@ -156,7 +161,21 @@ impl Parser<'_, '_> {
                 }
             }
             Some("array") => return self.array().map(Declared::Value),
-            Some("function") => return self.function().map(|f| Declared::Value(Value::Function(Rc::new(f)))),
+            Some("spline") => return self.spline().map(|s| Declared::Value(Value::Spline(Rc::new(s)))),
+            Some("function") => {
+                let kw = self.bump().span;
+                // `function { transform { .. } }` and `function { spline { .. } }`: functions
+                // giving a vector, read in `parser::spline`.
+                let brace = self.is_punct('{');
+                let special = match self.stream.peek_kind() {
+                    Some(TokenKind::Ident(w)) if brace => Some(w.clone()),
+                    _ => None,
+                };
+                if let Some(w @ ("transform" | "spline")) = special.as_deref() {
+                    return self.vector_function(kw, w == "spline").map(Declared::Value);
+                }
+                return self.function_after(kw).map(|f| Declared::Value(Value::Function(Rc::new(f))));
+            }
             Some("transform") => {
                 let kw = self.bump().span;
                 return self.transform_after(kw).map(|(t, _)| Declared::Value(Value::Transform(t)));
@@ -272,6 +291,7 @@ pub(super) fn starts_declared_block(word: &str) -> bool {
             | "light_source"
             | "function"
             | "transform"
+            | "spline"
     ) || super::scene::is_object_keyword(word)
         || UNSUPPORTED_SHAPES.contains(&word)
         || DECLARABLE_UNMODELLED.contains(&word)
@@ -293,7 +313,6 @@ const DECLARABLE_UNMODELLED: &[&str] = &[
     "texture_map",
     "slope_map",
     "density_map",
-    "spline",
     "photons",
     "radiosity",
     "matrix",

@@ -483,6 +483,18 @@ impl Parser<'_, '_> {
                 });
             }
         }
+        if let Value::Spline(s) = &value {
+            if self.peek_more().kind == TokenKind::Punct('(') {
+                let v = self.call_spline(s.clone(), word, span)?;
+                return Ok(Expr { kind: ExprKind::Value(Rc::new(v)), span });
+            }
+        }
+        if let Value::TransformFunction(t) = &value {
+            if self.peek_more().kind == TokenKind::Punct('(') {
+                let v = self.call_transform_function(t.matrix, word, span)?;
+                return Ok(Expr { kind: ExprKind::Value(Rc::new(v)), span });
+            }
+        }
         if let Value::Unmodelled(u) = &value {
             if self.peek_more().kind == TokenKind::Punct('(') {
                 // A user function (`#declare f = function {...}`) called.

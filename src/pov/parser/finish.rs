@@ -106,7 +106,16 @@ impl Parser<'_, '_> {
     fn reflection_block(&mut self, kw: Span) -> PResult<ReflectionBlock> {
         self.open_block("reflection", kw)?;
         let first = self.color()?;
-        let (min, max) = if self.eat_punct(',') { (Some(first), self.color()?) } else { (None, first) };
+        // The comma between MIN and MAX may be left out (`reflection { 0.0 1.0 fresnel on }` in
+        // POV-Ray's gamma_showcase.pov): a second colour is whatever is not an item or the end.
+        let second = self.eat_punct(',')
+            || match self.peek().kind {
+                TokenKind::Number(_) => true,
+                TokenKind::Punct(c) => matches!(c, '(' | '-' | '+' | '<'),
+                TokenKind::Ident(w) => !REFLECTION.contains(&&*w),
+                _ => false,
+            };
+        let (min, max) = if second { (Some(first), self.color()?) } else { (None, first) };
         let mut block = ReflectionBlock { min, max, fresnel: None, falloff: None, exponent: None, metallic: None };
         while !self.at_block_end() {
             let word = self.peek_ident();

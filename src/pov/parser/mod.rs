@@ -28,6 +28,7 @@ mod material;
 mod mesh;
 mod probe;
 mod scene;
+mod spline;
 mod stream;
 mod textures;
 
@@ -472,7 +473,9 @@ impl Parser<'_, '_> {
             // A directive after the texture ends it (a `#declare` must store it first).
             return Ok(());
         }
-        match self.peek_ident().as_deref() {
+        // A word after it is not expanded: a macro call there (`Screen_Plane(T, ..)` in
+        // POV-Ray's incdemo/screen.pov) must run after the declaration stores the texture.
+        match self.more_ident().as_deref() {
             Some("texture") => Err(Diag::unmodelled(self.peek().span, LAYERED)),
             _ => Ok(()),
         }

@@ -23,7 +23,10 @@ impl Parser<'_, '_> {
         self.enter(open)?;
         let object = self.expr()?;
         let objects = match self.low.eval(&object)? {
-            Value::Object(g) => g.parts.iter().map(|p| p.desc.clone()).collect::<Vec<ObjectDesc>>(),
+            // A CSG node's children live beside its desc until `into_desc` moves them in.
+            Value::Object(g) => {
+                g.parts.iter().map(|p| p.clone().into_desc(&Default::default())).collect::<Vec<ObjectDesc>>()
+            }
             other => {
                 return Err(Diag::new(
                     object.span,

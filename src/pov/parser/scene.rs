@@ -381,6 +381,15 @@ impl Parser<'_, '_> {
                     }
                     continue;
                 }
+                // `global_lights` may follow the group's modifiers too (POV-Ray's abyss.pov).
+                Some("global_lights") if matches!(kind, ObjectKind::LightGroup { .. }) => {
+                    self.bump();
+                    let on = if self.starts_bool() { Some(self.expr()?) } else { None };
+                    if let ObjectKind::LightGroup { global_lights, .. } = &mut kind {
+                        *global_lights = Some(on);
+                    }
+                    continue;
+                }
                 Some("pigment") => Modifier::Pigment(self.pigment()?),
                 Some("normal") => Modifier::Normal(self.normal()?),
                 Some("finish") => Modifier::Finish(self.finish()?),
@@ -640,9 +649,11 @@ impl Parser<'_, '_> {
             ));
         }
         self.bump();
+        // Commas may be left out, as in a vector (`0    1.5,` in POV-Ray's objects/primitiv.pov).
         loop {
             args.push(self.expr()?);
-            if !self.eat_punct(',') || self.is_punct('>') {
+            let comma = self.eat_punct(',');
+            if self.is_punct('>') || !(comma || self.starts_expr(&[])) {
                 break;
             }
         }

@@ -470,7 +470,9 @@ impl Parser<'_, '_> {
     /// `texture { }` and the layers written right after it (`texture {A} texture {B}`: B over A).
     pub(super) fn texture(&mut self) -> PResult<Texture> {
         let mut t = self.texture_one()?;
-        while !matches!(self.cur.kind, TokenKind::Directive(_)) && self.peek_ident().as_deref() == Some("texture") {
+        // The next word is not expanded: a macro call after a declared texture runs only once
+        // the declaration has stored it (incdemo/screen.pov's `Screen_Plane(T, ..)`).
+        while !matches!(self.cur.kind, TokenKind::Directive(_)) && self.more_ident().as_deref() == Some("texture") {
             let layer = self.texture_one()?;
             t.span = t.span.to(layer.span);
             t.items.push(TextureItem::Layer(Box::new(layer)));

@@ -1692,11 +1692,69 @@ fn camera_errors_are_located() {
     let (line, col, m) = err("persp_angle", "camera { angle 200 }\n");
     assert_eq!((line, col), (1, 16), "{m}");
     assert!(m.contains("between 0 and 180"), "{m}");
-    let (line, col, m) = err("mesh_camera", "camera {\n  mesh_camera { 1 0 mesh { M } }\n}\n");
-    assert_eq!((line, col), (2, 3), "{m}");
-    assert!(m.contains("mesh_camera"), "{m}");
     // Wide angles are fine for the projections that use them.
     assert!(load_text("fisheye_wide", "camera { fisheye angle 360 }").is_ok());
+}
+
+#[test]
+fn mesh_camera_reads_its_meshes() {
+    use strahl::camera::Projection;
+    let mesh = "#declare M = mesh { triangle { <0, 1, 0>, <1, 0, 0>, <0, 0, 0> uv_vectors <0, 1>, <1, 0>, <0, 0> } \
+                triangle { <0, 1, 0>, <1, 1, 0>, <1, 0, 0> } translate x }\n";
+    let s = load_text(
+        "mesh_camera_ok",
+        &format!("{mesh}camera {{ mesh_camera {{ 1 3 2.5 mesh {{ M translate y }} smooth }} location <0, 0, 0.5> direction -z }}"),
+    )
+    .unwrap();
+    assert_eq!(
+        s.camera.lens.projection,
+        Projection::Mesh { rays_per_pixel: 1, offset: 0.5, reverse: true, max_distance: 2.5 }
+    );
+    let cam = s.camera_mesh.as_ref().expect("the meshes");
+    assert!((cam.distribution, cam.smooth, cam.meshes.len()) == (3, true, 1));
+    // The declared mesh's translate, then the camera's.
+    let m = &cam.meshes[0];
+    assert!(close(m.transform.matrix.transform_point3(DVec3::ZERO), DVec3::new(1.0, 1.0, 0.0)));
+    // The second triangle has no uv_vectors: POV-Ray's default map.
+    assert_eq!(m.mesh.uv_faces.len(), 2);
+    assert_eq!(m.mesh.uvs[m.mesh.uv_faces[1][2] as usize], glam::DVec2::new(1.0, 1.0));
+    // `smooth` in the camera's body, as POV-Ray's grammar has it; a later camera drops the mesh.
+    let s =
+        load_text("mesh_camera_body_smooth", &format!("{mesh}camera {{ mesh_camera {{ 1 0 mesh {{ M }} }} smooth }}"))
+            .unwrap();
+    assert!(s.camera_mesh.as_ref().unwrap().smooth);
+    let s = load_text(
+        "mesh_camera_replaced",
+        &format!("{mesh}camera {{ mesh_camera {{ 1 0 mesh {{ M }} }} }} camera {{ }}"),
+    )
+    .unwrap();
+    assert!(s.camera_mesh.is_none() && s.camera.lens.projection == Projection::Perspective);
+}
+
+#[test]
+fn mesh_camera_errors_are_located() {
+    let mesh = "#declare M = mesh { triangle { <0, 1, 0>, <1, 0, 0>, <0, 0, 0> } }\n";
+    let cases: &[(&str, &str, (u32, u32), &str)] = &[
+        ("undeclared", "camera {\n  mesh_camera { 1 0 mesh { N } }\n}\n", (3, 28), "`N`"),
+        ("distribution", "camera {\n  mesh_camera { 1 5 mesh { M } }\n}\n", (3, 19), "0, 1, 2 or 3"),
+        ("rays", "camera {\n  mesh_camera { 0 0 mesh { M } }\n}\n", (3, 17), "at least 1"),
+        ("too_few_meshes", "camera {\n  mesh_camera { 2 0 mesh { M } }\n}\n", (3, 3), "a mesh for each"),
+        ("no_uv", "camera {\n  mesh_camera { 1 3 mesh { M } }\n}\n", (3, 3), "uv_vectors"),
+        ("one_ray", "camera {\n  mesh_camera { 2 2 mesh { M } mesh { M } }\n}\n", (3, 3), "one ray per pixel"),
+        ("no_mesh", "camera {\n  mesh_camera { 1 1 }\n}\n", (3, 3), "at least one"),
+        (
+            "not_mesh",
+            "#declare S = sphere { 0, 1 }\ncamera {\n  mesh_camera { 1 0 mesh { S } }\n}\n",
+            (4, 28),
+            "not a sphere",
+        ),
+        ("smooth_alone", "camera {\n  smooth\n}\n", (3, 3), "belongs to a mesh_camera"),
+    ];
+    for (name, text, at, what) in cases {
+        let (line, col, m) = err(&format!("mesh_camera_{name}"), &format!("{mesh}{text}"));
+        assert_eq!((line, col), *at, "{name}: {m}");
+        assert!(m.contains(what), "{name}: {m}");
+    }
 }
 
 #[test]

@@ -431,6 +431,8 @@ const CAMERAS: &[(&str, f64)] = &[
     ("cameras_cylinder3", 35.0),
     ("cameras_cylinder4", 35.0),
     ("cameras_spherical", 35.0),
+    ("cameras_mesh", 35.0),
+    ("cameras_mesh_rows", 35.0),
 ];
 
 #[test]

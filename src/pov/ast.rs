@@ -226,6 +226,11 @@ pub enum CameraItem {
     Variance(Expr),
     /// Read in full but not modelled (`normal { }`, `bokeh { }`): a warning names it.
     Unmodelled(&'static str, Span),
+    /// `mesh_camera { .. }`, its numbers evaluated and its meshes looked up as it was read.
+    MeshCamera(std::sync::Arc<crate::scene::desc::MeshCameraDesc>, Span),
+    /// `smooth` in the camera's body (POV-Ray's grammar puts it there; the samples write it
+    /// inside `mesh_camera`).
+    Smooth(Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -62,8 +62,19 @@ impl<'a> Tracer<'a> {
     /// Colour seen along `ray`. `level` is 1 for primary rays; `weight` is how much this ray can
     /// still change the pixel; `inside_ior` is the index of refraction the ray travels in.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
+        self.trace_limited(ray, f32::INFINITY, level, weight, kind)
+    }
+
+    /// A primary ray that sees only what lies nearer than `max` (a mesh camera's
+    /// `max_distance`; ∞ for every other camera).
+    pub fn trace_within(&mut self, ray: &Ray, max: f32, kind: RayKind) -> Vec3 {
+        self.trace_limited(ray, max, 1, 1.0, kind)
+    }
+
+    #[inline(always)]
+    fn trace_limited(&mut self, ray: &Ray, max: f32, level: u32, weight: f32, kind: RayKind) -> Vec3 {
         self.stats.count_ray(kind, level);
-        let hit = match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
+        let hit = match self.scene.intersect(ray, max, &mut self.stats) {
             Some(hit) if self.refines() => Some(self.scene.refine(ray, hit)),
             hit => hit,
         };

@@ -304,6 +304,8 @@ pub struct Scene {
     pub background: Rgbft,
     /// `sky_sphere`, `fog`, `rainbow` (empty in most scenes).
     pub atmosphere: Atmosphere,
+    /// A `mesh_camera`'s faces in render space (`camera::mesh`); `None` for other cameras.
+    pub camera_mesh: Option<Arc<crate::camera::mesh::CameraMesh>>,
     pub ambient_light: Vec3,
     pub max_trace_level: u32,
     /// Whether output pixels are sRGB-encoded (3.7 gamma handling) or written linear (legacy).
@@ -357,6 +359,7 @@ impl Scene {
             lights: desc.lights.iter().map(|l| Light::from_desc(l, &frame)).collect(),
             background: Rgbft::from_desc(&desc.background),
             atmosphere: Atmosphere::build(desc, &frame),
+            camera_mesh: desc.camera_mesh.as_ref().map(|m| Arc::new(crate::camera::mesh::CameraMesh::build(m, &frame))),
             ambient_light: desc.global.ambient_light.as_vec3(),
             max_trace_level: desc.global.max_trace_level.max(1),
             srgb: desc.writes_srgb(),

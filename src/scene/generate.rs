@@ -213,7 +213,7 @@ fn bumpy_sphere(n: usize, edge: f64) -> ShapeDesc {
             face([at(r, c + 1), at(r + 1, c + 1), at(r + 1, c)]);
         }
     }
-    let mesh = MeshDesc { vertices, normals: Vec::new(), faces };
+    let mesh = MeshDesc { vertices, faces, ..MeshDesc::default() };
     ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector: None }
 }
 

@@ -1331,7 +1331,7 @@ fn mesh2_sections_and_shared_normals() {
 }
 
 #[test]
-fn per_triangle_textures_and_uv_warn_by_name() {
+fn per_triangle_textures_warn_by_name_and_uv_is_kept() {
     let d = dir("mesh_warn");
     let path = write(
         &d,
@@ -1339,10 +1339,36 @@ fn per_triangle_textures_and_uv_warn_by_name() {
         "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { pigment { rgb x } } } }\n\
          mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 1, <0,0> } face_indices { 1, <0,1,2> } uv_indices { 1, <0,0,0> } }",
     );
-    let (_, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
+    let (s, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
     let text: Vec<String> = warnings.iter().map(|w| w.to_string()).collect();
     assert!(text.iter().any(|w| w.contains("scene.pov:1:45") && w.contains("per-triangle textures")), "{text:?}");
-    assert!(text.iter().any(|w| w.contains("uv coordinates are not modelled")), "{text:?}");
+    // uv_vectors are read for uv_mapping and mesh cameras, without a warning.
+    assert!(!text.iter().any(|w| w.contains("uv")), "{text:?}");
+    let (m, _) = mesh_of(&s, 1);
+    assert_eq!((m.uvs.len(), m.uv_faces.clone()), (1, vec![[0, 0, 0]]));
+}
+
+#[test]
+fn uv_mapping_marks_textures_and_warns_for_shapes_without_uv() {
+    let d = dir("uv_mapping");
+    let path = write(
+        &d,
+        "scene.pov",
+        "sphere { 0, 1 uv_mapping texture { pigment { checker } } scale 2 }\n\
+         torus { 1, 0.2 pigment { uv_mapping checker scale 0.5 } rotate x * 30 }\n\
+         sphere { 0, 1 texture { uv_mapping pigment { checker } } }\n\
+         sphere { 0, 1 pigment { checker } scale 2 }\n\
+         cone { 0, 1, y, 0.5 texture { uv_mapping pigment { checker } } }",
+    );
+    let (s, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
+    let uv: Vec<bool> = s.objects.iter().map(|o| o.texture.uv_mapping).collect();
+    assert_eq!(uv, [true, true, true, false, true]);
+    // A uv-mapped pigment keeps its own transforms only; the object's move the others.
+    let scale = |i: usize| s.objects[i].texture.pigment.transform.matrix.x_axis.x;
+    assert_eq!((scale(0), scale(1), scale(3)), (1.0, 0.5, 2.0));
+    let text: Vec<String> = warnings.iter().map(|w| w.to_string()).collect();
+    assert!(text.iter().any(|w| w.contains("scene.pov:5:31") && w.contains("uv_mapping on a cone")), "{text:?}");
+    assert_eq!(text.iter().filter(|w| w.contains("uv_mapping")).count(), 1, "{text:?}");
 }
 
 #[test]

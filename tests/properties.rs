@@ -134,7 +134,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
         metallic: if r.pick(3) == 0 { r.f(0.0, 1.0) } else { 0.0 },
         ..FinishDesc::default()
     };
-    TextureDesc { pigment, normal, finish }
+    TextureDesc { pigment, normal, finish, uv_mapping: false }
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {

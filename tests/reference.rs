@@ -525,6 +525,13 @@ fn image_maps_match_povray() {
     check_psnr("images", &scene("images"), 35.0);
 }
 
+/// `uv_mapping`: a checker and an image_map through the surface coordinates of spheres, tori,
+/// a mesh with uv_vectors and a mesh2 with uv_indices, transformed after their textures.
+#[test]
+fn uv_mapping_matches_povray() {
+    check_psnr("uv_mapping", &scene("uv_mapping"), 35.0);
+}
+
 /// `bump_map`: grey and colour images as heights, `bump_size` (negative too), `interpolate 2`,
 /// `use_color`, repeated and rotated. 26.95 dB: each rim texel is tilted where POV-Ray tilts it
 /// and by about as much, but POV-Ray also tilts the texel after a rim along x (not y) the other

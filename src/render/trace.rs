@@ -10,7 +10,8 @@ use glam::Vec3;
 
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::lanes::V3;
-use crate::render::intersect::Hit;
+use crate::geometry::uv::UvMap;
+use crate::render::intersect::{Hit, HitShape};
 use crate::render::light::{self, AreaGrid};
 use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
@@ -128,8 +129,37 @@ impl<'a> Tracer<'a> {
             Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
             None => facing,
         };
-        let pigment = eval_pigment(&material.pigment, p, self.pattern_quality());
+        let pigment = self.pigment_at(material, hit.shape, p);
         Surface { p, facing, normal, entering, material, pigment }
+    }
+
+    /// `material`'s pigment at hit point `p` of `shape`: in 3-D pattern space, or at the
+    /// surface's (u, v, 0) for a uv-mapped material.
+    #[inline(always)]
+    fn pigment_at(&self, material: &Material, shape: HitShape, p: Vec3) -> Rgbft {
+        match &material.uv {
+            None => eval_pigment(&material.pigment, p, self.pattern_quality()),
+            Some(uv) => self.uv_pigment(material, uv, shape, p),
+        }
+    }
+
+    /// Out of line: most materials are not uv-mapped. (u, v) become the world point
+    /// (u, v, 0) seen from render space, so the pigment's own transforms apply to them.
+    #[inline(never)]
+    fn uv_pigment(&self, material: &Material, uv: &UvMap, shape: HitShape, p: Vec3) -> Rgbft {
+        let scene = self.scene;
+        let face = match shape {
+            HitShape::Face { prim, face } => {
+                let data = &scene.meshes[scene.prims[prim as usize].index as usize].data;
+                let t = &data.triangles[face as usize];
+                let corners = [t.v0, t.v0 + t.e1, t.v0 + t.e2].map(|v| v.as_dvec3());
+                data.source_face.get(face as usize).map(|&f| (f as usize, corners))
+            }
+            _ => None,
+        };
+        let st = uv.uv(p.as_dvec3(), face);
+        let q = scene.frame.point(glam::DVec3::new(st.x, st.y, 0.0)).as_vec3();
+        eval_pigment(&material.pigment, q, self.pattern_quality())
     }
 
     /// Lights `surface` and recurses into reflection and refraction. `shadows` says whether
@@ -365,7 +395,7 @@ impl<'a> Tracer<'a> {
             let p = ray.at(hit.t);
             if scene.casts_shadow(hit.shape) {
                 let material = &scene.materials[scene.material_of(hit.shape) as usize];
-                let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
+                let pig = self.pigment_at(material, hit.shape, p);
                 pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
                 if pass.max_element() < ADC_BAILOUT {
                     return Vec3::ZERO;

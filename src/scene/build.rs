@@ -393,10 +393,15 @@ impl Scene {
         let same = |(t, i, g, _): &&(TextureDesc, InteriorDesc, Option<u32>, u32)| {
             *g == object.light_group && *i == object.interior && *t == object.texture
         };
-        if let Some(&(.., index)) = self.material_cache.iter().find(same) {
+        let uv = object.texture.uv_mapping.then(|| {
+            let object_from_render = object.transform.inverse * self.frame.world_from_render();
+            crate::geometry::uv::UvMap::new(&object.shape, object_from_render)
+        });
+        if let Some(&(.., index)) = self.material_cache.iter().find(same).filter(|_| uv.is_none()) {
             return index;
         }
         let mut m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
+        m.uv = uv.flatten().map(Box::new);
         m.lights = self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten();
         self.features.transparency |= m.may_be_transparent();
         self.features.reflection |= m.finish.reflects();

@@ -46,7 +46,7 @@ done
 for s in materials tiles; do
     render "$here/scenes/$s.pov" "$s"
 done
-# images.pov and bump_maps.pov read ../images/*.png (made by tests/reference/images/make_images.py).
-for s in images bump_maps; do
+# images.pov, bump_maps.pov and uv_mapping.pov read ../images/*.png (made by tests/reference/images/make_images.py).
+for s in images bump_maps uv_mapping; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
 done

@@ -26,7 +26,6 @@ const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "jpeg", "sys", "tiff", "f
 #[derive(Default)]
 struct Unmodelled {
     textures: Option<Span>,
-    uv: Option<Span>,
 }
 
 /// The uv corners of a mesh triangle without `uv_vectors` (POV-Ray's default: the unit
@@ -60,7 +59,7 @@ impl Parser<'_, '_> {
                         unmodelled.textures.get_or_insert(t.span);
                     }
                     Some("uv_vectors") => {
-                        let span = self.bump().span;
+                        self.bump();
                         let mut corners = [glam::DVec2::ZERO; 3];
                         for (i, c) in corners.iter_mut().enumerate() {
                             if i > 0 {
@@ -70,7 +69,6 @@ impl Parser<'_, '_> {
                             *c = self.low.vec3(&e)?.truncate();
                         }
                         uv = Some(corners);
-                        unmodelled.uv.get_or_insert(span);
                     }
                     _ => return Err(self.unknown_in(&word, TRIANGLE_ITEMS)),
                 }
@@ -179,7 +177,6 @@ impl Parser<'_, '_> {
                         Ok(true)
                     })?;
                     mesh.uvs = out;
-                    unmodelled.uv.get_or_insert(skw);
                 }
                 "texture_list" => {
                     self.section_items(&word, count, |p| {
@@ -419,9 +416,6 @@ impl Parser<'_, '_> {
                 span,
                 format!("{word}: per-triangle textures are not modelled; the {word}'s own texture is used"),
             ));
-        }
-        if let Some(span) = u.uv {
-            self.low.warn(Diag::new(span, format!("{word}: uv coordinates are not modelled (no uv_mapping)")));
         }
     }
 }

@@ -30,8 +30,12 @@ pub fn has_uv(shape: &ShapeDesc) -> bool {
 /// A shape's uv map, in its object space.
 #[derive(Clone, Debug, PartialEq)]
 pub enum UvShape {
-    Sphere { center: DVec3 },
-    Torus { major: f64 },
+    Sphere {
+        center: DVec3,
+    },
+    Torus {
+        major: f64,
+    },
     /// The description's faces and uvs; hits name faces in `MeshData` order, which
     /// `MeshData::source_face` maps back.
     Mesh(Arc<MeshDesc>),
@@ -64,11 +68,17 @@ impl UvMap {
         match &self.shape {
             UvShape::Sphere { center } => {
                 let d = (q - *center).normalize_or_zero();
-                DVec2::new((0.75 + d.x.atan2(0.0 - d.z) / turn).rem_euclid(1.0), (-d.y).clamp(-1.0, 1.0).acos() / std::f64::consts::PI)
+                DVec2::new(
+                    (0.75 + d.x.atan2(0.0 - d.z) / turn).rem_euclid(1.0),
+                    (-d.y).clamp(-1.0, 1.0).acos() / std::f64::consts::PI,
+                )
             }
             UvShape::Torus { major } => {
                 let rho = q.x.hypot(q.z);
-                DVec2::new((0.5 - q.z.atan2(q.x) / turn).rem_euclid(1.0), (0.5 + q.y.atan2(rho - major) / turn).rem_euclid(1.0))
+                DVec2::new(
+                    (0.5 - q.z.atan2(q.x) / turn).rem_euclid(1.0),
+                    (0.5 + q.y.atan2(rho - major) / turn).rem_euclid(1.0),
+                )
             }
             UvShape::Mesh(mesh) => {
                 let Some((f, [a, b, c])) = face else { return DVec2::ZERO };

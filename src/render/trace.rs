@@ -9,8 +9,8 @@
 use glam::Vec3;
 
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
-use crate::lanes::V3;
 use crate::geometry::uv::UvMap;
+use crate::lanes::V3;
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::light::{self, AreaGrid};
 use crate::render::precision::Precision;

@@ -1331,7 +1331,7 @@ fn mesh2_sections_and_shared_normals() {
 }
 
 #[test]
-fn per_triangle_textures_and_uv_warn_by_name() {
+fn per_triangle_textures_warn_by_name_and_uv_is_kept() {
     let d = dir("mesh_warn");
     let path = write(
         &d,
@@ -1339,10 +1339,36 @@ fn per_triangle_textures_and_uv_warn_by_name() {
         "mesh { triangle { <0,0,0>, <1,0,0>, <0,1,0> texture { pigment { rgb x } } } }\n\
          mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 1, <0,0> } face_indices { 1, <0,1,2> } uv_indices { 1, <0,0,0> } }",
     );
-    let (_, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
+    let (s, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
     let text: Vec<String> = warnings.iter().map(|w| w.to_string()).collect();
     assert!(text.iter().any(|w| w.contains("scene.pov:1:45") && w.contains("per-triangle textures")), "{text:?}");
-    assert!(text.iter().any(|w| w.contains("uv coordinates are not modelled")), "{text:?}");
+    // uv_vectors are read for uv_mapping and mesh cameras, without a warning.
+    assert!(!text.iter().any(|w| w.contains("uv")), "{text:?}");
+    let (m, _) = mesh_of(&s, 1);
+    assert_eq!((m.uvs.len(), m.uv_faces.clone()), (1, vec![[0, 0, 0]]));
+}
+
+#[test]
+fn uv_mapping_marks_textures_and_warns_for_shapes_without_uv() {
+    let d = dir("uv_mapping_flags");
+    let path = write(
+        &d,
+        "scene.pov",
+        "sphere { 0, 1 uv_mapping texture { pigment { checker } } scale 2 }\n\
+         torus { 1, 0.2 pigment { uv_mapping checker scale 0.5 } rotate x * 30 }\n\
+         sphere { 0, 1 texture { uv_mapping pigment { checker } } }\n\
+         sphere { 0, 1 pigment { checker } scale 2 }\n\
+         cone { 0, 1, y, 0.5 texture { uv_mapping pigment { checker } } }",
+    );
+    let (s, warnings) = load_scene_with_warnings(&path, &std_include()).unwrap();
+    let uv: Vec<bool> = s.objects.iter().map(|o| o.texture.uv_mapping).collect();
+    assert_eq!(uv, [true, true, true, false, true]);
+    // A uv-mapped pigment keeps its own transforms only; the object's move the others.
+    let scale = |i: usize| s.objects[i].texture.pigment.transform.matrix.x_axis.x;
+    assert_eq!((scale(0), scale(1), scale(3)), (1.0, 0.5, 2.0));
+    let text: Vec<String> = warnings.iter().map(|w| w.to_string()).collect();
+    assert!(text.iter().any(|w| w.contains("scene.pov:5:31") && w.contains("uv_mapping on a cone")), "{text:?}");
+    assert_eq!(text.iter().filter(|w| w.contains("uv_mapping")).count(), 1, "{text:?}");
 }
 
 #[test]
@@ -1692,11 +1718,69 @@ fn camera_errors_are_located() {
     let (line, col, m) = err("persp_angle", "camera { angle 200 }\n");
     assert_eq!((line, col), (1, 16), "{m}");
     assert!(m.contains("between 0 and 180"), "{m}");
-    let (line, col, m) = err("mesh_camera", "camera {\n  mesh_camera { 1 0 mesh { M } }\n}\n");
-    assert_eq!((line, col), (2, 3), "{m}");
-    assert!(m.contains("mesh_camera"), "{m}");
     // Wide angles are fine for the projections that use them.
     assert!(load_text("fisheye_wide", "camera { fisheye angle 360 }").is_ok());
+}
+
+#[test]
+fn mesh_camera_reads_its_meshes() {
+    use strahl::camera::Projection;
+    let mesh = "#declare M = mesh { triangle { <0, 1, 0>, <1, 0, 0>, <0, 0, 0> uv_vectors <0, 1>, <1, 0>, <0, 0> } \
+                triangle { <0, 1, 0>, <1, 1, 0>, <1, 0, 0> } translate x }\n";
+    let s = load_text(
+        "mesh_camera_ok",
+        &format!("{mesh}camera {{ mesh_camera {{ 1 3 2.5 mesh {{ M translate y }} smooth }} location <0, 0, 0.5> direction -z }}"),
+    )
+    .unwrap();
+    assert_eq!(
+        s.camera.lens.projection,
+        Projection::Mesh { rays_per_pixel: 1, offset: 0.5, reverse: true, max_distance: 2.5 }
+    );
+    let cam = s.camera_mesh.as_ref().expect("the meshes");
+    assert!((cam.distribution, cam.smooth, cam.meshes.len()) == (3, true, 1));
+    // The declared mesh's translate, then the camera's.
+    let m = &cam.meshes[0];
+    assert!(close(m.transform.matrix.transform_point3(DVec3::ZERO), DVec3::new(1.0, 1.0, 0.0)));
+    // The second triangle has no uv_vectors: POV-Ray's default map.
+    assert_eq!(m.mesh.uv_faces.len(), 2);
+    assert_eq!(m.mesh.uvs[m.mesh.uv_faces[1][2] as usize], glam::DVec2::new(1.0, 1.0));
+    // `smooth` in the camera's body, as POV-Ray's grammar has it; a later camera drops the mesh.
+    let s =
+        load_text("mesh_camera_body_smooth", &format!("{mesh}camera {{ mesh_camera {{ 1 0 mesh {{ M }} }} smooth }}"))
+            .unwrap();
+    assert!(s.camera_mesh.as_ref().unwrap().smooth);
+    let s = load_text(
+        "mesh_camera_replaced",
+        &format!("{mesh}camera {{ mesh_camera {{ 1 0 mesh {{ M }} }} }} camera {{ }}"),
+    )
+    .unwrap();
+    assert!(s.camera_mesh.is_none() && s.camera.lens.projection == Projection::Perspective);
+}
+
+#[test]
+fn mesh_camera_errors_are_located() {
+    let mesh = "#declare M = mesh { triangle { <0, 1, 0>, <1, 0, 0>, <0, 0, 0> } }\n";
+    let cases: &[(&str, &str, (u32, u32), &str)] = &[
+        ("undeclared", "camera {\n  mesh_camera { 1 0 mesh { N } }\n}\n", (3, 28), "`N`"),
+        ("distribution", "camera {\n  mesh_camera { 1 5 mesh { M } }\n}\n", (3, 19), "0, 1, 2 or 3"),
+        ("rays", "camera {\n  mesh_camera { 0 0 mesh { M } }\n}\n", (3, 17), "at least 1"),
+        ("too_few_meshes", "camera {\n  mesh_camera { 2 0 mesh { M } }\n}\n", (3, 3), "a mesh for each"),
+        ("no_uv", "camera {\n  mesh_camera { 1 3 mesh { M } }\n}\n", (3, 3), "uv_vectors"),
+        ("one_ray", "camera {\n  mesh_camera { 2 2 mesh { M } mesh { M } }\n}\n", (3, 3), "one ray per pixel"),
+        ("no_mesh", "camera {\n  mesh_camera { 1 1 }\n}\n", (3, 3), "at least one"),
+        (
+            "not_mesh",
+            "#declare S = sphere { 0, 1 }\ncamera {\n  mesh_camera { 1 0 mesh { S } }\n}\n",
+            (4, 28),
+            "not a sphere",
+        ),
+        ("smooth_alone", "camera {\n  smooth\n}\n", (3, 3), "belongs to a mesh_camera"),
+    ];
+    for (name, text, at, what) in cases {
+        let (line, col, m) = err(&format!("mesh_camera_{name}"), &format!("{mesh}{text}"));
+        assert_eq!((line, col), *at, "{name}: {m}");
+        assert!(m.contains(what), "{name}: {m}");
+    }
 }
 
 #[test]
@@ -1960,13 +2044,15 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
 }
 
 #[test]
-fn uv_mapping_is_read_and_noted_as_not_modelled() {
+fn uv_mapping_without_uv_is_noted_as_not_modelled() {
     let s = load_text(
         "uv_mapping",
         "plane { y, 0 texture { uv_mapping pigment { uv_mapping checker } normal { uv_mapping bumps } } }",
     )
     .unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(s.unmodelled.iter().filter(|f| f.name == "uv_mapping").count(), 1);
+    // A plane has no surface coordinates; uv-mapped normals are not modelled: one note each.
+    let names: Vec<&str> = s.unmodelled.iter().map(|f| f.name.as_str()).filter(|n| n.contains("uv_mapping")).collect();
+    assert_eq!(names, ["uv_mapping in a normal", "uv_mapping on a plane (no surface coordinates)"]);
 }
 
 /// `checker rgb <..> rgb <..>`: the second `rgb` starts the second colour (POV-Ray 3.7 renders

@@ -641,6 +641,8 @@ const CAMERAS: &[(&str, f64)] = &[
     ("cameras_cylinder3", 35.0),
     ("cameras_cylinder4", 35.0),
     ("cameras_spherical", 35.0),
+    ("cameras_mesh", 35.0),
+    ("cameras_mesh_rows", 35.0),
 ];
 
 #[test]
@@ -731,6 +733,13 @@ fn rainbow_matches_povray() {
 #[test]
 fn image_maps_match_povray() {
     check_psnr("images", &scene("images"), 35.0);
+}
+
+/// `uv_mapping`: a checker and an image_map through the surface coordinates of spheres, tori,
+/// a mesh with uv_vectors and a mesh2 with uv_indices, transformed after their textures.
+#[test]
+fn uv_mapping_matches_povray() {
+    check_psnr("uv_mapping", &scene("uv_mapping"), 35.0);
 }
 
 /// `bump_map`: grey and colour images as heights, `bump_size` (negative too), `interpolate 2`,

@@ -28,6 +28,8 @@
 
 use glam::DVec3;
 
+use super::mesh::CameraMesh;
+
 /// A camera's projection type, with the parameters it reads.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Projection {
@@ -53,6 +55,16 @@ pub enum Projection {
         h: f64,
         v: f64,
     },
+    /// `mesh_camera { .. }` (`camera::mesh`): the meshes are the scene's `camera_mesh`; the
+    /// camera's vectors are not used. `offset` (world units, from `location.z`) moves each
+    /// origin along its face normal; `reverse` (`direction.z < 0`) turns the rays around;
+    /// `max_distance` (world units, 0 for none) ends them.
+    Mesh {
+        rays_per_pixel: u32,
+        offset: f64,
+        reverse: bool,
+        max_distance: f64,
+    },
 }
 
 impl Projection {
@@ -67,6 +79,7 @@ impl Projection {
             Projection::Panoramic => "panoramic".into(),
             Projection::Cylinder { kind, .. } => format!("cylinder {kind}"),
             Projection::Spherical { .. } => "spherical".into(),
+            Projection::Mesh { .. } => "mesh_camera".into(),
         }
     }
 }
@@ -108,6 +121,10 @@ pub struct Lens {
 impl Lens {
     /// The blur samples traced per (sub-)sample under a cap; 1 without blur.
     pub fn blur_samples(&self, cap: Option<u32>) -> u32 {
+        // A mesh camera's rays each belong to a mesh (or block of faces): never capped.
+        if let Projection::Mesh { rays_per_pixel, .. } = self.projection {
+            return rays_per_pixel.max(1);
+        }
         match self.blur {
             Some(b) => b.max_samples.min(cap.unwrap_or(u32::MAX)).max(1),
             None => 1,
@@ -117,7 +134,7 @@ impl Lens {
 
 /// A camera's vectors (already in render space) with the projection, ready to make rays in f64.
 #[derive(Clone, Copy, Debug)]
-pub struct LensRays {
+pub struct LensRays<'a> {
     pub projection: Projection,
     pub location: DVec3,
     pub direction: DVec3,
@@ -132,9 +149,11 @@ pub struct LensRays {
     scale: f64,
     /// Focal blur: lens radius and the focal plane's distance along `dn` from `location`.
     blur: Option<(f64, f64)>,
+    /// A mesh camera's faces (`Projection::Mesh`).
+    mesh: Option<&'a CameraMesh>,
 }
 
-impl LensRays {
+impl<'a> LensRays<'a> {
     /// `location` and the vectors in render space (`scale` render units per world unit);
     /// `world_location` is the camera's location in the scene, where `focal_point` is measured.
     pub fn new(
@@ -144,7 +163,7 @@ impl LensRays {
         right: DVec3,
         up: DVec3,
         scale: f64,
-    ) -> LensRays {
+    ) -> LensRays<'a> {
         let unit = |v: DVec3| v.try_normalize().unwrap_or(DVec3::ZERO);
         let dn = unit(direction);
         let blur = lens.blur.map(|b| {
@@ -168,7 +187,23 @@ impl LensRays {
             aspect: right.length() / up.length(),
             scale,
             blur,
+            mesh: None,
         }
+    }
+
+    /// These rays with a mesh camera's faces (render space), which `Projection::Mesh` needs.
+    pub fn with_mesh(self, mesh: Option<&'a CameraMesh>) -> LensRays<'a> {
+        LensRays { mesh, ..self }
+    }
+
+    /// A mesh camera's ray number `ray` of pixel (x, y) of a w×h image at image point
+    /// (u, v) (`camera::mesh`), moved along its normal by `location.z` and reversed as
+    /// `direction` says; `None` where no face belongs to it, or for other projections.
+    pub fn mesh_ray(&self, pixel: (u32, u32, u32, u32), uv: (f64, f64), ray: u32) -> Option<(DVec3, DVec3)> {
+        let Projection::Mesh { offset, reverse, .. } = self.projection else { return None };
+        let (o, n) = self.mesh?.ray(pixel, uv, ray)?;
+        let d = if reverse { -n } else { n };
+        Some((o + n * (offset * self.scale), d))
     }
 
     /// Whether rays are moved onto a lens (focal blur).
@@ -178,12 +213,15 @@ impl LensRays {
 
     /// Whether every ray starts at `location` (before focal blur).
     pub fn shared_origin(&self) -> bool {
-        !matches!(self.projection, Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. })
+        !matches!(
+            self.projection,
+            Projection::Orthographic | Projection::Cylinder { kind: 3 | 4, .. } | Projection::Mesh { .. }
+        )
     }
 
     /// Whether every pixel has a ray (fisheye and omnimax leave the corners black).
     pub fn covers_image(&self) -> bool {
-        !matches!(self.projection, Projection::Fisheye { .. } | Projection::Omnimax)
+        !matches!(self.projection, Projection::Fisheye { .. } | Projection::Omnimax | Projection::Mesh { .. })
     }
 
     /// The ray (origin, unnormalised direction) through image point (u, v), or `None` where
@@ -244,6 +282,8 @@ impl LensRays {
                 let (lon, lat) = (px * h.to_radians(), py * v.to_radians());
                 (o, rn * (lat.cos() * lon.sin()) + un * lat.sin() + dn * (lat.cos() * lon.cos()))
             }
+            // Rays of a mesh camera need the pixel's number: `mesh_ray`.
+            Projection::Mesh { .. } => return None,
         };
         Some(r)
     }
@@ -313,7 +353,7 @@ pub fn blur_jitter(x: u32, y: u32, sx: u32, sy: u32, sample: u32) -> [f64; 4] {
 mod tests {
     use super::*;
 
-    fn gen(projection: Projection) -> LensRays {
+    fn gen(projection: Projection) -> LensRays<'static> {
         let lens = Lens { projection, blur: None };
         LensRays::new(&lens, (DVec3::ZERO, DVec3::ZERO), DVec3::Z, DVec3::new(1.33, 0.0, 0.0), DVec3::Y, 1.0)
     }

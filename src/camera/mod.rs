@@ -9,6 +9,7 @@
 //! `path_file`.
 
 pub mod lens;
+pub mod mesh;
 pub mod path;
 mod path_file;
 
@@ -73,6 +74,8 @@ impl Camera {
             }
             Projection::Cylinder { angle, .. } => format!("  {}\n  angle {angle:.6}\n", self.lens.projection.keyword()),
             Projection::Spherical { h, v } => format!("  spherical\n  angle {h:.6}, {v:.6}\n"),
+            // The meshes are the scene's; a perspective view of the same vectors stands in.
+            Projection::Mesh { .. } => "  // mesh_camera: its meshes are not written\n".into(),
             p => format!("  {}\n", p.keyword()),
         };
         let blur = match self.lens.blur {

@@ -37,6 +37,8 @@ pub struct MeshData {
     bvh: Bvh,
     pub min: Vec3,
     pub max: Vec3,
+    /// Each stored face's index in the faces `new` was given (for `uv_mapping`'s uv_vectors).
+    pub source_face: Vec<u32>,
     /// Hits below this object-space height are not hits (`height_field`'s `water_level`);
     /// -inf for meshes.
     floor: f32,
@@ -67,9 +69,9 @@ impl MeshData {
             }
         }
         // Faces are stored in leaf order: leaf ranges now index `triangles` directly.
-        bvh.prim_order = (0..triangles.len() as u32).collect();
+        let source_face = std::mem::replace(&mut bvh.prim_order, (0..triangles.len() as u32).collect());
         let (min, max) = if triangles.is_empty() { (Vec3::ZERO, Vec3::ZERO) } else { (all.min, all.max) };
-        MeshData { triangles, smooth_of, smooth, bvh, min, max, floor: f32::NEG_INFINITY }
+        MeshData { triangles, smooth_of, smooth, bvh, min, max, source_face, floor: f32::NEG_INFINITY }
     }
 
     /// Hits below object-space height `floor` are left out (`water_level`).
@@ -238,6 +240,7 @@ impl MeshData {
             + self.smooth.len() * 36
             + self.bvh.nodes.len() * std::mem::size_of::<crate::accel::bvh::BvhNode>()
             + self.bvh.prim_order.len() * 4
+            + self.source_face.len() * 4
     }
 }
 

@@ -66,6 +66,7 @@ pub mod spline;
 pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;
+pub mod uv;
 
 use glam::Vec3;
 

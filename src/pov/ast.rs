@@ -226,6 +226,11 @@ pub enum CameraItem {
     Variance(Expr),
     /// Read in full but not modelled (`normal { }`, `bokeh { }`): a warning names it.
     Unmodelled(&'static str, Span),
+    /// `mesh_camera { .. }`, its numbers evaluated and its meshes looked up as it was read.
+    MeshCamera(std::sync::Arc<crate::scene::desc::MeshCameraDesc>, Span),
+    /// `smooth` in the camera's body (POV-Ray's grammar puts it there; the samples write it
+    /// inside `mesh_camera`).
+    Smooth(Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -344,6 +349,8 @@ pub enum PigmentItem {
     ImageMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
     /// `image_pattern { }` as the pigment's pattern.
     ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    /// `uv_mapping`: the pigment follows the surface's (u, v) (`TextureDesc::uv_mapping`).
+    UvMapping(Span),
 }
 
 /// A pattern keyword with its argument and, for list patterns, what each cell shows.
@@ -484,6 +491,8 @@ pub enum TextureItem {
     Layer(Box<Texture>),
     /// `image_pattern { }` as the pattern of a `texture_map`.
     ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    /// `uv_mapping`: the texture's pigment follows the surface's (u, v).
+    UvMapping(Span),
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -652,6 +661,8 @@ pub enum Modifier {
     ClippedBy(Clip),
     /// `bounded_by { objects }`: a hint for the renderer, which changes no picture.
     BoundedBy(Clip),
+    /// `uv_mapping` on the object: all its textures follow the surface's (u, v).
+    UvMapping(Span),
 }
 
 /// What `clipped_by` and `bounded_by` hold.

@@ -74,6 +74,8 @@ pub struct CameraState {
     pub(crate) angle: Option<f64>,
     pub(crate) look_at: Option<(DVec3, Span)>,
     pub(crate) transforms: Vec<Transform>,
+    /// A `mesh_camera`'s meshes (the projection is then `Projection::Mesh`).
+    pub(crate) mesh: Option<std::sync::Arc<crate::scene::desc::MeshCameraDesc>>,
 }
 
 /// `array[d1][d2]...`: up to five dimensions, elements unset until declared.

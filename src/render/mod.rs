@@ -23,11 +23,10 @@ use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
 use crate::camera::lens::{self, LensRays};
-use crate::camera::{Camera, Lens};
+use crate::camera::{Camera, Lens, Projection};
 use crate::geometry::ray::Ray;
 use crate::lanes::{Lane, F8, V3};
 use crate::scene::build::Scene;
-use crate::scene::place::RenderFrame;
 use image::Image;
 use stats::RenderStats;
 use trace::{RayKind, Tracer};
@@ -103,19 +102,23 @@ impl Default for RenderSettings {
 /// it to f32 once; packets build their lanes from those same single rays, so packets and
 /// single rays trace the same bits.
 #[derive(Clone, Copy, Debug)]
-struct RayGen {
+struct RayGen<'a> {
     origin: Vec3,
     direction: Vec3,
     right: Vec3,
     up: Vec3,
     /// `None`: POV-Ray's default perspective camera without blur.
-    lens: Option<LensRays>,
-    /// Blur rays averaged per sample (1 without focal blur), after the quality cap.
+    lens: Option<LensRays<'a>>,
+    /// Blur rays averaged per sample (1 without focal blur), after the quality cap; a mesh
+    /// camera's rays per pixel.
     blur_samples: u32,
+    /// How far primary rays reach (render units): a mesh camera's `max_distance`, else ∞.
+    max_distance: f32,
 }
 
-impl RayGen {
-    fn new(camera: &Camera, frame: &RenderFrame, quality: &Quality) -> RayGen {
+impl<'a> RayGen<'a> {
+    fn new(camera: &Camera, scene: &'a Scene, quality: &Quality) -> RayGen<'a> {
+        let frame = &scene.frame;
         let lens = (camera.lens != Lens::default()).then(|| {
             LensRays::new(
                 &camera.lens,
@@ -125,7 +128,12 @@ impl RayGen {
                 frame.vector(camera.up),
                 frame.per_unit,
             )
+            .with_mesh(scene.camera_mesh.as_deref())
         });
+        let max_distance = match camera.lens.projection {
+            Projection::Mesh { max_distance, .. } if max_distance > 0.0 => (max_distance * frame.per_unit) as f32,
+            _ => f32::INFINITY,
+        };
         RayGen {
             origin: frame.point(camera.location).as_vec3(),
             direction: frame.vector(camera.direction).as_vec3(),
@@ -133,6 +141,7 @@ impl RayGen {
             up: frame.vector(camera.up).as_vec3(),
             lens,
             blur_samples: camera.lens.blur_samples(quality.max_blur_samples),
+            max_distance,
         }
     }
 
@@ -164,7 +173,9 @@ impl RayGen {
         let lens = self.lens.as_ref().expect("lens rays need a lens");
         let PixelSample { x, y, sx, sy, w, h, aa } = *p;
         let cell = |i: u32, si: u32, n: u32, jitter: f64| (i as f64 + (si as f64 + jitter) / aa as f64) / n as f64;
-        let (o, d) = if self.blur_samples > 1 || lens.has_blur() {
+        let (o, d) = if let Projection::Mesh { .. } = lens.projection {
+            lens.mesh_ray((x, y, w, h), (cell(x, sx, w, 0.0), cell(y, sy, h, 0.0)), s)?
+        } else if self.blur_samples > 1 || lens.has_blur() {
             let j = lens::blur_jitter(x, y, sx, sy, s);
             let r = lens.ray(cell(x, sx, w, j[2]), cell(y, sy, h, j[3]))?;
             lens.blurred(r, (j[0], j[1]))
@@ -192,7 +203,7 @@ struct PixelSample {
 /// for that pixel without antialiasing. For tools that ask what a pixel sees. Where the
 /// camera's projection has no ray (a fisheye's corners), the ray along the view axis.
 pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u32, y: u32) -> Ray {
-    let gen = RayGen::new(camera, &scene.frame, &Quality { max_blur_samples: Some(1), ..Quality::default() });
+    let gen = RayGen::new(camera, scene, &Quality { max_blur_samples: Some(1), ..Quality::default() });
     if gen.lens.is_some() {
         let p = PixelSample { x, y, sx: 0, sy: 0, w: width, h: height, aa: 1 };
         if let Some(r) = gen.lens_ray(&p, 0) {
@@ -205,7 +216,7 @@ pub fn primary_ray(scene: &Scene, camera: &Camera, width: u32, height: u32, x: u
 
 /// Renders `camera`'s view into `image` (resized to the settings), returning the statistics.
 pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: &mut Image) -> RenderStats {
-    let gen = RayGen::new(camera, &scene.frame, &settings.quality);
+    let gen = RayGen::new(camera, scene, &settings.quality);
     // Cameras whose pixels may have no ray (fisheye, omnimax) trace single rays; every other
     // projection and focal blur may use packets (`packet::trace_block` drops its frustum test
     // when the rays do not share an origin).
@@ -469,15 +480,23 @@ fn lens_sample(tracer: &mut Tracer, gen: &RayGen, p: &PixelSample) -> Vec3 {
     let gamma = tracer.scene.gamma;
     let n = gen.blur_samples;
     let mut sum = Vec3::ZERO;
+    let mut traced = 0;
     for s in 0..n {
         let Some(ray) = gen.lens_ray(p, s) else { continue };
-        let c = tracer.trace(&ray, 1, 1.0, RayKind::Primary);
+        traced += 1;
+        let c = tracer.trace_within(&ray, gen.max_distance, RayKind::Primary);
         if c.is_finite() {
             sum += output_sample(c, gamma);
         } else {
             tracer.stats.bad_samples += 1;
         }
     }
+    // A mesh camera's rays without a face leave the average (POV-Ray 3.4.2.2.3.2); other
+    // projections' missing rays count as black.
+    let n = match gen.lens.map(|l| l.projection) {
+        Some(Projection::Mesh { .. }) => traced.max(1),
+        _ => n,
+    };
     if n > 1 {
         sum / n as f32
     } else {

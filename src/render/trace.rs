@@ -9,8 +9,9 @@
 use glam::Vec3;
 
 use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
+use crate::geometry::uv::UvMap;
 use crate::lanes::V3;
-use crate::render::intersect::Hit;
+use crate::render::intersect::{Hit, HitShape};
 use crate::render::light::{self, AreaGrid};
 use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
@@ -62,8 +63,19 @@ impl<'a> Tracer<'a> {
     /// Colour seen along `ray`. `level` is 1 for primary rays; `weight` is how much this ray can
     /// still change the pixel; `inside_ior` is the index of refraction the ray travels in.
     pub fn trace(&mut self, ray: &Ray, level: u32, weight: f32, kind: RayKind) -> Vec3 {
+        self.trace_limited(ray, f32::INFINITY, level, weight, kind)
+    }
+
+    /// A primary ray that sees only what lies nearer than `max` (a mesh camera's
+    /// `max_distance`; ∞ for every other camera).
+    pub fn trace_within(&mut self, ray: &Ray, max: f32, kind: RayKind) -> Vec3 {
+        self.trace_limited(ray, max, 1, 1.0, kind)
+    }
+
+    #[inline(always)]
+    fn trace_limited(&mut self, ray: &Ray, max: f32, level: u32, weight: f32, kind: RayKind) -> Vec3 {
         self.stats.count_ray(kind, level);
-        let hit = match self.scene.intersect(ray, f32::INFINITY, &mut self.stats) {
+        let hit = match self.scene.intersect(ray, max, &mut self.stats) {
             Some(hit) if self.refines() => Some(self.scene.refine(ray, hit)),
             hit => hit,
         };
@@ -117,8 +129,37 @@ impl<'a> Tracer<'a> {
             Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
             None => facing,
         };
-        let pigment = eval_pigment(&material.pigment, p, self.pattern_quality());
+        let pigment = self.pigment_at(material, hit.shape, p);
         Surface { p, facing, normal, entering, material, pigment }
+    }
+
+    /// `material`'s pigment at hit point `p` of `shape`: in 3-D pattern space, or at the
+    /// surface's (u, v, 0) for a uv-mapped material.
+    #[inline(always)]
+    fn pigment_at(&self, material: &Material, shape: HitShape, p: Vec3) -> Rgbft {
+        match &material.uv {
+            None => eval_pigment(&material.pigment, p, self.pattern_quality()),
+            Some(uv) => self.uv_pigment(material, uv, shape, p),
+        }
+    }
+
+    /// Out of line: most materials are not uv-mapped. (u, v) become the world point
+    /// (u, v, 0) seen from render space, so the pigment's own transforms apply to them.
+    #[inline(never)]
+    fn uv_pigment(&self, material: &Material, uv: &UvMap, shape: HitShape, p: Vec3) -> Rgbft {
+        let scene = self.scene;
+        let face = match shape {
+            HitShape::Face { prim, face } => {
+                let data = &scene.meshes[scene.prims[prim as usize].index as usize].data;
+                let t = &data.triangles[face as usize];
+                let corners = [t.v0, t.v0 + t.e1, t.v0 + t.e2].map(|v| v.as_dvec3());
+                data.source_face.get(face as usize).map(|&f| (f as usize, corners))
+            }
+            _ => None,
+        };
+        let st = uv.uv(p.as_dvec3(), face);
+        let q = scene.frame.point(glam::DVec3::new(st.x, st.y, 0.0)).as_vec3();
+        eval_pigment(&material.pigment, q, self.pattern_quality())
     }
 
     /// Lights `surface` and recurses into reflection and refraction. `shadows` says whether
@@ -361,7 +402,7 @@ impl<'a> Tracer<'a> {
             let n = scene.normal_at(hit.shape, p);
             if scene.casts_shadow(hit.shape) {
                 let material = &scene.materials[scene.material_of(hit.shape) as usize];
-                let pig = eval_pigment(&material.pigment, p, self.pattern_quality());
+                let pig = self.pigment_at(material, hit.shape, p);
                 pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
                 // Leaving a fading object: the light crossed it since the last surface.
                 if let (Some(fade), true) = (&material.fade, n.dot(ray.dir) > 0.0) {

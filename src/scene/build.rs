@@ -304,6 +304,8 @@ pub struct Scene {
     pub background: Rgbft,
     /// `sky_sphere`, `fog`, `rainbow` (empty in most scenes).
     pub atmosphere: Atmosphere,
+    /// A `mesh_camera`'s faces in render space (`camera::mesh`); `None` for other cameras.
+    pub camera_mesh: Option<Arc<crate::camera::mesh::CameraMesh>>,
     pub ambient_light: Vec3,
     pub max_trace_level: u32,
     /// Whether output pixels are sRGB-encoded (3.7 gamma handling) or written linear (legacy).
@@ -357,6 +359,7 @@ impl Scene {
             lights: desc.lights.iter().map(|l| Light::from_desc(l, &frame)).collect(),
             background: Rgbft::from_desc(&desc.background),
             atmosphere: Atmosphere::build(desc, &frame),
+            camera_mesh: desc.camera_mesh.as_ref().map(|m| Arc::new(crate::camera::mesh::CameraMesh::build(m, &frame))),
             ambient_light: desc.global.ambient_light.as_vec3(),
             max_trace_level: desc.global.max_trace_level.max(1),
             srgb: desc.writes_srgb(),
@@ -390,10 +393,15 @@ impl Scene {
         let same = |(t, i, g, _): &&(TextureDesc, InteriorDesc, Option<u32>, u32)| {
             *g == object.light_group && *i == object.interior && *t == object.texture
         };
-        if let Some(&(.., index)) = self.material_cache.iter().find(same) {
+        let uv = object.texture.uv_mapping.then(|| {
+            let object_from_render = object.transform.inverse * self.frame.world_from_render();
+            crate::geometry::uv::UvMap::new(&object.shape, object_from_render)
+        });
+        if let Some(&(.., index)) = self.material_cache.iter().find(same).filter(|_| uv.is_none()) {
             return index;
         }
         let mut m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
+        m.uv = uv.flatten().map(Box::new);
         m.lights = self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten();
         self.features.transparency |= m.may_be_transparent();
         self.features.reflection |= m.finish.reflects();

@@ -22,7 +22,12 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transfo
     ObjectDesc {
         shape,
         transform,
-        texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
+        texture: TextureDesc {
+            pigment: PigmentDesc { pattern, ..PigmentDesc::default() },
+            normal: None,
+            finish,
+            uv_mapping: false,
+        },
         interior: Default::default(),
         no_shadow: false,
         inverse: false,

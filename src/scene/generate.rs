@@ -117,7 +117,12 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
     ObjectDesc {
         shape,
         transform: Default::default(),
-        texture: TextureDesc { pigment: PigmentDesc { pattern, ..PigmentDesc::default() }, normal: None, finish },
+        texture: TextureDesc {
+            pigment: PigmentDesc { pattern, ..PigmentDesc::default() },
+            normal: None,
+            finish,
+            uv_mapping: false,
+        },
         interior: Default::default(),
         no_shadow: false,
         inverse: false,
@@ -213,7 +218,7 @@ fn bumpy_sphere(n: usize, edge: f64) -> ShapeDesc {
             face([at(r, c + 1), at(r + 1, c + 1), at(r + 1, c)]);
         }
     }
-    let mesh = MeshDesc { vertices, normals: Vec::new(), faces };
+    let mesh = MeshDesc { vertices, faces, ..MeshDesc::default() };
     ShapeDesc::Mesh { mesh: std::sync::Arc::new(mesh), inside_vector: None }
 }
 

@@ -217,6 +217,9 @@ pub struct Material {
     /// Which of the scene's lights light this surface (`light_group`), by light index; `None`
     /// (every scene without light groups): all of them.
     pub lights: Option<std::sync::Arc<[bool]>>,
+    /// `uv_mapping`: where the pigment is evaluated on this object's surface (one material per
+    /// uv-mapped object); `None` for 3-D pattern space.
+    pub uv: Option<Box<crate::geometry::uv::UvMap>>,
 }
 
 impl Material {
@@ -240,6 +243,7 @@ impl Material {
             ior: interior.ior as f32,
             fade: interior.fade.as_deref().map(|f| Fade::from_desc(f, world_from_render.x_axis.truncate().length())),
             lights: None,
+            uv: None,
         }
     }
 }

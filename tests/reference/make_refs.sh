@@ -27,7 +27,7 @@ for s in superellipsoids; do
 done
 for s in cameras_ortho cameras_ortho_plain cameras_ortho_area cameras_fisheye cameras_ultra cameras_omnimax \
     cameras_panoramic cameras_cylinder cameras_cylinder2 cameras_cylinder3 cameras_cylinder4 cameras_spherical \
-    cameras_focal_blur; do
+    cameras_focal_blur cameras_mesh cameras_mesh_rows; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in prisms text lathes sors blobs julias isosurfaces parametrics finishes bicubic light_groups; do
@@ -46,7 +46,7 @@ done
 for s in materials tiles; do
     render "$here/scenes/$s.pov" "$s"
 done
-# images.pov and bump_maps.pov read ../images/*.png (made by tests/reference/images/make_images.py).
-for s in images bump_maps; do
+# images.pov, bump_maps.pov and uv_mapping.pov read ../images/*.png (made by tests/reference/images/make_images.py).
+for s in images bump_maps uv_mapping; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
 done

@@ -13,6 +13,7 @@ use crate::scene::desc::CameraDesc;
 impl Lowerer<'_> {
     pub(super) fn camera(&mut self, items: &[CameraItem], span: Span) -> PResult<CameraDesc> {
         let state = self.camera_state(items)?;
+        self.scene.camera_mesh = state.mesh.clone();
         self.resolve_camera(state, span)
     }
 
@@ -27,7 +28,7 @@ impl Lowerer<'_> {
         let mut blur = None::<FocalBlur>;
         let mut blur_span = None;
         for item in items {
-            let CameraState { cam, angle, look_at, transforms } = &mut state;
+            let CameraState { cam, angle, look_at, transforms, mesh } = &mut state;
             match item {
                 CameraItem::Declared(e) => match self.eval(e)? {
                     Value::Camera(declared) => state = *declared,
@@ -97,7 +98,30 @@ impl Lowerer<'_> {
                 CameraItem::Unmodelled(what, span) => {
                     self.warn(Diag::new(*span, format!("{what} is not modelled; the camera ignores it")));
                 }
+                CameraItem::MeshCamera(desc, _) => {
+                    let smooth = mesh.as_ref().is_some_and(|m| m.smooth) || desc.smooth;
+                    let mut desc = desc.clone();
+                    std::sync::Arc::make_mut(&mut desc).smooth = smooth;
+                    cam.lens.projection = Projection::Mesh {
+                        rays_per_pixel: desc.rays_per_pixel,
+                        offset: 0.0,
+                        reverse: false,
+                        max_distance: desc.max_distance,
+                    };
+                    *mesh = Some(desc);
+                    projection = None;
+                }
+                CameraItem::Smooth(span) => match mesh {
+                    Some(m) => std::sync::Arc::make_mut(m).smooth = true,
+                    None => {
+                        return Err(Diag::new(*span, "camera `smooth` belongs to a mesh_camera (none given before it)"))
+                    }
+                },
             }
+        }
+        if projection.is_some() {
+            // A projection keyword after a mesh_camera replaces it.
+            state.mesh = None;
         }
         let cam = &mut state.cam;
         if let Some((p, span)) = projection {
@@ -159,7 +183,13 @@ impl Lowerer<'_> {
 
     /// The camera `state` describes: `angle`, then `look_at`, then the transforms.
     fn resolve_camera(&mut self, state: CameraState, span: Span) -> PResult<CameraDesc> {
-        let CameraState { mut cam, angle, look_at, transforms } = state;
+        let CameraState { mut cam, angle, look_at, transforms, .. } = state;
+        if let Projection::Mesh { offset, reverse, .. } = &mut cam.lens.projection {
+            // POV-Ray 3.4.2.2.3.5–6: only location's z (along each face normal) and the sign
+            // of direction's z mean anything to a mesh camera.
+            *offset = cam.location.z;
+            *reverse = cam.direction.z < -1e-10;
+        }
         for (v, name) in [(cam.direction, "direction"), (cam.right, "right"), (cam.up, "up")] {
             if v.length() == 0.0 {
                 return Err(Diag::new(span, format!("camera {name} vector has zero length")));

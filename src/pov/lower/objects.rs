@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::textures::{layer_over, transform_texture};
+use super::textures::{layer_over, texture_uv_span, transform_texture, uv_span};
 use super::Lowerer;
 use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
@@ -161,16 +161,28 @@ impl Lowerer<'_> {
     fn leaf_modifier(&mut self, part: &mut Part, m: &Modifier) -> PResult<()> {
         let surface = matches!(m, Modifier::Pigment(_) | Modifier::Normal(_) | Modifier::Finish(_));
         if surface && !part.textured {
-            // The first of these starts the object's texture from the default in effect.
+            // The first of these starts the object's texture from the default in effect (an
+            // object's `uv_mapping` before it stays).
+            let uv = part.desc.texture.uv_mapping;
             part.desc.texture = self.default_texture.clone();
+            part.desc.texture.uv_mapping |= uv;
         }
         let obj = &mut part.desc;
+        // An object's `uv_mapping` holds for the textures given after it too.
+        let object_uv = obj.texture.uv_mapping;
         match m {
-            Modifier::Pigment(p) => obj.texture.pigment = self.pigment(p)?,
+            Modifier::Pigment(p) => {
+                obj.texture.pigment = self.pigment(p)?;
+                obj.texture.uv_mapping |= uv_span(p).is_some();
+            }
+            Modifier::UvMapping(_) => obj.texture.uv_mapping = true,
             Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
             Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
             Modifier::Texture(t) if part.textured => return Err(Diag::new(t.span, LAYERED)),
-            Modifier::Texture(t) => obj.texture = self.texture(t)?,
+            Modifier::Texture(t) => {
+                obj.texture = self.texture(t)?;
+                obj.texture.uv_mapping |= object_uv;
+            }
             Modifier::Interior(i) => {
                 obj.interior = self.interior(i)?;
                 part.has_interior = true;
@@ -230,6 +242,15 @@ impl Lowerer<'_> {
         }
         if surface || matches!(m, Modifier::Texture(_)) {
             part.textured = true;
+        }
+        let uv = match m {
+            Modifier::UvMapping(span) => Some(*span),
+            Modifier::Pigment(p) => uv_span(p),
+            Modifier::Texture(t) => texture_uv_span(t),
+            _ => None,
+        };
+        if let Some(span) = uv.filter(|_| !crate::geometry::uv::has_uv(&part.desc.shape)) {
+            self.not_modelled(&format!("uv_mapping on a {} (no surface coordinates)", part.desc.shape.keyword()), span);
         }
         Ok(())
     }
@@ -318,7 +339,15 @@ impl Lowerer<'_> {
         match m {
             Modifier::Pigment(p) => {
                 let pigment = self.pigment(p)?;
-                pending.texture.get_or_insert_with(|| self.default_texture.clone()).pigment = pigment;
+                let texture = pending.texture.get_or_insert_with(|| self.default_texture.clone());
+                texture.pigment = pigment;
+                texture.uv_mapping |= uv_span(p).is_some();
+            }
+            Modifier::UvMapping(_) => {
+                each(parts, &mut |leaf| leaf.desc.texture.uv_mapping = true);
+                if let Some(t) = &mut pending.texture {
+                    t.uv_mapping = true;
+                }
             }
             Modifier::Normal(n) => {
                 let normal = self.normal(n)?;

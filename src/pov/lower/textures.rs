@@ -154,6 +154,7 @@ impl Lowerer<'_> {
                     }
                 }
                 PigmentItem::ImageMap(im, _) => pattern = Pattern::Done(PigmentPattern::ImageMap(im.clone())),
+                PigmentItem::UvMapping(_) => {}
                 PigmentItem::ImagePattern(im, _) => {
                     pattern = Pattern::Generic(PatternDesc::new(PatternKind::Image(im.clone())), Vec::new())
                 }
@@ -526,12 +527,17 @@ impl Lowerer<'_> {
                     Some(other) => return Err(other.wrong_kind(e.span, "a declared texture")),
                     None => return Err(Diag::new(e.span, "expected a declared texture")),
                 },
-                TextureItem::Pigment(p) => out.pigment = self.pigment(p)?,
+                TextureItem::Pigment(p) => {
+                    out.pigment = self.pigment(p)?;
+                    out.uv_mapping |= uv_span(p).is_some();
+                }
+                TextureItem::UvMapping(_) => out.uv_mapping = true,
                 TextureItem::Normal(n) => out.normal = Some(self.normal(n)?),
                 TextureItem::Finish(f) => out.finish = self.finish_block(f)?,
                 TextureItem::Transform(tr) => {
                     let tr = self.transform(tr)?;
-                    transform_texture(&mut out, &tr);
+                    // The texture's own transforms move a uv-mapped pigment in uv space.
+                    transform_texture_always(&mut out, &tr);
                     if let Some((_, list)) = &mut pattern {
                         list.iter_mut().for_each(|t| transform_texture(t, &tr));
                         // The pattern that picks the textures moves with them.
@@ -744,7 +750,32 @@ pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
     }
 }
 
+/// Moves `t` with its object by `tr`; a uv-mapped texture stays on the surface's (u, v).
 pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
+    if !t.uv_mapping {
+        transform_texture_always(t, tr);
+    }
+}
+
+/// Where a pigment block says `uv_mapping`, if it does.
+pub(super) fn uv_span(p: &crate::pov::ast::Pigment) -> Option<Span> {
+    p.items.iter().find_map(|i| match i {
+        PigmentItem::UvMapping(span) => Some(*span),
+        _ => None,
+    })
+}
+
+/// Where a texture block says `uv_mapping` (itself or in its pigment), if it does.
+pub(super) fn texture_uv_span(t: &Texture) -> Option<Span> {
+    t.items.iter().find_map(|i| match i {
+        TextureItem::UvMapping(span) => Some(*span),
+        TextureItem::Pigment(p) => uv_span(p),
+        _ => None,
+    })
+}
+
+/// Moves `t`'s pigment and normal by `tr` (applied after their own transforms).
+fn transform_texture_always(t: &mut TextureDesc, tr: &Transform) {
     t.pigment.transform_by(tr);
     if let Some(n) = &mut t.normal {
         n.transform = n.transform.then(tr);

@@ -3,6 +3,8 @@
 use super::{is_pov_keyword, Parser};
 use crate::pov::ast::{CameraItem, CameraProjection, Stmt};
 use crate::pov::source::{Diag, PResult, Span};
+use crate::pov::value::Value;
+use crate::scene::desc::{MeshCameraDesc, MeshCameraMesh, ShapeDesc};
 
 const CAMERA: &[&str] = &[
     "location",
@@ -32,6 +34,8 @@ const CAMERA: &[&str] = &[
     "translate",
     "matrix",
     "transform",
+    "mesh_camera",
+    "smooth",
 ];
 /// Camera items that only the first statement of a camera may give (not after a declared one).
 const CAMERA_TYPES: &[&str] =
@@ -96,13 +100,8 @@ impl Parser<'_, '_> {
                     };
                     CameraItem::Projection(projection, span)
                 }
-                Some("mesh_camera") => {
-                    return Err(Diag::unmodelled(
-                        self.peek().span,
-                        "`mesh_camera` is not supported (strahl's cameras: perspective, orthographic, fisheye, \
-                         ultra_wide_angle, omnimax, panoramic, cylinder 1-4, spherical)",
-                    ));
-                }
+                Some("mesh_camera") => self.mesh_camera()?,
+                Some("smooth") => CameraItem::Smooth(self.bump().span),
                 Some(word @ ("normal" | "bokeh")) => {
                     let span = self.peek().span;
                     if word == "normal" {
@@ -166,5 +165,99 @@ impl Parser<'_, '_> {
         }
         self.close_block("camera", kw)?;
         Ok((items, kw))
+    }
+}
+
+impl Parser<'_, '_> {
+    /// `mesh_camera { rays_per_pixel distribution_type [max_distance] mesh { M transforms }...
+    /// [smooth] }` (POV-Ray 3.4.2.2.3), evaluated as it is read: the meshes are declared
+    /// `mesh`/`mesh2` objects.
+    fn mesh_camera(&mut self) -> PResult<CameraItem> {
+        let kw = self.bump().span;
+        self.open_block("mesh_camera", kw)?;
+        const STOP: &[&str] = &["mesh", "smooth"];
+        let number = |p: &mut Self, what: &str| -> PResult<(f64, Span)> {
+            if !p.starts_expr(STOP) {
+                return Err(Diag::new(p.peek().span, format!("mesh_camera needs {what} first")));
+            }
+            let e = p.expr()?;
+            Ok((p.low.float(&e)?, e.span))
+        };
+        let (rays, rays_span) = number(self, "its rays per pixel")?;
+        if !(rays >= 1.0 && rays <= 1e6) {
+            return Err(Diag::new(rays_span, format!("mesh_camera: rays per pixel must be at least 1, not {rays}")));
+        }
+        let (distribution, dist_span) = number(self, "its rays per pixel and distribution type")?;
+        if !matches!(distribution, 0.0 | 1.0 | 2.0 | 3.0) {
+            return Err(Diag::new(
+                dist_span,
+                format!("mesh_camera: distribution type must be 0, 1, 2 or 3, not {distribution}"),
+            ));
+        }
+        let max_distance = if self.starts_expr(STOP) { number(self, "")?.0 } else { 0.0 };
+        let mut desc = MeshCameraDesc {
+            rays_per_pixel: rays as u32,
+            distribution: distribution as u8,
+            max_distance: max_distance.max(0.0),
+            smooth: false,
+            meshes: Vec::new(),
+        };
+        while !self.at_block_end() {
+            match self.peek_ident().as_deref() {
+                Some("mesh") => desc.meshes.push(self.mesh_camera_mesh()?),
+                Some("smooth") => {
+                    self.bump();
+                    desc.smooth = true;
+                }
+                _ => return Err(self.unknown_in("mesh_camera", STOP)),
+            }
+        }
+        let meshes = desc.meshes.len();
+        let problem = match desc.distribution {
+            _ if meshes == 0 => Some("needs at least one `mesh { M }`".to_string()),
+            0 if meshes < desc.rays_per_pixel as usize => Some(format!(
+                "distribution 0 needs a mesh for each of its {} rays per pixel, found {meshes}",
+                desc.rays_per_pixel
+            )),
+            2 | 3 if desc.rays_per_pixel != 1 => Some(format!(
+                "distribution {} shoots one ray per pixel, not {}",
+                desc.distribution, desc.rays_per_pixel
+            )),
+            3 if desc.meshes.iter().all(|m| m.mesh.uv_faces.is_empty()) => {
+                Some("distribution 3 needs a mesh with uv_vectors".to_string())
+            }
+            _ => None,
+        };
+        if let Some(p) = problem {
+            return Err(Diag::new(kw, format!("mesh_camera: {p}")));
+        }
+        self.close_block("mesh_camera", kw)?;
+        Ok(CameraItem::MeshCamera(std::sync::Arc::new(desc), kw))
+    }
+
+    /// `mesh { M [transforms] }` inside a mesh_camera: a declared mesh or mesh2 placed.
+    fn mesh_camera_mesh(&mut self) -> PResult<MeshCameraMesh> {
+        let kw = self.bump().span;
+        self.open_block("mesh", kw)?;
+        let e = self.expr()?;
+        let not_mesh = |what: &str| {
+            Diag::new(e.span, format!("mesh_camera's `mesh {{ }}` names a declared mesh or mesh2, not {what}"))
+        };
+        let (mesh, mut transform) = match self.low.eval(&e)? {
+            Value::Object(group) => match group.parts.as_slice() {
+                [part] => match &part.desc.shape {
+                    ShapeDesc::Mesh { mesh, .. } => (mesh.clone(), part.desc.transform),
+                    other => return Err(not_mesh(&format!("a {}", other.keyword()))),
+                },
+                _ => return Err(not_mesh("a union")),
+            },
+            other => return Err(not_mesh(other.kind_name())),
+        };
+        while let Some("rotate" | "scale" | "translate" | "matrix" | "transform") = self.peek_ident().as_deref() {
+            let t = self.transform_item()?;
+            transform = transform.then(&self.low.transform(&t)?);
+        }
+        self.close_block("mesh", kw)?;
+        Ok(MeshCameraMesh { mesh, transform })
     }
 }

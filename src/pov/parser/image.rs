@@ -29,11 +29,11 @@ const IMAGE_ITEMS: &[&str] = &[
 ];
 
 impl Parser<'_, '_> {
-    /// `uv_mapping` in a pigment, normal or texture: read; the pattern stays in 3-D pattern
-    /// space (strahl's hits carry no uv yet), noted once as not modelled.
+    /// `uv_mapping` in a normal: read; the normal stays in 3-D pattern space (uv-mapped
+    /// pigments are modelled, uv-mapped normals are not), noted once.
     pub(super) fn uv_mapping(&mut self) {
         let span = self.bump().span;
-        self.low.not_modelled("uv_mapping", span);
+        self.low.not_modelled("uv_mapping in a normal", span);
     }
 
     /// One image block after its keyword `word`: the decoded image with its modifiers, the

@@ -26,7 +26,18 @@ const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "jpeg", "sys", "tiff"];
 #[derive(Default)]
 struct Unmodelled {
     textures: Option<Span>,
-    uv: Option<Span>,
+}
+
+/// The uv corners of a mesh triangle without `uv_vectors` (POV-Ray's default: the unit
+/// square's lower right half).
+const DEFAULT_TRIANGLE_UV: [glam::DVec2; 3] =
+    [glam::DVec2::new(0.0, 0.0), glam::DVec2::new(1.0, 0.0), glam::DVec2::new(1.0, 1.0)];
+
+/// Appends one face's uv corners, returning their indices.
+fn push_uvs(uvs: &mut Vec<glam::DVec2>, corners: [glam::DVec2; 3]) -> [u32; 3] {
+    let first = uvs.len() as u32;
+    uvs.extend(corners);
+    [first, first + 1, first + 2]
 }
 
 impl Parser<'_, '_> {
@@ -40,6 +51,7 @@ impl Parser<'_, '_> {
             let tkw = self.bump().span;
             self.open_block(&word, tkw)?;
             let v = self.triangle_vectors(&word, smooth)?;
+            let mut uv = None;
             while !self.at_block_end() {
                 match self.peek_ident().as_deref() {
                     Some("texture") => {
@@ -47,14 +59,16 @@ impl Parser<'_, '_> {
                         unmodelled.textures.get_or_insert(t.span);
                     }
                     Some("uv_vectors") => {
-                        let span = self.bump().span;
-                        for i in 0..3 {
+                        self.bump();
+                        let mut corners = [glam::DVec2::ZERO; 3];
+                        for (i, c) in corners.iter_mut().enumerate() {
                             if i > 0 {
                                 self.eat_punct(',');
                             }
-                            self.expr()?;
+                            let e = self.expr()?;
+                            *c = self.low.vec3(&e)?.truncate();
                         }
-                        unmodelled.uv.get_or_insert(span);
+                        uv = Some(corners);
                     }
                     _ => return Err(self.unknown_in(&word, TRIANGLE_ITEMS)),
                 }
@@ -62,6 +76,15 @@ impl Parser<'_, '_> {
             self.close_block(&word, tkw)?;
             let first = mesh.vertices.len() as u32;
             let face = [first, first + 1, first + 2];
+            if let Some(corners) = uv {
+                // Faces before the first with uv_vectors get POV-Ray's default triangle map.
+                while mesh.uv_faces.len() < mesh.faces.len() {
+                    mesh.uv_faces.push(push_uvs(&mut mesh.uvs, DEFAULT_TRIANGLE_UV));
+                }
+                mesh.uv_faces.push(push_uvs(&mut mesh.uvs, corners));
+            } else if !mesh.uv_faces.is_empty() {
+                mesh.uv_faces.push(push_uvs(&mut mesh.uvs, DEFAULT_TRIANGLE_UV));
+            }
             if smooth {
                 mesh.vertices.extend([v[0], v[2], v[4]]);
                 let n = mesh.normals.len() as u32;
@@ -106,6 +129,7 @@ impl Parser<'_, '_> {
             vertices: vec![v[0], v[2], v[4]],
             normals: vec![v[1], v[3], v[5]],
             faces: vec![MeshFace { vertices: [0, 1, 2], normals: Some([0, 1, 2]) }],
+            ..MeshDesc::default()
         };
         Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
     }
@@ -116,6 +140,7 @@ impl Parser<'_, '_> {
         let mut mesh = MeshDesc::default();
         let mut unmodelled = Unmodelled::default();
         let mut normal_indices: Option<(Vec<[u32; 3]>, Span)> = None;
+        let mut uv_indices: Option<(Vec<[u32; 3]>, Span)> = None;
         let mut faces: Option<(Vec<[u32; 3]>, Span)> = None;
         let mut last = None::<usize>;
         while let Some(word) = self.peek_ident().filter(|w| MESH2_SECTIONS.contains(&&**w)) {
@@ -145,8 +170,13 @@ impl Parser<'_, '_> {
                     }
                 }
                 "uv_vectors" => {
-                    self.section_items(&word, count, |p| p.expr().map(|_| true))?;
-                    unmodelled.uv.get_or_insert(skw);
+                    let mut out = Vec::with_capacity(count.min(1 << 24));
+                    self.section_items(&word, count, |p| {
+                        let e = p.expr()?;
+                        out.push(p.low.vec3(&e)?.truncate());
+                        Ok(true)
+                    })?;
+                    mesh.uvs = out;
                 }
                 "texture_list" => {
                     self.section_items(&word, count, |p| {
@@ -161,7 +191,7 @@ impl Parser<'_, '_> {
                     let limit = match &*word {
                         "face_indices" => mesh.vertices.len(),
                         "normal_indices" => mesh.normals.len(),
-                        _ => usize::MAX,
+                        _ => mesh.uvs.len(),
                     };
                     let mut out = Vec::with_capacity(count.min(1 << 24));
                     let name = word.clone();
@@ -197,7 +227,7 @@ impl Parser<'_, '_> {
                     match &*word {
                         "face_indices" => faces = Some((out, skw)),
                         "normal_indices" => normal_indices = Some((out, skw)),
-                        _ => {}
+                        _ => uv_indices = Some((out, skw)),
                     }
                 }
                 _ => unreachable!("one of MESH2_SECTIONS"),
@@ -237,6 +267,28 @@ impl Parser<'_, '_> {
             .enumerate()
             .map(|(i, &v)| MeshFace { vertices: v, normals: normals_of.as_ref().map(|n| n[i]) })
             .collect();
+        mesh.uv_faces = match uv_indices {
+            Some((u, span)) if u.len() != faces.len() => {
+                return Err(Diag::new(
+                    span,
+                    format!("uv_indices has {} entries, face_indices {}: they must match", u.len(), faces.len()),
+                ));
+            }
+            Some((u, _)) => u,
+            None if mesh.uvs.is_empty() => Vec::new(),
+            // Without uv_indices, the face indices index the uv vectors too.
+            None if mesh.uvs.len() >= mesh.vertices.len() => faces.clone(),
+            None => {
+                return Err(Diag::new(
+                    faces_span,
+                    format!(
+                        "mesh2 without uv_indices needs one uv vector per vertex: {} uv vectors, {} vertices",
+                        mesh.uvs.len(),
+                        mesh.vertices.len()
+                    ),
+                ));
+            }
+        };
         self.warn_unmodelled("mesh2", &unmodelled);
         let _ = kw;
         Ok(ShapeDesc::Mesh { mesh: Arc::new(mesh), inside_vector: None })
@@ -381,9 +433,6 @@ impl Parser<'_, '_> {
                 span,
                 format!("{word}: per-triangle textures are not modelled; the {word}'s own texture is used"),
             ));
-        }
-        if let Some(span) = u.uv {
-            self.low.warn(Diag::new(span, format!("{word}: uv coordinates are not modelled (no uv_mapping)")));
         }
     }
 }

@@ -432,10 +432,7 @@ impl Parser<'_, '_> {
                     continue;
                 }
                 // POV-Ray 3.7 lets `uv_mapping` stand on the object for all its textures.
-                Some("uv_mapping") => {
-                    self.uv_mapping();
-                    continue;
-                }
+                Some("uv_mapping") => Modifier::UvMapping(self.bump().span),
                 Some(w @ ("photons" | "radiosity")) => {
                     let w = w.to_string();
                     self.skip_unmodelled(&w)?;

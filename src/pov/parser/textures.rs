@@ -279,10 +279,7 @@ impl Parser<'_, '_> {
                     let (im, _, span) = self.image_block("image_map")?;
                     PigmentItem::ImageMap(im, span)
                 }
-                Some("uv_mapping") => {
-                    self.uv_mapping();
-                    continue;
-                }
+                Some("uv_mapping") => PigmentItem::UvMapping(self.bump().span),
                 Some("image_pattern") => {
                     let (im, _, span) = self.image_block("image_pattern")?;
                     PigmentItem::ImagePattern(im, span)
@@ -456,10 +453,7 @@ impl Parser<'_, '_> {
                     let (im, _, span) = self.image_block("image_pattern")?;
                     TextureItem::ImagePattern(im, span)
                 }
-                Some("uv_mapping") => {
-                    self.uv_mapping();
-                    continue;
-                }
+                Some("uv_mapping") => TextureItem::UvMapping(self.bump().span),
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };
             items.push(item);

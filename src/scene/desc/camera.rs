@@ -37,3 +37,29 @@ impl Default for CameraDesc {
         }
     }
 }
+
+/// `mesh_camera { rays_per_pixel distribution_type [max_distance] mesh { M transforms }... }`
+/// (POV-Ray 3.4.2.2.3): the meshes as declared, each with its transform into the world. The
+/// renderer (`camera::mesh`) turns them into rays; the parser never builds a BVH for them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCameraDesc {
+    /// Rays shot per pixel (≥ 1): the ray number picks the mesh (distribution 0) or the block
+    /// of faces (distribution 1).
+    pub rays_per_pixel: u32,
+    /// 0: one mesh per ray number; 1: the meshes' faces summed; 2: the meshes side by side
+    /// across the image; 3: each image point found in the first mesh's uv map.
+    pub distribution: u8,
+    /// Rays end this far from their origin (world units); 0 for no limit.
+    pub max_distance: f64,
+    /// `smooth`: distribution 3 interpolates the vertex normals.
+    pub smooth: bool,
+    pub meshes: Vec<MeshCameraMesh>,
+}
+
+/// One `mesh { M transforms }` of a mesh camera.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshCameraMesh {
+    pub mesh: std::sync::Arc<super::MeshDesc>,
+    /// Mesh space → world space (the declared mesh's own transform, then the camera's).
+    pub transform: super::Transform,
+}

@@ -139,6 +139,8 @@ pub struct SceneDesc {
     /// treats a scene without one as legacy for gamma: no `assumed_gamma`, linear output.
     pub version_directive: bool,
     pub camera: CameraDesc,
+    /// The meshes of a `mesh_camera` (`camera.lens.projection` is `Projection::Mesh`).
+    pub camera_mesh: Option<std::sync::Arc<MeshCameraDesc>>,
     pub lights: Vec<LightDesc>,
     /// `background { color C }`; black by default.
     pub background: Color,
@@ -181,6 +183,7 @@ impl Default for SceneDesc {
             version: 3.7,
             version_directive: false,
             camera: CameraDesc::default(),
+            camera_mesh: None,
             lights: Vec::new(),
             background: Color::BLACK,
             sky_sphere: None,

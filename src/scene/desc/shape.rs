@@ -158,6 +158,10 @@ pub struct MeshDesc {
     /// Vertex normals of smooth faces (not normalised; POV-Ray normalises them).
     pub normals: Vec<DVec3>,
     pub faces: Vec<MeshFace>,
+    /// `uv_vectors`: texture coordinates, empty when the mesh gives none.
+    pub uvs: Vec<glam::DVec2>,
+    /// Each face's three indices into `uvs`, parallel to `faces` (empty without uvs).
+    pub uv_faces: Vec<[u32; 3]>,
 }
 
 /// One triangle of a mesh: vertex indices, and normal indices for a smooth one.

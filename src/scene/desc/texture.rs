@@ -329,6 +329,10 @@ pub struct TextureDesc {
     pub pigment: PigmentDesc,
     pub normal: Option<NormalDesc>,
     pub finish: FinishDesc,
+    /// `uv_mapping` (POV-Ray 3.4.6.7): the pigment is evaluated at the hit's surface
+    /// coordinates (u, v, 0) through its own transforms only; the object's transforms do not
+    /// move it. Shapes with uv: `geometry::uv`.
+    pub uv_mapping: bool,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -7,6 +7,7 @@ pub mod csg;
 pub mod desc;
 pub mod fixtures;
 pub mod generate;
+pub mod light;
 pub mod material;
 pub mod place;
 pub mod print;

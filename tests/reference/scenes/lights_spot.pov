@@ -1,5 +1,5 @@
 // Light kinds: a spotlight (radius, falloff, tightness), a cylinder light, a parallel light
-// and a fading point light, each with its shadow on a floor.
+// and a fading point light, each with its shadow on a floor; a spotlight with a negative falloff.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -15,6 +15,15 @@ light_source {
     spotlight
     point_at <-3, 0, 1>
     radius 12 falloff 22 tightness 5
+}
+
+// A dim spotlight with a negative falloff from the mesh_camera samples: POV-Ray opens it as
+// `falloff 90` (by the angle's cosine), lighting the whole half-space below.
+light_source {
+    <0, 6, -6> color rgb 0.25
+    spotlight
+    point_at <0, 0, 0>
+    radius 40 falloff -90 tightness 1
 }
 
 // Cylinder light straight down on the right: 1 unit hot core, falls off to 1.6.

@@ -60,6 +60,9 @@ const PIGMENT: &[&str] = &[
     "planar",
     "quilted",
     "mandel",
+    "julia",
+    "magnet",
+    "pigment_pattern",
     "average",
     "ramp_wave",
     "triangle_wave",
@@ -80,6 +83,9 @@ const PIGMENT: &[&str] = &[
     "control0",
     "control1",
     "noise_generator",
+    "exponent",
+    "interior",
+    "exterior",
     "quick_color",
     "quick_colour",
     "image_map",
@@ -115,6 +121,9 @@ pub(crate) const PATTERNS: &[&str] = &[
     "planar",
     "quilted",
     "mandel",
+    "julia",
+    "magnet",
+    "pigment_pattern",
     "average",
     "checker",
     "wood",
@@ -141,6 +150,9 @@ const PATTERN_MODS: &[&str] = &[
     "control0",
     "control1",
     "noise_generator",
+    "exponent",
+    "interior",
+    "exterior",
 ];
 const NORMAL: &[&str] = &[
     "bumps",
@@ -253,6 +265,7 @@ impl Parser<'_, '_> {
                         PigmentItem::Pattern(PatternAst {
                             name: "checker".into(),
                             arg: None,
+                            params: Vec::new(),
                             colors: Vec::new(),
                             pigments,
                             textures: Vec::new(),
@@ -352,11 +365,18 @@ impl Parser<'_, '_> {
     pub(super) fn normal(&mut self) -> PResult<Normal> {
         let kw = self.bump().span;
         self.open_block("normal", kw)?;
+        let items = self.normal_items(false)?;
+        let end = self.close_block("normal", kw)?;
+        Ok(Normal { items, span: kw.to(end) })
+    }
+
+    /// A normal's items, up to its `}` (or the `]` of a `normal_map` entry).
+    fn normal_items(&mut self, in_entry: bool) -> PResult<Vec<NormalItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(NORMAL)? {
             items.push(NormalItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some("bumps") => {
                     let span = self.bump().span;
@@ -408,7 +428,11 @@ impl Parser<'_, '_> {
                     self.expr()?;
                     continue;
                 }
-                Some(w @ ("slope_map" | "normal_map")) => {
+                Some("normal_map") => {
+                    let span = self.bump().span;
+                    NormalItem::NormalMap(self.block_map("normal_map", span, |p| p.normal())?, span)
+                }
+                Some(w @ "slope_map") => {
                     let w = w.to_string();
                     let span = self.bump().span;
                     self.skip_braced(&w, span)?;
@@ -418,8 +442,7 @@ impl Parser<'_, '_> {
             };
             items.push(item);
         }
-        let end = self.close_block("normal", kw)?;
-        Ok(Normal { items, span: kw.to(end) })
+        Ok(items)
     }
 
     /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.
@@ -486,8 +509,15 @@ impl Parser<'_, '_> {
             TokenKind::Ident(w) => w.to_string(),
             _ => unreachable!("pattern() is called on a pattern keyword"),
         };
-        let mut pat =
-            PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
+        let mut pat = PatternAst {
+            name,
+            arg: None,
+            params: Vec::new(),
+            colors: Vec::new(),
+            pigments: Vec::new(),
+            textures: Vec::new(),
+            span,
+        };
         match pat.name.as_str() {
             "gradient" => pat.arg = Some(self.expr()?),
             "function" => {
@@ -498,6 +528,38 @@ impl Parser<'_, '_> {
             }
             "spiral1" | "spiral2" | "mandel" if self.starts_expr(stop) && !self.starts_mod() => {
                 pat.arg = Some(self.expr()?)
+            }
+            "julia" => {
+                pat.params.push(self.expr()?);
+                self.eat_punct(',');
+                pat.arg = Some(self.expr()?);
+            }
+            "magnet" => {
+                pat.params.push(self.expr()?);
+                match self.peek_ident().as_deref() {
+                    Some("mandel") => {
+                        self.bump();
+                    }
+                    Some("julia") => {
+                        self.bump();
+                        pat.params.push(self.expr()?);
+                        self.eat_punct(',');
+                    }
+                    _ => {
+                        let t = self.peek();
+                        return Err(Diag::new(
+                            t.span,
+                            format!("expected `mandel` or `julia` after `magnet N`, found {}", t.describe()),
+                        ));
+                    }
+                }
+                pat.arg = Some(self.expr()?);
+            }
+            "pigment_pattern" => {
+                self.open_block("pigment_pattern", span)?;
+                let items = self.pigment_items(false)?;
+                let end = self.close_block("pigment_pattern", span)?;
+                pat.pigments.push(Pigment { items, span: span.to(end) });
             }
             "quilted" if self.starts_expr(stop) && !self.starts_mod() => {}
             "checker" | "brick" | "hexagon" => {
@@ -543,6 +605,14 @@ impl Parser<'_, '_> {
                 PatternMod::Wave(word, e)
             }
             "solid" => PatternMod::Flag(word, tok.span),
+            "interior" | "exterior" => {
+                // `interior TYPE, FACTOR`: carried as the vector <TYPE, FACTOR>.
+                let t = self.expr()?;
+                let factor =
+                    if self.eat_punct(',') { self.expr()? } else { Expr { kind: ExprKind::Number(1.0), span: t.span } };
+                let span = tok.span.to(factor.span);
+                PatternMod::Set(word, Expr { kind: ExprKind::Vector(vec![t, factor]), span })
+            }
             "warp" => PatternMod::Warp(self.warp(tok.span)?),
             "turbulence" | "octaves" | "omega" | "lambda" => {
                 // In a texture: the turbulence of its pattern.
@@ -638,7 +708,10 @@ impl Parser<'_, '_> {
         let mut out = Vec::new();
         while !self.at_block_end() {
             let open = self.expect_punct('[', "to start a map entry")?;
-            let value = self.expr()?;
+            // `average`'s entries may leave out their weight (`[pigment { .. } ..]`): 1.
+            let unweighted = matches!(self.peek_ident().as_deref(),
+                Some(w) if w == T::KEYWORD || matches!(w, "pigment" | "normal" | "finish"));
+            let value = if unweighted { Expr { kind: ExprKind::Number(1.0), span: open } } else { self.expr()? };
             self.eat_punct(',');
             let inner = match self.peek_ident().as_deref() {
                 Some(w) if w == T::KEYWORD => item(self)?,
@@ -666,6 +739,13 @@ impl FromName for Pigment {
     const KEYWORD: &'static str = "pigment";
     fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
         Ok(Pigment { items: p.pigment_items(true)?, span })
+    }
+}
+
+impl FromName for Normal {
+    const KEYWORD: &'static str = "normal";
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Normal { items: p.normal_items(true)?, span })
     }
 }
 

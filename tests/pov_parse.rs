@@ -2040,3 +2040,21 @@ fn fractal_and_map_errors_are_located() {
     let (l, c, m) = e("f6", "plane { z, 0 normal { normal_map { [0 bumps] } } }");
     assert_eq!((l, c, m.as_str()), (1, 23, "normal_map needs a pattern before it (e.g. gradient x)"));
 }
+
+#[test]
+fn density_file_errors_are_located() {
+    let (l, c, m) = err("df1", "plane { z, 0 pigment { density_file png \"a.df3\" } }");
+    assert_eq!((l, c, m.as_str()), (1, 37, "expected `df3` after `density_file`, found `png`"));
+    let (l, c, m) = err("df2", "plane { z, 0 pigment { density_file df3 \"nowhere.df3\" } }");
+    assert_eq!((l, c, m.as_str()), (1, 41, "density_file \"nowhere.df3\" not found"));
+    let d = dir("df3_bad");
+    std::fs::write(d.join("bad.df3"), [0u8, 2, 0, 2, 0, 2, 1, 2, 3]).unwrap();
+    let path = write(&d, "scene.pov", "plane { z, 0 pigment { density_file df3 \"bad.df3\" interpolate 1 } }");
+    let e = load_scene(&path, &std_include()).expect_err("bad df3");
+    assert_eq!((e.line, e.col), (1, 41));
+    assert!(e.message.contains("data bytes"), "{}", e.message);
+    std::fs::write(d.join("ok.df3"), [0u8, 1, 0, 1, 0, 1, 7]).unwrap();
+    let path = write(&d, "scene.pov", "plane { z, 0 pigment { density_file df3 \"ok.df3\" interpolate 5 } }");
+    let e = load_scene(&path, &std_include()).expect_err("interpolate 5");
+    assert!(e.message.contains("interpolate must be 0, 1 or 2"), "{}", e.message);
+}

@@ -472,6 +472,9 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Planar => "planar".into(),
         &K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
         K::Fractal(f) => fractal_text(f),
+        K::Density { file, interpolate, .. } => {
+            format!("density_file df3 \"{}\" interpolate {interpolate}", file.replace('"', "\\\""))
+        }
         K::PigmentPattern(pig) => {
             let mut inner = String::new();
             pigment(&mut inner, pig, &DMat4::IDENTITY);

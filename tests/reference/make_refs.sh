@@ -46,6 +46,8 @@ done
 for s in materials tiles; do
     render "$here/scenes/$s.pov" "$s"
 done
+# patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.
+(cd "$here/scenes" && render "$here/scenes/patterns_density.pov" patterns_density)
 # images.pov and bump_maps.pov read ../images/*.png (made by tests/reference/images/make_images.py).
 for s in images bump_maps; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")

@@ -241,6 +241,24 @@ impl Lowerer<'_> {
             "planar" => PatternKind::Planar,
             "quilted" => PatternKind::Quilted { c0: 1.0, c1: 1.0 },
             "mandel" | "julia" | "magnet" => PatternKind::Fractal(self.fractal(pa)?),
+            "density_file" => {
+                let Some(e) = &pa.arg else { return Err(Diag::new(pa.span, "density_file needs a file name")) };
+                let file = match self.eval(e)? {
+                    Value::Str(s) => s.to_string(),
+                    other => return Err(other.wrong_kind(e.span, "density_file's file name")),
+                };
+                let path = self
+                    .files
+                    .data_path(&file, false)
+                    .ok()
+                    .filter(|p| p.is_file())
+                    .ok_or_else(|| Diag::new(e.span, format!("density_file \"{file}\" not found")))?;
+                let bytes = std::fs::read(&path)
+                    .map_err(|err| Diag::new(e.span, format!("cannot read density_file \"{file}\": {err}")))?;
+                let grid = crate::shading::patterns::density::DensityGrid::from_df3(&bytes)
+                    .map_err(|m| Diag::new(e.span, format!("density_file \"{file}\" {m}")))?;
+                PatternKind::Density { file, grid: std::sync::Arc::new(grid), interpolate: 0 }
+            }
             "pigment_pattern" => match pa.pigments.first() {
                 Some(p) => PatternKind::PigmentPattern(Box::new(self.pigment(p)?)),
                 None => return Err(Diag::new(pa.span, "pigment_pattern needs a pigment body")),
@@ -357,6 +375,19 @@ impl Lowerer<'_> {
                 ("control0", PatternKind::Quilted { c0, .. }) => *c0 = self.float(e)?,
                 ("control1", PatternKind::Quilted { c1, .. }) => *c1 = self.float(e)?,
                 ("exponent" | "interior" | "exterior", PatternKind::Fractal(f)) => self.fractal_mod(word, e, f)?,
+                ("interpolate", PatternKind::Density { interpolate, .. }) => {
+                    let n = self.float(e)?;
+                    *interpolate = match n as i64 {
+                        0 => 0,
+                        1 => 1,
+                        2 => {
+                            self.not_modelled("density_file interpolate 2 (tricubic; trilinear used)", e.span);
+                            1
+                        }
+                        _ => return Err(Diag::new(e.span, "density_file interpolate must be 0, 1 or 2")),
+                    };
+                }
+                ("interpolate", _) => return Err(Diag::new(e.span, "`interpolate` needs density_file here")),
                 ("exponent" | "interior" | "exterior", _) => {
                     return Err(Diag::new(e.span, format!("`{word}` needs a fractal pattern (mandel, julia, magnet)")))
                 }

@@ -63,6 +63,7 @@ const PIGMENT: &[&str] = &[
     "julia",
     "magnet",
     "pigment_pattern",
+    "density_file",
     "average",
     "ramp_wave",
     "triangle_wave",
@@ -86,6 +87,7 @@ const PIGMENT: &[&str] = &[
     "exponent",
     "interior",
     "exterior",
+    "interpolate",
     "quick_color",
     "quick_colour",
     "image_map",
@@ -124,6 +126,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "julia",
     "magnet",
     "pigment_pattern",
+    "density_file",
     "average",
     "checker",
     "wood",
@@ -153,6 +156,7 @@ const PATTERN_MODS: &[&str] = &[
     "exponent",
     "interior",
     "exterior",
+    "interpolate",
 ];
 const NORMAL: &[&str] = &[
     "bumps",
@@ -553,6 +557,17 @@ impl Parser<'_, '_> {
                         ));
                     }
                 }
+                pat.arg = Some(self.expr()?);
+            }
+            "density_file" => {
+                if self.peek_ident().as_deref() != Some("df3") {
+                    let t = self.peek();
+                    return Err(Diag::new(
+                        t.span,
+                        format!("expected `df3` after `density_file`, found {}", t.describe()),
+                    ));
+                }
+                self.bump();
                 pat.arg = Some(self.expr()?);
             }
             "pigment_pattern" => {

@@ -137,6 +137,12 @@ pub enum PatternKind {
     /// `pigment_pattern { PIGMENT }` (3.4.7.1.19): the pigment's grey value, evaluated in
     /// this pattern's space (the inner pigment keeps its own transform).
     PigmentPattern(Box<PigmentDesc>),
+    /// `density_file df3 "FILE" [interpolate N]`: the file's voxels over the unit cube.
+    Density {
+        file: String,
+        grid: Arc<crate::shading::patterns::density::DensityGrid>,
+        interpolate: u32,
+    },
     /// Raw ring value `frac(r)` (its default wave is the triangle).
     Wood,
     /// `average`: a `pigment_map`'s pigments averaged, weighted by their entry values.

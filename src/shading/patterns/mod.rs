@@ -7,6 +7,7 @@
 //! no lane arithmetic run the scalar kernel lane by lane).
 
 pub mod cells;
+pub mod density;
 pub mod fractal;
 pub mod simple;
 pub mod turbulent;
@@ -45,6 +46,8 @@ pub enum Kind32 {
     Planar,
     Quilted(f32, f32),
     Fractal(fractal::Fractal32),
+    /// `density_file`: voxels looked up lane by lane.
+    Density(std::sync::Arc<density::DensityGrid>, u32),
     /// `pigment_pattern`: the pigment's grey, in this pattern's space.
     PigmentPattern(Box<crate::shading::pigment::Pigment>),
     Wood,
@@ -114,6 +117,7 @@ impl Pattern32 {
             PatternKind::Planar => Kind32::Planar,
             &PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
             PatternKind::Fractal(f) => Kind32::Fractal(fractal::Fractal32::from_desc(f)),
+            PatternKind::Density { grid, interpolate, .. } => Kind32::Density(grid.clone(), *interpolate),
             PatternKind::PigmentPattern(p) => {
                 Kind32::PigmentPattern(Box::new(crate::shading::pigment::Pigment::from_desc(p, &glam::DMat4::IDENTITY)))
             }
@@ -215,6 +219,7 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         Kind32::Planar => simple::planar(p),
         Kind32::Quilted(a, b) => simple::quilted(p, a, b),
         Kind32::Fractal(ref f) => fractal::fractal(p, f),
+        Kind32::Density(ref g, interpolate) => density::density(p, g, interpolate),
         Kind32::PigmentPattern(ref pig) => pigment_grey(pig, p),
         Kind32::Wood => simple::wood_rings(p),
         Kind32::Average => L::splat(0.0),

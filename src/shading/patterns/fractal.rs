@@ -103,7 +103,8 @@ pub fn fractal_at(f: &Fractal32, x: f64, y: f64) -> f64 {
         z = step(&f.kind, z, c);
         let r = z.0 * z.0 + z.1 * z.1;
         let converged = magnet && (z.0 - 1.0) * (z.0 - 1.0) + z.1 * z.1 < MAGNET_CONVERGED_SQ;
-        if !(r <= bailout) || converged {
+        // A NaN orbit (a magnet's division by zero) has escaped too.
+        if r > bailout || r.is_nan() || converged {
             return wrap(exterior(f, n + counted, z));
         }
         min_sq = min_sq.min(r);

@@ -257,6 +257,8 @@ impl Lowerer<'_> {
                     .map_err(|err| Diag::new(e.span, format!("cannot read density_file \"{file}\": {err}")))?;
                 let grid = crate::shading::patterns::density::DensityGrid::from_df3(&bytes)
                     .map_err(|m| Diag::new(e.span, format!("density_file \"{file}\" {m}")))?;
+                // The file as found, so that a printed scene reads it from anywhere.
+                let file = path.to_string_lossy().into_owned();
                 PatternKind::Density { file, grid: std::sync::Arc::new(grid), interpolate: 0 }
             }
             "pigment_pattern" => match pa.pigments.first() {

@@ -139,6 +139,7 @@ pub enum PatternKind {
     PigmentPattern(Box<PigmentDesc>),
     /// `density_file df3 "FILE" [interpolate N]`: the file's voxels over the unit cube.
     Density {
+        /// The file as found (for the printer).
         file: String,
         grid: Arc<crate::shading::patterns::density::DensityGrid>,
         interpolate: u32,

@@ -2069,3 +2069,93 @@ fn a_second_rgb_vector_starts_the_next_colour() {
     let PigmentPattern::Checker(a, b) = &s.objects[0].texture.pigment.pattern else { panic!() };
     assert_eq!((a.rgb, b.rgb, b.filter), (DVec3::new(1.0, 1.0, 0.0), DVec3::Z, 0.5));
 }
+
+#[test]
+fn fractal_patterns_and_pigment_pattern_read_their_options() {
+    use strahl::scene::desc::{Fractal, FractalKind, NormalPattern, PatternKind};
+    let s = load_text(
+        "fractals",
+        "plane { z, 0 pigment { julia <0.3, 0.4>, 30 exponent 3 interior 1, 200 exterior 6, 0.5 } }\n\
+         plane { z, 1 pigment { magnet 2 mandel 40 } }\n\
+         plane { z, 2 pigment { magnet 1 julia <0.1, 0.2>, 12 } normal { mandel 80 1 interior 1, 5 } }\n\
+         plane { z, 3 pigment { pigment_pattern { checker rgb <1, 0, 0> rgb 1 } color_map { [0 rgb 0] [1 rgb 1] } } }\n\
+         plane { z, 4 normal { gradient x normal_map { [0.3 bumps 0.2] [0.7 normal { dents 0.5 scale 0.1 }] } scale 2 } }",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let kind = |i: usize| match &s.objects[i].texture.pigment.pattern {
+        PigmentPattern::Mapped(pd, _) => pd.kind.clone(),
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        kind(0),
+        PatternKind::Fractal(Fractal {
+            kind: FractalKind::Julia { c: [0.3, 0.4], exponent: 3 },
+            iterations: 30,
+            interior: (1, 200.0),
+            exterior: (6, 0.5),
+        })
+    );
+    assert_eq!(kind(1), PatternKind::Fractal(Fractal::new(FractalKind::MagnetMandel { magnet: 2 }, 40)));
+    assert_eq!(kind(2), PatternKind::Fractal(Fractal::new(FractalKind::MagnetJulia { magnet: 1, c: [0.1, 0.2] }, 12)));
+    match &s.objects[2].texture.normal.as_ref().unwrap().pattern {
+        NormalPattern::Pattern(pd, a) => {
+            assert_eq!(*a, 1.0);
+            assert!(matches!(&pd.kind, PatternKind::Fractal(f) if f.iterations == 80 && f.interior == (1, 5.0)));
+        }
+        other => panic!("{other:?}"),
+    }
+    // `checker rgb A rgb B`: two colours.
+    match kind(3) {
+        PatternKind::PigmentPattern(p) => assert_eq!(
+            p.pattern,
+            PigmentPattern::Checker(strahl::scene::desc::Color::rgb(1.0, 0.0, 0.0), strahl::scene::desc::Color::WHITE)
+        ),
+        other => panic!("{other:?}"),
+    }
+    let n = s.objects[4].texture.normal.as_ref().unwrap();
+    match &n.pattern {
+        NormalPattern::Map(_, entries) => {
+            assert_eq!(entries.iter().map(|e| e.0).collect::<Vec<_>>(), [0.3, 0.7]);
+            // The block's `scale 2` moves the entries too.
+            assert_eq!(entries[0].1.transform.matrix, n.transform.matrix);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn fractal_and_map_errors_are_located() {
+    let e = |name, text| err(name, text);
+    assert_eq!(e("f1", "plane { z, 0 pigment { magnet 3 mandel 10 } }"), (1, 31, "magnet type must be 1 or 2".into()));
+    assert_eq!(
+        e("f2", "plane { z, 0 pigment { magnet 1 bozo } }"),
+        (1, 33, "expected `mandel` or `julia` after `magnet N`, found `bozo`".into())
+    );
+    let (l, c, m) = e("f3", "plane { z, 0 pigment { mandel 10 exponent 40 } }");
+    assert_eq!((l, c, m.as_str()), (1, 43, "exponent must be a whole number from 2 to 33"));
+    let (l, c, m) = e("f4", "plane { z, 0 pigment { mandel 10 interior 9, 1 } }");
+    assert_eq!((l, c), (1, 34));
+    assert!(m.starts_with("interior type must be"), "{m}");
+    let (_, _, m) = e("f5", "plane { z, 0 pigment { bozo exterior 1, 1 } }");
+    assert!(m.contains("needs a fractal pattern"), "{m}");
+    let (l, c, m) = e("f6", "plane { z, 0 normal { normal_map { [0 bumps] } } }");
+    assert_eq!((l, c, m.as_str()), (1, 23, "normal_map needs a pattern before it (e.g. gradient x)"));
+}
+
+#[test]
+fn density_file_errors_are_located() {
+    let (l, c, m) = err("df1", "plane { z, 0 pigment { density_file png \"a.df3\" } }");
+    assert_eq!((l, c, m.as_str()), (1, 37, "expected `df3` after `density_file`, found `png`"));
+    let (l, c, m) = err("df2", "plane { z, 0 pigment { density_file df3 \"nowhere.df3\" } }");
+    assert_eq!((l, c, m.as_str()), (1, 41, "density_file \"nowhere.df3\" not found"));
+    let d = dir("df3_bad");
+    std::fs::write(d.join("bad.df3"), [0u8, 2, 0, 2, 0, 2, 1, 2, 3]).unwrap();
+    let path = write(&d, "scene.pov", "plane { z, 0 pigment { density_file df3 \"bad.df3\" interpolate 1 } }");
+    let e = load_scene(&path, &std_include()).expect_err("bad df3");
+    assert_eq!((e.line, e.col), (1, 41));
+    assert!(e.message.contains("data bytes"), "{}", e.message);
+    std::fs::write(d.join("ok.df3"), [0u8, 1, 0, 1, 0, 1, 7]).unwrap();
+    let path = write(&d, "scene.pov", "plane { z, 0 pigment { density_file df3 \"ok.df3\" interpolate 5 } }");
+    let e = load_scene(&path, &std_include()).expect_err("interpolate 5");
+    assert!(e.message.contains("interpolate must be 0, 1 or 2"), "{}", e.message);
+}

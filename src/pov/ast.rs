@@ -357,8 +357,10 @@ pub enum PigmentItem {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PatternAst {
     pub name: String,
-    /// `gradient V`, `spiral1 N`, `mandel N`.
+    /// `gradient V`, `spiral1 N`, `mandel N` (a fractal's iterations).
     pub arg: Option<Expr>,
+    /// Further arguments: `julia C` → [C]; `magnet N mandel` → [N]; `magnet N julia C` → [N, C].
+    pub params: Vec<Expr>,
     pub colors: Vec<Expr>,
     pub pigments: Vec<Pigment>,
     pub textures: Vec<Texture>,
@@ -415,7 +417,9 @@ pub enum NormalItem {
     Pattern(PatternAst, Option<Expr>),
     Mod(PatternMod),
     BumpSize(Expr),
-    /// `slope_map`, `normal_map` and the like: read, not modelled.
+    /// `normal_map { [v normal { .. }] .. }` (entries may also be bare normal bodies).
+    NormalMap(Vec<(Expr, Normal)>, Span),
+    /// `slope_map` and the like: read, not modelled.
     Ignored(String, Span),
     /// `bump_map { ... [bump_size F] }` with its bump size, if given inside.
     BumpMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),

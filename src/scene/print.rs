@@ -372,6 +372,16 @@ fn normal(s: &mut String, n: &NormalDesc, object_inverse: &DMat4) {
     let _ = match n.pattern {
         NormalPattern::Bumps(amount) => write!(s, "normal {{ bumps {}", num(amount)),
         NormalPattern::Pattern(ref pd, amount) => write!(s, "normal {{ {} bump_size {}", pattern_text(pd), num(amount)),
+        NormalPattern::Map(ref pd, ref entries) => {
+            let _ = write!(s, "normal {{ {} normal_map {{ ", pattern_text(pd));
+            for (v, e) in entries {
+                let _ = write!(s, "[{} ", num(*v));
+                // Inner normals are read inside this one's transform: printed relative to it.
+                normal(s, e, &n.transform.inverse);
+                let _ = write!(s, "] ");
+            }
+            write!(s, "}}")
+        }
     };
     turbulence(s, n.turbulence.as_ref());
     let _ = write!(s, "{} }}", modifiers(&(*object_inverse * n.transform.matrix)));
@@ -416,6 +426,19 @@ fn image_text(im: &crate::scene::desc::ImageMapDesc) -> String {
     out
 }
 
+/// A fractal pattern's keywords.
+fn fractal_text(f: &crate::scene::desc::Fractal) -> String {
+    use crate::scene::desc::FractalKind as F;
+    let c = |c: [f64; 2]| format!("<{}, {}>", num(c[0]), num(c[1]));
+    let head = match f.kind {
+        F::Mandel { exponent } => format!("mandel {} exponent {exponent}", f.iterations),
+        F::Julia { c: k, exponent } => format!("julia {}, {} exponent {exponent}", c(k), f.iterations),
+        F::MagnetMandel { magnet } => format!("magnet {magnet} mandel {}", f.iterations),
+        F::MagnetJulia { magnet, c: k } => format!("magnet {magnet} julia {}, {}", c(k), f.iterations),
+    };
+    format!("{head} interior {}, {} exterior {}, {}", f.interior.0, num(f.interior.1), f.exterior.0, num(f.exterior.1))
+}
+
 /// A pattern keyword with its parameters and value modifiers.
 fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     use crate::scene::desc::{PatternKind as K, Warp, Wave};
@@ -452,7 +475,15 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Spherical => "spherical".into(),
         K::Planar => "planar".into(),
         &K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
-        &K::Mandel(n) => format!("mandel {n}"),
+        K::Fractal(f) => fractal_text(f),
+        K::Density { file, interpolate, .. } => {
+            format!("density_file df3 \"{}\" interpolate {interpolate}", file.replace('"', "\\\""))
+        }
+        K::PigmentPattern(pig) => {
+            let mut inner = String::new();
+            pigment(&mut inner, pig, &DMat4::IDENTITY);
+            format!("pigment_pattern {}", inner.trim_start_matches("pigment "))
+        }
         K::Wood => "wood".into(),
         K::Average => "average".into(),
         K::Image(ref im) => format!("image_pattern {{ {} }}", image_text(im)),

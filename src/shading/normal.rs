@@ -22,6 +22,8 @@ pub enum NormalPattern32 {
     /// Any pattern of the kernel layer as a height: the normal tilts down its gradient by
     /// `amount` (the gradient by forward differences of `NORMAL_DELTA` in pattern space).
     Pattern(Box<Pattern32>, f32),
+    /// `normal_map`: entries sorted by value, each a whole normal of its own.
+    Map(Box<Pattern32>, Vec<(f32, NormalF32)>),
 }
 
 /// The finite-difference step for pattern normals, in pattern units.
@@ -67,7 +69,7 @@ impl NormalF32 {
     pub fn from_desc(d: &NormalDesc, world_from_render: &DMat4) -> NormalF32 {
         let periods = match d.pattern {
             NormalPattern::Bumps(_) => [Period::Every(LATTICE_PERIOD); 3],
-            NormalPattern::Pattern(..) => [Period::Never; 3],
+            NormalPattern::Pattern(..) | NormalPattern::Map(..) => [Period::Never; 3],
         };
         let pattern_from_render =
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
@@ -75,6 +77,10 @@ impl NormalF32 {
         let pattern = match &d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
             NormalPattern::Pattern(p, a) => NormalPattern32::Pattern(Box::new(Pattern32::from_desc(p)), *a as f32),
+            NormalPattern::Map(p, entries) => NormalPattern32::Map(
+                Box::new(Pattern32::from_desc(p)),
+                entries.iter().map(|(v, n)| (*v as f32, NormalF32::from_desc(n, world_from_render))).collect(),
+            ),
         };
         NormalF32 {
             pattern,
@@ -106,7 +112,38 @@ pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>,
             bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
         }
         NormalPattern32::Pattern(pat, amount) => pattern_normal(nrm, pat, *amount, p, n, q),
+        NormalPattern32::Map(pat, entries) => normal_map(pat, entries, p, p_render, n, q),
     }
+}
+
+/// `normal_map`: the entries' perturbed normals blended by the pattern's value as a colour
+/// map blends colours (clamped to the first and last entries), then renormalised.
+#[inline(never)]
+fn normal_map<L: Lane>(
+    pat: &Pattern32,
+    entries: &[(f32, NormalF32)],
+    p: V3<L>,
+    p_render: V3<L>,
+    n: V3<L>,
+    q: PatternQuality,
+) -> V3<L> {
+    let v = pat.value_lanes(p, q.max_octaves);
+    let (Some(first), Some(last)) = (entries.first(), entries.last()) else { return n };
+    let mut out = perturb_normal_lanes(&last.1, p_render, n, q);
+    for w in entries.windows(2).rev() {
+        let ((v0, a), (v1, b)) = (&w[0], &w[1]);
+        let nb = perturb_normal_lanes(b, p_render, n, q);
+        let c = if v1 > v0 {
+            let t = (v - L::splat(*v0)) / L::splat(v1 - v0);
+            let na = perturb_normal_lanes(a, p_render, n, q);
+            na.scale(L::splat(1.0) - t).add(nb.scale(t))
+        } else {
+            nb
+        };
+        out = V3::select(v.le(L::splat(*v1)), c, out);
+    }
+    let lo = perturb_normal_lanes(&first.1, p_render, n, q);
+    V3::select(v.le(L::splat(first.0)), lo, out).normalize_or(n)
 }
 
 #[inline(never)]

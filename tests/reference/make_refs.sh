@@ -40,12 +40,14 @@ done
 for s in lights_spot lights_area fog sky_sphere rainbow; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals; do
+for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in materials tiles; do
     render "$here/scenes/$s.pov" "$s"
 done
+# patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.
+(cd "$here/scenes" && render "$here/scenes/patterns_density.pov" patterns_density)
 # images.pov, bump_maps.pov and uv_mapping.pov read ../images/*.png (made by tests/reference/images/make_images.py).
 for s in images bump_maps uv_mapping; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")

@@ -334,7 +334,7 @@ impl<'f> Lowerer<'f> {
             match item {
                 DefaultItem::Texture(t) => self.default_texture = self.texture(t)?,
                 DefaultItem::Pigment(p) => self.default_texture.pigment = self.pigment(p)?,
-                DefaultItem::Normal(n) => self.default_texture.normal = Some(self.normal(n)?),
+                DefaultItem::Normal(n) => self.default_texture.normal = self.default_normal(n)?,
                 DefaultItem::Finish(f) => self.default_texture.finish = self.finish_block(f)?,
             }
         }

@@ -11,8 +11,8 @@ use crate::pov::ast::{
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    Color, ColorMapEntry, FinishDesc, FadeDesc, InteriorDesc, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
-    PigmentPattern, TextureDesc, Transform, Turbulence, Warp, Wave,
+    Color, ColorMapEntry, FadeDesc, FinishDesc, Fractal, FractalKind, InteriorDesc, NormalDesc, NormalPattern,
+    PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, Transform, Turbulence, Warp, Wave,
 };
 
 /// POV-Ray's `bumps` amount when none is written.
@@ -241,13 +241,31 @@ impl Lowerer<'_> {
             "spherical" => PatternKind::Spherical,
             "planar" => PatternKind::Planar,
             "quilted" => PatternKind::Quilted { c0: 1.0, c1: 1.0 },
-            "mandel" => {
-                let n = arg(self, 25.0)?;
-                if !(1.0..=1e6).contains(&n) {
-                    return Err(Diag::new(pa.span, "mandel needs between 1 and 1e6 iterations"));
-                }
-                PatternKind::Mandel(n as u32)
+            "mandel" | "julia" | "magnet" => PatternKind::Fractal(self.fractal(pa)?),
+            "density_file" => {
+                let Some(e) = &pa.arg else { return Err(Diag::new(pa.span, "density_file needs a file name")) };
+                let file = match self.eval(e)? {
+                    Value::Str(s) => s.to_string(),
+                    other => return Err(other.wrong_kind(e.span, "density_file's file name")),
+                };
+                let path = self
+                    .files
+                    .data_path(&file, false)
+                    .ok()
+                    .filter(|p| p.is_file())
+                    .ok_or_else(|| Diag::new(e.span, format!("density_file \"{file}\" not found")))?;
+                let bytes = std::fs::read(&path)
+                    .map_err(|err| Diag::new(e.span, format!("cannot read density_file \"{file}\": {err}")))?;
+                let grid = crate::shading::patterns::density::DensityGrid::from_df3(&bytes)
+                    .map_err(|m| Diag::new(e.span, format!("density_file \"{file}\" {m}")))?;
+                // The file as found, so that a printed scene reads it from anywhere.
+                let file = path.to_string_lossy().into_owned();
+                PatternKind::Density { file, grid: std::sync::Arc::new(grid), interpolate: 0 }
             }
+            "pigment_pattern" => match pa.pigments.first() {
+                Some(p) => PatternKind::PigmentPattern(Box::new(self.pigment(p)?)),
+                None => return Err(Diag::new(pa.span, "pigment_pattern needs a pigment body")),
+            },
             "wood" => PatternKind::Wood,
             "average" => PatternKind::Average,
             "function" => match pa.arg.as_ref().map(|e| self.eval(e)).transpose()? {
@@ -256,6 +274,63 @@ impl Lowerer<'_> {
             },
             other => return Err(Diag::new(pa.span, format!("unknown pattern `{other}`"))),
         })
+    }
+
+    /// `mandel N`, `julia C, N`, `magnet 1|2 mandel N`, `magnet 1|2 julia C, N`.
+    fn fractal(&mut self, pa: &PatternAst) -> PResult<Fractal> {
+        let iterations = match &pa.arg {
+            Some(e) => {
+                let n = self.float(e)?;
+                if !(1.0..=1e6).contains(&n) {
+                    return Err(Diag::new(e.span, format!("{} needs between 1 and 1e6 iterations", pa.name)));
+                }
+                n as u32
+            }
+            None => 25,
+        };
+        let complex = |l: &Self, e: &Expr| -> PResult<[f64; 2]> {
+            let v = l.vec3(e)?;
+            Ok([v.x, v.y])
+        };
+        let kind = match (pa.name.as_str(), pa.params.as_slice()) {
+            ("julia", [c]) => FractalKind::Julia { c: complex(self, c)?, exponent: 2 },
+            ("magnet", [m, rest @ ..]) => {
+                let t = self.float(m)?;
+                if t != 1.0 && t != 2.0 {
+                    return Err(Diag::new(m.span, "magnet type must be 1 or 2"));
+                }
+                let magnet = t as u32;
+                match rest {
+                    [c] => FractalKind::MagnetJulia { magnet, c: complex(self, c)? },
+                    _ => FractalKind::MagnetMandel { magnet },
+                }
+            }
+            _ => FractalKind::Mandel { exponent: 2 },
+        };
+        Ok(Fractal::new(kind, iterations))
+    }
+
+    /// `exponent`, `interior` and `exterior` of a fractal pattern.
+    fn fractal_mod(&self, word: &str, e: &Expr, f: &mut Fractal) -> PResult<()> {
+        if word == "exponent" {
+            let n = self.float(e)?;
+            if !(2.0..=33.0).contains(&n) || n.fract() != 0.0 {
+                return Err(Diag::new(e.span, "exponent must be a whole number from 2 to 33"));
+            }
+            match &mut f.kind {
+                FractalKind::Mandel { exponent } | FractalKind::Julia { exponent, .. } => *exponent = n as u32,
+                _ => return Err(Diag::new(e.span, "magnet patterns take no exponent")),
+            }
+            return Ok(());
+        }
+        let v = self.vec3(e)?;
+        let max = if word == "exterior" { 8.0 } else { 6.0 };
+        if !(0.0..=max).contains(&v.x) || v.x.fract() != 0.0 {
+            return Err(Diag::new(e.span, format!("{word} type must be a whole number from 0 to {max}")));
+        }
+        let slot = if word == "exterior" { &mut f.exterior } else { &mut f.interior };
+        *slot = (v.x as u32, v.y);
+        Ok(())
     }
 
     /// Applies one modifier to a pattern.
@@ -302,6 +377,23 @@ impl Lowerer<'_> {
                 ("offset", PatternKind::Crackle { offset, .. }) => *offset = self.float(e)?,
                 ("control0", PatternKind::Quilted { c0, .. }) => *c0 = self.float(e)?,
                 ("control1", PatternKind::Quilted { c1, .. }) => *c1 = self.float(e)?,
+                ("exponent" | "interior" | "exterior", PatternKind::Fractal(f)) => self.fractal_mod(word, e, f)?,
+                ("interpolate", PatternKind::Density { interpolate, .. }) => {
+                    let n = self.float(e)?;
+                    *interpolate = match n as i64 {
+                        0 => 0,
+                        1 => 1,
+                        2 => {
+                            self.not_modelled("density_file interpolate 2 (tricubic; trilinear used)", e.span);
+                            1
+                        }
+                        _ => return Err(Diag::new(e.span, "density_file interpolate must be 0, 1 or 2")),
+                    };
+                }
+                ("interpolate", _) => return Err(Diag::new(e.span, "`interpolate` needs density_file here")),
+                ("exponent" | "interior" | "exterior", _) => {
+                    return Err(Diag::new(e.span, format!("`{word}` needs a fractal pattern (mandel, julia, magnet)")))
+                }
                 // noise_generator 1|2|3: read; strahl has one noise.
                 _ => {
                     self.float(e)?;
@@ -377,11 +469,27 @@ impl Lowerer<'_> {
         Ok(sorted_map(&out))
     }
 
+    /// `#default { normal { .. } }`: POV-Ray 3.7 takes one without a pattern
+    /// (`normal { bump_size 1.5 }`, textures/normals/normmap.pov) as no default normal; its
+    /// amount would only matter to patterns written later, which bring their own.
+    pub(super) fn default_normal(&mut self, n: &Normal) -> PResult<Option<NormalDesc>> {
+        let has_pattern = self.default_texture.normal.is_some()
+            || n.items
+                .iter()
+                .any(|i| !matches!(i, NormalItem::BumpSize(_) | NormalItem::Transform(_) | NormalItem::Turb(_)));
+        if !has_pattern {
+            return Ok(None);
+        }
+        self.normal(n).map(Some)
+    }
+
     pub(super) fn normal(&mut self, n: &Normal) -> PResult<NormalDesc> {
         let start = self.default_texture.normal.clone();
         let mut pattern = start.as_ref().map(|n| n.pattern.clone());
         let mut turb = TurbState::from(start.as_ref().and_then(|n| n.turbulence));
         let mut transform = start.map_or_else(Transform::default, |n| n.transform);
+        // Transforms written in this block: they also move a normal_map's normals.
+        let mut own = Transform::default();
         for item in &n.items {
             match item {
                 NormalItem::Base(e) => match self.declared(e)? {
@@ -402,7 +510,11 @@ impl Lowerer<'_> {
                     pattern = Some(NormalPattern::Bumps(a));
                 }
                 NormalItem::Turb(t) => self.turb(t, &mut turb)?,
-                NormalItem::Transform(t) => transform = transform.then(&self.transform(t)?),
+                NormalItem::Transform(t) => {
+                    let t = self.transform(t)?;
+                    transform = transform.then(&t);
+                    own = own.then(&t);
+                }
                 NormalItem::Pattern(pa, amount) => {
                     let a = match amount {
                         Some(e) => self.float(e)?,
@@ -412,7 +524,7 @@ impl Lowerer<'_> {
                     pattern = Some(NormalPattern::Pattern(PatternDesc::new(kind), a));
                 }
                 NormalItem::Mod(m) => {
-                    if let Some(NormalPattern::Pattern(pd, _)) = &mut pattern {
+                    if let Some(NormalPattern::Pattern(pd, _) | NormalPattern::Map(pd, _)) = &mut pattern {
                         self.pattern_mod(m, pd)?;
                     }
                 }
@@ -420,7 +532,8 @@ impl Lowerer<'_> {
                     let v = self.float(e)?;
                     match &mut pattern {
                         Some(NormalPattern::Pattern(_, a)) | Some(NormalPattern::Bumps(a)) => *a = v,
-                        None => {}
+                        // A normal_map's entries carry their own amounts.
+                        Some(NormalPattern::Map(..)) | None => {}
                     }
                 }
                 NormalItem::BumpMap(im, size) => {
@@ -437,13 +550,30 @@ impl Lowerer<'_> {
                     };
                     pattern = Some(NormalPattern::Pattern(PatternDesc::new(PatternKind::Image(im.clone())), a));
                 }
+                NormalItem::NormalMap(entries, span) => {
+                    let Some(NormalPattern::Pattern(pd, _)) = &pattern else {
+                        return Err(Diag::new(*span, "normal_map needs a pattern before it (e.g. gradient x)"));
+                    };
+                    let pd = pd.clone();
+                    let mut list = Vec::with_capacity(entries.len());
+                    for (v, n) in entries {
+                        list.push((self.float(v)?, self.normal(n)?));
+                    }
+                    list.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    pattern = Some(NormalPattern::Map(pd, list));
+                }
                 NormalItem::Ignored(word, span) => {
                     self.warn(Diag::new(*span, format!("`{word}` in a normal is not modelled; ignored")));
                 }
             }
         }
-        let pattern =
+        let mut pattern =
             pattern.ok_or_else(|| Diag::new(n.span, "normal needs a pattern (e.g. bumps, dents, gradient)"))?;
+        // Transforms written in this block also move the map's normals, as a pigment's move
+        // its pigment_map's.
+        if let NormalPattern::Map(_, entries) = &mut pattern {
+            entries.iter_mut().for_each(|(_, e)| e.transform_by(&own));
+        }
         Ok(NormalDesc { pattern, turbulence: turb.finish(), transform })
     }
 
@@ -778,6 +908,6 @@ pub(super) fn texture_uv_span(t: &Texture) -> Option<Span> {
 fn transform_texture_always(t: &mut TextureDesc, tr: &Transform) {
     t.pigment.transform_by(tr);
     if let Some(n) = &mut t.normal {
-        n.transform = n.transform.then(tr);
+        n.transform_by(tr);
     }
 }

@@ -142,11 +142,13 @@ impl Parser<'_, '_> {
             let value = base(self)?;
             items.push(ColorItem { key: ColorKey::Base, span: value.span, value });
         }
+        let whole = |k: ColorKey| {
+            matches!(k, ColorKey::Base | ColorKey::Rgb | ColorKey::Rgbf | ColorKey::Rgbt | ColorKey::Rgbft)
+        };
         while let Some(key) = self.more_ident().as_deref().and_then(color_key) {
-            // A second whole vector (`rgb <..> rgb <..>`) starts the next colour, as in
-            // `checker rgb <1, 0, 0> rgb <0, 0, 1>`; single components modify this one.
-            let whole = matches!(key, ColorKey::Rgb | ColorKey::Rgbf | ColorKey::Rgbt | ColorKey::Rgbft);
-            if whole && !items.is_empty() {
+            // A second whole colour starts the next colour (`checker rgb A rgb B`: two
+            // colours, as POV-Ray 3.7 renders it), not a change to this one.
+            if whole(key) && items.iter().any(|i| whole(i.key)) {
                 break;
             }
             let key_span = self.bump().span;

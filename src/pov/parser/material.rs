@@ -71,6 +71,7 @@ impl Parser<'_, '_> {
         Ok(PatternAst {
             name: "checker".into(),
             arg: None,
+            params: Vec::new(),
             colors: Vec::new(),
             pigments: Vec::new(),
             textures,

@@ -60,6 +60,10 @@ const PIGMENT: &[&str] = &[
     "planar",
     "quilted",
     "mandel",
+    "julia",
+    "magnet",
+    "pigment_pattern",
+    "density_file",
     "average",
     "ramp_wave",
     "triangle_wave",
@@ -80,6 +84,10 @@ const PIGMENT: &[&str] = &[
     "control0",
     "control1",
     "noise_generator",
+    "exponent",
+    "interior",
+    "exterior",
+    "interpolate",
     "quick_color",
     "quick_colour",
     "image_map",
@@ -115,6 +123,10 @@ pub(crate) const PATTERNS: &[&str] = &[
     "planar",
     "quilted",
     "mandel",
+    "julia",
+    "magnet",
+    "pigment_pattern",
+    "density_file",
     "average",
     "checker",
     "wood",
@@ -141,6 +153,10 @@ const PATTERN_MODS: &[&str] = &[
     "control0",
     "control1",
     "noise_generator",
+    "exponent",
+    "interior",
+    "exterior",
+    "interpolate",
 ];
 const NORMAL: &[&str] = &[
     "bumps",
@@ -253,6 +269,7 @@ impl Parser<'_, '_> {
                         PigmentItem::Pattern(PatternAst {
                             name: "checker".into(),
                             arg: None,
+                            params: Vec::new(),
                             colors: Vec::new(),
                             pigments,
                             textures: Vec::new(),
@@ -349,11 +366,18 @@ impl Parser<'_, '_> {
     pub(super) fn normal(&mut self) -> PResult<Normal> {
         let kw = self.bump().span;
         self.open_block("normal", kw)?;
+        let items = self.normal_items(false)?;
+        let end = self.close_block("normal", kw)?;
+        Ok(Normal { items, span: kw.to(end) })
+    }
+
+    /// A normal's items, up to its `}` (or the `]` of a `normal_map` entry).
+    fn normal_items(&mut self, in_entry: bool) -> PResult<Vec<NormalItem>> {
         let mut items = Vec::new();
         if let Some(b) = self.base(NORMAL)? {
             items.push(NormalItem::Base(b));
         }
-        while !self.at_block_end() {
+        while !self.at_body_end(in_entry) {
             let item = match self.peek_ident().as_deref() {
                 Some("bumps") => {
                     let span = self.bump().span;
@@ -405,7 +429,11 @@ impl Parser<'_, '_> {
                     self.expr()?;
                     continue;
                 }
-                Some(w @ ("slope_map" | "normal_map")) => {
+                Some("normal_map") => {
+                    let span = self.bump().span;
+                    NormalItem::NormalMap(self.block_map("normal_map", span, |p| p.normal())?, span)
+                }
+                Some(w @ "slope_map") => {
                     let w = w.to_string();
                     let span = self.bump().span;
                     self.skip_braced(&w, span)?;
@@ -415,8 +443,7 @@ impl Parser<'_, '_> {
             };
             items.push(item);
         }
-        let end = self.close_block("normal", kw)?;
-        Ok(Normal { items, span: kw.to(end) })
+        Ok(items)
     }
 
     /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.
@@ -482,8 +509,15 @@ impl Parser<'_, '_> {
             TokenKind::Ident(w) => w.to_string(),
             _ => unreachable!("pattern() is called on a pattern keyword"),
         };
-        let mut pat =
-            PatternAst { name, arg: None, colors: Vec::new(), pigments: Vec::new(), textures: Vec::new(), span };
+        let mut pat = PatternAst {
+            name,
+            arg: None,
+            params: Vec::new(),
+            colors: Vec::new(),
+            pigments: Vec::new(),
+            textures: Vec::new(),
+            span,
+        };
         match pat.name.as_str() {
             "gradient" => pat.arg = Some(self.expr()?),
             "function" => {
@@ -494,6 +528,49 @@ impl Parser<'_, '_> {
             }
             "spiral1" | "spiral2" | "mandel" if self.starts_expr(stop) && !self.starts_mod() => {
                 pat.arg = Some(self.expr()?)
+            }
+            "julia" => {
+                pat.params.push(self.expr()?);
+                self.eat_punct(',');
+                pat.arg = Some(self.expr()?);
+            }
+            "magnet" => {
+                pat.params.push(self.expr()?);
+                match self.peek_ident().as_deref() {
+                    Some("mandel") => {
+                        self.bump();
+                    }
+                    Some("julia") => {
+                        self.bump();
+                        pat.params.push(self.expr()?);
+                        self.eat_punct(',');
+                    }
+                    _ => {
+                        let t = self.peek();
+                        return Err(Diag::new(
+                            t.span,
+                            format!("expected `mandel` or `julia` after `magnet N`, found {}", t.describe()),
+                        ));
+                    }
+                }
+                pat.arg = Some(self.expr()?);
+            }
+            "density_file" => {
+                if self.peek_ident().as_deref() != Some("df3") {
+                    let t = self.peek();
+                    return Err(Diag::new(
+                        t.span,
+                        format!("expected `df3` after `density_file`, found {}", t.describe()),
+                    ));
+                }
+                self.bump();
+                pat.arg = Some(self.expr()?);
+            }
+            "pigment_pattern" => {
+                self.open_block("pigment_pattern", span)?;
+                let items = self.pigment_items(false)?;
+                let end = self.close_block("pigment_pattern", span)?;
+                pat.pigments.push(Pigment { items, span: span.to(end) });
             }
             "quilted" if self.starts_expr(stop) && !self.starts_mod() => {}
             "checker" | "brick" | "hexagon" => {
@@ -539,6 +616,14 @@ impl Parser<'_, '_> {
                 PatternMod::Wave(word, e)
             }
             "solid" => PatternMod::Flag(word, tok.span),
+            "interior" | "exterior" => {
+                // `interior TYPE, FACTOR`: carried as the vector <TYPE, FACTOR>.
+                let t = self.expr()?;
+                let factor =
+                    if self.eat_punct(',') { self.expr()? } else { Expr { kind: ExprKind::Number(1.0), span: t.span } };
+                let span = tok.span.to(factor.span);
+                PatternMod::Set(word, Expr { kind: ExprKind::Vector(vec![t, factor]), span })
+            }
             "warp" => PatternMod::Warp(self.warp(tok.span)?),
             "turbulence" | "octaves" | "omega" | "lambda" => {
                 // In a texture: the turbulence of its pattern.
@@ -634,10 +719,11 @@ impl Parser<'_, '_> {
         let mut out = Vec::new();
         while !self.at_block_end() {
             let open = self.expect_punct('[', "to start a map entry")?;
-            // `average`'s entries may leave out their weight (`[function { x } color_map
-            // {..}]`), which is then 1: POV-Ray 3.7 renders three such entries as equal thirds.
+            // `average`'s entries may leave out their weight (`[function { x } color_map {..}]`,
+            // `[pigment { .. }]`), which is then 1: POV-Ray 3.7 renders three such entries as
+            // equal thirds.
             let weightless = match self.peek_ident() {
-                Some(w) => PATTERNS.contains(&&*w) || &*w == T::KEYWORD,
+                Some(w) => PATTERNS.contains(&&*w) || &*w == T::KEYWORD || matches!(&*w, "pigment" | "normal" | "finish"),
                 None => false,
             };
             let value = if weightless {
@@ -672,6 +758,13 @@ impl FromName for Pigment {
     const KEYWORD: &'static str = "pigment";
     fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
         Ok(Pigment { items: p.pigment_items(true)?, span })
+    }
+}
+
+impl FromName for Normal {
+    const KEYWORD: &'static str = "normal";
+    fn body(p: &mut Parser<'_, '_>, span: crate::pov::source::Span) -> PResult<Self> {
+        Ok(Normal { items: p.normal_items(true)?, span })
     }
 }
 

@@ -132,7 +132,18 @@ pub enum PatternKind {
         c0: f64,
         c1: f64,
     },
-    Mandel(u32),
+    /// `mandel`, `julia` and `magnet 1|2` (3.4.7.1.11): one fractal family.
+    Fractal(Fractal),
+    /// `pigment_pattern { PIGMENT }` (3.4.7.1.19): the pigment's grey value, evaluated in
+    /// this pattern's space (the inner pigment keeps its own transform).
+    PigmentPattern(Box<PigmentDesc>),
+    /// `density_file df3 "FILE" [interpolate N]`: the file's voxels over the unit cube.
+    Density {
+        /// The file as found (for the printer).
+        file: String,
+        grid: Arc<crate::shading::patterns::density::DensityGrid>,
+        interpolate: u32,
+    },
     /// Raw ring value `frac(r)` (its default wave is the triangle).
     Wood,
     /// `average`: a `pigment_map`'s pigments averaged, weighted by their entry values.
@@ -152,6 +163,37 @@ impl PatternKind {
             PatternKind::Hexagon => Some(3),
             _ => None,
         }
+    }
+}
+
+/// The iteration of a fractal pattern.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FractalKind {
+    /// z ← z^exponent + c from z = 0, c the point.
+    Mandel { exponent: u32 },
+    /// z ← z^exponent + c from z the point.
+    Julia { c: [f64; 2], exponent: u32 },
+    /// `magnet 1|2 mandel`: the magnet map with c the point, from z = 0.
+    MagnetMandel { magnet: u32 },
+    /// `magnet 1|2 julia C`: the magnet map with c given, from z the point.
+    MagnetJulia { magnet: u32, c: [f64; 2] },
+}
+
+/// `mandel`, `julia` and `magnet` with their `interior` and `exterior` colouring types
+/// (0–6; exterior also 7, 8) and factors.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fractal {
+    pub kind: FractalKind,
+    pub iterations: u32,
+    pub interior: (u32, f64),
+    pub exterior: (u32, f64),
+}
+
+impl Fractal {
+    /// POV-Ray's defaults: interior type 0 (value 1), exterior type 1 (iterations until
+    /// bailout over the iteration count), factors 1.
+    pub fn new(kind: FractalKind, iterations: u32) -> Fractal {
+        Fractal { kind, iterations, interior: (0, 1.0), exterior: (1, 1.0) }
     }
 }
 
@@ -247,6 +289,19 @@ pub enum NormalPattern {
     Bumps(f64),
     /// Any other pattern: the normal tilts by `amount` times the pattern's gradient.
     Pattern(PatternDesc, f64),
+    /// `normal_map`: the pattern's value blends the perturbed normals of the two entries
+    /// around it (sorted by value); each entry keeps its own pattern and transform.
+    Map(PatternDesc, Vec<(f64, NormalDesc)>),
+}
+
+impl NormalDesc {
+    /// Moves the normal, and every normal it is made of, by `tr` (applied after its own).
+    pub fn transform_by(&mut self, tr: &Transform) {
+        self.transform = self.transform.then(tr);
+        if let NormalPattern::Map(_, entries) = &mut self.pattern {
+            entries.iter_mut().for_each(|(_, n)| n.transform_by(tr));
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -7,6 +7,8 @@
 //! no lane arithmetic run the scalar kernel lane by lane).
 
 pub mod cells;
+pub mod density;
+pub mod fractal;
 pub mod simple;
 pub mod turbulent;
 
@@ -43,7 +45,11 @@ pub enum Kind32 {
     Spherical,
     Planar,
     Quilted(f32, f32),
-    Mandel(u32),
+    Fractal(fractal::Fractal32),
+    /// `density_file`: voxels looked up lane by lane.
+    Density(std::sync::Arc<density::DensityGrid>, u32),
+    /// `pigment_pattern`: the pigment's grey, in this pattern's space.
+    PigmentPattern(Box<crate::shading::pigment::Pigment>),
     Wood,
     /// `average` has no value of its own (the pigment averages its map).
     Average,
@@ -110,7 +116,11 @@ impl Pattern32 {
             PatternKind::Spherical => Kind32::Spherical,
             PatternKind::Planar => Kind32::Planar,
             &PatternKind::Quilted { c0, c1 } => Kind32::Quilted(c0 as f32, c1 as f32),
-            &PatternKind::Mandel(n) => Kind32::Mandel(n),
+            PatternKind::Fractal(f) => Kind32::Fractal(fractal::Fractal32::from_desc(f)),
+            PatternKind::Density { grid, interpolate, .. } => Kind32::Density(grid.clone(), *interpolate),
+            PatternKind::PigmentPattern(p) => {
+                Kind32::PigmentPattern(Box::new(crate::shading::pigment::Pigment::from_desc(p, &glam::DMat4::IDENTITY)))
+            }
             PatternKind::Wood => Kind32::Wood,
             PatternKind::Average => Kind32::Average,
             PatternKind::Function(f) => Kind32::Function(f.clone()),
@@ -208,7 +218,9 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         Kind32::Spherical => simple::spherical(p),
         Kind32::Planar => simple::planar(p),
         Kind32::Quilted(a, b) => simple::quilted(p, a, b),
-        Kind32::Mandel(n) => simple::mandel(p, n),
+        Kind32::Fractal(ref f) => fractal::fractal(p, f),
+        Kind32::Density(ref g, interpolate) => density::density(p, g, interpolate),
+        Kind32::PigmentPattern(ref pig) => pigment_grey(pig, p),
         Kind32::Wood => simple::wood_rings(p),
         Kind32::Average => L::splat(0.0),
         Kind32::Function(ref f) => {
@@ -216,6 +228,18 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
         }
         Kind32::Image(ref im) => im.value_lanes(p),
     }
+}
+
+/// POV-Ray's grey of a colour, as `pigment_pattern` reads it (3.4.7.1.19), clamped to [0, 1].
+/// The weights are the luminance POV-Ray 3.7 uses for grey values (0.297 R + 0.589 G +
+/// 0.114 B), checked by rendering `pigment_pattern { rgb C }` with `ambient 1`.
+pub const GREY: [f32; 3] = [0.297, 0.589, 0.114];
+
+#[inline(always)]
+fn pigment_grey<L: Lane>(pig: &crate::shading::pigment::Pigment, p: V3<L>) -> L {
+    let c = crate::shading::pigment::eval_pigment_lanes(pig, p, Default::default());
+    let g = c.rgb.x * L::splat(GREY[0]) + c.rgb.y * L::splat(GREY[1]) + c.rgb.z * L::splat(GREY[2]);
+    g.max(L::splat(0.0)).min(L::splat(1.0))
 }
 
 /// POV-Ray's wave types on a value in [0, 1] (measured on `gradient x`: `sine_wave` is
@@ -301,7 +325,21 @@ mod tests {
             PatternKind::Spherical,
             PatternKind::Planar,
             PatternKind::Quilted { c0: 1.0, c1: 1.0 },
-            PatternKind::Mandel(25),
+            PatternKind::Fractal(crate::scene::desc::Fractal::new(
+                crate::scene::desc::FractalKind::Mandel { exponent: 2 },
+                25,
+            )),
+            PatternKind::Fractal(crate::scene::desc::Fractal::new(
+                crate::scene::desc::FractalKind::MagnetJulia { magnet: 2, c: [0.4, 0.2] },
+                25,
+            )),
+            PatternKind::PigmentPattern(Box::new(crate::scene::desc::PigmentDesc {
+                pattern: crate::scene::desc::PigmentPattern::Checker(
+                    crate::scene::desc::Color::WHITE,
+                    crate::scene::desc::Color::rgb(0.2, 0.5, 0.1),
+                ),
+                ..Default::default()
+            })),
             PatternKind::Wood,
             // `function { x * 1.5 - y }`: wrapped into [0, 1).
             PatternKind::Function(std::sync::Arc::new(Program::compile(

@@ -165,24 +165,6 @@ pub fn quilted<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> L {
     })
 }
 
-/// `mandel N`: the Mandelbrot set in the x-y plane; the escape iteration over N, 1 inside.
-#[inline(always)]
-pub fn mandel<L: Lane>(p: V3<L>, iterations: u32) -> L {
-    L::from_fn(|i| {
-        let (cx, cy) = (p.x.get(i), p.y.get(i));
-        let (mut x, mut y) = (cx, cy);
-        for n in 0..iterations {
-            if x * x + y * y > 4.0 {
-                return n as f32 / iterations as f32;
-            }
-            let t = x * x - y * y + cx;
-            y = 2.0 * x * y + cy;
-            x = t;
-        }
-        1.0
-    })
-}
-
 /// Raw wood rings: `frac(r)` around z (the triangle wave makes POV-Ray's `wood`).
 #[inline(always)]
 pub fn wood_rings<L: Lane>(p: V3<L>) -> L {
@@ -242,11 +224,5 @@ mod tests {
                 assert!(v == 0.0 || v == 1.0 || v == 2.0);
             }
         }
-    }
-
-    #[test]
-    fn mandel_inside_and_out() {
-        assert_eq!(one(|q| mandel(q, 30), [0.0, 0.0, 0.0]), 1.0);
-        assert!(one(|q| mandel(q, 30), [1.5, 1.5, 0.0]) < 0.1);
     }
 }

@@ -396,10 +396,14 @@ fn pattern_and_pigment_functions_match_povray() {
          0.01.0 0.2500 0.7500 1.0000\n\
          0.5000,0.2500,0.0000 1.0,2.0\n"
     );
-    let e = error("e_shade_channel", "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z) + 1 }");
+    let e = error(
+        "e_shade_channel",
+        "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z) + 1 }",
+    );
     assert_eq!((e.line, e.col), (2, 25), "{e}");
     assert!(e.message.contains("is a pigment function"), "{e}");
-    let e = error("e_shade_member", "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z).w }");
+    let e =
+        error("e_shade_member", "#declare P = function { pigment { rgb 1 } }\n#declare F = function { P(x, y, z).w }");
     assert_eq!((e.line, e.col), (2, 36), "{e}");
 }
 
@@ -433,6 +437,7 @@ fn height_field_functions_sample_the_unit_square() {
     assert!(near(fields[2].0.heights[0], 0.5915), "{:?}", fields[2].0.heights);
     let e = error("e_hf_size", "height_field { function 1, 3 { x } }");
     assert_eq!((e.line, e.col), (1, 16), "{e}");
+}
 
 // ---- The sample scenes' language errors (objects/primitiv.pov, advanced/desk/desk.pov,
 // interior/media/media2.pov, language/trace.pov, language/tracevines.pov, incdemo/screen.pov,

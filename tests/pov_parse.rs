@@ -2159,3 +2159,28 @@ fn density_file_errors_are_located() {
     let e = load_scene(&path, &std_include()).expect_err("interpolate 5");
     assert!(e.message.contains("interpolate must be 0, 1 or 2"), "{}", e.message);
 }
+
+/// `up z` along the default `direction z` has no handedness; POV-Ray 3.7 then mirrors the
+/// image (objects/prism3a.pov, checked with a sphere at +x: it shows on the left).
+#[test]
+fn camera_vectors_of_no_handedness_read_as_right_handed() {
+    let text = |up: &str| format!("camera {{ location <-10, 10, -10> right x*4/3 {up} look_at 0 angle 20 }}");
+    let normal = load_text("cam_up_y", &text("up y")).unwrap().camera;
+    for up in ["up z", "up -z"] {
+        let c = load_text("cam_up_z", &text(up)).unwrap().camera;
+        assert!(close(c.right, -normal.right), "{up}: {} vs {}", c.right, normal.right);
+        assert!(close(c.direction, normal.direction));
+    }
+}
+
+/// `pigment { White filter .7 }` (objectmods/double_illuminate.pov): components after a colour
+/// change that colour, they do not start a black one.
+#[test]
+fn colour_components_after_a_pigment_colour_change_it() {
+    let s = load_text("white_filter", "#declare White = rgb 1;\nbox { 0, 1 pigment { White filter .7 } }").unwrap();
+    let PigmentPattern::Solid(c) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert_eq!((c.rgb, c.filter), (DVec3::ONE, 0.7));
+    let s = load_text("red_green", "box { 0, 1 pigment { rgb <1, 0, 0> green 0.5 transmit 0.2 } }").unwrap();
+    let PigmentPattern::Solid(c) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert_eq!((c.rgb, c.transmit), (DVec3::new(1.0, 0.5, 0.0), 0.2));
+}

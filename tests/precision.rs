@@ -147,6 +147,9 @@ fn f64_renders_have_no_bad_samples() {
         let name = f.file_name().and_then(|n| n.to_str()).unwrap_or("");
         if name.contains("fisheye") || name.contains("omnimax") {
             assert!(frame.stats.primary_rays > 0 && frame.stats.primary_rays < expected, "{}", f.display());
+        } else if name.contains("cameras_mesh") {
+            // A mesh camera traces `rays_per_pixel` rays per sample, none where no face is.
+            assert!(frame.stats.primary_rays > 0, "{}", f.display());
         } else {
             assert_eq!(frame.stats.primary_rays, expected, "{}", f.display());
         }

@@ -50,9 +50,7 @@ use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::atmosphere::Atmosphere;
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
-use crate::scene::desc::{
-    CsgOp, InteriorDesc, MeshDesc, ObjectDesc, SceneDesc, ShapeDesc, TextureDesc,
-};
+use crate::scene::desc::{CsgOp, InteriorDesc, MeshDesc, ObjectDesc, SceneDesc, ShapeDesc, TextureDesc};
 pub use crate::scene::light::Light;
 use crate::scene::material::Material;
 use crate::scene::place::{RenderFrame, RenderShape};

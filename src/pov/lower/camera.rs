@@ -240,8 +240,10 @@ impl Lowerer<'_> {
                 return Err(Diag::new(target_span, "camera look_at is the same point as its location"));
             }
             // A right-handed camera (`right -x*4/3`, as modellers export) stays right-handed:
-            // POV-Ray keeps the handedness of the vectors it was given (checked by rendering).
-            let right_handed = cam.right.cross(cam.up).dot(cam.direction) < 0.0;
+            // POV-Ray keeps the handedness of the vectors it was given (checked by rendering),
+            // and reads vectors of no handedness (`up z` along the default `direction z`, as
+            // objects/prism3.inc has) as right-handed: those scenes render mirrored.
+            let right_handed = cam.right.cross(cam.up).dot(cam.direction) <= 0.0;
             let direction = to.normalize() * cam.direction.length();
             let mut right = cam.sky.cross(direction);
             let parallel = |r: glam::DVec3, other: glam::DVec3| {

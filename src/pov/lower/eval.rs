@@ -3,7 +3,7 @@
 use glam::{DMat4, DVec3};
 
 use super::Lowerer;
-use crate::pov::ast::{Builtin, ColorKey, Expr, ExprKind, TransformItem, TransformKind};
+use crate::pov::ast::{Builtin, ColorItem, ColorKey, Expr, ExprKind, TransformItem, TransformKind};
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::{binary, color_from, negate, truthy, Value};
 use crate::scene::desc::{Color, Transform};
@@ -39,38 +39,7 @@ impl Lowerer<'_> {
             ExprKind::Builtin(b) => Ok(Value::Float(self.builtin(*b))),
             ExprKind::Binary(op, a, b) => binary(*op, &self.eval(a)?, &self.eval(b)?, a.span, b.span),
             ExprKind::Call(name, args) => self.call(name, args, e),
-            ExprKind::Color(items) => {
-                let mut c = Color::BLACK;
-                for item in items {
-                    let v = self.eval(&item.value)?;
-                    let span = item.value.span;
-                    // Components an `rgb`-style keyword reads: a float promotes to all of them.
-                    let comps = |n: usize| -> PResult<Vec<f64>> {
-                        match &v {
-                            Value::Float(f) => Ok(vec![*f; n]),
-                            Value::Vector(c) => Ok((0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect()),
-                            Value::Color(c) => Ok([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit][..n].to_vec()),
-                            other => Err(Diag::new(span, format!("expected a color, found {}", other.kind_name()))),
-                        }
-                    };
-                    match item.key {
-                        ColorKey::Base => c = v.as_color(span)?,
-                        ColorKey::Rgb => c.rgb = color_from(&comps(3)?).rgb,
-                        ColorKey::Rgbf => c = Color { transmit: c.transmit, ..color_from(&comps(4)?) },
-                        ColorKey::Rgbt => {
-                            let k = comps(4)?;
-                            c = Color { rgb: DVec3::new(k[0], k[1], k[2]), filter: c.filter, transmit: k[3] };
-                        }
-                        ColorKey::Rgbft => c = color_from(&comps(5)?),
-                        ColorKey::Red => c.rgb.x = v.as_float(span)?,
-                        ColorKey::Green => c.rgb.y = v.as_float(span)?,
-                        ColorKey::Blue => c.rgb.z = v.as_float(span)?,
-                        ColorKey::Filter => c.filter = v.as_float(span)?,
-                        ColorKey::Transmit => c.transmit = v.as_float(span)?,
-                    }
-                }
-                Ok(Value::Color(c))
-            }
+            ExprKind::Color(items) => Ok(Value::Color(self.color_items(Color::BLACK, items)?)),
         }
     }
 
@@ -79,7 +48,9 @@ impl Lowerer<'_> {
         let names = ["x", "y", "z", "t", "transmit", "gray"];
         let comps = match self.eval(inner)? {
             // `.gray`: 0.297 red + 0.589 green + 0.114 blue, as `shading::pigment::gray`.
-            Value::Color(c) if index == 5 => return Ok(Value::Float(0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z)),
+            Value::Color(c) if index == 5 => {
+                return Ok(Value::Float(0.297 * c.rgb.x + 0.589 * c.rgb.y + 0.114 * c.rgb.z))
+            }
             Value::Vector(c) if index == 5 && c.len() >= 3 => {
                 return Ok(Value::Float(0.297 * c[0] + 0.589 * c[1] + 0.114 * c[2]))
             }
@@ -226,6 +197,41 @@ impl Lowerer<'_> {
 
     pub(crate) fn vec3(&self, e: &Expr) -> PResult<DVec3> {
         self.eval(e)?.as_vec3(e.span)
+    }
+
+    /// A colour's keyword items applied in order to `start` (black for a colour written alone;
+    /// a pigment's colour when `filter .7` follows it, as in `pigment { White filter .7 }`).
+    pub(super) fn color_items(&self, start: Color, items: &[ColorItem]) -> PResult<Color> {
+        let mut c = start;
+        for item in items {
+            let v = self.eval(&item.value)?;
+            let span = item.value.span;
+            // Components an `rgb`-style keyword reads: a float promotes to all of them.
+            let comps = |n: usize| -> PResult<Vec<f64>> {
+                match &v {
+                    Value::Float(f) => Ok(vec![*f; n]),
+                    Value::Vector(c) => Ok((0..n).map(|i| c.get(i).copied().unwrap_or(0.0)).collect()),
+                    Value::Color(c) => Ok([c.rgb.x, c.rgb.y, c.rgb.z, c.filter, c.transmit][..n].to_vec()),
+                    other => Err(Diag::new(span, format!("expected a color, found {}", other.kind_name()))),
+                }
+            };
+            match item.key {
+                ColorKey::Base => c = v.as_color(span)?,
+                ColorKey::Rgb => c.rgb = color_from(&comps(3)?).rgb,
+                ColorKey::Rgbf => c = Color { transmit: c.transmit, ..color_from(&comps(4)?) },
+                ColorKey::Rgbt => {
+                    let k = comps(4)?;
+                    c = Color { rgb: DVec3::new(k[0], k[1], k[2]), filter: c.filter, transmit: k[3] };
+                }
+                ColorKey::Rgbft => c = color_from(&comps(5)?),
+                ColorKey::Red => c.rgb.x = v.as_float(span)?,
+                ColorKey::Green => c.rgb.y = v.as_float(span)?,
+                ColorKey::Blue => c.rgb.z = v.as_float(span)?,
+                ColorKey::Filter => c.filter = v.as_float(span)?,
+                ColorKey::Transmit => c.transmit = v.as_float(span)?,
+            }
+        }
+        Ok(c)
     }
 
     pub(super) fn color(&self, e: &Expr) -> PResult<Color> {

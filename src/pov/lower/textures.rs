@@ -5,8 +5,8 @@ use glam::DVec3;
 
 use super::Lowerer;
 use crate::pov::ast::{
-    ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem, Normal, NormalItem,
-    PatternAst, PatternMod, Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind, WarpAst,
+    ColorItem, ColorKey, ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem,
+    Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, Texture, TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
@@ -100,7 +100,27 @@ impl Lowerer<'_> {
                         })?);
                     }
                 }
-                PigmentItem::Color(e) => pattern = Pattern::Solid(self.color(e)?),
+                PigmentItem::Color(e) => {
+                    // Components alone after a colour change it: `pigment { White filter .7 }`.
+                    let components = |items: &[ColorItem]| {
+                        items.iter().all(|i| {
+                            matches!(
+                                i.key,
+                                ColorKey::Red
+                                    | ColorKey::Green
+                                    | ColorKey::Blue
+                                    | ColorKey::Filter
+                                    | ColorKey::Transmit
+                            )
+                        })
+                    };
+                    pattern = Pattern::Solid(match (&pattern, &e.kind) {
+                        (Pattern::Solid(base), ExprKind::Color(items)) if components(items) => {
+                            self.color_items(*base, items)?
+                        }
+                        _ => self.color(e)?,
+                    });
+                }
                 PigmentItem::Checker(colors, _) => {
                     // POV-Ray's checker colours when none are given: blue and green.
                     let a = match colors.first() {

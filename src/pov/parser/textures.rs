@@ -723,7 +723,9 @@ impl Parser<'_, '_> {
             // `[pigment { .. }]`), which is then 1: POV-Ray 3.7 renders three such entries as
             // equal thirds.
             let weightless = match self.peek_ident() {
-                Some(w) => PATTERNS.contains(&&*w) || &*w == T::KEYWORD || matches!(&*w, "pigment" | "normal" | "finish"),
+                Some(w) => {
+                    PATTERNS.contains(&&*w) || &*w == T::KEYWORD || matches!(&*w, "pigment" | "normal" | "finish")
+                }
                 None => false,
             };
             let value = if weightless {

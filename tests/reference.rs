@@ -170,9 +170,7 @@ fn layered_textures_match_povray() {
         "layered",
         &scene("layered"),
         35.0,
-        &[
-            (Some(1), 34.0, "sphere: 34.36 dB, its filtered layer composites a little differently"),
-        ],
+        &[(Some(1), 34.0, "sphere: 34.36 dB, its filtered layer composites a little differently")],
     );
 }
 

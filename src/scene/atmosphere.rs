@@ -96,9 +96,9 @@ impl Atmosphere {
     /// what is behind is multiplied by every fog's transmittance, and each fog adds its colour
     /// times its own opacity, so layers add up rather than cover each other. A fog colour's
     /// transmit is a floor on its transmittance `T` (`transmit 0.3`: at least 30% of what is
-    /// behind shows) and its filter tints what passes: behind · T · (1 − filter + filter · C)
-    /// + (1 − T) · C (fitted to POV-Ray 3.7 to the unit in nine filter/transmit/distance
-    /// cases over a coloured object).
+    /// behind shows) and its filter tints what passes: the colour is
+    /// `behind · T · (1 − filter + filter · C) + (1 − T) · C`, fitted to POV-Ray 3.7 to the
+    /// unit in nine filter/transmit/distance cases over a coloured object.
     pub fn along(&self, origin: Vec3, dir: Vec3, depth: f32, color: Vec3) -> Vec3 {
         let mut passed = Vec3::ONE;
         let mut added = Vec3::ZERO;

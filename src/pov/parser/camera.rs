@@ -184,7 +184,7 @@ impl Parser<'_, '_> {
             Ok((p.low.float(&e)?, e.span))
         };
         let (rays, rays_span) = number(self, "its rays per pixel")?;
-        if !(rays >= 1.0 && rays <= 1e6) {
+        if !(1.0..=1e6).contains(&rays) {
             return Err(Diag::new(rays_span, format!("mesh_camera: rays per pixel must be at least 1, not {rays}")));
         }
         let (distribution, dist_span) = number(self, "its rays per pixel and distribution type")?;

@@ -115,6 +115,13 @@ fn patterns_simple_match_povray() {
     );
 }
 
+/// `spiral1` with its default triangle wave, ramp and sine waves, a frequency and a rotation
+/// (the arms counted from the −y axis, as POV-Ray's).
+#[test]
+fn spiral_patterns_match_povray() {
+    check_psnr("patterns_spiral", &scene("patterns_spiral"), 35.0);
+}
+
 /// `material { }`: declared materials (glass with its interior, checks with the material's own
 /// scale), a material from a declared base with a layer over it, a material on a difference.
 #[test]

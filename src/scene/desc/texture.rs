@@ -240,8 +240,12 @@ pub struct PatternDesc {
 
 impl PatternDesc {
     pub fn new(kind: PatternKind) -> PatternDesc {
+        // POV-Ray 3.4.7: ramp_wave unless a pattern's section says otherwise (marble, wood,
+        // spiral1, spiral2: triangle_wave).
         let wave = match kind {
-            PatternKind::Marble | PatternKind::Wood => Wave::Triangle,
+            PatternKind::Marble | PatternKind::Wood | PatternKind::Spiral1(_) | PatternKind::Spiral2(_) => {
+                Wave::Triangle
+            }
             _ => Wave::Ramp,
         };
         PatternDesc { kind, wave, frequency: 1.0, phase: 0.0, warps: Vec::new() }

@@ -66,12 +66,14 @@ pub fn leopard<L: Lane>(p: V3<L>) -> L {
     s * s
 }
 
-/// `spiral1 N`: N arms winding around z, one turn per unit along z.
+/// `spiral1 N`: N arms winding around z, one turn per unit along z. The angle counts from
+/// the −y axis: on z = 0 POV-Ray 3.7's value is `frac(r + N·(θ/2π + 1/4))` with θ from +x,
+/// to 3e-5 over a 64×64 render of each of `spiral1 1` and `spiral1 3`.
 #[inline(always)]
 pub fn spiral1<L: Lane>(p: V3<L>, arms: f32) -> L {
     L::from_fn(|i| {
         let (x, y, z) = (p.x.get(i), p.y.get(i), p.z.get(i));
-        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI);
+        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI) + 0.25;
         let v = z + (x * x + y * y).sqrt() + arms * turn;
         v - v.floor()
     })

@@ -325,30 +325,7 @@ fn read_tga(bytes: &[u8], max_side: usize) -> Result<Image, String> {
         palette.extend(data.chunks_exact(esize).map(bgra));
         pos += cmap_len * esize;
     }
-    let total = w * h * size;
-    let mut pixels = Vec::with_capacity(total);
-    while pixels.len() < total {
-        if kind < 9 {
-            let take = total - pixels.len();
-            pixels.extend_from_slice(bytes.get(pos..pos + take).ok_or("too few pixels")?);
-            pos += take;
-        } else {
-            let packet = *bytes.get(pos).ok_or("too few pixels")? as usize;
-            pos += 1;
-            let count = (packet & 0x7f) + 1;
-            if packet & 0x80 != 0 {
-                let p = bytes.get(pos..pos + size).ok_or("too few pixels")?;
-                pos += size;
-                for _ in 0..count {
-                    pixels.extend_from_slice(p);
-                }
-            } else {
-                pixels.extend_from_slice(bytes.get(pos..pos + count * size).ok_or("too few pixels")?);
-                pos += count * size;
-            }
-        }
-    }
-    pixels.truncate(total);
+    let pixels = tga_pixels(bytes, pos, w * h * size, size, kind >= 9)?;
     let channels = match kind & 3 {
         1 => Channels::Indexed,
         3 => Channels::Grey,
@@ -373,6 +350,35 @@ fn read_tga(bytes: &[u8], max_side: usize) -> Result<Image, String> {
         }
     }
     Ok(Image { width: w, height: h, channels, max: 255, samples, palette })
+}
+
+/// A TGA image's `total` bytes of pixels (`size` bytes each) from `pos`: as stored, or
+/// run-length decoded (`rle`, types 9–11). Height fields read 16-bit values from these too.
+pub fn tga_pixels(bytes: &[u8], mut pos: usize, total: usize, size: usize, rle: bool) -> Result<Vec<u8>, String> {
+    let mut pixels = Vec::with_capacity(total);
+    while pixels.len() < total {
+        if !rle {
+            let take = total - pixels.len();
+            pixels.extend_from_slice(bytes.get(pos..pos + take).ok_or("too few pixels")?);
+            pos += take;
+        } else {
+            let packet = *bytes.get(pos).ok_or("too few pixels")? as usize;
+            pos += 1;
+            let count = (packet & 0x7f) + 1;
+            if packet & 0x80 != 0 {
+                let p = bytes.get(pos..pos + size).ok_or("too few pixels")?;
+                pos += size;
+                for _ in 0..count {
+                    pixels.extend_from_slice(p);
+                }
+            } else {
+                pixels.extend_from_slice(bytes.get(pos..pos + count * size).ok_or("too few pixels")?);
+                pos += count * size;
+            }
+        }
+    }
+    pixels.truncate(total);
+    Ok(pixels)
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@
 use std::sync::Arc;
 
 use super::Lowerer;
-use crate::image_file::pnm_number;
+use crate::image_file::{pnm_number, tga_pixels};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::scene::desc::{HeightFieldDesc, ShapeDesc};
 
@@ -272,30 +272,8 @@ fn tga_heights(bytes: &[u8]) -> Result<Heights, String> {
     if size == 0 || (kind & 3 == 2 && size < 3) {
         return Err(format!("{bits} bits per pixel is not read"));
     }
-    let mut pos = 18 + id_len + if map_type == 1 { map_len * map_bits.div_ceil(8) } else { 0 };
-    let mut pixels = Vec::with_capacity(w * h * size);
-    while pixels.len() < w * h * size {
-        if kind < 9 {
-            let take = w * h * size - pixels.len();
-            pixels.extend_from_slice(bytes.get(pos..pos + take).ok_or("too few pixels")?);
-            pos += take;
-        } else {
-            let packet = *bytes.get(pos).ok_or("too few pixels")? as usize;
-            pos += 1;
-            let count = (packet & 0x7f) + 1;
-            if packet & 0x80 != 0 {
-                let p = bytes.get(pos..pos + size).ok_or("too few pixels")?;
-                pos += size;
-                for _ in 0..count {
-                    pixels.extend_from_slice(p);
-                }
-            } else {
-                pixels.extend_from_slice(bytes.get(pos..pos + count * size).ok_or("too few pixels")?);
-                pos += count * size;
-            }
-        }
-    }
-    pixels.truncate(w * h * size);
+    let pos = 18 + id_len + if map_type == 1 { map_len * map_bits.div_ceil(8) } else { 0 };
+    let pixels = tga_pixels(bytes, pos, w * h * size, size, kind >= 9)?;
     let mut heights = vec![0.0; w * h];
     for (i, p) in pixels.chunks_exact(size).enumerate() {
         let (x, y) = (i % w, i / w);

@@ -373,8 +373,10 @@ impl Parser<'_, '_> {
     }
 
     /// `F(a, b, c)` in an ordinary expression, `F` a declared function: its value now.
-    /// A pigment function's value is its colour.
-    pub(super) fn call_function(&mut self, f: Rc<Function>, word: &str, span: Span) -> PResult<Value> {
+
+    /// `(a, b, ...)` after a function's name `word`: the arguments as floats (none for `()`)
+    /// and the span of the closing parenthesis.
+    pub(super) fn float_args(&mut self, word: &str) -> PResult<(Vec<f64>, Span)> {
         let open = self.expect_punct('(', &format!("after `{word}`"))?;
         self.enter(open)?;
         let mut args = Vec::new();
@@ -389,6 +391,11 @@ impl Parser<'_, '_> {
         }
         let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
         self.leave();
+        Ok((args, close))
+    }
+    /// A pigment function's value is its colour.
+    pub(super) fn call_function(&mut self, f: Rc<Function>, word: &str, span: Span) -> PResult<Value> {
+        let (args, close) = self.float_args(word)?;
         if args.len() != f.params.len() {
             return Err(Diag::new(
                 span.to(close),

@@ -81,18 +81,7 @@ impl Parser<'_, '_> {
 
     /// `F(x, y, z)` after the name `word` (at `span`) of a `function { transform { .. } }`.
     pub(super) fn call_transform_function(&mut self, m: glam::DMat4, word: &str, span: Span) -> PResult<Value> {
-        let open = self.expect_punct('(', &format!("after `{word}`"))?;
-        self.enter(open)?;
-        let mut args = Vec::new();
-        loop {
-            let e = self.full_expr()?;
-            args.push(self.low.float(&e)?);
-            if !self.eat_punct(',') {
-                break;
-            }
-        }
-        let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
-        self.leave();
+        let (args, close) = self.float_args(word)?;
         let [x, y, z] = args[..] else {
             return Err(Diag::new(
                 span.to(close),

@@ -372,8 +372,6 @@ impl Parser<'_, '_> {
         Ok(args)
     }
 
-    /// `F(a, b, c)` in an ordinary expression, `F` a declared function: its value now.
-
     /// `(a, b, ...)` after a function's name `word`: the arguments as floats (none for `()`)
     /// and the span of the closing parenthesis.
     pub(super) fn float_args(&mut self, word: &str) -> PResult<(Vec<f64>, Span)> {
@@ -393,6 +391,8 @@ impl Parser<'_, '_> {
         self.leave();
         Ok((args, close))
     }
+
+    /// `F(a, b, c)` in an ordinary expression, `F` a declared function: its value now.
     /// A pigment function's value is its colour.
     pub(super) fn call_function(&mut self, f: Rc<Function>, word: &str, span: Span) -> PResult<Value> {
         let (args, close) = self.float_args(word)?;

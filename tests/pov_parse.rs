@@ -2184,3 +2184,38 @@ fn colour_components_after_a_pigment_colour_change_it() {
     let PigmentPattern::Solid(c) = &s.objects[0].texture.pigment.pattern else { panic!() };
     assert_eq!((c.rgb, c.transmit), (DVec3::new(1.0, 0.5, 0.0), 0.2));
 }
+
+#[test]
+fn texture_patterns_keep_their_textures_whole_where_finishes_differ() {
+    use strahl::scene::desc::{PatternKind, PigmentPattern};
+    let s = load_text(
+        "texture_patterns_ok",
+        "#declare O = sphere { 0, 1 }\n\
+         sphere { 0, 1 pigment { object { O rgb 1, rgb 0 } } }\n\
+         sphere { 0, 1 texture { object { box { -1, 1 } texture { pigment { rgb 1 } } texture { finish { reflection 1 } } } } }\n\
+         sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }\n\
+         sphere { 0, 1 texture { gradient x texture_map { [0 pigment { rgb 1 }] [1 finish { phong 1 }] } scale 2 } }",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let PigmentPattern::List(pd, list) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    assert!(matches!(pd.kind, PatternKind::Object(_)) && list.len() == 2);
+    assert!(s.objects[0].texture.pattern.is_none());
+    let t = s.objects[1].texture.pattern.as_ref().expect("finishes differ: kept whole");
+    assert_eq!(t.entries.len(), 2);
+    assert!(s.objects[2].texture.pattern.is_none(), "pigments alone differ: the pigment renders it");
+    // The transform after the map moves the entries and the pattern that picks them.
+    let t = s.objects[3].texture.pattern.as_ref().unwrap();
+    assert_eq!(t.entries[1].pigment.transform, t.selector.transform);
+    assert!(t.selector.transform.matrix.x_axis.x == 2.0);
+    // Errors are located and name what is wrong.
+    let (l, c, m) = err("object_pattern_kind", "sphere { 0, 1\n pigment { object { 3 rgb 1, rgb 0 } } }");
+    assert_eq!((l, c), (2, 21), "{m}");
+    assert!(m.contains("object"), "{m}");
+    let (l, _, m) = err("material_map_empty", "sphere { 0, 1\n texture { material_map { png \"nothing.png\" } } }");
+    assert_eq!(l, 2, "{m}");
+    assert!(m.contains("not found") || m.contains("material_map"), "{m}");
+    let (l, c, m) =
+        err("material_map_item", "sphere { 0, 1\n texture { material_map { png \"x.png\" pigment { rgb 1 } } } }");
+    assert_eq!((l, c), (2, 39), "{m}");
+    assert!(m.contains("pigment") && m.contains("material_map"), "{m}");
+}

@@ -136,6 +136,15 @@ fn tiles_match_povray() {
     check_psnr("tiles", &scene("tiles"), 35.0);
 }
 
+/// Patterns of whole textures: the `object` pattern (of pigments and of textures, its object
+/// declared and written out), a `texture_map` from matte to mirror blended in between, a
+/// `material_map` whose palette index picks textures of different finishes and normals; and
+/// the default colour maps of `marble` and `radial`.
+#[test]
+fn texture_patterns_match_povray() {
+    check_psnr("texture_patterns", &scene("texture_patterns"), 35.0);
+}
+
 /// `function { }` patterns: declared, inline and internal functions in pigments (wrapped into
 /// [0, 1), with waves, frequency and transforms), a function normal and a function texture_map.
 /// 77.4 dB since pattern normals tilt by POV-Ray's measured 0.133 of the slope (39.1 dB and

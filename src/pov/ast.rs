@@ -364,6 +364,9 @@ pub struct PatternAst {
     pub colors: Vec<Expr>,
     pub pigments: Vec<Pigment>,
     pub textures: Vec<Texture>,
+    /// `object { sphere {..} A, B }`: the pattern's object written out (a declared one is
+    /// `arg`).
+    pub object: Option<Box<Object>>,
     pub span: Span,
 }
 
@@ -495,6 +498,9 @@ pub enum TextureItem {
     Layer(Box<Texture>),
     /// `image_pattern { }` as the pattern of a `texture_map`.
     ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    /// `material_map { png "f" .. texture {..}.. transforms }`: the image's palette index
+    /// picks the texture.
+    MaterialMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Vec<Texture>, Vec<TransformItem>, Span),
     /// `uv_mapping`: the texture's pigment follows the surface's (u, v).
     UvMapping(Span),
 }

@@ -166,7 +166,12 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         let first = (0..lanes).find_map(material_of);
         let uniform = (0..lanes).all(|i| material_of(i).is_none() || material_of(i) == first);
         let material = &scene.materials[first.unwrap_or(0) as usize];
-        if uniform && !material.finish.reflects() && !material.may_be_transparent() && material.uv.is_none() {
+        if uniform
+            && !material.finish.reflects()
+            && !material.may_be_transparent()
+            && material.uv.is_none()
+            && material.blend.is_none()
+        {
             // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
             let ray = &rays[r];
             let p = ray.o.add(ray.d.scale(F8::select(hit, t[r], F8::splat(0.0))));

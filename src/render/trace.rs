@@ -20,10 +20,10 @@ use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::atmosphere::MISS_DEPTH;
 use crate::scene::build::{Light, Scene};
-use crate::scene::material::Material;
+use crate::scene::material::{Blend, Material};
 use crate::shading::normal::perturb_normal;
 use crate::shading::pattern::Rgbft;
-use crate::shading::pigment::{eval_pigment, PatternQuality};
+use crate::shading::pigment::{eval_pigment, pattern_value, PatternQuality};
 
 /// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
 /// not traced.
@@ -130,7 +130,17 @@ impl<'a> Tracer<'a> {
             None => facing,
         };
         let pigment = self.pigment_at(material, hit.shape, p);
-        Surface { p, facing, normal, entering, material, pigment }
+        Surface { p, facing, normal, entering, material, pigment, shape: hit.shape }
+    }
+
+    /// `surface` as `material` of a pattern of materials shows it.
+    fn surface_as<'s>(&self, s: &Surface<'s>, material: &'s Material) -> Surface<'s> {
+        let normal = match &material.normal {
+            Some(n) => perturb_normal(n, s.p, s.facing, self.pattern_quality()),
+            None => s.facing,
+        };
+        let pigment = self.pigment_at(material, s.shape, s.p);
+        Surface { normal, material, pigment, ..*s }
     }
 
     /// `material`'s pigment at hit point `p` of `shape`: in 3-D pattern space, or at the
@@ -165,8 +175,11 @@ impl<'a> Tracer<'a> {
     /// Lights `surface` and recurses into reflection and refraction. `shadows` says whether
     /// shadow rays are traced here or were traced already, as packets (`render::packet`).
     pub fn shade_surface(&mut self, ray: &Ray, surface: &Surface, level: u32, weight: f32, shadows: Shadows) -> Vec3 {
+        if let Some(blend) = &surface.material.blend {
+            return self.shade_blend(ray, surface, blend, level, weight, shadows);
+        }
         let scene = self.scene;
-        let Surface { p, facing, normal, entering, material, pigment } = *surface;
+        let Surface { p, facing, normal, entering, material, pigment, .. } = *surface;
         let finish = &material.finish;
         let c = pigment.rgb;
         let hit = LocalHit {
@@ -244,6 +257,28 @@ impl<'a> Tracer<'a> {
                 color *= fade.attenuation((p - ray.origin).length());
             }
         }
+        color
+    }
+
+    /// Out of line: most materials are not patterns of materials. Each material the pattern
+    /// shows at the hit is shaded whole (its normal, finish and recursion) and the colours
+    /// blended by the pattern's weights, as POV-Ray blends a `texture_map`.
+    #[inline(never)]
+    fn shade_blend<'s>(
+        &mut self,
+        ray: &Ray,
+        surface: &Surface<'s>,
+        blend: &'s Blend,
+        level: u32,
+        weight: f32,
+        shadows: Shadows,
+    ) -> Vec3 {
+        let v = pattern_value(&blend.selector, surface.p, self.pattern_quality());
+        let mut color = Vec3::ZERO;
+        blend.for_each_weight(v, |i, w| {
+            let s = self.surface_as(surface, &blend.entries[i]);
+            color += w * self.shade_surface(ray, &s, level, weight * w, shadows);
+        });
         color
     }
 
@@ -432,6 +467,8 @@ pub struct Surface<'a> {
     pub entering: bool,
     pub material: &'a Material,
     pub pigment: Rgbft,
+    /// What was hit (for a uv-mapped material's surface coordinates).
+    pub shape: HitShape,
 }
 
 /// Where light visibility comes from while shading.

@@ -322,11 +322,13 @@ impl Scene {
             return index;
         }
         let mut m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
-        m.uv = uv.flatten().map(Box::new);
-        m.lights = self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten();
+        m.place(
+            uv.flatten().map(Box::new),
+            self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten(),
+        );
         self.features.transparency |= m.may_be_transparent();
-        self.features.reflection |= m.finish.reflects();
-        self.features.normals |= m.normal.is_some();
+        self.features.reflection |= m.reflects();
+        self.features.normals |= m.has_normal();
         self.materials.push(m);
         let index = self.materials.len() as u32 - 1;
         // A bounded list: a scene of a million different looks compares each object with

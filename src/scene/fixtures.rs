@@ -27,6 +27,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transfo
             normal: None,
             finish,
             uv_mapping: false,
+            pattern: None,
         },
         interior: Default::default(),
         no_shadow: false,

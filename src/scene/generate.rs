@@ -122,6 +122,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
             normal: None,
             finish,
             uv_mapping: false,
+            pattern: None,
         },
         interior: Default::default(),
         no_shadow: false,

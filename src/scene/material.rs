@@ -3,7 +3,7 @@
 use glam::{DMat4, Vec3};
 
 use crate::lanes::Lane;
-use crate::scene::desc::{FadeDesc, FinishDesc, InteriorDesc, TextureDesc};
+use crate::scene::desc::{FadeDesc, FinishDesc, InteriorDesc, PigmentPattern, TextureDesc, TexturePatternDesc};
 use crate::shading::normal::NormalF32;
 use crate::shading::pigment::Pigment;
 
@@ -163,7 +163,45 @@ impl Finish {
 
 #[cfg(test)]
 mod tests {
-    use super::Exponent;
+    use super::{Blend, Exponent, Material, Select};
+    use crate::scene::desc::{InteriorDesc, TextureDesc};
+
+    fn blend(select: Select, n: usize) -> Blend {
+        let m = Material::from_desc(&TextureDesc::default(), &InteriorDesc::default(), &glam::DMat4::IDENTITY);
+        Blend { selector: m.pigment.clone(), select, entries: vec![m; n] }
+    }
+
+    fn weights(b: &Blend, v: f32) -> Vec<(usize, f32)> {
+        let mut out = Vec::new();
+        b.for_each_weight(v, |i, w| out.push((i, w)));
+        out
+    }
+
+    #[test]
+    fn a_map_blends_the_two_entries_around_the_value_and_clamps() {
+        let b = blend(Select::Map(vec![0.2, 0.6, 0.6, 1.0]), 4);
+        assert_eq!(weights(&b, -1.0), [(0, 1.0)]);
+        assert_eq!(weights(&b, 0.2), [(0, 1.0)]);
+        let w = weights(&b, 0.5);
+        assert_eq!((w[0].0, w[1].0), (0, 1));
+        assert!((w[0].1 - 0.25).abs() < 1e-6 && (w[1].1 - 0.75).abs() < 1e-6, "{w:?}");
+        // A repeated value is a hard step to the upper entry.
+        assert_eq!(weights(&b, 0.6), [(1, 1.0)]);
+        assert_eq!(weights(&b, 0.8).iter().map(|e| e.0).collect::<Vec<_>>(), [2, 3]);
+        assert_eq!(weights(&b, 7.0), [(3, 1.0)]);
+        // A value a rounding away from an entry shades that entry alone.
+        assert_eq!(weights(&b, 0.6 - 1e-7), [(1, 1.0)]);
+    }
+
+    #[test]
+    fn a_list_picks_the_cell_and_average_weighs_them_all() {
+        let b = blend(Select::List, 3);
+        assert_eq!(weights(&b, 0.0), [(0, 1.0)]);
+        assert_eq!(weights(&b, 1.0), [(1, 1.0)]);
+        assert_eq!(weights(&b, 2.0), [(2, 1.0)]);
+        let a = blend(Select::Average(vec![1.0, 3.0]), 2);
+        assert_eq!(weights(&a, 0.3), [(0, 0.25), (1, 0.75)]);
+    }
 
     #[test]
     fn whole_exponents_match_powf_closely() {
@@ -220,6 +258,94 @@ pub struct Material {
     /// `uv_mapping`: where the pigment is evaluated on this object's surface (one material per
     /// uv-mapped object); `None` for 3-D pattern space.
     pub uv: Option<Box<crate::geometry::uv::UvMap>>,
+    /// A pattern of materials that differ in normal or finish (`TexturePatternDesc`): each
+    /// hit is shaded as the entries it shows. `None` for every plain texture.
+    pub blend: Option<Box<Blend>>,
+}
+
+/// A pattern of whole materials; `Material::pigment` holds the same pattern over their
+/// pigments.
+#[derive(Clone, Debug)]
+pub struct Blend {
+    /// Its pattern value (`shading::pigment::pattern_value`) picks the entries.
+    pub selector: Pigment,
+    pub select: Select,
+    pub entries: Vec<Material>,
+}
+
+/// How a pattern value picks `Blend` entries, as the pigment of the same pattern blends.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Select {
+    /// A map's entry values, sorted: blends the two around the value, clamped at both ends.
+    Map(Vec<f32>),
+    /// `average`: every entry by its weight.
+    Average(Vec<f32>),
+    /// A list pattern: the value is the cell's index.
+    List,
+}
+
+/// Weights below this do not get an entry shaded (a value a rounding away from an entry).
+const NEGLIGIBLE_WEIGHT: f32 = 1e-4;
+
+impl Blend {
+    fn from_desc(d: &TexturePatternDesc, interior: &InteriorDesc, world_from_render: &DMat4) -> Blend {
+        let selector = Pigment::from_desc(&d.selector, world_from_render);
+        let select = match &d.selector.pattern {
+            PigmentPattern::PigmentMap(pd, e) if matches!(pd.kind, crate::scene::desc::PatternKind::Average) => {
+                Select::Average(e.iter().map(|(w, _)| *w as f32).collect())
+            }
+            PigmentPattern::PigmentMap(_, e) => Select::Map(e.iter().map(|(v, _)| *v as f32).collect()),
+            _ => Select::List,
+        };
+        let entries = d.entries.iter().map(|t| Material::from_desc(t, interior, world_from_render)).collect();
+        Blend { selector, select, entries }
+    }
+
+    /// Calls `f(entry, weight)` for each entry that shows at pattern value `v`; the weights
+    /// sum to 1 (to rounding), as `shading::pigment` blends the same pattern's pigments.
+    pub fn for_each_weight(&self, v: f32, mut f: impl FnMut(usize, f32)) {
+        let n = self.entries.len();
+        if n == 0 {
+            return;
+        }
+        match &self.select {
+            Select::List => {
+                let k = (1..n).rev().find(|&k| k as f32 - 0.5 < v).unwrap_or(0);
+                f(k, 1.0);
+            }
+            Select::Average(w) => {
+                let total: f32 = w.iter().sum();
+                for (i, w) in w.iter().enumerate().take(n) {
+                    if total != 0.0 && *w / total >= NEGLIGIBLE_WEIGHT {
+                        f(i, w / total);
+                    }
+                }
+            }
+            Select::Map(values) => {
+                let last = values.len().min(n) - 1;
+                if v <= values[0] {
+                    return f(0, 1.0);
+                }
+                for i in 1..=last {
+                    let (v0, v1) = (values[i - 1], values[i]);
+                    if v <= v1 {
+                        let span = v1 - v0;
+                        let t = if span > 0.0 { (v - v0) / span } else { 1.0 };
+                        if t < NEGLIGIBLE_WEIGHT {
+                            f(i - 1, 1.0);
+                        } else if 1.0 - t < NEGLIGIBLE_WEIGHT {
+                            f(i, 1.0);
+                        } else {
+                            f(i - 1, 1.0 - t);
+                            f(i, t);
+                        }
+                        return;
+                    }
+                }
+                f(last, 1.0)
+            }
+        }
+    }
 }
 
 impl Material {
@@ -244,6 +370,27 @@ impl Material {
             fade: interior.fade.as_deref().map(|f| Fade::from_desc(f, world_from_render.x_axis.truncate().length())),
             lights: None,
             uv: None,
+            blend: texture.pattern.as_ref().map(|p| Box::new(Blend::from_desc(p, interior, world_from_render))),
         }
+    }
+
+    /// Gives this material, and every material of its pattern, the surface mapping and the
+    /// lights of the object that wears it.
+    pub fn place(&mut self, uv: Option<Box<crate::geometry::uv::UvMap>>, lights: Option<std::sync::Arc<[bool]>>) {
+        if let Some(b) = &mut self.blend {
+            b.entries.iter_mut().for_each(|m| m.place(uv.clone(), lights.clone()));
+        }
+        self.uv = uv;
+        self.lights = lights;
+    }
+
+    /// Whether it, or any material of its pattern, reflects.
+    pub fn reflects(&self) -> bool {
+        self.finish.reflects() || self.blend.as_ref().is_some_and(|b| b.entries.iter().any(Material::reflects))
+    }
+
+    /// Whether it, or any material of its pattern, perturbs its normals.
+    pub fn has_normal(&self) -> bool {
+        self.normal.is_some() || self.blend.as_ref().is_some_and(|b| b.entries.iter().any(Material::has_normal))
     }
 }

@@ -487,6 +487,8 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Wood => "wood".into(),
         K::Average => "average".into(),
         K::Image(ref im) => format!("image_pattern {{ {} }}", image_text(im)),
+        // The object itself is not kept: the printed scene shows where it was.
+        K::Object(_) => "object { /* a solid */ }".into(),
     };
     let wave = match p.wave {
         Wave::Ramp => "ramp_wave".to_string(),

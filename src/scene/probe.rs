@@ -10,7 +10,8 @@ use crate::geometry::Shape;
 use crate::lanes::Lane;
 use crate::render::stats::RenderStats;
 use crate::scene::build::Scene;
-use crate::scene::desc::{ObjectDesc, SceneDesc};
+use crate::scene::desc::{ObjectDesc, SceneDesc, Solid, SolidRef};
+use std::sync::Arc;
 
 fn scene_of(objects: &[ObjectDesc]) -> Scene {
     let desc = SceneDesc { objects: objects.to_vec(), ..SceneDesc::default() };
@@ -44,7 +45,31 @@ pub fn trace(objects: &[ObjectDesc], start: DVec3, dir: DVec3) -> Option<(DVec3,
 
 /// `inside(OBJ, P)`: whether `p` is inside any of the objects' primitives.
 pub fn inside(objects: &[ObjectDesc], p: DVec3) -> bool {
-    let scene = scene_of(objects);
+    scene_contains(&scene_of(objects), p)
+}
+
+/// The objects as a `Solid` for the `object` pattern: built once, asked per point.
+pub fn solid(objects: &[ObjectDesc]) -> SolidRef {
+    SolidRef(Arc::new(ProbeSolid { scene: scene_of(objects) }))
+}
+
+struct ProbeSolid {
+    scene: Scene,
+}
+
+impl std::fmt::Debug for ProbeSolid {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "ProbeSolid({} primitives)", self.scene.prims.len())
+    }
+}
+
+impl Solid for ProbeSolid {
+    fn contains(&self, p: DVec3) -> bool {
+        scene_contains(&self.scene, p)
+    }
+}
+
+fn scene_contains(scene: &Scene, p: DVec3) -> bool {
     let q = crate::lanes::V3::<f32>::from_vec3(scene.frame.point(p).as_vec3());
     // The prims from `first_leaf` on are CSG leaves, inside only as their nodes say.
     scene.prims[..scene.first_leaf as usize].iter().any(|prim| f32::mask_lane(scene.inside_prim(prim, q), 0))

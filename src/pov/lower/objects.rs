@@ -256,7 +256,7 @@ impl Lowerer<'_> {
     }
 
     /// The children of a `union`, `merge`, `intersection`, `difference` or `clipped_by`.
-    fn children(&mut self, children: &[Stmt], word: &str, span: Span) -> PResult<Vec<Part>> {
+    pub(super) fn children(&mut self, children: &[Stmt], word: &str, span: Span) -> PResult<Vec<Part>> {
         self.csg_stack.push(Vec::new());
         // A union flattens into a union only: in anything else it is one child.
         self.csg_whole_unions.push(word != "union");

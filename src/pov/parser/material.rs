@@ -75,6 +75,7 @@ impl Parser<'_, '_> {
             colors: Vec::new(),
             pigments: Vec::new(),
             textures,
+            object: None,
             span: kw.to(end),
         })
     }

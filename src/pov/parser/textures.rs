@@ -131,6 +131,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "checker",
     "wood",
     "function",
+    "object",
 ];
 /// Modifiers of a pattern's value, in any block that has a pattern.
 const PATTERN_MODS: &[&str] = &[
@@ -188,6 +189,7 @@ const TEXTURE: &[&str] = &[
     "transform",
     "texture_map",
     "image_pattern",
+    "material_map",
     "uv_mapping",
     "tiles",
 ];
@@ -273,6 +275,7 @@ impl Parser<'_, '_> {
                             colors: Vec::new(),
                             pigments,
                             textures: Vec::new(),
+                            object: None,
                             span,
                         })
                     } else {
@@ -480,6 +483,7 @@ impl Parser<'_, '_> {
                     let (im, _, span) = self.image_block("image_pattern")?;
                     TextureItem::ImagePattern(im, span)
                 }
+                Some("material_map") => self.material_map()?,
                 Some("uv_mapping") => TextureItem::UvMapping(self.bump().span),
                 _ => return Err(self.unknown_in("texture", TEXTURE)),
             };
@@ -516,6 +520,7 @@ impl Parser<'_, '_> {
             colors: Vec::new(),
             pigments: Vec::new(),
             textures: Vec::new(),
+            object: None,
             span,
         };
         match pat.name.as_str() {
@@ -575,26 +580,44 @@ impl Parser<'_, '_> {
             "quilted" if self.starts_expr(stop) && !self.starts_mod() => {}
             "checker" | "brick" | "hexagon" => {
                 let max = if pat.name == "hexagon" { 3 } else { 2 };
-                for _ in 0..max {
-                    match self.peek_ident().as_deref() {
-                        Some("pigment") if context == "pigment" => pat.pigments.push(self.pigment()?),
-                        Some("texture") if context == "texture" => pat.textures.push(self.texture_one()?),
-                        Some("normal") => {
-                            // A list of normals: read, the pattern's own gradient is used.
-                            self.normal()?;
-                        }
-                        // `PIGMENT[6..]`: the pigment keywords less the colour words.
-                        _ if context == "pigment" && self.starts_expr(&PIGMENT[6..]) && !self.starts_mod() => {
-                            pat.colors.push(self.color()?)
-                        }
-                        _ => break,
-                    }
-                    self.eat_punct(',');
+                self.list_items(&mut pat, max, context)?;
+            }
+            "object" => {
+                // `object { OBJECT_ID | OBJECT {..}  ITEM_A, ITEM_B }`: the list is inside.
+                self.open_block("object", span)?;
+                if self.peek_ident().is_some_and(|w| super::scene::is_object_keyword(&w)) {
+                    pat.object = Some(Box::new(self.object()?));
+                } else {
+                    pat.arg = Some(self.expr()?);
                 }
+                self.eat_punct(',');
+                self.list_items(&mut pat, 2, context)?;
+                self.close_block("object", span)?;
             }
             _ => {}
         }
         Ok(pat)
+    }
+
+    /// Up to `max` entries of a list pattern (`checker A, B`) in a `context` block.
+    fn list_items(&mut self, pat: &mut PatternAst, max: usize, context: &str) -> PResult<()> {
+        for _ in 0..max {
+            match self.peek_ident().as_deref() {
+                Some("pigment") if context == "pigment" => pat.pigments.push(self.pigment()?),
+                Some("texture") if context == "texture" => pat.textures.push(self.texture_one()?),
+                Some("normal") => {
+                    // A list of normals: read, the pattern's own gradient is used.
+                    self.normal()?;
+                }
+                // `PIGMENT[6..]`: the pigment keywords less the colour words.
+                _ if context == "pigment" && self.starts_expr(&PIGMENT[6..]) && !self.starts_mod() => {
+                    pat.colors.push(self.color()?)
+                }
+                _ => break,
+            }
+            self.eat_punct(',');
+        }
+        Ok(())
     }
 
     /// Whether the next word is a pattern modifier (so not an amount or colour).

@@ -153,13 +153,32 @@ pub enum PatternKind {
     Function(std::sync::Arc<crate::function::Program>),
     /// `image_pattern { }` (and `bump_map`'s heights): the image's intensity (or alpha).
     Image(Arc<ImageMapDesc>),
+    /// `object { OBJECT A, B }` (3.4.7.2.5): 1 inside the object, 0 outside.
+    Object(SolidRef),
+}
+
+/// What the `object` pattern asks of its object: whether a point (in the pattern's space,
+/// which is the object's world) lies inside. `scene::probe` answers it with the renderer's
+/// own kernels; the shading layer only asks.
+pub trait Solid: Send + Sync + std::fmt::Debug {
+    fn contains(&self, p: glam::DVec3) -> bool;
+}
+
+/// A shared `Solid`; two are equal when they are the same one.
+#[derive(Clone, Debug)]
+pub struct SolidRef(pub Arc<dyn Solid>);
+
+impl PartialEq for SolidRef {
+    fn eq(&self, other: &Self) -> bool {
+        std::ptr::addr_eq(Arc::as_ptr(&self.0), Arc::as_ptr(&other.0))
+    }
 }
 
 impl PatternKind {
     /// How many pigments a list pattern picks from; `None` for a continuous pattern.
     pub fn list_len(&self) -> Option<usize> {
         match self {
-            PatternKind::Checker | PatternKind::Brick { .. } => Some(2),
+            PatternKind::Checker | PatternKind::Brick { .. } | PatternKind::Object(_) => Some(2),
             PatternKind::Hexagon => Some(3),
             _ => None,
         }
@@ -392,6 +411,37 @@ pub struct TextureDesc {
     /// coordinates (u, v, 0) through its own transforms only; the object's transforms do not
     /// move it. Shapes with uv: `geometry::uv`.
     pub uv_mapping: bool,
+    /// A pattern of whole textures whose entries differ in more than their pigments; `None`
+    /// for a plain texture (and for patterns of textures that differ only in pigment, which
+    /// `pigment` renders alone). Boxed: most textures have none.
+    pub pattern: Option<Box<TexturePatternDesc>>,
+}
+
+/// A pattern of textures (`texture_map`, a list pattern of textures such as `checker texture
+/// {..} texture {..}`, `material_map`) whose entries differ in their normals or finishes.
+/// POV-Ray shades each entry a point shows and blends the results by the pattern's weights, so
+/// these are kept whole; the texture's own `pigment` is the same pattern over the entries'
+/// pigments, for everything that needs only a colour (shadow rays through it).
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexturePatternDesc {
+    /// Picks the entries: a `PigmentMap` (values, or `average` weights) or a `List` (cells)
+    /// over the entries' pigments, with the pattern's modifiers and transforms.
+    pub selector: PigmentDesc,
+    pub entries: Vec<TextureDesc>,
+}
+
+impl TextureDesc {
+    /// Moves the pigment, the normal and every entry of a pattern of textures by `tr`.
+    pub fn transform_by(&mut self, tr: &Transform) {
+        self.pigment.transform_by(tr);
+        if let Some(n) = &mut self.normal {
+            n.transform_by(tr);
+        }
+        if let Some(p) = &mut self.pattern {
+            p.selector.transform_by(tr);
+            p.entries.iter_mut().for_each(|t| t.transform_by(tr));
+        }
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -58,6 +58,8 @@ pub enum Kind32 {
     Function(std::sync::Arc<crate::function::Program>),
     /// `image_pattern` / `bump_map`: looked up lane by lane (`shading::image_map`).
     Image(std::sync::Arc<crate::shading::image_map::ImageLookup>),
+    /// The `object` pattern: asked lane by lane.
+    Object(crate::scene::desc::SolidRef),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -124,6 +126,7 @@ impl Pattern32 {
             PatternKind::Wood => Kind32::Wood,
             PatternKind::Average => Kind32::Average,
             PatternKind::Function(f) => Kind32::Function(f.clone()),
+            PatternKind::Object(s) => Kind32::Object(s.clone()),
             PatternKind::Image(im) => {
                 Kind32::Image(std::sync::Arc::new(crate::shading::image_map::ImageLookup::from_desc(im)))
             }
@@ -166,7 +169,7 @@ impl Pattern32 {
 
     /// Whether the value is a cell index (list patterns) rather than a continuous value.
     pub fn is_list(&self) -> bool {
-        matches!(self.kind, Kind32::Checker | Kind32::Brick(..) | Kind32::Hexagon)
+        matches!(self.kind, Kind32::Checker | Kind32::Brick(..) | Kind32::Hexagon | Kind32::Object(_))
     }
 
     /// The value at a pattern-space point (transform and classic turbulence already applied):
@@ -227,6 +230,14 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
             simple::frac(L::from_fn_f64(|i| f.eval(&[p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i)])))
         }
         Kind32::Image(ref im) => im.value_lanes(p),
+        Kind32::Object(ref s) => L::from_fn_f64(|i| {
+            let q = glam::DVec3::new(p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i));
+            if s.0.contains(q) {
+                1.0
+            } else {
+                0.0
+            }
+        }),
     }
 }
 

@@ -41,6 +41,9 @@ const PATTERN_NORMAL_GAIN: f32 = 0.133;
 /// came to 0.36× and 0.70× POV-Ray's with `PATTERN_NORMAL_GAIN`, so they tilt by these.
 const WRINKLES_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 2.0;
 const DENTS_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 1.4;
+/// `ripples` and `waves` too: POV-Ray 3.7's textures/patterns/ripples.pov and waves.pov
+/// measured 0.47–0.48× and 0.51× POV-Ray's texture strength (tests/samples.rs regions).
+const WAVE_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 2.0;
 
 /// POV-Ray's `wrinkles` normal leans one way: on a plane facing −z with `wrinkles 1`, parallel
 /// lights at 45° from +x, −x, +y, −y and head-on give mean diffuse 0.821, 0.193, 0.825, 0.193
@@ -163,6 +166,7 @@ fn pattern_normal<L: Lane>(
         Kind32::Image(im) => im.normal_step(),
         Kind32::Wrinkles => (NORMAL_DELTA, WRINKLES_NORMAL_GAIN / NORMAL_DELTA),
         Kind32::Dents => (NORMAL_DELTA, DENTS_NORMAL_GAIN / NORMAL_DELTA),
+        Kind32::Ripples | Kind32::Waves => (NORMAL_DELTA, WAVE_NORMAL_GAIN / NORMAL_DELTA),
         _ => (NORMAL_DELTA, PATTERN_NORMAL_GAIN / NORMAL_DELTA),
     };
     let dy = if matches!(pat.kind, Kind32::Image(_)) { -delta } else { delta };

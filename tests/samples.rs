@@ -37,10 +37,16 @@ use rayon::prelude::*;
 enum Expect {
     Psnr,
     Regions,
-    Gap { cause: &'static str, floor: f64 },
+    /// `noise`: whether the scene would be held to `Regions` (else to `Psnr`) once the gap is
+    /// closed.
+    Gap {
+        cause: &'static str,
+        floor: f64,
+        noise: bool,
+    },
 }
 
-use Expect::{Psnr, Regions};
+use Expect::{Gap, Psnr, Regions};
 
 /// Every scene of `scenes.txt` with its bound (the test fails on a scene missing from one or the
 /// other). Figures in the comments are measured at 320×240.
@@ -94,22 +100,83 @@ const SCENES: &[(&str, Expect)] = &[
     ("textures/pigments/mapper.pov", Psnr),
     ("portfolio/allobjects.pov", Psnr),
     ("textures/patterns/radial.pov", Psnr),
-    ("textures/patterns/waves.pov", Regions),
-    ("textures/patterns/ripples.pov", Regions),
+    (
+        "textures/patterns/waves.pov",
+        Gap {
+            cause: "waves: strahl's wave sources are its own, not POV-Ray's (the waves pigment on the \
+                    sphere, flat in POV-Ray's image, 25.6 dB), and its waves normal tilts about half \
+                    as much (texture strength 0.51 on the box)",
+            floor: 27.5,
+            noise: true,
+        },
+    ),
+    (
+        "textures/patterns/ripples.pov",
+        Gap {
+            cause: "ripples: strahl's wave sources are its own, not POV-Ray's (the ripples pigment on \
+                    the sphere, 22.7 dB), and its ripples normal tilts about half as much (texture \
+                    strength 0.47-0.48 on the cylinder and the box)",
+            floor: 24.3,
+            noise: true,
+        },
+    ),
     ("textures/patterns/bumps.pov", Regions),
     ("textures/patterns/marble.pov", Psnr),
     ("textures/patterns/leopard.pov", Psnr),
     ("incdemo/stones/pinkmarb.pov", Psnr),
-    ("incdemo/metals/golds.pov", Psnr),
+    (
+        "incdemo/metals/golds.pov",
+        Gap {
+            cause: "checker scale <1, 1, 10000>: strahl's checker edge tolerance (1e-4) is in pattern \
+                    units, so the scale stretches it to 1 unit and one stripe of the floor turns the \
+                    other colour along an edge",
+            floor: 27.9,
+            noise: false,
+        },
+    ),
     ("lights/spotlite.pov", Psnr),
     ("lights/circular.pov", Psnr),
-    ("camera/omnimax.pov", Psnr),
+    (
+        "camera/omnimax.pov",
+        Gap {
+            cause: "omnimax: the image's circular rim lies about a pixel off POV-Ray's (as in the \
+                    reference scene cameras_omnimax); inside the rim the images match",
+            floor: 27.3,
+            noise: false,
+        },
+    ),
     ("objects/torus1.pov", Regions),
     ("objects/isosurfaces.pov", Psnr),
     ("objects/bezier.pov", Psnr),
-    ("interior/iortest.pov", Psnr),
-    ("textures/normals/bumpmap.pov", Regions),
-    ("textures/finishes/var_reflection.pov", Regions),
+    (
+        "interior/iortest.pov",
+        Gap {
+            cause: "checker scale <32000, 1, 2>: strahl's checker edge tolerance (1e-4) is in pattern \
+                    units, so the scale stretches it to 3.2 units and the floor's edge at x = 0 moves \
+                    to x = -3.2 (the wedge in the difference image, also seen through the glass)",
+            floor: 21.0,
+            noise: false,
+        },
+    ),
+    (
+        "textures/normals/bumpmap.pov",
+        Gap {
+            cause: "bump_map with bump_size 10: strahl tilts the sphere's relief less than POV-Ray \
+                    (texture strength 0.57) and shows no ridge at the `once` map's edge",
+            floor: 24.6,
+            noise: true,
+        },
+    ),
+    (
+        "textures/finishes/var_reflection.pov",
+        Gap {
+            cause: "`no_reflection` is not modelled (the digits show in the mirror strips below them), \
+                    and checker scale <1.8, 10000, 1>: the checker edge tolerance (1e-4, in pattern \
+                    units) stretches to 1 unit, so stripes of the floor turn the other colour",
+            floor: 20.4,
+            noise: false,
+        },
+    ),
 ];
 
 const W: u32 = 320;
@@ -215,9 +282,12 @@ fn run(samples: &Path, scene: &str, expect: Expect) -> Row {
     let report = match expect {
         Expect::Psnr => suite.compare_psnr(&name, &r, &exp, MIN_DB),
         Expect::Regions => suite.compare_regions(&name, &r, &exp, &bounds()),
-        Expect::Gap { floor, .. } => {
-            row.gap_closed = suite.compare_psnr(&name, &r, &exp, MIN_DB).failures.is_empty()
-                || suite.compare_regions(&name, &r, &exp, &bounds()).failures.is_empty();
+        Expect::Gap { floor, noise, .. } => {
+            row.gap_closed = if noise {
+                suite.compare_regions(&name, &r, &exp, &bounds()).failures.is_empty()
+            } else {
+                suite.compare_psnr(&name, &r, &exp, MIN_DB).failures.is_empty()
+            };
             suite.compare_psnr(&name, &r, &exp, floor)
         }
     };

@@ -21,8 +21,9 @@
 //!
 //! The log is a table of every scene's figures (`cargo test --release --test samples --
 //! --nocapture`); failures write actual, expected and difference images to
-//! `target/samples-failures/`. Scenes that write files (`#fopen ... write`) render from a copy of
-//! their folder under `target/samples-work/`, since the installed folders may be read-only.
+//! `target/samples-failures/`. Scenes that may write files (`#fopen` in the scene or a file beside
+//! it) render from a copy of their folder under `target/samples-work/`, since the installed
+//! folders may be read-only.
 
 mod common;
 

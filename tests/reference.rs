@@ -13,81 +13,49 @@
 //! region by region (`check_psnr_by_region`) with that region's floor and reason. On failure
 //! the actual, expected and difference images go to `target/reference-failures/`.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 
+use common::compare::{region_label, root, RegionBounds, RegionFigures, Suite};
 use strahl::camera::Camera;
-use strahl::headless::metrics::{psnr, psnr_from_mse, ssim};
-use strahl::headless::{include_path, output};
+use strahl::headless::include_path;
 use strahl::pov::load_scene;
 use strahl::render::image::Image;
-use strahl::render::intersect::HitShape;
-use strahl::render::stats::RenderStats;
-use strahl::render::{primary_ray, render, RenderSettings};
+use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 
-const W: u32 = 640;
-const H: u32 = 480;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-struct Rendered {
-    scene: Scene,
-    camera: Camera,
-    rgb: Vec<u8>,
-    stats: RenderStats,
-}
-
-fn render_scene(path: &Path) -> Rendered {
-    let desc = load_scene(path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
-    let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);
-    let camera = Camera::from_desc(&desc.camera);
-    let mut image = Image::default();
-    let settings = RenderSettings { width: W, height: H, ..RenderSettings::default() };
-    let stats = render(&scene, &camera, &settings, &mut image);
-    let rgb = image.to_rgb8(scene.srgb);
-    Rendered { scene, camera, rgb, stats }
-}
-
-fn expected(name: &str) -> Vec<u8> {
-    let (w, h, rgb) = output::read_png(&root().join("tests/reference/expected").join(format!("{name}.png")))
-        .unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!((w, h), (W, H), "reference {name} has the wrong size");
-    rgb
-}
-
-/// Writes actual, expected and 4× amplified difference next to each other.
-fn write_failure(name: &str, actual: &[u8], expected: &[u8]) -> PathBuf {
-    let dir = root().join("target/reference-failures");
-    std::fs::create_dir_all(&dir).expect("create target/reference-failures");
-    let diff: Vec<u8> =
-        actual.iter().zip(expected).map(|(a, b)| ((*a as i32 - *b as i32).unsigned_abs() * 4).min(255) as u8).collect();
-    for (suffix, img) in [("actual", actual), ("expected", expected), ("diff", &diff[..])] {
-        output::write_png(&dir.join(format!("{name}.{suffix}.png")), W, H, img).expect("write failure image");
+/// The reference scenes' renders: 640×480, failures to `target/reference-failures/`.
+fn suite() -> Suite {
+    Suite {
+        width: 640,
+        height: 480,
+        expected: root().join("tests/reference/expected"),
+        failures: root().join("target/reference-failures"),
+        regenerate: "sh tests/reference/make_refs.sh",
     }
-    dir
 }
 
 fn check_psnr(name: &str, scene_path: &Path, min_db: f64) {
-    let r = render_scene(scene_path);
-    let exp = expected(name);
-    let p = psnr(&r.rgb, &exp);
-    let s = ssim(W, H, &r.rgb, &exp);
-    println!("{name}: PSNR {p:.2} dB, SSIM {s:.4} against POV-Ray 3.7");
-    assert_eq!(r.stats.bad_samples, 0, "{name}: NaN or infinite samples");
-    if p < min_db {
-        let dir = write_failure(name, &r.rgb, &exp);
-        panic!(
-            "{name}: PSNR {p:.2} dB < {min_db} dB against POV-Ray; images in {}; \
-             regenerate references with `sh tests/reference/make_refs.sh` only if POV-Ray changed",
-            dir.display()
-        );
-    }
+    suite().check_psnr(name, scene_path, min_db);
+}
+
+fn check_regions(name: &str, scene_path: &Path, bounds: &RegionBounds) -> Vec<(Option<u32>, RegionFigures)> {
+    suite().check_regions(name, scene_path, bounds)
+}
+
+fn check_psnr_by_region(name: &str, scene_path: &Path, min_db: f64, exceptions: &[(Option<u32>, f64, &str)]) {
+    suite().check_psnr_by_region(name, scene_path, min_db, exceptions);
 }
 
 fn scene(name: &str) -> PathBuf {
     root().join("tests/reference/scenes").join(format!("{name}.pov"))
+}
+
+/// The bounds of issue 15 for noise patterns: flat regions 35 dB, blurred colour (15×15
+/// windows) 25 dB, texture strength 0.7–1.4× POV-Ray's.
+fn noise_bounds() -> RegionBounds {
+    RegionBounds { flat_db: 35.0, blurred_db: 25.0, blur: 15, strength: 0.7..=1.4, strength_exceptions: &[] }
 }
 
 /// Finishes beyond the chapter's: metallic highlights, Fresnel and variable reflection with
@@ -352,260 +320,6 @@ fn assumed_gamma_2_2_darkens_like_povray() {
 #[test]
 fn scene_without_version_directive_writes_linear_values_like_povray() {
     check_psnr("noversion", &scene("noversion"), 35.0);
-}
-
-/// Per-pixel region: which material the primary ray hits (`None`: the background).
-fn regions(r: &Rendered) -> Vec<Option<u32>> {
-    let mut stats = RenderStats::default();
-    let mut out = Vec::with_capacity((W * H) as usize);
-    for y in 0..H {
-        for x in 0..W {
-            let ray = primary_ray(&r.scene, &r.camera, W, H, x, y);
-            out.push(r.scene.intersect(&ray, f32::INFINITY, &mut stats).map(|h| match h.shape {
-                HitShape::Plane(_) | HitShape::Prim(_) | HitShape::Face { .. } => r.scene.material_of(h.shape),
-            }));
-        }
-    }
-    out
-}
-
-/// Pixels whose 5×5 neighbourhood lies entirely in `region`: away from silhouettes, where one
-/// pixel of geometric difference is not a shading difference.
-fn interior(reg: &[Option<u32>], region: Option<u32>) -> Vec<bool> {
-    let at = |x: i32, y: i32| reg[(y.clamp(0, H as i32 - 1) as u32 * W + x.clamp(0, W as i32 - 1) as u32) as usize];
-    let mut m = vec![false; (W * H) as usize];
-    for y in 0..H as i32 {
-        for x in 0..W as i32 {
-            m[(y as u32 * W + x as u32) as usize] = (-2..=2).all(|dy| (-2..=2).all(|dx| at(x + dx, y + dy) == region));
-        }
-    }
-    m
-}
-
-/// Statistics of the `k`×`k` windows (centres on a grid of step `step`) that lie inside the mask.
-struct Windows {
-    /// Mean colour of each window.
-    means: Vec<[f64; 3]>,
-    /// Standard deviation of each window (channels averaged): the local contrast.
-    stds: Vec<f64>,
-    /// Standard deviation left after removing each channel's best plane `a + b·x + c·y`:
-    /// shading gradients (a lit sphere, a light's falloff) leave nothing here, texture does.
-    detrended: Vec<f64>,
-}
-
-fn windows(rgb: &[u8], mask: &[bool], k: i32, step: i32) -> Windows {
-    let mut w = Windows { means: Vec::new(), stds: Vec::new(), detrended: Vec::new() };
-    let h = k / 2;
-    // Σx² over the window's offsets (the same for x and y): the plane fit's denominator.
-    let sxx: f64 = (-h..=h).map(|d| (d * d) as f64).sum::<f64>() * k as f64;
-    for cy in (h..H as i32 - h).step_by(step as usize) {
-        for cx in (h..W as i32 - h).step_by(step as usize) {
-            let px: Vec<(i32, i32, usize)> = (-h..=h)
-                .flat_map(|dy| (-h..=h).map(move |dx| (dx, dy, ((cy + dy) as u32 * W + (cx + dx) as u32) as usize)))
-                .collect();
-            if !px.iter().all(|&(_, _, i)| mask[i]) {
-                continue;
-            }
-            let n = px.len() as f64;
-            let (mut mean, mut var, mut res) = ([0.0f64; 3], 0.0, 0.0);
-            for c in 0..3 {
-                let v = |i: usize| rgb[i * 3 + c] as f64;
-                let m = px.iter().map(|&(_, _, i)| v(i)).sum::<f64>() / n;
-                let bx = px.iter().map(|&(dx, _, i)| (v(i) - m) * dx as f64).sum::<f64>() / sxx;
-                let by = px.iter().map(|&(_, dy, i)| (v(i) - m) * dy as f64).sum::<f64>() / sxx;
-                var += px.iter().map(|&(_, _, i)| (v(i) - m).powi(2)).sum::<f64>() / n;
-                res +=
-                    px.iter().map(|&(dx, dy, i)| (v(i) - m - bx * dx as f64 - by * dy as f64).powi(2)).sum::<f64>() / n;
-                mean[c] = m;
-            }
-            w.means.push(mean);
-            w.stds.push((var / 3.0).sqrt());
-            w.detrended.push((res / 3.0).sqrt());
-        }
-    }
-    w
-}
-
-fn mean(v: &[f64]) -> f64 {
-    v.iter().sum::<f64>() / v.len().max(1) as f64
-}
-
-fn median(v: &[f64]) -> f64 {
-    let mut s = v.to_vec();
-    s.sort_by(f64::total_cmp);
-    s.get(s.len() / 2).copied().unwrap_or(0.0)
-}
-
-/// A region is flat where POV-Ray's image has (nearly) no local variance there: the median
-/// 9×9 window keeps under this many levels of 255 once shading gradients are removed.
-const FLAT_DETRENDED: f64 = 1.0;
-
-/// Regions with fewer interior pixels are not judged (a sliver between two objects).
-const MIN_REGION_PIXELS: usize = 400;
-
-/// The region split's bounds.
-#[derive(Clone, Debug)]
-struct RegionBounds {
-    /// PSNR floor of each flat region, pixel for pixel.
-    flat_db: f64,
-    /// PSNR floor of each textured region's blurred colour (means of `blur`×`blur` windows).
-    blurred_db: f64,
-    /// Side of the blur windows: wider than a feature of the noise, so the means compare the
-    /// average look rather than where each feature happens to lie.
-    blur: i32,
-    /// Allowed ratio of strahl's texture strength (mean std-dev of 9×9 windows) to POV-Ray's.
-    strength: std::ops::RangeInclusive<f64>,
-    /// Regions whose strength ratio is known to differ, each with its own allowed range (a
-    /// regression guard around the measured figure) and the reason.
-    strength_exceptions: &'static [(u32, f64, f64, &'static str)],
-}
-
-/// What the region split measured on one region.
-#[derive(Debug)]
-enum RegionFigures {
-    Flat {
-        psnr: f64,
-    },
-    /// `psnr` is pixel for pixel, for information (noise differs there by design).
-    Textured {
-        psnr: f64,
-        blurred_db: f64,
-        strength_ours: f64,
-        strength_theirs: f64,
-    },
-}
-
-impl RegionFigures {
-    fn describe(&self) -> String {
-        match self {
-            RegionFigures::Flat { psnr } => format!("flat, PSNR {psnr:.2} dB"),
-            RegionFigures::Textured { psnr, blurred_db, strength_ours, strength_theirs } => format!(
-                "textured, PSNR {psnr:.2} dB, blurred colour {blurred_db:.2} dB, strength {strength_ours:.2} vs POV-Ray {strength_theirs:.2} (ratio {:.2})",
-                strength_ours / strength_theirs
-            ),
-        }
-    }
-}
-
-fn region_label(region: Option<u32>) -> String {
-    region.map_or("background".to_string(), |m| format!("material {m}"))
-}
-
-fn pick(img: &[u8], m: &[bool]) -> Vec<u8> {
-    img.chunks(3).zip(m).filter(|(_, &k)| k).flat_map(|(p, _)| p.to_vec()).collect()
-}
-
-/// Each region's interior mask, in order (background first, then materials in file order),
-/// without the regions too small to judge.
-fn region_masks(r: &Rendered) -> Vec<(Option<u32>, Vec<bool>)> {
-    let reg = regions(r);
-    let mut ids: Vec<Option<u32>> = reg.clone();
-    ids.sort();
-    ids.dedup();
-    ids.into_iter()
-        .map(|id| (id, interior(&reg, id)))
-        .filter(|(_, m)| m.iter().filter(|k| **k).count() >= MIN_REGION_PIXELS)
-        .collect()
-}
-
-/// The region split for scenes with noise patterns, which can't match POV-Ray pixel for pixel
-/// (strahl's noise is its own): the regions are what the primary ray hits; a region where
-/// POV-Ray's image is flat must match pixel for pixel (`flat_db`), a textured one by its
-/// blurred colour (`blurred_db`) and by its texture strength (the local contrast the pattern
-/// adds, within `strength` of POV-Ray's). Prints every region's figures; on failure writes the
-/// actual, expected and difference images as `check_psnr` does.
-fn check_regions(name: &str, scene_path: &Path, bounds: &RegionBounds) -> Vec<(Option<u32>, RegionFigures)> {
-    let r = render_scene(scene_path);
-    let exp = expected(name);
-    assert_eq!(r.stats.bad_samples, 0, "{name}: NaN or infinite samples");
-    println!("{name}: whole image PSNR {:.2} dB, SSIM {:.4}", psnr(&r.rgb, &exp), ssim(W, H, &r.rgb, &exp));
-    let mut failures = Vec::new();
-    let mut figures = Vec::new();
-    for (id, mask) in region_masks(&r) {
-        let theirs9 = windows(&exp, &mask, 9, 9);
-        let p = psnr(&pick(&r.rgb, &mask), &pick(&exp, &mask));
-        let fig = if median(&theirs9.detrended) < FLAT_DETRENDED {
-            if p < bounds.flat_db {
-                failures.push(format!("{}: flat PSNR {p:.2} dB < {} dB", region_label(id), bounds.flat_db));
-            }
-            RegionFigures::Flat { psnr: p }
-        } else {
-            let ours9 = windows(&r.rgb, &mask, 9, 9);
-            // Half-overlapping blur windows: the figure depends less on where the grid falls.
-            let step = bounds.blur / 2 + 1;
-            let (ours, theirs) = (windows(&r.rgb, &mask, bounds.blur, step), windows(&exp, &mask, bounds.blur, step));
-            let mse = ours
-                .means
-                .iter()
-                .zip(&theirs.means)
-                .map(|(a, b)| (0..3).map(|c| (a[c] - b[c]).powi(2)).sum::<f64>() / 3.0)
-                .sum::<f64>()
-                / ours.means.len().max(1) as f64;
-            let blurred_db = psnr_from_mse(mse);
-            let (strength_ours, strength_theirs) = (mean(&ours9.stds), mean(&theirs9.stds));
-            let ratio = strength_ours / strength_theirs;
-            if blurred_db < bounds.blurred_db {
-                failures.push(format!(
-                    "{}: blurred-colour PSNR {blurred_db:.2} dB < {} dB",
-                    region_label(id),
-                    bounds.blurred_db
-                ));
-            }
-            let exception = bounds.strength_exceptions.iter().find(|e| Some(e.0) == id);
-            let allowed = exception.map_or(bounds.strength.clone(), |e| e.1..=e.2);
-            if let Some(e) = exception {
-                println!("{name}: {}: strength allowed {:?}: {}", region_label(id), allowed, e.3);
-            }
-            if !allowed.contains(&ratio) {
-                failures.push(format!("{}: texture strength ratio {ratio:.2} outside {allowed:?}", region_label(id),));
-            }
-            RegionFigures::Textured { psnr: p, blurred_db, strength_ours, strength_theirs }
-        };
-        println!("{name}: {} ({} pixels): {}", region_label(id), mask.iter().filter(|k| **k).count(), fig.describe());
-        figures.push((id, fig));
-    }
-    if !failures.is_empty() {
-        let dir = write_failure(name, &r.rgb, &exp);
-        panic!("{name} differs from POV-Ray: {}; images in {}", failures.join("; "), dir.display());
-    }
-    figures
-}
-
-/// The bounds of issue 15 for noise patterns: flat regions 35 dB, blurred colour (15×15
-/// windows) 25 dB, texture strength 0.7–1.4× POV-Ray's.
-fn noise_bounds() -> RegionBounds {
-    RegionBounds { flat_db: 35.0, blurred_db: 25.0, blur: 15, strength: 0.7..=1.4, strength_exceptions: &[] }
-}
-
-/// Per-region PSNR for scenes without noise whose whole-image figure is held down by one
-/// known difference: every region must reach `min_db` except the listed ones, which keep
-/// their own floor and the reason for it.
-fn check_psnr_by_region(name: &str, scene_path: &Path, min_db: f64, exceptions: &[(Option<u32>, f64, &str)]) {
-    let r = render_scene(scene_path);
-    let exp = expected(name);
-    assert_eq!(r.stats.bad_samples, 0, "{name}: NaN or infinite samples");
-    println!("{name}: whole image PSNR {:.2} dB, SSIM {:.4}", psnr(&r.rgb, &exp), ssim(W, H, &r.rgb, &exp));
-    let mut failures = Vec::new();
-    for (id, mask) in region_masks(&r) {
-        let p = psnr(&pick(&r.rgb, &mask), &pick(&exp, &mask));
-        let (floor, why) = match exceptions.iter().find(|e| e.0 == id) {
-            Some(&(_, floor, why)) => (floor, why),
-            None => (min_db, ""),
-        };
-        println!(
-            "{name}: {} ({} pixels): PSNR {p:.2} dB (floor {floor}{}{why})",
-            region_label(id),
-            mask.iter().filter(|k| **k).count(),
-            if why.is_empty() { "" } else { ": " }
-        );
-        if p < floor {
-            failures.push(format!("{}: PSNR {p:.2} dB < {floor} dB", region_label(id)));
-        }
-    }
-    if !failures.is_empty() {
-        let dir = write_failure(name, &r.rgb, &exp);
-        panic!("{name} differs from POV-Ray: {}; images in {}", failures.join("; "), dir.display());
-    }
 }
 
 /// The seed scene by region: the checker floor and the background are flat and match like any

@@ -91,9 +91,12 @@ impl<L: Lane> RgbftLanes<L> {
 /// large coordinates); this moves edges by at most that much, which no pixel can see. `slack`
 /// widens it further by how far the point itself may be off (see `checker_lanes`).
 #[inline(always)]
-fn floor_tolerant<L: Lane>(v: L, slack: L) -> L {
-    (v + L::splat(1e-4) + v.abs() * L::splat(1.0 / 65536.0) + slack).floor()
+fn floor_tolerant<L: Lane>(v: L, tolerance: f32, slack: L) -> L {
+    (v + L::splat(tolerance) + v.abs() * L::splat(1.0 / 65536.0) + slack).floor()
 }
+
+/// The fixed part of `floor_tolerant`'s tolerance, in pattern units.
+pub const CHECKER_TOLERANCE: f32 = 1e-4;
 
 /// POV-Ray's `checker`: 0 for the first colour, 1 for the second, alternating in unit cubes.
 #[inline]
@@ -108,9 +111,19 @@ pub fn checker(p: Vec3) -> u32 {
 /// lands below 0 (measured: 6.4e-4 units at 8.3e4, where the tolerance is 1e-4).
 #[inline(always)]
 pub fn checker_lanes<L: Lane>(p: V3<L>, slack: L) -> L::Mask {
+    checker_lanes_within(p, [CHECKER_TOLERANCE; 3], slack)
+}
+
+/// `checker_lanes` with the fixed tolerance of each axis given (`CHECKER_TOLERANCE` or less):
+/// a checker scaled up along an axis (`scale <1, 1, 10000>`, the samples' stripes) needs it
+/// that much smaller there, or its edges move by the tolerance times the scale.
+#[inline(always)]
+pub fn checker_lanes_within<L: Lane>(p: V3<L>, tolerance: [f32; 3], slack: L) -> L::Mask {
     // An integer sum is odd where half of it has a fraction; that holds for negative sums too,
     // and sums beyond 2^25 (whose halves are whole) count as even, as `rem_euclid(2.0)` does.
-    let half = (floor_tolerant(p.x, slack) + floor_tolerant(p.y, slack) + floor_tolerant(p.z, slack)) * L::splat(0.5);
+    let [tx, ty, tz] = tolerance;
+    let half = (floor_tolerant(p.x, tx, slack) + floor_tolerant(p.y, ty, slack) + floor_tolerant(p.z, tz, slack))
+        * L::splat(0.5);
     half.floor().lt(half)
 }
 

@@ -5,7 +5,7 @@
 use glam::{Affine3A, DMat4, Vec3};
 
 use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
-use super::pattern::{checker_lanes, wood_lanes, ColorMap, Rgbft, RgbftLanes};
+use super::pattern::{checker_lanes_within, wood_lanes, ColorMap, Rgbft, RgbftLanes, CHECKER_TOLERANCE};
 use super::patterns::{Kind32, Pattern32};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{PigmentDesc, PigmentPattern, Turbulence};
@@ -96,6 +96,11 @@ pub struct Pigment {
     /// covers that 4× over and moves checker edges by at most 0.1 pixel there. The checker
     /// widens its tolerance by this times the distance.
     pub slack_per_render: f32,
+    /// The checker's fixed edge tolerance along each pattern axis: `CHECKER_TOLERANCE` in
+    /// render units, at most that in pattern units, so an axis scaled up (POV-Ray's `scale <1,
+    /// 1, 10000>` stripes) keeps its edges where POV-Ray has them rather than the tolerance
+    /// times the scale away (1 unit there; 3.2 units under `scale 32000`).
+    pub checker_tolerance: [f32; 3],
 }
 
 /// How a pattern (turbulence included) repeats along one axis of its own space.
@@ -247,6 +252,7 @@ impl Pigment {
             turbulence: d.turbulence.as_ref().map(TurbulenceF32::from_desc),
             pattern_from_render,
             slack_per_render: 0.25 * f32::EPSILON * row_norm,
+            checker_tolerance: [0, 1, 2].map(|r| CHECKER_TOLERANCE * m.row(r).abs().element_sum().min(1.0)),
         }
     }
 
@@ -275,7 +281,11 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
         PigmentPattern32::Checker(c) => {
             let p = pig.pattern_point(p_render, q);
             let slack = p_render.max_abs() * L::splat(pig.slack_per_render);
-            RgbftLanes::select(checker_lanes(p, slack), RgbftLanes::splat(c[1]), RgbftLanes::splat(c[0]))
+            RgbftLanes::select(
+                checker_lanes_within(p, pig.checker_tolerance, slack),
+                RgbftLanes::splat(c[1]),
+                RgbftLanes::splat(c[0]),
+            )
         }
         PigmentPattern32::Wood(map) => map.lookup_lanes(wood_value(pig, p_render, q)),
         _ => eval_composite_lanes(pig, p_render, q),
@@ -307,7 +317,7 @@ pub fn pattern_value(pig: &Pigment, p_render: Vec3, q: PatternQuality) -> f32 {
     match &pig.pattern {
         PigmentPattern32::Checker(_) => {
             let slack = p.max_abs() * pig.slack_per_render;
-            if checker_lanes(pig.pattern_point(p, q), slack) {
+            if checker_lanes_within(pig.pattern_point(p, q), pig.checker_tolerance, slack) {
                 1.0
             } else {
                 0.0
@@ -447,6 +457,30 @@ mod tests {
             let got = eval_pigment(&pig, ((w - origin) / unit).as_vec3(), PatternQuality::default());
             assert_eq!(got, Rgbft::from_desc(if expect == 0 { &Color::WHITE } else { &Color::BLACK }));
         }
+    }
+
+    #[test]
+    fn a_checker_scaled_up_keeps_its_edges_where_povray_has_them() {
+        // `scale <1, 1, 10000>` stripes (incdemo/metals/golds.pov): the edge at z = 0 stays
+        // there, half a unit either side shows either colour (with the tolerance in pattern
+        // units it was 1 unit off, the cell [-1, 0) showing the first colour). Not tested: the
+        // edges at z = ±10000, as far from the render origin, where `slack_per_render` (by the
+        // largest row, not z's) still moves them by some 3 units.
+        let desc = PigmentDesc {
+            pattern: PigmentPattern::Checker(Color::WHITE, Color::BLACK),
+            turbulence: None,
+            transform: scaled(DVec3::new(1.0, 1.0, 10000.0)),
+        };
+        let pig = Pigment::from_desc(&desc, &DMat4::IDENTITY);
+        let at = |p: Vec3| eval_pigment(&pig, p, PatternQuality::default());
+        let (first, second) = (Rgbft::from_desc(&Color::WHITE), Rgbft::from_desc(&Color::BLACK));
+        assert_eq!(at(Vec3::new(0.5, 0.5, 0.5)), first);
+        assert_eq!(at(Vec3::new(0.5, 0.5, -0.5)), second);
+        assert_eq!(at(Vec3::new(0.5, 0.5, -0.01)), second);
+        assert_eq!(at(Vec3::new(0.5, 0.5, 5000.0)), first);
+        assert_eq!(at(Vec3::new(0.5, 0.5, -5000.0)), second);
+        // Unscaled axes keep the fixed tolerance: a floor at y = 0 shows the cell above it.
+        assert_eq!(at(Vec3::new(0.5, -1e-6, 0.5)), first);
     }
 
     fn checker_desc(turbulence: Option<crate::scene::desc::Turbulence>) -> PigmentDesc {

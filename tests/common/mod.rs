@@ -1,6 +1,11 @@
 //! Helpers shared by the integration tests (each test file is its own crate and includes this
 //! module with `mod common;`).
 
+// Each test crate that includes this module uses only part of it.
+#![allow(dead_code)]
+
+pub mod compare;
+
 use glam::DMat4;
 use strahl::scene::desc::{CameraDesc, SceneDesc, Transform};
 

@@ -10,7 +10,6 @@ use super::textures::{layer_over, texture_uv_span, transform_texture, uv_span};
 use super::Lowerer;
 use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};
-use crate::pov::parser::LAYERED;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Group, MaterialValue, Part, Value};
 use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
@@ -178,7 +177,11 @@ impl Lowerer<'_> {
             Modifier::UvMapping(_) => obj.texture.uv_mapping = true,
             Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
             Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
-            Modifier::Texture(t) if part.textured => return Err(Diag::new(t.span, LAYERED)),
+            // A second texture on an object lies over the first as a layer (POV-Ray 3.4.6.6).
+            Modifier::Texture(t) if part.textured => {
+                let upper = self.texture(t)?;
+                layer_over(&mut part.desc.texture, upper);
+            }
             Modifier::Texture(t) => {
                 obj.texture = self.texture(t)?;
                 obj.texture.uv_mapping |= object_uv;
@@ -357,8 +360,13 @@ impl Lowerer<'_> {
                 let finish = self.finish_block(f)?;
                 pending.texture.get_or_insert_with(|| self.default_texture.clone()).finish = finish;
             }
-            Modifier::Texture(t) if pending.texture.is_some() => return Err(Diag::new(t.span, LAYERED)),
-            Modifier::Texture(t) => pending.texture = Some(self.texture(t)?),
+            Modifier::Texture(t) => {
+                let tex = self.texture(t)?;
+                match &mut pending.texture {
+                    Some(below) => layer_over(below, tex),
+                    None => pending.texture = Some(tex),
+                }
+            }
             Modifier::Interior(i) => pending.interior = Some(self.interior(i)?),
             Modifier::Material(m) => {
                 let MaterialValue { texture, interior } = self.material(m)?;

@@ -134,7 +134,7 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
         metallic: if r.pick(3) == 0 { r.f(0.0, 1.0) } else { 0.0 },
         ..FinishDesc::default()
     };
-    TextureDesc { pigment, normal, finish, uv_mapping: false }
+    TextureDesc { pigment, normal, finish, uv_mapping: false, pattern: None }
 }
 
 fn random_shape(r: &mut Rng) -> ShapeDesc {
@@ -758,6 +758,8 @@ fn shipped_scenes_print_and_load_back() {
             "uv_mapping.pov",
             "cameras_mesh.pov",
             "cameras_mesh_rows.pov",
+            // The object pattern's object and patterns of whole textures, likewise.
+            "texture_patterns.pov",
         ]
         .iter()
         .any(|n| path.ends_with(n));

@@ -65,7 +65,7 @@ struct OrbitCmd {
     #[arg(long, value_name = "N", default_value_t = headless::orbit::DEFAULT_KEYS, value_parser = clap::value_parser!(u32).range(3..=100_000))]
     frames: u32,
     /// Seconds one turn takes: the key times run from 0 to S.
-    #[arg(long, value_name = "S", default_value_t = headless::orbit::DEFAULT_SECONDS, value_parser = headless::orbit::parse_seconds)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = headless::orbit::DEFAULT_SECONDS, value_parser = headless::orbit::parse_seconds)]
     seconds: f64,
     /// Extra include folder, searched after the scene's own folder (repeatable).
     #[arg(short = 'L', long = "include-path", value_name = "DIR", value_parser = headless::parse_include_dir)]

@@ -473,7 +473,7 @@ mod tests {
         let last = rows.last().unwrap();
         assert!(last.ends_with(" more"), "{rows:#?}");
         // Every name is shown or counted.
-        let shown = rows.join(" ").matches(|c| c == ',').count();
+        let shown = rows.join(" ").matches(',').count();
         let counted: usize = last.rsplit('+').next().unwrap().trim_end_matches(" more").parse().unwrap();
         assert!(shown + 1 + counted >= many.len() - 1, "{rows:#?}");
         let long = names(&[&"x".repeat(100)]);

@@ -191,7 +191,7 @@ fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
             cij = cij * (i - j) as f64 / (j + 1) as f64;
             cnj = cnj * (n - j) as f64 / (j + 1) as f64;
         }
-        if !(b.abs() > tol) || (sign != 0.0 && b.signum() != sign) {
+        if b.is_nan() || b.abs() <= tol || (sign != 0.0 && b.signum() != sign) {
             return false;
         }
         sign = b.signum();

@@ -185,6 +185,26 @@ pub fn initial_speed(world_bounds: Option<(DVec3, DVec3)>, unit: f64) -> f64 {
     length / CROSSING_SECONDS
 }
 
+/// How far the framing bounds the default speed's crossing length, either way: a subject may be
+/// far bigger than what the camera frames (a 10⁴-unit ground box under a 5-unit model) or far
+/// smaller (a mote in a wide view), and the camera's distance to `look_at` is what the scene's
+/// author chose to look from.
+pub const FRAMING_RANGE: f64 = 4.0;
+
+/// The window's default speed: [`initial_speed`] of the scene's subject (its bounded objects
+/// less those around the camera, `camera::orbit::subject_bounds`), its crossing length kept
+/// within [`FRAMING_RANGE`] of `look_distance`, the camera's distance to its `look_at` (when
+/// the scene gives one: without it the direction's length says nothing about the scene's size).
+pub fn scene_speed(subject: Option<(DVec3, DVec3)>, unit: f64, look_distance: Option<f64>) -> f64 {
+    let speed = initial_speed(subject, unit);
+    match look_distance {
+        Some(d) if d.is_finite() && d > 0.0 => {
+            speed.clamp(d / FRAMING_RANGE / CROSSING_SECONDS, d * FRAMING_RANGE / CROSSING_SECONDS)
+        }
+        _ => speed,
+    }
+}
+
 fn wrap_angle(a: f64) -> f64 {
     use std::f64::consts::{PI, TAU};
     if (-PI..=PI).contains(&a) {
@@ -294,6 +314,21 @@ mod tests {
             let back = step(&moved, &InputState { speed_steps: -100, ..Default::default() }, 0.0);
             assert!((back.speed / base - 1.0 / SPEED_RANGE).abs() < 1e-12);
         }
+    }
+
+    #[test]
+    fn scene_speed_follows_the_subject_within_the_framing() {
+        let b = |d: f64| Some((DVec3::ZERO, DVec3::new(d, 0.0, 0.0)));
+        // The seed: a few units across, seen from 7: the subject's own size.
+        assert!((scene_speed(b(5.0), 7.0, Some(7.0)) - 5.0 / CROSSING_SECONDS).abs() < 1e-12);
+        // A 10⁴-unit floor under a model seen from 10 crosses at most 40 units in the crossing time.
+        assert!((scene_speed(b(1e4), 10.0, Some(10.0)) - 40.0 / CROSSING_SECONDS).abs() < 1e-9);
+        // A tiny subject in a wide view, and a scene of planes alone.
+        assert!((scene_speed(b(1e-3), 100.0, Some(100.0)) - 25.0 / CROSSING_SECONDS).abs() < 1e-9);
+        assert!((scene_speed(None, 3.0, Some(3.0)) - 3.0 / CROSSING_SECONDS).abs() < 1e-12);
+        // Without a look_at the subject alone decides.
+        assert!((scene_speed(b(1e4), 1.0, None) - 1e4 / CROSSING_SECONDS).abs() < 1e-9);
+        assert!(scene_speed(b(f64::NAN), 1.0, Some(f64::NAN)).is_finite());
     }
 
     #[test]

@@ -42,6 +42,37 @@ enum Command {
     /// Render every .pov under a folder (e.g. POV-Ray's samples) at a small size and count how
     /// many render, grouping the others by their first error.
     Survey(headless::survey::SurveyCmd),
+    /// Generate a camera path for a scene (see docs/camera-paths.md).
+    #[command(subcommand)]
+    Path(PathCmd),
+}
+
+#[derive(Subcommand)]
+enum PathCmd {
+    /// A closed orbit around the scene camera's look_at, at the camera's distance and height,
+    /// starting at the scene camera: a path for `bench --path` and `view --path --report`.
+    Orbit(OrbitCmd),
+}
+
+#[derive(Args)]
+struct OrbitCmd {
+    /// The POV-Ray scene file.
+    scene: PathBuf,
+    /// The path file to write (replaced only once complete).
+    #[arg(short = 'o', long, value_name = "FILE")]
+    output: PathBuf,
+    /// Keys around the circle (the file holds one more, repeating the first).
+    #[arg(long, value_name = "N", default_value_t = headless::orbit::DEFAULT_KEYS, value_parser = clap::value_parser!(u32).range(3..=100_000))]
+    frames: u32,
+    /// Seconds one turn takes: the key times run from 0 to S.
+    #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = headless::orbit::DEFAULT_SECONDS, value_parser = headless::orbit::parse_seconds)]
+    seconds: f64,
+    /// Extra include folder, searched after the scene's own folder (repeatable).
+    #[arg(short = 'L', long = "include-path", value_name = "DIR", value_parser = headless::parse_include_dir)]
+    include: Vec<PathBuf>,
+    /// Print nothing but errors.
+    #[arg(short, long)]
+    quiet: bool,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -348,6 +379,14 @@ fn run(cli: Cli) -> Result<(), CliError> {
         Command::Scaling(s) => headless::scaling::run_scaling(&s),
         Command::Gen(g) => headless::scaling::run_gen(&g),
         Command::Survey(s) => headless::survey::run(&s),
+        Command::Path(PathCmd::Orbit(o)) => headless::orbit::run(&headless::orbit::OrbitArgs {
+            scene: o.scene,
+            include: o.include,
+            output: o.output,
+            keys: o.frames,
+            seconds: o.seconds,
+            quiet: o.quiet,
+        }),
         Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
             clock: match &r.ini {
                 Some(ini) => headless::render::clock_from_ini(ini, r.frame)?,

@@ -569,3 +569,55 @@ fn survey_renders_a_scratch_copy_so_scenes_may_write_and_the_folder_is_untouched
     );
     assert!(!dir.join("out.txt").exists(), "the surveyed folder is never written");
 }
+
+#[test]
+fn path_orbit_writes_a_closed_orbit_that_bench_follows() {
+    let dir = scratch("path_orbit");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let file = dir.join("seed.orbit.path");
+    let p = file.display().to_string();
+    ok(&["path", "orbit", &seed(), "-o", &p, "--frames", "6", "--seconds", "4", "-q"]);
+    let path = strahl::camera::path::CameraPath::load(&file).unwrap_or_else(|e| panic!("{e}"));
+    let keys = path.keys();
+    assert_eq!(keys.len(), 7, "six keys around and one closing the loop");
+    assert!(path.closed && path.constant_speed);
+    assert_eq!((keys[0].time, keys[6].time), (0.0, 4.0));
+    // The seed's camera: location <3, 3, -1>, look_at <0, 1, 2>; radius √18 at height 3.
+    assert_eq!(keys[0].location, glam::DVec3::new(3.0, 3.0, -1.0));
+    assert_eq!(keys[6].location, keys[0].location);
+    for k in keys {
+        assert_eq!(k.look_at, glam::DVec3::new(0.0, 1.0, 2.0));
+        let r = k.location - k.look_at;
+        assert!(
+            ((r.x * r.x + r.z * r.z).sqrt() - 18f64.sqrt()).abs() < 1e-9 && k.location.y == 3.0,
+            "{:?}",
+            k.location
+        );
+    }
+    let json = dir.join("bench.json").display().to_string();
+    ok(&["bench", &seed(), "--path", &p, "-W", "32", "-H", "24", "--frames", "3", "--warmup", "0", "--json", &json]);
+}
+
+#[test]
+fn path_orbit_errors_exit_2_and_write_nothing() {
+    let dir = scratch("path_orbit_errors");
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+    let out = dir.join("o.path");
+    let o = out.display().to_string();
+    let bad = dir.join("bad.pov");
+    std::fs::write(&bad, "camera { location <0, 1, -3> look_at 0 }\nsphere { 0, 1 nonsense }\n")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let err = fails(&["path", "orbit", &bad.display().to_string(), "-o", &o]);
+    assert!(err.contains("bad.pov:2:"), "a located scene error: {err}");
+    let err = fails(&["path", "orbit", &seed(), "-o", &dir.join("nodir").join("o.path").display().to_string()]);
+    assert!(err.contains("does not exist"), "{err}");
+    for seconds in ["0", "-1", "nan", "inf", "x", "1e9"] {
+        let err = fails(&["path", "orbit", &seed(), "-o", &o, "--seconds", seconds]);
+        assert!(err.contains("seconds"), "{seconds}: {err}");
+    }
+    for frames in ["2", "0", "-3", "x"] {
+        fails(&["path", "orbit", &seed(), "-o", &o, "--frames", frames]);
+    }
+    assert!(!out.exists(), "nothing is written on an error");
+    assert_eq!(std::fs::read_dir(&dir).map(|d| d.count()).unwrap_or(0), 1, "no temporary files left");
+}

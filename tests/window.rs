@@ -364,3 +364,45 @@ fn view_reloads_a_scene_edited_on_disk() {
     assert!(fixed > failed, "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Counts the pixels of the HUD's "not modelled" colour (0xff9a50) in a `view --hud` screenshot.
+fn warn_pixels(scene: &Path, display: &str, shot: &Path) -> usize {
+    let child = Command::new(BIN)
+        .args(["view", scene.to_str().unwrap(), "-W", "640", "-H", "480", "--frames", "2", "--hud", "--screenshot"])
+        .arg(shot)
+        .env("DISPLAY", display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let out = finish(child, Duration::from_secs(240));
+    assert!(out.status.success(), "strahl view failed: {}", String::from_utf8_lossy(&out.stderr));
+    let (_, _, rgb) = read_png(shot).unwrap();
+    rgb.chunks_exact(3).filter(|p| p == &[0xff, 0x9a, 0x50]).count()
+}
+
+/// Issue #15: what a scene uses that strahl does not model is named in the window's HUD, not
+/// only in the terminal's warning and the statistics.
+#[test]
+#[ignore = "needs an X server (Xvfb): .ci/run runs them with --ignored"]
+fn hud_names_what_the_scene_uses_that_is_not_modelled() {
+    let (_xvfb, display) = display();
+    let dir = tmp_dir("unmodelled");
+    let scene = dir.join("media.pov");
+    std::fs::write(
+        &scene,
+        "camera { location <0, 1, -4> look_at 0 }\nlight_source { <3, 5, -4> rgb 1 }\n\
+         sphere { 0, 1 pigment { rgb 1 } }\nmedia { scattering { 1, 0.05 } }\n",
+    )
+    .unwrap();
+    let with = warn_pixels(&scene, &display, &dir.join("media.png"));
+    assert!(with > 50, "{with} pixels of the not-modelled line");
+    // The seed uses `crand` (textures.inc); a scene of plain features shows no such line.
+    let plain = dir.join("plain.pov");
+    std::fs::write(&plain, "camera { location <0, 1, -4> look_at 0 }\nlight_source { <3, 5, -4> rgb 1 }\nsphere { 0, 1 pigment { rgb 1 } }\n")
+        .unwrap();
+    let without = warn_pixels(&plain, &display, &dir.join("plain.png"));
+    assert_eq!(without, 0, "a scene using nothing unmodelled");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -63,10 +63,18 @@ pub struct HudInfo<'a> {
     pub precision: Precision,
     /// Moving, refining or converged: what the frame on screen is.
     pub progress: Progress,
+    /// What the scene uses that strahl renders without (`SceneDesc::unmodelled`), by name.
+    pub unmodelled: &'a [String],
 }
 
 const TEXT: u32 = 0xf0f0f0;
 const ACCENT: u32 = 0xffc040;
+/// The "not modelled" lines: a warning, but not the red of an error.
+const WARN: u32 = 0xff9a50;
+/// The widest "not modelled" line, in characters: about the width of the HUD's other lines.
+const UNMODELLED_COLS: usize = 36;
+/// "not modelled" lines at most; the rest is counted ("+3 more").
+const UNMODELLED_ROWS: usize = 3;
 /// Gap between the panels and the window's edges, and between panels.
 const MARGIN: i32 = 8;
 
@@ -156,7 +164,7 @@ pub fn hud_lines(info: &HudInfo) -> Vec<(String, u32)> {
             (state, format!("render {:6.1} ms (last frame)", info.render_time.as_secs_f64() * 1e3))
         }
     };
-    vec![
+    let mut lines = vec![
         (head, ACCENT),
         (timing, TEXT),
         (format!("scale {:4.2}  ({} x {})", info.scale, info.internal.0, info.internal.1), TEXT),
@@ -164,7 +172,60 @@ pub fn hud_lines(info: &HudInfo) -> Vec<(String, u32)> {
         (format!("pos <{}, {}, {}>", significant(p.x), significant(p.y), significant(p.z)), TEXT),
         (format!("speed {}/s", significant(info.speed)), TEXT),
         (format!("quality {} ({})", info.quality, info.precision), TEXT),
-    ]
+    ];
+    lines.extend(unmodelled_lines(info.unmodelled, UNMODELLED_COLS, UNMODELLED_ROWS).into_iter().map(|l| (l, WARN)));
+    lines
+}
+
+/// "not modelled: media, radiosity" as rows of at most `cols` characters (a name longer than
+/// a row is cut with `~`), at most `rows` of them, the last ending "+N more" when names are
+/// left over. No rows for a scene that uses nothing unmodelled.
+pub fn unmodelled_lines(names: &[String], cols: usize, rows: usize) -> Vec<String> {
+    if names.is_empty() || rows == 0 {
+        return Vec::new();
+    }
+    let cols = cols.max(16);
+    let fit = |name: &str, room: usize| -> String {
+        if name.chars().count() <= room {
+            name.to_string()
+        } else {
+            name.chars().take(room.saturating_sub(1)).chain(['~']).collect()
+        }
+    };
+    let mut out = vec![String::from("not modelled:")];
+    for (i, name) in names.iter().enumerate() {
+        let last_row = out.len() == rows;
+        let more = names.len() - i - 1;
+        // On the last row, keep room for "+N more" unless this is the last name.
+        let tail = if last_row && more > 0 { format!(", +{more} more").len() } else { 0 };
+        let sep = if out.last().is_some_and(|l| l.ends_with(':')) { " " } else { ", " };
+        let row = out.last_mut().unwrap_or_else(|| unreachable!("out starts with one row"));
+        let used = row.chars().count() + sep.len();
+        let name_len = name.chars().count();
+        if used + name_len + tail <= cols {
+            row.push_str(sep);
+            row.push_str(name);
+            continue;
+        }
+        if !last_row && 2 + name_len.min(cols - 2) <= cols {
+            // A new row, indented under the label.
+            if !row.ends_with(':') {
+                row.push(',');
+            }
+            out.push(format!("  {}", fit(name, cols - 2)));
+            continue;
+        }
+        // The last row is full: count what is left, this name included.
+        let left = names.len() - i;
+        let note = format!(" +{left} more");
+        let row = out.last_mut().unwrap_or_else(|| unreachable!("out starts with one row"));
+        while row.chars().count() + note.len() > cols {
+            row.pop();
+        }
+        row.push_str(&note);
+        break;
+    }
+    out
 }
 
 pub const HELP: &[&str] = &[
@@ -311,6 +372,7 @@ mod tests {
             quality: "command line",
             precision: Precision::F64,
             progress,
+            unmodelled: &[],
         }
     }
 
@@ -389,6 +451,43 @@ mod tests {
         let moving = text(Progress::Moving);
         assert!(moving.contains("1.4 fps   moving") && moving.contains("698.0 ms avg"), "{moving}");
         assert!(!moving.contains("converged"), "{moving}");
+    }
+
+    #[test]
+    fn unmodelled_features_are_named_in_short_rows() {
+        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        assert!(unmodelled_lines(&[], 36, 3).is_empty());
+        assert_eq!(unmodelled_lines(&names(&["media", "radiosity"]), 36, 3), ["not modelled: media, radiosity"]);
+        let many = names(&[
+            "media",
+            "radiosity",
+            "photons",
+            "area_illumination",
+            "fog turbulence",
+            "interior_texture",
+            "projected_through",
+        ]);
+        let rows = unmodelled_lines(&many, 36, 3);
+        assert!(rows.len() <= 3 && rows.iter().all(|r| r.chars().count() <= 36), "{rows:#?}");
+        assert!(rows[0].starts_with("not modelled: media"), "{rows:#?}");
+        let last = rows.last().unwrap();
+        assert!(last.ends_with(" more"), "{rows:#?}");
+        // Every name is shown or counted.
+        let shown = rows.join(" ").matches(',').count();
+        let counted: usize = last.rsplit('+').next().unwrap().trim_end_matches(" more").parse().unwrap();
+        assert!(shown + 1 + counted >= many.len() - 1, "{rows:#?}");
+        let long = names(&[&"x".repeat(100)]);
+        let rows = unmodelled_lines(&long, 36, 3);
+        assert!(rows.iter().all(|r| r.chars().count() <= 36), "{rows:#?}");
+
+        // In the HUD, in their own colour, after the other lines; the layout still fits.
+        let mut i = info(Progress::Moving);
+        let list = names(&["media", "radiosity"]);
+        i.unmodelled = &list;
+        let lines = hud_lines(&i);
+        assert_eq!(lines.last().unwrap(), &("not modelled: media, radiosity".to_string(), WARN));
+        let (hud, help) = overlay_layout(640, &lines);
+        assert!(!hud.overlaps(&help));
     }
 
     #[test]

@@ -140,12 +140,17 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     let origin = desc.camera.location;
     let scene = Scene::build(desc, origin, options.accel);
     let camera = Camera::from_desc(&desc.camera);
-    let speed = crate::fly::initial_speed(scene.world_bounds(), scene.frame.unit);
+    let subject = crate::camera::orbit::subject_bounds(&scene, origin);
+    let look_distance = desc.camera.look_at.map(|p| (p - origin).length());
+    let speed = crate::fly::scene_speed(subject, scene.frame.unit, look_distance);
+    let unmodelled = unmodelled_names(desc);
     let watch = reloader.map(|reloader| Watch { reloader, origin, accel: options.accel });
     let playback = options.path.as_ref().map(|p| Playback::new(p.path.clone(), p.seconds));
-    let (Some(playback), Some(report), Some(play)) =
-        (window::run(scene, camera, speed, watch, playback, options.clone())?, &options.report, &options.path)
-    else {
+    let (Some(playback), Some(report), Some(play)) = (
+        window::run(scene, camera, speed, unmodelled, watch, playback, options.clone())?,
+        &options.report,
+        &options.path,
+    ) else {
         return Ok(());
     };
     // The window is closed: now the references can take all the cores. They use the scene as
@@ -178,6 +183,12 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
         num("ssim", "mean"),
     );
     Ok(())
+}
+
+/// The names of what the scene uses that strahl does not model, in order of first use: the
+/// HUD lists them (the warnings with their locations went to the terminal when it loaded).
+pub fn unmodelled_names(desc: &SceneDesc) -> Vec<String> {
+    desc.unmodelled.iter().map(|f| f.name.clone()).collect()
 }
 
 /// Checks what `strahl view` was given that does not need a display or the scene: the path file

@@ -96,6 +96,9 @@ pub struct ReloadStatus {
     pub error: Option<String>,
     /// The camera the reloaded scene declares (for R, reset camera).
     pub camera: Option<Camera>,
+    /// What the reloaded scene uses that strahl does not model (for the HUD); `None` until a
+    /// reload succeeds.
+    pub unmodelled: Option<Vec<String>>,
 }
 
 struct Slot {
@@ -305,18 +308,19 @@ impl Worker {
         let Some(watch) = &mut self.watch else {
             return false;
         };
-        let (result, camera) = match watch.reloader.reload() {
+        let (result, camera, unmodelled) = match watch.reloader.reload() {
             Ok(desc) => {
                 self.scene = Scene::build(desc, watch.origin, watch.accel);
-                (None, Some(Camera::from_desc(&desc.camera)))
+                (None, Some(Camera::from_desc(&desc.camera)), Some(crate::app::unmodelled_names(desc)))
             }
-            Err(message) => (Some(message.to_string()), None),
+            Err(message) => (Some(message.to_string()), None, None),
         };
         let ok = result.is_none();
         let mut slot = self.shared.0.lock().unwrap_or_else(PoisonError::into_inner);
         slot.status.generation += 1;
         slot.status.error = result;
         slot.status.camera = camera.or(slot.status.camera);
+        slot.status.unmodelled = unmodelled.or(slot.status.unmodelled.take());
         ok
     }
 

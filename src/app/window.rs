@@ -39,6 +39,7 @@ pub fn run(
     scene: Scene,
     camera: Camera,
     speed: f64,
+    unmodelled: Vec<String>,
     watch: Option<Watch>,
     playback: Option<Playback>,
     options: ViewOptions,
@@ -51,6 +52,7 @@ pub fn run(
     let mut app = App {
         fly: FlyState::new(camera, speed),
         speed,
+        unmodelled,
         scene_camera: camera,
         render,
         gamepads: Gamepads::open(),
@@ -90,6 +92,8 @@ struct App {
     options: ViewOptions,
     scene_camera: Camera,
     speed: f64,
+    /// What the scene uses that strahl does not model, named in the HUD.
+    unmodelled: Vec<String>,
     fly: FlyState,
     render: RenderThread,
     gamepads: Gamepads,
@@ -279,6 +283,7 @@ impl App {
                 quality: quality_preset(self.options.quality, self.options.aa, self.preset).name,
                 precision: quality_preset(self.options.quality, self.options.aa, self.preset).quality.precision,
                 progress: frame.progress,
+                unmodelled: &self.unmodelled,
             };
             let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };
             draw_hud_and_help(&mut canvas, &info);
@@ -288,6 +293,9 @@ impl App {
             if let Some(camera) = status.camera {
                 // R now resets to the edited scene's camera; the view stays where it was flown.
                 self.scene_camera = camera;
+            }
+            if let Some(names) = &status.unmodelled {
+                self.unmodelled.clone_from(names);
             }
             if status.error.is_none() && self.reload.error.is_some() {
                 eprintln!("reloaded: the scene loads again");

@@ -6,10 +6,11 @@
 //! relative to the scene's render origin (see `scene::build`) before they become f32.
 //!
 //! Camera paths (keyframed flights for capture and bench) live in `path`; their file format in
-//! `path_file`.
+//! `path_file`; orbits around a scene's `look_at` are generated in `orbit`.
 
 pub mod lens;
 pub mod mesh;
+pub mod orbit;
 pub mod path;
 mod path_file;
 

@@ -78,8 +78,28 @@ pub fn smallest_root(c: &[f64], lo: f64, hi: f64) -> Option<f64> {
     roots[..n].iter().copied().find(|&r| r > lo && r < hi)
 }
 
+/// The lowest degree `roots_in` tests for a span without roots first: quartics (blob, torus)
+/// and the degree-4 and 6 polynomials of quadratic and cubic lathes and prisms.
+const SKIP_TEST_DEGREE: usize = 4;
+
 /// All roots of `c` in `[lo, hi]`, ascending, into `out`; returns how many.
+///
+/// A span of a polynomial of degree [`SKIP_TEST_DEGREE`] or more that the curve certainly does
+/// not cross ([`certainly_no_root`]) is answered at once. The test is made here only, not again
+/// for each derivative of the recursion, and not for lower degrees, whose empty spans the
+/// critical points already settle in a few evaluations: testing every level made prism2.pov
+/// 25 % slower, and testing quadratics made lathe1a.pov's linear lathe 9 % slower.
 pub fn roots_in(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+    let first = c.iter().position(|&k| k != 0.0).unwrap_or(c.len());
+    if c.len() - first > SKIP_TEST_DEGREE && certainly_no_root(&c[first..], lo, hi) {
+        return 0;
+    }
+    critical_point_roots(c, lo, hi, out)
+}
+
+/// [`roots_in`] without the up-front test: the derivative's roots cut `[lo, hi]` into monotonic
+/// pieces, recursively.
+fn critical_point_roots(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
     // Drop leading zeros: the degree is what the coefficients say.
     let first = c.iter().position(|&k| k != 0.0).unwrap_or(c.len());
     let c = &c[first..];
@@ -102,7 +122,7 @@ pub fn roots_in(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usi
                 dc[i] = k * (degree - i) as f64;
             }
             let mut crit = [0.0; MAX_DEGREE];
-            let m = roots_in(&dc[..degree], lo, hi, &mut crit);
+            let m = critical_point_roots(&dc[..degree], lo, hi, &mut crit);
             let mut n = 0;
             let mut a = lo;
             for &b in crit[..m].iter().chain(std::iter::once(&hi)) {
@@ -118,6 +138,65 @@ pub fn roots_in(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usi
             n
         }
     }
+}
+
+/// Whether `c` (highest power first, degree 1 to `MAX_DEGREE`) has no root in `[lo, hi]` for
+/// certain: its Bernstein coefficients on the interval all have one sign, with a margin far
+/// above their rounding error. The polynomial lies in their convex hull, so it cannot reach
+/// zero there. `false` says nothing (an infinite end, a coefficient near zero).
+///
+/// `roots_in` asks this first, so a span the curve does not cross costs one change of basis
+/// instead of the critical points' Newton solves. It never changes a root found: a skipped
+/// span has none, and every other span is solved as before. On
+/// `objects/blob.pov` (five rays in six miss the blob inside its box) `monotonic_root` took
+/// 63 % of the time.
+fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
+    let n = c.len().saturating_sub(1);
+    if n == 0 || n > MAX_DEGREE || !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return false;
+    }
+    // `a[j]`: the coefficient of s^j of p(lo + w·s), s in [0, 1]; `m[j]` the same for |p|'s
+    // coefficients and |lo|, a bound on the magnitudes every sum below adds up.
+    let (mut a, mut m) = ([0.0f64; MAX_DEGREE + 1], [0.0f64; MAX_DEGREE + 1]);
+    for j in 0..=n {
+        a[j] = c[n - j];
+        m[j] = c[n - j].abs();
+    }
+    // Taylor shift by `lo` (repeated synthetic division), then scale by the width.
+    for i in 0..n {
+        for j in (i..n).rev() {
+            a[j] += lo * a[j + 1];
+            m[j] += lo.abs() * m[j + 1];
+        }
+    }
+    let w = hi - lo;
+    let mut wj = 1.0;
+    for j in 0..=n {
+        a[j] *= wj;
+        m[j] *= wj;
+        wj *= w;
+    }
+    let magnitude: f64 = m[..=n].iter().sum();
+    if !magnitude.is_finite() || magnitude == 0.0 {
+        return false;
+    }
+    // Rounding is below (n + 1)² ulps of `magnitude`; the margin is 10⁴ times more.
+    let tol = 1e-10 * magnitude;
+    // b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · a_j.
+    let mut sign = 0.0;
+    for i in 0..=n {
+        let (mut b, mut cij, mut cnj) = (0.0, 1.0, 1.0);
+        for (j, &aj) in a[..=i].iter().enumerate() {
+            b += cij / cnj * aj;
+            cij = cij * (i - j) as f64 / (j + 1) as f64;
+            cnj = cnj * (n - j) as f64 / (j + 1) as f64;
+        }
+        if b.is_nan() || b.abs() <= tol || (sign != 0.0 && b.signum() != sign) {
+            return false;
+        }
+        sign = b.signum();
+    }
+    true
 }
 
 /// The root of `c` in `[a, b]`, where `c` is monotonic, if its sign changes or it touches zero.
@@ -444,6 +523,50 @@ mod tests {
         assert!(n >= 1 && (out[0] - 2.0).abs() < 1e-6, "{:?}", &out[..n]);
         assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0]), 0.0, 10.0), Some(4.0));
         assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0]), 5.0, 10.0), None);
+    }
+
+    /// The Bernstein test only ever skips spans without a root: over seeded random real roots
+    /// (some doubled, some clustered), scales and intervals, a skipped interval holds none of
+    /// them, and it does skip most intervals far from the roots.
+    #[test]
+    fn no_root_test_never_skips_a_root() {
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rand = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut skipped, mut far) = (0, 0);
+        for case in 0..20_000 {
+            let degree = 1 + case % 6;
+            let spread = [1e-3, 1.0, 1e3][case % 3];
+            let mut roots: Vec<f64> = (0..degree).map(|_| (rand() * 2.0 - 1.0) * spread).collect();
+            if case % 5 == 0 && degree > 1 {
+                roots[1] = roots[0];
+            }
+            if case % 7 == 0 && degree > 1 {
+                roots[1] = roots[0] * (1.0 + 1e-9);
+            }
+            let scale = [1.0, -3e-7, 2e5][case % 3];
+            let c: Vec<f64> = from_roots(&roots).iter().map(|k| k * scale).collect();
+            let lo = (rand() * 2.4 - 1.2) * spread;
+            let hi = lo + rand() * spread;
+            let holds = roots.iter().any(|&r| r >= lo && r <= hi);
+            let skip = certainly_no_root(&c, lo, hi);
+            assert!(!(skip && holds), "case {case}: {roots:?} in [{lo}, {hi}] skipped");
+            let gap = roots.iter().map(|&r| (r - lo).abs().min((r - hi).abs())).fold(f64::INFINITY, f64::min);
+            if !holds && gap > 0.5 * (hi - lo) + 0.2 * spread {
+                far += 1;
+                skipped += skip as usize;
+            }
+        }
+        assert!(skipped * 10 > far * 8, "only {skipped} of {far} root-free far intervals skipped");
+        // A root on an end, or a double root touching zero inside, is never skipped.
+        assert!(!certainly_no_root(&from_roots(&[1.0, 1.0]), 0.0, 2.0));
+        assert!(!certainly_no_root(&from_roots(&[2.0]), 0.0, 2.0));
+        assert!(certainly_no_root(&from_roots(&[3.0, 5.0]), 0.0, 2.0));
+        assert!(!certainly_no_root(&from_roots(&[3.0, 5.0]), 0.0, f64::INFINITY));
     }
 }
 

@@ -19,6 +19,8 @@ use crate::lanes::{Lane, V3};
 
 /// Samples per piece of the ray.
 const SAMPLES: usize = 12;
+/// Golden-section steps of the grazing search: 0.618⁴⁰ ≈ 4e-9 of the two steps searched.
+const GOLDEN_STEPS: usize = 40;
 
 #[derive(Clone, Copy, Debug)]
 pub struct Superellipsoid {
@@ -126,13 +128,22 @@ impl Superellipsoid {
         // the smallest sample. Search the two steps around it for the minimum.
         if fa > 0.0 && f_best < 0.25 {
             let (mut l, mut h) = ((best - step).max(a), (best + step).min(b));
+            // Golden section, each step reusing the inner point it keeps: one evaluation per
+            // step, not two. 40 steps narrow two sample steps to 1e-8 of them. The search
+            // (60 steps of two evaluations, each three `powf`s) was most of
+            // objects/superel1.pov's time: rays passing near the surface all take it.
             let g = 0.618_033_988_749_895;
-            for _ in 0..60 {
-                let (m1, m2) = (h - g * (h - l), l + g * (h - l));
-                if f(m1) < f(m2) {
-                    h = m2;
+            let (mut m1, mut m2) = (h - g * (h - l), l + g * (h - l));
+            let (mut f1, mut f2) = (f(m1), f(m2));
+            for _ in 0..GOLDEN_STEPS {
+                if f1 < f2 {
+                    (h, m2, f2) = (m2, m1, f1);
+                    m1 = h - g * (h - l);
+                    f1 = f(m1);
                 } else {
-                    l = m1;
+                    (l, m1, f1) = (m1, m2, f2);
+                    m2 = l + g * (h - l);
+                    f2 = f(m2);
                 }
             }
             let m = 0.5 * (l + h);

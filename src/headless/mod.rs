@@ -1,4 +1,4 @@
-//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, `survey`, and the shared plumbing (loading,
+//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, `survey`, `path orbit`, and the shared plumbing (loading,
 //! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 
 pub mod bench;
@@ -8,6 +8,7 @@ mod determinism;
 pub mod json;
 pub mod manifest;
 pub mod metrics;
+pub mod orbit;
 pub mod output;
 pub mod povray_ini;
 pub mod progress;

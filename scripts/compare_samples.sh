@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# Times every scene of the sample suite (tests/samples/scenes.txt) in POV-Ray 3.7 and in strahl
+# in the same run, and flies an orbit of each in the window, then writes a Markdown table:
+#
+#   scripts/compare_samples.sh            # writes docs/perf/samples-$(date +%F).md
+#   OUT=/tmp/t.md scripts/compare_samples.sh
+#
+# Per scene, from a temporary copy of the scene's folder (scenes write files, e.g. fileio.pov):
+#   - POV-Ray 3.7: +W640 +H480 -A -D -V -F, all cores; its "Trace Time" (parse and bounding
+#     excluded), median of REPEATS runs;
+#   - strahl bench at 640x480 on the scene's camera, all cores: median of FRAMES frames after one
+#     warm-up (render() only, as POV-Ray's trace time excludes parsing);
+#   - the ratio POV-Ray ms / strahl ms (how many times faster strahl is);
+#   - `strahl path orbit` (ORBIT_SECONDS per turn), then `xvfb-run strahl view SCENE --path P
+#     --report R` at 640x480 (adaptive resolution, target 60 fps): the window's median presented
+#     frame rate (1000 / median frame interval) and mean render scale.
+# The seed scene (scenes/seed.pov) is measured the same way in the same run, for its ratio.
+#
+# Environment: SCENES (list file; tests/samples/scenes.txt), ROOT (/usr/share/povray-3.7/scenes),
+# REPEATS (1), FRAMES (5), ORBIT_SECONDS (5), VIEW (1; 0 skips the window), TIMEOUT (per
+# command, seconds; 600), STRAHL (the binary; target/release/strahl if built, else
+# target/quick/strahl), OUT (docs/perf/samples-DATE.md), ONLY (a grep pattern of scenes to run).
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+SCENES=${SCENES:-tests/samples/scenes.txt}
+ROOT=${ROOT:-/usr/share/povray-3.7/scenes}
+REPEATS=${REPEATS:-1}
+FRAMES=${FRAMES:-5}
+ORBIT_SECONDS=${ORBIT_SECONDS:-5}
+VIEW=${VIEW:-1}
+TIMEOUT=${TIMEOUT:-600}
+ONLY=${ONLY:-.}
+OUT=${OUT:-docs/perf/samples-$(date +%F).md}
+POV_INCLUDE=/usr/share/povray-3.7/include
+if [[ -z ${STRAHL:-} ]]; then
+    if [[ -x target/release/strahl ]]; then STRAHL=$root/target/release/strahl; else STRAHL=$root/target/quick/strahl; fi
+fi
+[[ $STRAHL == /* ]] || STRAHL=$root/$STRAHL
+
+if ! command -v povray >/dev/null 2>&1; then
+    echo "compare_samples.sh: povray not found on PATH; nothing to compare with." >&2
+    exit 1
+fi
+[[ -x $STRAHL ]] || { echo "compare_samples.sh: no strahl binary at $STRAHL (cargo build --profile quick)" >&2; exit 1; }
+if [[ $VIEW == 1 ]] && ! command -v xvfb-run >/dev/null 2>&1; then
+    echo "compare_samples.sh: xvfb-run not found; run with VIEW=0 to skip the window" >&2
+    exit 1
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print v[int((NR + 1) / 2)]; else print "" }'; }
+# A number from a JSON file: the first `"key": value` (top level keys come first in strahl's JSON).
+json_num() { sed -n "s/.*\"$2\": *\([-0-9.eE+]*\).*/\1/p" "$1" | head -1; }
+
+# POV-Ray's median trace time in ms of scene $2 in folder $1, or empty with the reason in $work/why.
+povray_ms() {
+    local dir=$1 file=$2 times=() log secs
+    for _ in $(seq "$REPEATS"); do
+        log=$(cd "$dir" && timeout "$TIMEOUT" povray +I"$file" +W640 +H480 -A -D -V -F +L"$POV_INCLUDE" 2>&1) || true
+        secs=$(echo "$log" | sed -n 's/.*Trace Time:.*(\s*\([0-9.]*\) seconds).*/\1/p' | head -1)
+        if [[ -z $secs ]]; then
+            echo "$log" | grep -m1 -i "error" | cut -c1-80 >"$work/why" || echo "no trace time" >"$work/why"
+            return
+        fi
+        times+=("$secs")
+    done
+    printf '%s\n' "${times[@]}" | median | awk '{ printf "%.1f", $1 * 1000 }'
+}
+
+# One row: "| scene | povray ms | strahl ms | ratio | fps | scale | note |".
+row() {
+    local scene=$1 dir file pov ms ratio fps scale note=""
+    dir=$work/scene
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    cp -r "$(dirname "$scene")"/. "$dir"/
+    file=$(basename "$scene")
+    pov=$(povray_ms "$dir" "$file")
+    [[ -n $pov ]] || note="POV-Ray: $(cat "$work/why")"
+    ms=""
+    if (cd "$dir" && timeout "$TIMEOUT" "$STRAHL" bench "$file" -W 640 -H 480 --frames "$FRAMES" --warmup 1 \
+        --json "$work/bench.json" >/dev/null 2>"$work/bench.err"); then
+        ms=$(json_num "$work/bench.json" median_ms | awk '{ printf "%.1f", $1 }')
+    else
+        note="${note:+$note; }strahl: $(grep -m1 error "$work/bench.err" | cut -c1-80)"
+    fi
+    ratio=$(awk -v a="$pov" -v b="$ms" 'BEGIN { if (a != "" && b != "" && b > 0) printf "%.1f", a / b; else printf "" }')
+    fps=""
+    scale=""
+    if [[ $VIEW == 1 && -n $ms ]]; then
+        rm -f "$work/orbit.path" "$work/report.json"
+        if (cd "$dir" && timeout "$TIMEOUT" "$STRAHL" path orbit "$file" -o "$work/orbit.path" \
+            --seconds "$ORBIT_SECONDS" -q 2>"$work/orbit.err") &&
+            (cd "$dir" && timeout "$TIMEOUT" xvfb-run -a -s "-screen 0 1280x1024x24" "$STRAHL" view "$file" \
+                -W 640 -H 480 --path "$work/orbit.path" --report "$work/report.json" >/dev/null 2>"$work/view.err"); then
+            fps=$(sed -n '/"frame_time_ms"/,/}/p' "$work/report.json" | sed -n 's/.*"median": *\([0-9.eE+-]*\).*/\1/p' |
+                head -1 | awk '{ if ($1 > 0) printf "%.1f", 1000 / $1 }')
+            scale=$(sed -n '/"render_scale"/,/}/p' "$work/report.json" | sed -n 's/.*"mean": *\([0-9.eE+-]*\).*/\1/p' |
+                head -1 | awk '{ printf "%.2f", $1 }')
+        else
+            note="${note:+$note; }view: $(grep -m1 -i error "$work/orbit.err" "$work/view.err" | cut -c1-80)"
+        fi
+    fi
+    echo "| $2 | $pov | $ms | $ratio | $fps | $scale | $note |"
+}
+
+commit=$(git rev-parse --short HEAD)
+branch=$(git rev-parse --abbrev-ref HEAD)
+dirty=$(git diff --quiet HEAD 2>/dev/null || echo " + uncommitted changes")
+cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
+rows=$work/rows.md
+: >"$rows"
+seed_row=$(row "$root/scenes/seed.pov" "seed.pov (scenes/)")
+while read -r scene; do
+    [[ -z $scene || $scene == \#* ]] && continue
+    echo "$scene" | grep -q -- "$ONLY" || continue
+    echo "compare_samples: $scene" >&2
+    row "$ROOT/$scene" "$scene" >>"$rows"
+done <"$SCENES"
+
+ratios=$(awk -F'|' '$5 ~ /[0-9]/ { print $5 }' "$rows" | median)
+fpss=$(awk -F'|' '$6 ~ /[0-9]/ { print $6 }' "$rows" | median)
+below=$(awk -F'|' '$5 ~ /[0-9]/ && $5 + 0 < 10 { n++ } END { print n + 0 }' "$rows")
+measured=$(awk -F'|' '$5 ~ /[0-9]/ { n++ } END { print n + 0 }' "$rows")
+seed_ratio=$(echo "$seed_row" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }')
+
+tmp_out=$OUT.tmp.$$
+{
+    echo "# strahl vs POV-Ray 3.7 on the sample suite — $(date +%F)"
+    echo
+    echo "- machine: $cpu, $(nproc) cores, **shared with other builders while this ran** (timings are noisy; ratios are from the same run, one scene after the other)"
+    echo "- POV-Ray: $(povray --version 2>&1 | grep -m1 'POV-Ray' || echo unknown), +W640 +H480 -A -D -V, all cores; its Trace Time, median of $REPEATS run(s)"
+    echo "- strahl: $commit ($branch$dirty), binary $STRAHL; \`bench\` 640x480 on the scene camera, all cores, median of $FRAMES frames after 1 warm-up"
+    echo "- ratio: POV-Ray ms / strahl ms (higher is faster); window: \`strahl path orbit --seconds $ORBIT_SECONDS\` then \`xvfb-run strahl view --path --report\` at 640x480, target 60 fps: fps = 1000 / median frame interval, scale = mean adaptive render scale"
+    echo "- generated by \`scripts/compare_samples.sh\`"
+    echo
+    echo "**Median ratio: ${ratios:-n/a}× over $measured scenes ($below below 10×); seed scene: ${seed_ratio:-n/a}× in the same run. Median window fps: ${fpss:-n/a}.**"
+    echo
+    echo "| scene | POV-Ray ms | strahl ms | ratio | window fps | scale | notes |"
+    echo "|---|---:|---:|---:|---:|---:|---|"
+    echo "$seed_row"
+    cat "$rows"
+} >"$tmp_out"
+mv "$tmp_out" "$OUT"
+echo "wrote $OUT" >&2

@@ -18,7 +18,7 @@
 #
 # Environment: SCENES (list file; tests/samples/scenes.txt), ROOT (/usr/share/povray-3.7/scenes),
 # REPEATS (1), FRAMES (5), ORBIT_SECONDS (5), VIEW (1; 0 skips the window), TIMEOUT (per
-# command, seconds; 600), STRAHL (the binary; target/release/strahl if built, else
+# command, seconds; 600), NOTE (a line for the machine's state), STRAHL (the binary; target/release/strahl if built, else
 # target/quick/strahl), OUT (docs/perf/samples-DATE.md), ONLY (a grep pattern of scenes to run).
 set -euo pipefail
 
@@ -133,7 +133,7 @@ tmp_out=$OUT.tmp.$$
 {
     echo "# strahl vs POV-Ray 3.7 on the sample suite — $(date +%F)"
     echo
-    echo "- machine: $cpu, $(nproc) cores, **shared with other builders while this ran** (timings are noisy; ratios are from the same run, one scene after the other)"
+    echo "- machine: $cpu, $(nproc) cores, shared (timings are noisy; ratios are from the same run, one scene after the other)${NOTE:+; $NOTE}"
     echo "- POV-Ray: $(povray --version 2>&1 | grep -m1 'POV-Ray' || echo unknown), +W640 +H480 -A -D -V, all cores; its Trace Time, median of $REPEATS run(s)"
     echo "- strahl: $commit ($branch$dirty), binary $STRAHL; \`bench\` 640x480 on the scene camera, all cores, median of $FRAMES frames after 1 warm-up"
     echo "- ratio: POV-Ray ms / strahl ms (higher is faster); window: \`strahl path orbit --seconds $ORBIT_SECONDS\` then \`xvfb-run strahl view --path --report\` at 640x480, target 60 fps: fps = 1000 / median frame interval, scale = mean adaptive render scale"

@@ -147,6 +147,33 @@ pub fn inside_lanes_f64<L: Lane>(frame: &cuboid::BoxFrame, p: V3<L>, inside: imp
 
 /// An f64 affine map as f32: the cast every shape's frame goes through once, after composing
 /// in f64.
+/// A ray `o + t·d` (object space) taken about its point nearest the object origin, so that
+/// polynomial surfaces are solved in well-scaled numbers: `p` is that point, `u` the unit
+/// direction, and a distance `s` along `u` from `p` is at `t = t_c + s / len`.
+#[derive(Clone, Copy, Debug)]
+pub struct CentredRay {
+    pub p: [f64; 3],
+    pub u: [f64; 3],
+    pub t_c: f64,
+    pub len: f64,
+}
+
+/// `o + t·d` as a `CentredRay`; `None` for a zero, infinite or NaN direction.
+#[inline]
+pub fn centred_ray(o: [f64; 3], d: [f64; 3]) -> Option<CentredRay> {
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let len2 = dot(d, d);
+    // NaN compares false everywhere: each test also rejects it.
+    if len2.is_nan() || len2 <= 0.0 || !len2.is_finite() {
+        return None;
+    }
+    let len = len2.sqrt();
+    let u = [d[0] / len, d[1] / len, d[2] / len];
+    let t_c = -dot(o, d) / len2;
+    let p = [o[0] + t_c * d[0], o[1] + t_c * d[1], o[2] + t_c * d[2]];
+    Some(CentredRay { p, u, t_c, len })
+}
+
 pub fn affine_f32(a: &glam::DAffine3) -> glam::Affine3A {
     glam::Affine3A::from_mat3_translation(a.matrix3.as_mat3(), a.translation.as_vec3())
 }

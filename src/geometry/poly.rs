@@ -150,16 +150,8 @@ impl Poly {
         if t_max.is_nan() || t_min.is_nan() || t_max <= t_min {
             return None;
         }
-        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let len2 = dot(d, d);
-        if len2.is_nan() || len2 <= 0.0 || !len2.is_finite() {
-            return None;
-        }
-        let len = len2.sqrt();
-        let u = [d[0] / len, d[1] / len, d[2] / len];
         // s: distance along u from p, the ray's point nearest the object origin; t = t_c + s/len.
-        let t_c = -dot(o, d) / len2;
-        let p = [o[0] + t_c * d[0], o[1] + t_c * d[1], o[2] + t_c * d[2]];
+        let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
         let n = self.order;
         // The table of powers is sized for the order: zeroing one for degree 16 on every ray
         // (6.9 kB) was a fifth of objects/csg/hfclip.pov's time, whose clipping cylinder is a

@@ -41,15 +41,7 @@ impl Torus {
 /// the lane will hold them.
 fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let len2 = dot(d, d);
-    // NaN compares false everywhere: each test below also rejects it.
-    if len2.is_nan() || len2 <= 0.0 || !len2.is_finite() {
-        return None;
-    }
-    let len = len2.sqrt();
-    let u = [d[0] / len, d[1] / len, d[2] / len];
-    let t_c = -dot(o, d) / len2;
-    let p = [o[0] + t_c * d[0], o[1] + t_c * d[1], o[2] + t_c * d[2]];
+    let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
     let outer = 1.0 + minor;
     let reach2 = outer * outer - dot(p, p);
     if reach2.is_nan() || reach2 < 0.0 {

@@ -125,22 +125,30 @@ impl<'a> Tracer<'a> {
         // POV-Ray shades the side the ray sees: flip the normal towards the viewer.
         let entering = geometric.dot(ray.dir) < 0.0;
         let facing = if entering { geometric } else { -geometric };
-        let normal = match &material.normal {
-            Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
-            None => facing,
-        };
-        let pigment = self.pigment_at(material, hit.shape, p);
-        Surface { p, facing, normal, entering, material, pigment, shape: hit.shape }
+        self.dressed(p, facing, entering, hit.shape, material)
     }
 
     /// `surface` as `material` of a pattern of materials shows it.
     fn surface_as<'s>(&self, s: &Surface<'s>, material: &'s Material) -> Surface<'s> {
+        self.dressed(s.p, s.facing, s.entering, s.shape, material)
+    }
+
+    /// A hit's surface in `material`: its normal pattern and pigment at `p`.
+    #[inline(always)]
+    fn dressed<'s>(
+        &self,
+        p: Vec3,
+        facing: Vec3,
+        entering: bool,
+        shape: HitShape,
+        material: &'s Material,
+    ) -> Surface<'s> {
         let normal = match &material.normal {
-            Some(n) => perturb_normal(n, s.p, s.facing, self.pattern_quality()),
-            None => s.facing,
+            Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
+            None => facing,
         };
-        let pigment = self.pigment_at(material, s.shape, s.p);
-        Surface { normal, material, pigment, ..*s }
+        let pigment = self.pigment_at(material, shape, p);
+        Surface { p, facing, normal, entering, material, pigment, shape }
     }
 
     /// `material`'s pigment at hit point `p` of `shape`: in 3-D pattern space, or at the

@@ -1,7 +1,7 @@
 //! `material { }` (POV-Ray 3.4.5.5.3): lowered to the texture and interior it carries. A
 //! transform inside moves only what the material holds when it is written.
 
-use super::textures::{layer_over, transform_texture};
+use super::texture_block::{layer_over, transform_texture};
 use super::Lowerer;
 use crate::pov::ast::{Material, MaterialItem};
 use crate::pov::source::{Diag, PResult};

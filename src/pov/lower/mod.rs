@@ -9,6 +9,7 @@ mod blob;
 mod camera;
 mod eval;
 mod fileio;
+mod finish;
 mod functions;
 mod height_field;
 mod images;
@@ -19,6 +20,7 @@ mod material;
 mod objects;
 mod sweeps;
 mod text;
+mod texture_block;
 mod textures;
 
 use std::rc::Rc;

@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::textures::{layer_over, texture_uv_span, transform_texture, uv_span};
+use super::texture_block::{layer_over, texture_uv_span, transform_texture, uv_span};
 use super::Lowerer;
 use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt};

@@ -1,20 +1,19 @@
-//! Surface blocks → `PigmentDesc`, `NormalDesc`, `FinishDesc`, `TextureDesc`, `InteriorDesc`.
-//! A block that starts with a declared name copies it, then applies the rest in written order.
+//! Pigment and normal blocks → `PigmentDesc`, `NormalDesc`: patterns, their modifiers, colour,
+//! pigment and normal maps. A block that starts with a declared name copies it, then applies the
+//! rest in written order. (Textures: `texture_block`; finishes and interiors: `finish`.)
 
 use glam::DVec3;
 
 use super::Lowerer;
 use crate::pov::ast::{
-    ColorItem, ColorKey, ColorMap, ColorMapBody, Expr, ExprKind, Finish, FinishItem, FinishKey, Interior, InteriorItem,
-    Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem, Stmt, Texture, TextureItem, Turb, TurbKind,
-    WarpAst,
+    ColorItem, ColorKey, ColorMap, ColorMapBody, Expr, ExprKind, Normal, NormalItem, PatternAst, PatternMod, Pigment,
+    PigmentItem, Stmt, Turb, TurbKind, WarpAst,
 };
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    Color, ColorMapEntry, FadeDesc, FinishDesc, Fractal, FractalKind, InteriorDesc, NormalDesc, NormalPattern,
-    PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc, Transform, Turbulence,
-    Warp, Wave,
+    Color, ColorMapEntry, Fractal, FractalKind, NormalDesc, NormalPattern, PatternDesc, PatternKind, PigmentDesc,
+    PigmentPattern, Transform, Turbulence, Warp, Wave,
 };
 
 /// POV-Ray's `bumps` amount when none is written.
@@ -224,7 +223,7 @@ impl Lowerer<'_> {
     }
 
     /// The pattern a keyword names, with its argument.
-    fn pattern_kind(&mut self, pa: &PatternAst) -> PResult<PatternKind> {
+    pub(super) fn pattern_kind(&mut self, pa: &PatternAst) -> PResult<PatternKind> {
         let arg = |l: &Self, default: f64| match &pa.arg {
             Some(e) => l.float(e),
             None => Ok(default),
@@ -374,7 +373,7 @@ impl Lowerer<'_> {
     }
 
     /// Applies one modifier to a pattern.
-    fn pattern_mod(&mut self, m: &PatternMod, pd: &mut PatternDesc) -> PResult<()> {
+    pub(super) fn pattern_mod(&mut self, m: &PatternMod, pd: &mut PatternDesc) -> PResult<()> {
         match m {
             PatternMod::Wave(w, e) => {
                 pd.wave = match w.as_str() {
@@ -616,191 +615,6 @@ impl Lowerer<'_> {
         }
         Ok(NormalDesc { pattern, turbulence: turb.finish(), transform })
     }
-
-    pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {
-        let mut out = self.default_texture.finish;
-        for item in &f.items {
-            match item {
-                FinishItem::Base(e) => match self.declared(e)? {
-                    Some(Value::Finish(base)) => out = *base,
-                    Some(other) => return Err(other.wrong_kind(e.span, "a declared finish")),
-                    None => return Err(Diag::new(e.span, "expected a declared finish")),
-                },
-                FinishItem::Set(key, e) => match key {
-                    FinishKey::Ambient => out.ambient = self.color(e)?.rgb,
-                    FinishKey::Reflection => out.reflection = self.color(e)?.rgb,
-                    FinishKey::Diffuse => out.diffuse = self.float(e)?,
-                    FinishKey::Brilliance => out.brilliance = self.float(e)?,
-                    FinishKey::Phong => out.phong = self.float(e)?,
-                    FinishKey::PhongSize => out.phong_size = self.float(e)?,
-                    FinishKey::Specular => out.specular = self.float(e)?,
-                    FinishKey::Roughness => {
-                        let r = self.float(e)?;
-                        if r <= 0.0 {
-                            return Err(Diag::new(e.span, "roughness must be positive"));
-                        }
-                        out.roughness = r;
-                    }
-                    FinishKey::Metallic => out.metallic = self.float(e)?,
-                    FinishKey::Emission => out.emission = self.color(e)?.rgb,
-                    FinishKey::ReflectionExponent => out.reflection_exponent = self.float(e)?,
-                    FinishKey::ConserveEnergy => out.conserve_energy = self.float(e)? != 0.0,
-                    FinishKey::DiffuseAlbedo => {
-                        out.diffuse = self.float(e)?;
-                        out.albedo.diffuse = true;
-                    }
-                    FinishKey::PhongAlbedo => {
-                        out.phong = self.float(e)?;
-                        out.albedo.phong = true;
-                    }
-                    FinishKey::SpecularAlbedo => {
-                        out.specular = self.float(e)?;
-                        out.albedo.specular = true;
-                    }
-                },
-                FinishItem::Reflection(r) => {
-                    out.reflection = self.color(&r.max)?.rgb;
-                    out.reflection_fresnel = match &r.fresnel {
-                        Some(e) => self.float(e)? != 0.0,
-                        None => false,
-                    };
-                    // One colour is a constant reflection, but a Fresnel one rises from zero.
-                    out.reflection_min = match &r.min {
-                        Some(e) => Some(self.color(e)?.rgb),
-                        None if out.reflection_fresnel => Some(DVec3::ZERO),
-                        None => None,
-                    };
-                    if let Some(e) = &r.falloff {
-                        out.reflection_falloff = self.float(e)?;
-                    }
-                    if let Some(e) = &r.exponent {
-                        out.reflection_exponent = self.float(e)?;
-                    }
-                    if let Some(e) = &r.metallic {
-                        out.reflection_metallic = self.float(e)?;
-                    }
-                }
-            }
-        }
-        Ok(out)
-    }
-
-    pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
-        let mut out = self.default_texture.clone();
-        let mut pattern: Option<PatternDesc> = None;
-        // The textures of a list pattern (`checker texture {..} texture {..}`), or of a map.
-        let mut list: Vec<TextureDesc> = Vec::new();
-        let mut texture_map: Option<Vec<(f64, TextureDesc)>> = None;
-        let mut pattern_transform = Transform::default();
-        for item in &t.items {
-            match item {
-                TextureItem::Base(e) => match self.declared(e)? {
-                    Some(Value::Texture(base)) => out = (**base).clone(),
-                    Some(other) => return Err(other.wrong_kind(e.span, "a declared texture")),
-                    None => return Err(Diag::new(e.span, "expected a declared texture")),
-                },
-                TextureItem::Pigment(p) => {
-                    out.pigment = self.pigment(p)?;
-                    out.uv_mapping |= uv_span(p).is_some();
-                }
-                TextureItem::UvMapping(_) => out.uv_mapping = true,
-                TextureItem::Normal(n) => out.normal = Some(self.normal(n)?),
-                TextureItem::Finish(f) => out.finish = self.finish_block(f)?,
-                TextureItem::Transform(tr) => {
-                    let tr = self.transform(tr)?;
-                    // The texture's own transforms move a uv-mapped pigment in uv space.
-                    out.transform_by(&tr);
-                    if pattern.is_some() {
-                        // The pattern that picks the textures moves with them.
-                        pattern_transform = pattern_transform.then(&tr);
-                    }
-                    list.iter_mut().for_each(|t| transform_texture(t, &tr));
-                    if let Some(m) = &mut texture_map {
-                        m.iter_mut().for_each(|(_, t)| transform_texture(t, &tr));
-                    }
-                }
-                TextureItem::Pattern(pa) => {
-                    let kind = self.pattern_kind(pa)?;
-                    list.clear();
-                    for t in &pa.textures {
-                        list.push(self.texture(t)?);
-                    }
-                    pattern = Some(PatternDesc::new(kind));
-                }
-                TextureItem::ImagePattern(im, _) => pattern = Some(PatternDesc::new(PatternKind::Image(im.clone()))),
-                TextureItem::MaterialMap(im, textures, transforms, _) => {
-                    // Palette index k picks texture k: a map with a hard step at each index.
-                    let mut m = Vec::with_capacity(textures.len());
-                    for (k, t) in textures.iter().enumerate() {
-                        m.push((k as f64 / 255.0, self.texture(t)?));
-                    }
-                    let mut local = Transform::default();
-                    for tr in transforms {
-                        let tr = self.transform(tr)?;
-                        m.iter_mut().for_each(|(_, t)| transform_texture(t, &tr));
-                        local = local.then(&tr);
-                    }
-                    texture_map = Some(m);
-                    pattern = Some(PatternDesc::new(PatternKind::Image(im.clone())));
-                    pattern_transform = local;
-                }
-                TextureItem::Mod(m) => {
-                    if let Some(pd) = &mut pattern {
-                        self.pattern_mod(m, pd)?;
-                    }
-                }
-                TextureItem::TextureMap(entries, _) => {
-                    let mut m = Vec::with_capacity(entries.len());
-                    for (v, t) in entries {
-                        m.push((self.float(v)?, self.texture(t)?));
-                    }
-                    m.sort_by(|a, b| a.0.total_cmp(&b.0));
-                    texture_map = Some(m);
-                }
-                TextureItem::Layer(t) => {
-                    let upper = self.texture(t)?;
-                    layer_over(&mut out, upper);
-                }
-            }
-        }
-        if let Some(pd) = pattern {
-            texture_pattern(&mut out, pd, list, texture_map, pattern_transform);
-        }
-        Ok(out)
-    }
-
-    pub(super) fn interior(&mut self, i: &Interior) -> PResult<InteriorDesc> {
-        let mut out = InteriorDesc::default();
-        // POV-Ray's defaults: distance and power 0 (no fading), colour black.
-        let mut fade = FadeDesc { distance: 0.0, power: 0.0, color: DVec3::ZERO };
-        for item in &i.items {
-            match item {
-                InteriorItem::Base(e) => match self.declared(e)? {
-                    Some(Value::Interior(base)) => {
-                        out = base.clone();
-                        if let Some(f) = &base.fade {
-                            fade = **f;
-                        }
-                    }
-                    Some(other) => return Err(other.wrong_kind(e.span, "a declared interior")),
-                    None => return Err(Diag::new(e.span, "expected a declared interior")),
-                },
-                InteriorItem::Ior(e) => {
-                    let ior = self.float(e)?;
-                    if ior <= 0.0 {
-                        return Err(Diag::new(e.span, "ior must be positive"));
-                    }
-                    out.ior = ior;
-                }
-                InteriorItem::FadeDistance(e) => fade.distance = self.float(e)?,
-                InteriorItem::FadePower(e) => fade.power = self.float(e)?,
-                InteriorItem::FadeColor(e) => fade.color = self.color(e)?.rgb,
-            }
-        }
-        // Off while either is 0, as POV-Ray documents.
-        out.fade = (fade.distance != 0.0 && fade.power != 0.0).then(|| Box::new(fade));
-        Ok(out)
-    }
 }
 
 /// POV-Ray 3.7's map for `wood` without a `color_map`: light tan up to 0.6, then dark brown,
@@ -949,81 +763,4 @@ fn sorted_lookup(entries: &[ColorMapEntry], v: f64) -> Color {
         Some(i) => blend(entries[i - 1], entries[i], v),
         None => entries[entries.len() - 1].color,
     }
-}
-
-/// Carries a texture's patterns along with a transform applied after them.
-/// Puts `upper` over `out` as a texture layer: the pigments stack, the upper normal (if any)
-/// replaces the lower one.
-pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
-    // Over a pattern of textures, the layer lies over each of them.
-    if let Some(p) = &mut out.pattern {
-        p.entries.iter_mut().for_each(|t| layer_over(t, upper.clone()));
-    }
-    let below = std::mem::take(&mut out.pigment);
-    let mut layers = match below.pattern {
-        PigmentPattern::Layered(l) if below.transform.is_identity() => l,
-        _ => vec![below],
-    };
-    layers.push(upper.pigment);
-    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
-    if upper.normal.is_some() {
-        out.normal = upper.normal;
-    }
-}
-
-/// Moves `t` with its object by `tr`; a uv-mapped texture stays on the surface's (u, v).
-pub(super) fn transform_texture(t: &mut TextureDesc, tr: &Transform) {
-    if !t.uv_mapping {
-        t.transform_by(tr);
-    }
-}
-
-/// Where a pigment block says `uv_mapping`, if it does.
-pub(super) fn uv_span(p: &crate::pov::ast::Pigment) -> Option<Span> {
-    p.items.iter().find_map(|i| match i {
-        PigmentItem::UvMapping(span) => Some(*span),
-        _ => None,
-    })
-}
-
-/// Where a texture block says `uv_mapping` (itself or in its pigment), if it does.
-pub(super) fn texture_uv_span(t: &Texture) -> Option<Span> {
-    t.items.iter().find_map(|i| match i {
-        TextureItem::UvMapping(span) => Some(*span),
-        TextureItem::Pigment(p) => uv_span(p),
-        _ => None,
-    })
-}
-
-/// A pattern of textures (`pd` over a list's textures or a map's entries) as `out`: the
-/// pigments follow the pattern; where the textures differ in normal or finish too, they are
-/// kept whole (`TexturePatternDesc`) and the first one's normal and finish stand for the
-/// pattern only where a colour is all that is needed.
-fn texture_pattern(
-    out: &mut TextureDesc,
-    pd: PatternDesc,
-    list: Vec<TextureDesc>,
-    map: Option<Vec<(f64, TextureDesc)>>,
-    transform: Transform,
-) {
-    let is_map = map.is_some();
-    let (values, entries): (Vec<f64>, Vec<TextureDesc>) = match map {
-        Some(m) => m.into_iter().unzip(),
-        None => (Vec::new(), list),
-    };
-    let pigment = if is_map {
-        PigmentPattern::PigmentMap(pd, values.iter().copied().zip(entries.iter().map(|t| t.pigment.clone())).collect())
-    } else {
-        PigmentPattern::List(pd, entries.iter().map(|t| t.pigment.clone()).collect())
-    };
-    let selector = PigmentDesc { pattern: pigment, transform, ..Default::default() };
-    let Some(first) = entries.first() else {
-        out.pigment = selector;
-        return;
-    };
-    out.normal = first.normal.clone();
-    out.finish = first.finish;
-    let uniform = entries.iter().all(|t| t.normal == first.normal && t.finish == first.finish && t.pattern.is_none());
-    out.pattern = (!uniform).then(|| Box::new(TexturePatternDesc { selector: selector.clone(), entries }));
-    out.pigment = selector;
 }

@@ -333,6 +333,10 @@ struct ViewCmd {
     /// full-quality renders to this JSON file.
     #[arg(long, value_name = "FILE", requires = "path")]
     report: Option<PathBuf>,
+    /// While moving, render every frame afresh at the adaptive resolution instead of tracing a
+    /// quarter of the pixels and reusing the rest from the frame before.
+    #[arg(long)]
+    no_reproject: bool,
     #[command(flatten)]
     common: Common,
 }
@@ -361,6 +365,7 @@ fn view(v: ViewCmd) -> Result<(), CliError> {
         hud: v.hud,
         path: v.path.as_deref().map(|p| strahl::app::PathPlay::load(p, v.path_seconds)).transpose()?,
         report: v.report,
+        reproject: !v.no_reproject,
     };
     strahl::app::view_file(&v.scene, &v.common.include, options)
 }

@@ -12,7 +12,7 @@ use glam::Vec3;
 
 use super::aabb::node_slabs;
 use super::bvh::{Bvh, BvhNode};
-use crate::geometry::ray::RayLanes;
+use crate::geometry::ray::{Ray, RayLanes};
 use crate::lanes::{Lane, F8, M8, V3};
 
 /// Eight rays in structure-of-arrays form.
@@ -24,6 +24,17 @@ impl Ray8 {
         d: V3 { x: F8([0.0; 8]), y: F8([0.0; 8]), z: F8([0.0; 8]) },
         inv: V3 { x: F8([0.0; 8]), y: F8([0.0; 8]), z: F8([0.0; 8]) },
     };
+
+    /// Eight single rays as one packet, lane `i` ray `i`, bit for bit.
+    #[inline]
+    pub fn from_rays(rays: &[Ray; 8]) -> Ray8 {
+        let v3 = |f: &dyn Fn(&Ray) -> Vec3| V3 {
+            x: F8::from_fn(|i| f(&rays[i]).x),
+            y: F8::from_fn(|i| f(&rays[i]).y),
+            z: F8::from_fn(|i| f(&rays[i]).z),
+        };
+        Ray8 { o: v3(&|r| r.origin), d: v3(&|r| r.dir), inv: v3(&|r| r.inv_dir) }
+    }
 
     #[inline]
     pub fn set_lane(&mut self, i: usize, o: Vec3, d: Vec3, inv: Vec3) {

@@ -54,6 +54,8 @@ pub struct ViewOptions {
     pub path: Option<PathPlay>,
     /// `--report`: after the path, write frame rate and image quality here (JSON).
     pub report: Option<PathBuf>,
+    /// While moving, reuse the frame before (`render::reproject`); `false`: `--no-reproject`.
+    pub reproject: bool,
 }
 
 /// A camera path to play, and over how many seconds its t runs from 0 to 1.

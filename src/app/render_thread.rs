@@ -26,6 +26,7 @@ use crate::headless::CliError;
 use crate::render::adaptive::ScaleController;
 use crate::render::image::Image;
 use crate::render::progressive::Accumulator;
+use crate::render::reproject::{ReprojectStats, Reprojector};
 use crate::render::stats::RenderStats;
 use crate::render::{render, Quality, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
@@ -35,6 +36,13 @@ use crate::scene::build::{AccelKind, Scene};
 const SETTLE: Duration = Duration::from_millis(60);
 /// One frame shown, one in the channel, one being rendered.
 const FRAMES: usize = 3;
+
+fn encode(image: &Image, srgb: bool, frame: &mut Frame) {
+    frame.width = image.width;
+    frame.height = image.height;
+    frame.pixels.resize(image.pixels.len(), 0);
+    image.write_xrgb(srgb, &mut frame.pixels);
+}
 
 /// What to render: the camera and the full (window) resolution.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,6 +54,9 @@ pub struct View {
     pub quality: Quality,
     /// Upper bound on the adaptive scale while moving (a preset's `res_scale`; 1 = none).
     pub max_scale: f64,
+    /// Moving frames trace a quarter of their pixels and reuse the rest from the frame before
+    /// (`render::reproject`) where the camera allows it.
+    pub reproject: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -76,6 +87,8 @@ pub struct Frame {
     pub render_time: Duration,
     /// The view this frame shows.
     pub view: Option<View>,
+    /// Where a reprojected moving frame's pixels came from; `None` for frames rendered whole.
+    pub reprojected: Option<ReprojectStats>,
 }
 
 /// What the render thread needs to rebuild its scene from disk.
@@ -148,6 +161,8 @@ impl RenderThread {
             recycle: recycle_rx,
             allocated: 0,
             controller: ScaleController::new(target_fps),
+            reprojector: Reprojector::default(),
+            reprojected_quality: None,
             wake: Box::new(wake),
         };
         let handle = std::thread::Builder::new()
@@ -224,6 +239,9 @@ struct Worker {
     recycle: Receiver<Frame>,
     allocated: usize,
     controller: ScaleController,
+    /// Moving frames by reuse of the frame before; reset with a new scene or quality.
+    reprojector: Reprojector,
+    reprojected_quality: Option<Quality>,
     wake: Box<dyn Fn() + Send>,
 }
 
@@ -252,6 +270,7 @@ impl Worker {
                     // Render the same view again, from a fresh preview, with the new scene.
                     last = None;
                     acc_view = None;
+                    self.reprojector.reset();
                 }
                 (self.wake)();
                 continue;
@@ -266,8 +285,24 @@ impl Worker {
                     let w = ((view.width as f64 * scale).round() as u32).max(1);
                     let h = ((view.height as f64 * scale).round() as u32).max(1);
                     let settings = self.settings(&view, w, h, None);
-                    frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
-                    self.encode(&pass, &mut frame);
+                    if self.reprojected_quality != Some(view.quality) {
+                        self.reprojector.reset();
+                    }
+                    frame.reprojected = None;
+                    if view.reproject && Reprojector::supports(&self.scene, &view.camera) {
+                        self.reprojected_quality = Some(view.quality);
+                        let (scene, reprojector) = (&self.scene, &mut self.reprojector);
+                        let (pixels, stats, counts) =
+                            self.pool.install(|| reprojector.frame(scene, &view.camera, &settings));
+                        frame.stats = stats;
+                        frame.reprojected = Some(counts);
+                        (frame.width, frame.height) = (w, h);
+                        frame.pixels.clear();
+                        frame.pixels.extend_from_slice(pixels);
+                    } else {
+                        frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
+                        encode(&pass, self.scene.srgb, &mut frame);
+                    }
                     frame.progress = Progress::Moving;
                     frame.scale = w as f64 / view.width as f64;
                     frame.view = Some(view);
@@ -283,7 +318,8 @@ impl Worker {
                     frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
                     acc.add(&pass);
                     acc.resolve(&mut resolved);
-                    self.encode(&resolved, &mut frame);
+                    encode(&resolved, self.scene.srgb, &mut frame);
+                    frame.reprojected = None;
                     frame.progress = Progress::Refining { pass: acc.passes(), total: acc.total() };
                     frame.scale = 1.0;
                     frame.view = Some(view);
@@ -327,13 +363,6 @@ impl Worker {
     /// Whether a watched file changed (checked at most every `POLL`).
     fn files_changed(&mut self) -> bool {
         self.watch.as_mut().is_some_and(|w| w.reloader.poll())
-    }
-
-    fn encode(&self, image: &Image, frame: &mut Frame) {
-        frame.width = image.width;
-        frame.height = image.height;
-        frame.pixels.resize(image.pixels.len(), 0);
-        image.write_xrgb(self.scene.srgb, &mut frame.pixels);
     }
 
     /// Blocks until there is something to render (or quit: `None`).
@@ -432,7 +461,8 @@ mod tests {
         })
         .unwrap();
         let camera = Camera::from_desc(&desc.camera);
-        let view = View { camera, width: 64, height: 48, aa: 2, quality: Quality::default(), max_scale: 1.0 };
+        let view =
+            View { camera, width: 64, height: 48, aa: 2, quality: Quality::default(), max_scale: 1.0, reproject: true };
         rt.submit(View { camera: Camera { location: camera.location + glam::DVec3::X, ..camera }, ..view });
         let first = next_frame(&rt, &woke);
         assert_eq!(first.progress, Progress::Moving);
@@ -516,7 +546,8 @@ mod tests {
         // A camera the user has flown somewhere else than the scene's.
         let camera = Camera::from_desc(&desc.camera);
         let camera = Camera { location: camera.location + glam::DVec3::new(0.1, 0.0, 0.5), ..camera };
-        let view = View { camera, width: 32, height: 24, aa: 1, quality: Quality::default(), max_scale: 1.0 };
+        let view =
+            View { camera, width: 32, height: 24, aa: 1, quality: Quality::default(), max_scale: 1.0, reproject: true };
         rt.submit(view);
         let red = converged(&rt, &woke, view);
         rt.give_back(red.clone());

@@ -208,6 +208,7 @@ impl App {
                 aa: preset.aa,
                 quality: preset.quality,
                 max_scale: preset.max_scale,
+                reproject: self.options.reproject,
             });
         }
         if !self.render.is_alive() {

@@ -75,6 +75,12 @@ pub fn encode8(v: f32, srgb: bool) -> u8 {
     srgb_thresholds().partition_point(|&t| t <= v) as u8
 }
 
+/// One pixel as a `0RGB` word (softbuffer's format), each channel `encode8`d.
+#[inline]
+pub fn xrgb(p: Vec3, srgb: bool) -> u32 {
+    (encode8(p.x, srgb) as u32) << 16 | (encode8(p.y, srgb) as u32) << 8 | encode8(p.z, srgb) as u32
+}
+
 impl Image {
     pub fn new(width: u32, height: u32) -> Image {
         Image { width, height, pixels: vec![Vec3::ZERO; width as usize * height as usize] }
@@ -99,7 +105,7 @@ impl Image {
     /// Writes `0RGB` words (softbuffer's format) into `out`, which must hold width × height.
     pub fn write_xrgb(&self, srgb: bool, out: &mut [u32]) {
         for (o, p) in out.iter_mut().zip(&self.pixels) {
-            *o = (encode8(p.x, srgb) as u32) << 16 | (encode8(p.y, srgb) as u32) << 8 | encode8(p.z, srgb) as u32;
+            *o = xrgb(*p, srgb);
         }
     }
 }

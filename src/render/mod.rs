@@ -13,10 +13,12 @@ pub mod packet;
 pub mod precision;
 pub mod preset;
 pub mod progressive;
+pub mod reproject;
 pub mod resample;
 pub mod shade;
 pub mod stats;
 pub mod trace;
+pub mod visibility;
 
 use glam::Vec3;
 use rayon::prelude::*;
@@ -28,6 +30,7 @@ use crate::geometry::ray::Ray;
 use crate::lanes::{Lane, F8, V3};
 use crate::scene::build::Scene;
 use image::Image;
+use reproject::Pinhole;
 use stats::RenderStats;
 use trace::{RayKind, Tracer};
 
@@ -78,6 +81,38 @@ pub struct RenderSettings {
     /// order and dividing by aa² gives bit for bit the full `aa` render; `progressive` does that,
     /// so a window can show a picture after one pass and converge to `strahl render --aa N`.
     pub subsample: Option<(u32, u32)>,
+    /// Which of the frame's pixels to trace; the image holds only those (`Lattice`).
+    pub lattice: Lattice,
+}
+
+/// Every `step`-th pixel of a frame across and down, starting at pixel (`x`, `y`): the pixels
+/// a reprojecting window traces fresh in one frame. Pixel (i, j) of the image rendered with a
+/// lattice is, bit for bit, pixel (x + step·i, y + step·j) of the full render.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Lattice {
+    pub step: u32,
+    pub x: u32,
+    pub y: u32,
+}
+
+impl Lattice {
+    /// Every pixel.
+    pub const FULL: Lattice = Lattice { step: 1, x: 0, y: 0 };
+
+    /// The image size of this lattice's pixels in a `width`×`height` frame (offsets past the
+    /// frame's edge are clamped to it).
+    pub fn size(self, width: u32, height: u32) -> (u32, u32) {
+        let step = self.step.max(1);
+        let n = |len: u32, o: u32| (len - o.min(len - 1)).div_ceil(step);
+        (n(width.max(1), self.x), n(height.max(1), self.y))
+    }
+
+    /// Whether frame pixel (`x`, `y`) is one of the lattice's.
+    #[inline]
+    pub fn contains(self, x: u32, y: u32) -> bool {
+        let step = self.step.max(1);
+        x >= self.x && y >= self.y && (x - self.x).is_multiple_of(step) && (y - self.y).is_multiple_of(step)
+    }
 }
 
 impl Default for RenderSettings {
@@ -90,6 +125,7 @@ impl Default for RenderSettings {
             tile: 16,
             packets: true,
             subsample: None,
+            lattice: Lattice::FULL,
         }
     }
 }
@@ -102,7 +138,7 @@ impl Default for RenderSettings {
 /// it to f32 once; packets build their lanes from those same single rays, so packets and
 /// single rays trace the same bits.
 #[derive(Clone, Copy, Debug)]
-struct RayGen<'a> {
+pub(crate) struct RayGen<'a> {
     origin: Vec3,
     direction: Vec3,
     right: Vec3,
@@ -117,7 +153,7 @@ struct RayGen<'a> {
 }
 
 impl<'a> RayGen<'a> {
-    fn new(camera: &Camera, scene: &'a Scene, quality: &Quality) -> RayGen<'a> {
+    pub(crate) fn new(camera: &Camera, scene: &'a Scene, quality: &Quality) -> RayGen<'a> {
         let frame = &scene.frame;
         let lens = (camera.lens != Lens::default()).then(|| {
             LensRays::new(
@@ -161,15 +197,22 @@ impl<'a> RayGen<'a> {
         d.normalize()
     }
 
+    /// The plain perspective camera's vectors in render space, `None` for every other
+    /// projection and for focal blur (whose rays do not meet in one point).
+    pub(crate) fn pinhole(&self) -> Option<Pinhole> {
+        let Self { origin, direction, right, up, .. } = *self;
+        self.lens.is_none().then(|| Pinhole::new(origin, direction, right, up))
+    }
+
     /// Whether blocks of this camera's rays may be traced as packets: every pixel must have a
     /// ray (fisheye and omnimax leave corners black, so they go through single rays).
-    fn packets(&self) -> bool {
+    pub(crate) fn packets(&self) -> bool {
         self.lens.is_none_or(|l| l.covers_image())
     }
 
     /// The ray of blur sample `s` of sub-sample (sx, sy) of pixel (x, y) through a lens
     /// (`self.lens` is `Some`); `None` where the projection has no ray.
-    fn lens_ray(&self, p: &PixelSample, s: u32) -> Option<Ray> {
+    pub(crate) fn lens_ray(&self, p: &PixelSample, s: u32) -> Option<Ray> {
         let lens = self.lens.as_ref().expect("lens rays need a lens");
         let PixelSample { x, y, sx, sy, w, h, aa } = *p;
         let cell = |i: u32, si: u32, n: u32, jitter: f64| (i as f64 + (si as f64 + jitter) / aa as f64) / n as f64;
@@ -189,14 +232,14 @@ impl<'a> RayGen<'a> {
 
 /// Where one sample of a pixel lies: pixel (x, y) of a w×h image, sub-sample (sx, sy) of aa×aa.
 #[derive(Clone, Copy, Debug)]
-struct PixelSample {
-    x: u32,
-    y: u32,
-    sx: u32,
-    sy: u32,
-    w: u32,
-    h: u32,
-    aa: u32,
+pub(crate) struct PixelSample {
+    pub x: u32,
+    pub y: u32,
+    pub sx: u32,
+    pub sy: u32,
+    pub w: u32,
+    pub h: u32,
+    pub aa: u32,
 }
 
 /// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
@@ -231,16 +274,91 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
                 }
             }
         } else {
-            for y in t.y0..t.y1 {
-                for x in t.x0..t.x1 {
+            for j in t.y0..t.y1 {
+                for i in t.x0..t.x1 {
+                    let (x, y) = raster.frame_pixel(i, j);
                     let c = render_pixel(&mut tracer, &gen, x, y, raster);
                     // SAFETY: tiles partition the image, so each pixel is written by one task.
-                    unsafe { raster.out.write((y * raster.w + x) as usize, c) };
+                    unsafe { raster.out.write((j * raster.out_w + i) as usize, c) };
                 }
             }
         }
         tracer.stats
     })
+}
+
+/// Traces the frame pixels `pixels` (indices `y · width + x` of `settings`' frame) into `out`
+/// (as long), each exactly as `render` traces it; the lattice is ignored. For the scattered
+/// pixels a reprojecting window traces beside its lattice: 64 at a time as one packet (eight
+/// rows of eight) where `render` would use packets, so they cost what a block costs.
+pub fn render_pixels(
+    scene: &Scene,
+    camera: &Camera,
+    settings: &RenderSettings,
+    pixels: &[u32],
+    out: &mut [Vec3],
+) -> RenderStats {
+    /// Pixels per task: one packet's worth.
+    const CHUNK: usize = (packet::BLOCK * packet::BLOCK) as usize;
+    assert_eq!(pixels.len(), out.len(), "one output per pixel");
+    let gen = RayGen::new(camera, scene, &settings.quality);
+    let use_packets = settings.packets && packet::supported(scene) && gen.packets() && gen.lens.is_none();
+    let (w, h, aa) = (settings.width.max(1), settings.height.max(1), settings.aa.max(1));
+    let samples = match settings.subsample {
+        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
+        None => Samples::All,
+    };
+    // Colours are returned, not written through `out` here.
+    let raster =
+        Raster { w, h, out_w: w, lattice: Lattice::FULL, aa, samples, out: SharedPixels(std::ptr::null_mut()) };
+    let mut stats = pixels
+        .par_chunks(CHUNK)
+        .zip(out.par_chunks_mut(CHUNK))
+        .map(|(ps, os)| {
+            let mut tracer = Tracer::new(scene, &settings.quality);
+            if use_packets {
+                render_listed_block(&mut tracer, &gen, ps, &raster, os);
+            } else {
+                for (&p, o) in ps.iter().zip(os) {
+                    *o = render_pixel(&mut tracer, &gen, p % w, p / w, raster);
+                }
+            }
+            tracer.stats
+        })
+        .reduce(RenderStats::default, |mut a, b| {
+            a += b;
+            a
+        });
+    stats.pixels = pixels.len() as u64;
+    stats.samples = match samples {
+        Samples::All => stats.pixels * (aa * aa) as u64,
+        Samples::One(..) => stats.pixels,
+    };
+    stats
+}
+
+/// Up to 64 listed pixels as one packet: lane i of row r is pixel `8r + i` of the list (the
+/// last one repeated to fill the packet), each ray made with `block_rays`' operations.
+fn render_listed_block(tracer: &mut Tracer, gen: &RayGen, pixels: &[u32], raster: &Raster, out: &mut [Vec3]) {
+    let Raster { w, h, aa, samples, .. } = *raster;
+    let lanes = (packet::BLOCK as usize).min(pixels.len());
+    let rows = pixels.len().div_ceil(packet::BLOCK as usize);
+    let b = Block { x: 0, y: 0, w: lanes as u32, h: rows as u32 };
+    let mut sums = [[Vec3::ZERO; 8]; 8];
+    let pixel = |r: usize, i: usize| pixels[(r * 8 + i).min(pixels.len() - 1)];
+    samples.each(aa, |sx, sy| {
+        let rays: [Ray8; 8] = std::array::from_fn(|r| {
+            let (xs, ys) = (F8::from_fn(|i| (pixel(r, i) % w) as f32), F8::from_fn(|i| (pixel(r, i) / w) as f32));
+            let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
+            let v = (ys + F8::splat((sy as f32 + 0.5) / aa as f32)) / F8::splat(h as f32);
+            let d = gen.dir_lanes(u, v);
+            Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+        });
+        add_traced(tracer, &rays, &b, &mut sums);
+    });
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = raster.resolve(sums[k / 8][k % 8]);
+    }
 }
 
 /// The pixels `[x0, x1) × [y0, y1)` of one tile.
@@ -252,17 +370,30 @@ pub(crate) struct Tile {
     pub y1: u32,
 }
 
-/// What every tile of a frame shares: the image size, the samples to trace and where pixels go.
+/// What every tile of a frame shares: the frame's size, the samples to trace and where pixels
+/// go. Tiles, blocks and `out` are in image pixels, which are the frame's pixels where the
+/// lattice is `Lattice::FULL`.
 #[derive(Clone, Copy)]
 pub(crate) struct Raster {
+    /// The frame's size, which rays are made for.
     pub w: u32,
     pub h: u32,
+    /// The image's width (the row stride of `out`).
+    pub out_w: u32,
+    pub lattice: Lattice,
     pub aa: u32,
     pub samples: Samples,
     pub out: SharedPixels,
 }
 
 impl Raster {
+    /// The frame pixel that image pixel (`i`, `j`) shows.
+    #[inline(always)]
+    pub fn frame_pixel(&self, i: u32, j: u32) -> (u32, u32) {
+        let Lattice { step, x, y } = self.lattice;
+        (x + step * i, y + step * j)
+    }
+
     /// A pixel's value from the sum of its traced samples: the mean over aa×aa, or a single
     /// sub-sample unaveraged (`RenderSettings::subsample`).
     #[inline]
@@ -282,7 +413,13 @@ pub(crate) fn render_tiles(
     image: &mut Image,
     trace_tile: impl Fn(Tile, Raster) -> RenderStats + Sync,
 ) -> RenderStats {
-    let (w, h) = (settings.width.max(1), settings.height.max(1));
+    let (fw, fh) = (settings.width.max(1), settings.height.max(1));
+    let (w, h) = settings.lattice.size(fw, fh);
+    let lattice = Lattice {
+        step: settings.lattice.step.max(1),
+        x: settings.lattice.x.min(fw - 1),
+        y: settings.lattice.y.min(fh - 1),
+    };
     image.resize(w, h);
     let tile = settings.tile.max(1);
     let tiles_x = w.div_ceil(tile);
@@ -292,7 +429,7 @@ pub(crate) fn render_tiles(
         Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
         None => Samples::All,
     };
-    let raster = Raster { w, h, aa, samples, out: SharedPixels(image.pixels.as_mut_ptr()) };
+    let raster = Raster { w: fw, h: fh, out_w: w, lattice, aa, samples, out: SharedPixels(image.pixels.as_mut_ptr()) };
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
         .map(|t| {
@@ -312,11 +449,11 @@ pub(crate) fn render_tiles(
 }
 
 /// A rectangle of at most 8×8 pixels traced as one packet.
-struct Block {
-    x: u32,
-    y: u32,
-    w: u32,
-    h: u32,
+pub(crate) struct Block {
+    pub x: u32,
+    pub y: u32,
+    pub w: u32,
+    pub h: u32,
 }
 
 impl Samples {
@@ -337,21 +474,13 @@ impl Samples {
 /// The packet twin of `render_pixel` for a block: the same rays, the same per-sample clipping
 /// and the same order of additions, so both give the same bits.
 fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
-    let Raster { w, h, aa, samples, out } = raster;
+    let Raster { aa, samples, out, .. } = raster;
     let mut sums = [[Vec3::ZERO; 8]; 8];
-    // Lanes past the block's edge repeat its last pixel; their results are dropped.
-    let xs = F8::from_fn(|i| (b.x + (i as u32).min(b.w - 1)) as f32);
     if gen.lens.is_some() {
         samples.each(aa, |sx, sy| render_block_lens(tracer, gen, b, raster, (sx, sy), &mut sums));
     } else {
         samples.each(aa, |sx, sy| {
-            let rays: [Ray8; 8] = std::array::from_fn(|r| {
-                let y = b.y + (r as u32).min(b.h - 1);
-                let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
-                let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-                let d = gen.dir_lanes(u, F8::splat(v));
-                Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
-            });
+            let rays = block_rays(gen, b, &raster, (sx, sy));
             add_traced(tracer, &rays, b, &mut sums);
         });
     }
@@ -359,9 +488,25 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
         for i in 0..b.w {
             let c = raster.resolve(sums[r as usize][i as usize]);
             // SAFETY: tiles partition the image and blocks partition tiles.
-            unsafe { out.write(((b.y + r) * w + b.x + i) as usize, c) };
+            unsafe { out.write(((b.y + r) * raster.out_w + b.x + i) as usize, c) };
         }
     }
+}
+
+/// The perspective rays of sub-sample (sx, sy) of a block's pixels, row by row, with the
+/// operations `render_pixel` uses for each. Lanes past the block's edge repeat its last pixel;
+/// their results are dropped.
+#[inline(always)]
+pub(crate) fn block_rays(gen: &RayGen, b: &Block, raster: &Raster, (sx, sy): (u32, u32)) -> [Ray8; 8] {
+    let Raster { w, h, aa, .. } = *raster;
+    let xs = F8::from_fn(|i| raster.frame_pixel(b.x + (i as u32).min(b.w - 1), 0).0 as f32);
+    std::array::from_fn(|r| {
+        let y = raster.frame_pixel(0, b.y + (r as u32).min(b.h - 1)).1;
+        let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
+        let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
+        let d = gen.dir_lanes(u, F8::splat(v));
+        Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+    })
 }
 
 /// Traces one block's rays as packets and adds each valid lane's output sample to `acc`
@@ -398,19 +543,14 @@ fn render_block_lens(
     let mut cell = [[Vec3::ZERO; 8]; 8];
     for s in 0..n {
         let rays: [Ray8; 8] = std::array::from_fn(|r| {
-            let y = b.y + (r as u32).min(b.h - 1);
+            let y = raster.frame_pixel(0, b.y + (r as u32).min(b.h - 1)).1;
             let lane: [Ray; 8] = std::array::from_fn(|i| {
-                let x = b.x + (i as u32).min(b.w - 1);
+                let x = raster.frame_pixel(b.x + (i as u32).min(b.w - 1), 0).0;
                 let p = PixelSample { x, y, sx, sy, w, h, aa };
                 // `packets()` admits only projections with a ray for every pixel.
                 gen.lens_ray(&p, s).unwrap_or_else(|| Ray::new(gen.origin, gen.direction))
             });
-            let v3 = |f: &dyn Fn(&Ray) -> Vec3| V3 {
-                x: F8::from_fn(|i| f(&lane[i]).x),
-                y: F8::from_fn(|i| f(&lane[i]).y),
-                z: F8::from_fn(|i| f(&lane[i]).z),
-            };
-            Ray8 { o: v3(&|r| r.origin), d: v3(&|r| r.dir), inv: v3(&|r| r.inv_dir) }
+            Ray8::from_rays(&lane)
         });
         add_traced(tracer, &rays, b, &mut cell);
     }

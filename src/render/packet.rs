@@ -35,7 +35,7 @@ pub const BLOCK: u32 = 8;
 const MAX_PACKET_LIGHTS: usize = 8;
 
 /// `no hit` in a lane's id.
-const NO_HIT: u32 = u32::MAX;
+pub(crate) const NO_HIT: u32 = u32::MAX;
 /// Ids at or above this are planes.
 const PLANE_ID: u32 = 1 << 31;
 
@@ -75,11 +75,21 @@ enum RowShading<'a> {
 
 /// The single ray of lane `i`.
 #[inline(always)]
-fn lane_ray(rays: &Ray8, i: usize) -> Ray {
+pub(crate) fn lane_ray(rays: &Ray8, i: usize) -> Ray {
     Ray { origin: rays.o.lane(i), dir: rays.d.lane(i), inv_dir: rays.inv.lane(i) }
 }
 
 /// What lane's hit `id` (and `face`, `NO_HIT` unless the hit is on a mesh) is.
+/// The id of the object `shape` lies on, as a packet lane holds it: a primitive or CSG leaf
+/// (a mesh for its faces), or `PLANE_ID + i` for plane `i`; never `NO_HIT`.
+#[inline(always)]
+pub(crate) fn object_id(shape: HitShape) -> u32 {
+    match shape {
+        HitShape::Prim(i) | HitShape::Face { prim: i, .. } => i,
+        HitShape::Plane(i) => PLANE_ID + i,
+    }
+}
+
 #[inline(always)]
 fn hit_shape(id: u32, face: u32) -> Option<HitShape> {
     match id {
@@ -90,8 +100,42 @@ fn hit_shape(id: u32, face: u32) -> Option<HitShape> {
     }
 }
 
+/// The nearest hits of one block of primary rays: per row the hit distances, and per lane the
+/// hit's id (a primitive, CSG leaf or mesh; `PLANE_ID + i` for plane `i`; `NO_HIT`) and face
+/// (`NO_HIT` unless the hit is on a mesh).
+pub(crate) struct BlockHits {
+    pub t: [F8; 8],
+    pub ids: [[u32; 8]; 8],
+    pub faces: [[u32; 8]; 8],
+}
+
+impl BlockHits {
+    /// Lane `i` of row `r` as a hit, `None` where the ray missed.
+    #[inline(always)]
+    pub fn hit(&self, r: usize, i: usize) -> Option<Hit> {
+        hit_shape(self.ids[r][i], self.faces[r][i]).map(|shape| Hit { t: self.t[r].0[i], shape })
+    }
+}
+
+/// The nearest hits of one block of primary rays, as `Tracer::trace` finds them for each ray
+/// (resolved to CSG leaves and mesh faces, refined in f64 where the tracer refines).
+pub(crate) fn primary_hits(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> BlockHits {
+    #[cfg(target_arch = "x86_64")]
+    if has_avx2() {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { primary_hits_avx2(tracer, rays, rows, lanes) };
+    }
+    primary_hits_generic(tracer, rays, rows, lanes)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn primary_hits_avx2(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> BlockHits {
+    primary_hits_generic(tracer, rays, rows, lanes)
+}
+
 #[inline(always)]
-fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> BlockHits {
     let scene = tracer.scene;
     let mut t = [F8::splat(MISS); 8];
     let mut ids = [[NO_HIT; 8]; 8];
@@ -127,6 +171,13 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             }
         }
     }
+    BlockHits { t, ids, faces }
+}
+
+#[inline(always)]
+fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+    let scene = tracer.scene;
+    let BlockHits { t, ids, faces } = primary_hits_generic(tracer, rays, rows, lanes);
     let n = (rows * lanes) as u64;
     tracer.stats.primary_rays += n;
     tracer.stats.max_depth = tracer.stats.max_depth.max(1);

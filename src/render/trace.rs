@@ -75,11 +75,18 @@ impl<'a> Tracer<'a> {
     #[inline(always)]
     fn trace_limited(&mut self, ray: &Ray, max: f32, level: u32, weight: f32, kind: RayKind) -> Vec3 {
         self.stats.count_ray(kind, level);
-        let hit = match self.scene.intersect(ray, max, &mut self.stats) {
+        let hit = self.nearest_hit(ray, max);
+        self.shade_hit(ray, hit.as_ref(), level, weight)
+    }
+
+    /// The nearest hit nearer than `max` as `trace` shades it (refined in f64 where the
+    /// tracer refines), not shaded.
+    #[inline(always)]
+    pub fn nearest_hit(&mut self, ray: &Ray, max: f32) -> Option<Hit> {
+        match self.scene.intersect(ray, max, &mut self.stats) {
             Some(hit) if self.refines() => Some(self.scene.refine(ray, hit)),
             hit => hit,
-        };
-        self.shade_hit(ray, hit.as_ref(), level, weight)
+        }
     }
 
     /// The colour of `ray` given its nearest hit (refined already): shaded, or the background

@@ -83,6 +83,14 @@ fn patterns_simple_match_povray() {
     );
 }
 
+/// `slope_map` in normals: two- and three-entry maps, a sharp edge and a step in height, a map
+/// starting above 0, a declared map, wave types and frequency, on a plane, spheres and boxes
+/// (the Hermite slopes per unit of each interval, differentiated on POV-Ray's tetrahedron).
+#[test]
+fn slope_maps_match_povray() {
+    check_psnr("slope_map", &scene("slope_map"), 35.0);
+}
+
 /// `spiral1` with its default triangle wave, ramp and sine waves, a frequency and a rotation
 /// (the arms counted from the −y axis, as POV-Ray's).
 #[test]

@@ -154,6 +154,8 @@ const SCENES: &[(&str, Expect)] = &[
             noise: true,
         },
     ),
+    // 66.97 dB: slope_map (seven maps on onion) on boxes.
+    ("textures/normals/slopemap.pov", Psnr),
     (
         "textures/finishes/var_reflection.pov",
         Gap {

@@ -758,6 +758,7 @@ fn shipped_scenes_print_and_load_back() {
             "patterns_function.pov",
             "functions_pigment.pov",
             "layered.pov",
+            "layers_finish.pov",
             "tiles.pov",
             "materials.pov",
             // uv_vectors, uv_mapping and mesh cameras, which the printer does not write yet.

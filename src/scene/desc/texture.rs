@@ -448,6 +448,10 @@ pub struct TexturePatternDesc {
     /// over the entries' pigments, with the pattern's modifiers and transforms.
     pub selector: PigmentDesc,
     pub entries: Vec<TextureDesc>,
+    /// Layered textures (`texture { A } texture { B }`) whose layers differ in finish or
+    /// reflect or shine: `entries` are the layers, bottom first, and `selector` is their
+    /// composited pigment; the renderer shades each layer with its own finish.
+    pub layered: bool,
 }
 
 impl TextureDesc {

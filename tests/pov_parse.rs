@@ -2275,3 +2275,21 @@ fn normal_accuracy_is_read_and_must_be_positive() {
     let (l, c, m) = err("accuracy_zero", "plane { y, 0\n normal { gradient x accuracy 0 } }");
     assert_eq!((l, c), (2, 31), "{m}");
 }
+
+#[test]
+fn layers_keep_their_finishes_only_where_they_shade_differently() {
+    let d = dir("layers_finish");
+    let text = "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <0,0,1,0.5> } } }\n\
+                sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <0,0,1,0.5> } finish { phong 1 } } }\n\
+                sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.3 } } texture { pigment { rgbt 0.5 } }\n\
+                  texture { pigment { rgbt 0.9 } finish { reflection 0.2 } } }";
+    let s = load_scene(&write(&d, "scene.pov", text), &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(s.objects[0].texture.pattern.is_none(), "same plain finish: one composited pigment");
+    let layers = |i: usize| {
+        let p = s.objects[i].texture.pattern.as_ref().expect("layers kept whole");
+        assert!(p.layered);
+        p.entries.iter().map(|t| (t.finish.phong, t.finish.diffuse, t.finish.reflection.x)).collect::<Vec<_>>()
+    };
+    assert_eq!(layers(1), vec![(0.0, 0.6, 0.0), (1.0, 0.6, 0.0)]);
+    assert_eq!(layers(2), vec![(0.0, 0.3, 0.0), (0.0, 0.6, 0.0), (0.0, 0.6, 0.2)]);
+}

@@ -498,12 +498,14 @@ fn uv_mapping_matches_povray() {
 }
 
 /// `bump_map`: grey and colour images as heights, `bump_size` (negative too), `interpolate 2`,
-/// `use_color`, repeated and rotated. 26.95 dB: each rim texel is tilted where POV-Ray tilts it
-/// and by about as much, but POV-Ray also tilts the texel after a rim along x (not y) the other
-/// way (−3 levels at bump_size 1, −44 at 3), which strahl does not; the threshold guards the rest.
+/// `use_color`, repeated and rotated. 27.28 dB (26.95 before): heights differentiated as
+/// POV-Ray 3.7 does (forward to the next row down in y, centrally on that row in x, by the
+/// height difference a texel: `shading::normal`), which matches its tilt texel for texel on a
+/// plane; the tiles still differ where the disc's rim meets the light at a slant (bump_size 2
+/// and 3 and the colour image, 21.8–27 dB a tile), unexplained; the threshold guards the rest.
 #[test]
 fn bump_maps_match_povray() {
-    check_psnr("bump_maps", &scene("bump_maps"), 26.5);
+    check_psnr("bump_maps", &scene("bump_maps"), 27.0);
 }
 
 /// Pattern and pigment functions: a pigment function's channels in function patterns (the

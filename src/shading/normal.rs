@@ -257,9 +257,20 @@ fn forward_gradient<L: Lane>(pat: &Pattern32, at: impl Fn(Vec3) -> L) -> V3<L> {
         Kind32::Ripples | Kind32::Waves => (NORMAL_DELTA, WAVE_NORMAL_GAIN / NORMAL_DELTA),
         _ => (NORMAL_DELTA, PATTERN_NORMAL_GAIN / NORMAL_DELTA),
     };
-    let dy = if matches!(pat.kind, Kind32::Image(_)) { -delta } else { delta };
+    let image = matches!(pat.kind, Kind32::Image(_));
+    let dy = if image { -delta } else { delta };
     let (inv, inv_y) = (L::splat(inv), L::splat(inv * dy.signum()));
-    V3 { x: (at(Vec3::X * delta) - v0) * inv, y: (at(Vec3::Y * dy) - v0) * inv_y, z: (at(Vec3::Z * delta) - v0) * inv }
+    // POV-Ray 3.7 differentiates a bump_map forward along y (to the next row down) and
+    // centrally along x on that next row (half the difference of the texels either side):
+    // across a 16-texel disc's edge (heights 30 and 230) `bump_size 1` tilts by 0.392 over
+    // two texels in x, by 0.784 over one in y, and a row whose edge starts a texel later than
+    // the row below shows the lower row's x ridge; a 16-texel ramp tilts by its step a texel.
+    let dx = if image {
+        (at(Vec3::new(delta, dy, 0.0)) - at(Vec3::new(-delta, dy, 0.0))) * L::splat(0.5)
+    } else {
+        at(Vec3::X * delta) - v0
+    };
+    V3 { x: dx * inv, y: (at(Vec3::Y * dy) - v0) * inv_y, z: (at(Vec3::Z * delta) - v0) * inv }
 }
 
 /// The unit vertices of the tetrahedron POV-Ray 3.7 samples a pattern on for its normal, in

@@ -225,6 +225,8 @@ fn check_bumps(dir: &Path) {
                 pattern: NormalPattern::Bumps(0.4),
                 turbulence: None,
                 transform: scaled(DVec3::splat(scale)),
+                slope_map: Vec::new(),
+                accuracy: 0.02,
             },
             &DMat4::IDENTITY,
         );

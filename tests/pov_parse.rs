@@ -2221,3 +2221,75 @@ fn texture_patterns_keep_their_textures_whole_where_finishes_differ() {
     assert_eq!((l, c), (2, 39), "{m}");
     assert!(m.contains("pigment") && m.contains("material_map"), "{m}");
 }
+
+// ---- slope_map ------------------------------------------------------------------------------
+
+#[test]
+fn slope_map_is_read_sorted_and_declared_maps_are_named() {
+    use strahl::scene::desc::SlopeEntry;
+    let d = dir("slope_map");
+    let text = "#declare S = slope_map { [1 <0,-1>] [0 <0,1>] [0.5 <1,1>] }\n\
+                plane { y, 0 normal { gradient x 1 slope_map { [0, <0, 1>] [0.5 <1, 1>] [0.5 <1, -1>] [1 <0, -1>] } } }\n\
+                plane { y, 0 normal { onion slope_map { S } } }";
+    let path = write(&d, "scene.pov", text);
+    let (s, w) = load_scene_with_warnings(&path, &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(w.is_empty(), "{w:?}");
+    let e = |value, height, slope| SlopeEntry { value, height, slope };
+    let map = |i: usize| s.objects[i].texture.normal.as_ref().map(|n| n.slope_map.clone()).unwrap();
+    assert_eq!(map(0), vec![e(0.0, 0.0, 1.0), e(0.5, 1.0, 1.0), e(0.5, 1.0, -1.0), e(1.0, 0.0, -1.0)]);
+    assert_eq!(map(1), vec![e(0.0, 0.0, 1.0), e(0.5, 1.0, 1.0), e(1.0, 0.0, -1.0)]);
+}
+
+#[test]
+fn slope_map_on_a_normal_of_its_own_shape_is_warned_and_ignored() {
+    let d = dir("slope_map_waves");
+    let p = write(&d, "s.pov", "plane { y, 0 normal { waves 1\n slope_map { [0 <0,0>] [1 <1,0>] } } }");
+    let (s, w) = load_scene_with_warnings(&p, &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    let text: Vec<String> = w.iter().map(|w| w.to_string()).collect();
+    assert!(text.iter().any(|t| t.contains("2:2") && t.contains("no effect on `waves`")), "{text:?}");
+    assert!(s.objects[0].texture.normal.as_ref().unwrap().slope_map.is_empty());
+}
+
+#[test]
+fn bad_slope_maps_are_located_errors() {
+    let (l, c, m) = err("slope_empty", "plane { y, 0\n normal { gradient x slope_map { } } }");
+    assert_eq!((l, c), (2, 22), "{m}");
+    assert!(m.contains("at least one entry"), "{m}");
+    let (l, c, m) = err("slope_unclosed", "plane { y, 0 normal { gradient x slope_map {\n [0 <0,1> } } }");
+    assert_eq!((l, c), (2, 11), "{m}");
+    assert!(m.contains("slope_map entry"), "{m}");
+    let (l, _, m) = err("slope_pigment", "plane { y, 0 normal { gradient x slope_map {\n [0 pigment { rgb 1 }] } } }");
+    assert_eq!(l, 2, "{m}");
+    let (l, _, m) =
+        err("slope_name", "#declare P = pigment { rgb 1 }\nplane { y, 0 normal { gradient x slope_map { P } } }");
+    assert_eq!(l, 2, "{m}");
+    assert!(m.contains("slope_map"), "{m}");
+}
+
+#[test]
+fn normal_accuracy_is_read_and_must_be_positive() {
+    let d = dir("accuracy");
+    let p = write(&d, "s.pov", "plane { y, 0 normal { gradient x accuracy 0.005 } }");
+    let s = load_scene(&p, &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(s.objects[0].texture.normal.as_ref().unwrap().accuracy, 0.005);
+    let (l, c, m) = err("accuracy_zero", "plane { y, 0\n normal { gradient x accuracy 0 } }");
+    assert_eq!((l, c), (2, 31), "{m}");
+}
+
+#[test]
+fn layers_keep_their_finishes_only_where_they_shade_differently() {
+    let d = dir("layers_finish");
+    let text = "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <0,0,1,0.5> } } }\n\
+                sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <0,0,1,0.5> } finish { phong 1 } } }\n\
+                sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.3 } } texture { pigment { rgbt 0.5 } }\n\
+                  texture { pigment { rgbt 0.9 } finish { reflection 0.2 } } }";
+    let s = load_scene(&write(&d, "scene.pov", text), &std_include()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(s.objects[0].texture.pattern.is_none(), "same plain finish: one composited pigment");
+    let layers = |i: usize| {
+        let p = s.objects[i].texture.pattern.as_ref().expect("layers kept whole");
+        assert!(p.layered);
+        p.entries.iter().map(|t| (t.finish.phong, t.finish.diffuse, t.finish.reflection.x)).collect::<Vec<_>>()
+    };
+    assert_eq!(layers(1), vec![(0.0, 0.6, 0.0), (1.0, 0.6, 0.0)]);
+    assert_eq!(layers(2), vec![(0.0, 0.3, 0.0), (0.0, 0.6, 0.0), (0.0, 0.6, 0.2)]);
+}

@@ -121,6 +121,8 @@ fn random_texture(r: &mut Rng, object: &Transform) -> TextureDesc {
         pattern: NormalPattern::Bumps(r.f(0.0, 1.0)),
         turbulence: None,
         transform: xf(DMat4::from_scale(DVec3::splat(r.f(0.1, 1.0)))).then(object),
+        slope_map: Vec::new(),
+        accuracy: 0.02,
     });
     let finish = FinishDesc {
         ambient: DVec3::splat(r.f(0.0, 0.3)),
@@ -629,7 +631,11 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
                 (NormalPattern::Bumps(x), NormalPattern::Bumps(y)) => close(*x, *y),
                 (x, y) => x == y,
             };
-            same_pattern && turb_ok(&p.turbulence, &q.turbulence) && close_xf(&p.transform, &q.transform)
+            same_pattern
+                && turb_ok(&p.turbulence, &q.turbulence)
+                && close_xf(&p.transform, &q.transform)
+                && p.slope_map == q.slope_map
+                && close(p.accuracy, q.accuracy)
         }
         _ => false,
     };
@@ -752,6 +758,7 @@ fn shipped_scenes_print_and_load_back() {
             "patterns_function.pov",
             "functions_pigment.pov",
             "layered.pov",
+            "layers_finish.pov",
             "tiles.pov",
             "materials.pov",
             // uv_vectors, uv_mapping and mesh cameras, which the printer does not write yet.

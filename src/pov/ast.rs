@@ -86,6 +86,8 @@ pub enum DeclValue {
     Interior(Interior),
     Material(Material),
     ColorMap(ColorMap),
+    /// `#declare S = slope_map { .. }`.
+    SlopeMap(SlopeMapBody),
     Object(Object),
     Camera(Vec<CameraItem>),
     Light(Light),
@@ -420,14 +422,23 @@ pub enum NormalItem {
     Pattern(PatternAst, Option<Expr>),
     Mod(PatternMod),
     BumpSize(Expr),
+    /// `accuracy F`: the distance of the samples a pattern's gradient is taken from.
+    Accuracy(Expr),
     /// `normal_map { [v normal { .. }] .. }` (entries may also be bare normal bodies).
     NormalMap(Vec<(Expr, Normal)>, Span),
-    /// `slope_map` and the like: read, not modelled.
-    Ignored(String, Span),
+    /// `slope_map { [v, <height, slope>] .. }` (or a declared map's name), with its keyword.
+    SlopeMap(SlopeMapBody, Span),
     /// `bump_map { ... [bump_size F] }` with its bump size, if given inside.
     BumpMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
     /// `image_pattern { }` with its optional amount.
     ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
+}
+
+/// What a `slope_map { }` holds: `(value, <height, slope>, entry span)` entries, or a name.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SlopeMapBody {
+    Entries(Vec<(Expr, Expr, Span)>),
+    Named(Expr),
 }
 
 #[derive(Clone, Debug, PartialEq)]

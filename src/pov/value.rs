@@ -30,6 +30,8 @@ pub enum Value {
     Material(Box<MaterialValue>),
     /// A declared `color_map`, already in the sorted form the renderer reads.
     ColorMap(Vec<ColorMapEntry>),
+    /// A declared `slope_map`, sorted by value.
+    SlopeMap(Vec<crate::scene::desc::SlopeEntry>),
     Object(Box<Group>),
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
@@ -231,6 +233,7 @@ impl Value {
             Value::Interior(_) => "an interior",
             Value::Material(_) => "a material",
             Value::ColorMap(_) => "a color_map",
+            Value::SlopeMap(_) => "a slope_map",
             Value::Object(_) => "an object",
             Value::Camera(_) => "a camera",
             Value::Light(..) => "a light_source",

@@ -282,6 +282,9 @@ pub enum Select {
     Average(Vec<f32>),
     /// A list pattern: the value is the cell's index.
     List,
+    /// Layered textures: the entries are the layers, bottom first, each shaded with its own
+    /// finish (`Tracer::shade_layers`); no pattern picks them.
+    Layers,
 }
 
 /// Weights below this do not get an entry shaded (a value a rounding away from an entry).
@@ -291,6 +294,7 @@ impl Blend {
     fn from_desc(d: &TexturePatternDesc, interior: &InteriorDesc, world_from_render: &DMat4) -> Blend {
         let selector = Pigment::from_desc(&d.selector, world_from_render);
         let select = match &d.selector.pattern {
+            _ if d.layered => Select::Layers,
             PigmentPattern::PigmentMap(pd, e) if matches!(pd.kind, crate::scene::desc::PatternKind::Average) => {
                 Select::Average(e.iter().map(|(w, _)| *w as f32).collect())
             }
@@ -309,6 +313,8 @@ impl Blend {
             return;
         }
         match &self.select {
+            // Not a weighting: `Tracer::shade_layers` shades every layer that shows.
+            Select::Layers => f(0, 1.0),
             Select::List => {
                 let k = (1..n).rev().find(|&k| k as f32 - 0.5 < v).unwrap_or(0);
                 f(k, 1.0);

@@ -371,7 +371,20 @@ fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
 fn normal(s: &mut String, n: &NormalDesc, object_inverse: &DMat4) {
     let _ = match n.pattern {
         NormalPattern::Bumps(amount) => write!(s, "normal {{ bumps {}", num(amount)),
-        NormalPattern::Pattern(ref pd, amount) => write!(s, "normal {{ {} bump_size {}", pattern_text(pd), num(amount)),
+        NormalPattern::Pattern(ref pd, amount) => {
+            let _ = write!(s, "normal {{ {} bump_size {}", pattern_text(pd), num(amount));
+            if n.accuracy != 0.02 {
+                let _ = write!(s, " accuracy {}", num(n.accuracy));
+            }
+            if !n.slope_map.is_empty() {
+                let _ = write!(s, " slope_map {{");
+                for e in &n.slope_map {
+                    let _ = write!(s, " [{}, <{}, {}>]", num(e.value), num(e.height), num(e.slope));
+                }
+                let _ = write!(s, " }}");
+            }
+            Ok(())
+        }
         NormalPattern::Map(ref pd, ref entries) => {
             let _ = write!(s, "normal {{ {} normal_map {{ ", pattern_text(pd));
             for (v, e) in entries {

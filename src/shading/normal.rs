@@ -14,16 +14,69 @@ use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
 use super::patterns::{Kind32, Pattern32};
 use super::pigment::{pattern_from_render, PatternQuality, Period};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{NormalDesc, NormalPattern};
+use crate::scene::desc::{NormalDesc, NormalPattern, SlopeEntry};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum NormalPattern32 {
     Bumps(f32),
     /// Any pattern of the kernel layer as a height: the normal tilts down its gradient by
-    /// `amount` (the gradient by forward differences of `NORMAL_DELTA` in pattern space).
-    Pattern(Box<Pattern32>, f32),
+    /// `amount` (the gradient by forward differences of `NORMAL_DELTA` in pattern space),
+    /// the value first turned into a height by the `slope_map` if there is one.
+    Pattern(Box<Pattern32>, f32, Option<Box<SlopeMap32>>),
     /// `normal_map`: entries sorted by value, each a whole normal of its own.
     Map(Box<Pattern32>, Vec<(f32, NormalF32)>),
+}
+
+/// A `slope_map` ready to evaluate: one cubic per interval of positive width, in powers of the
+/// interval's parameter t (the Hermite curve with the entries' slopes per unit of t).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SlopeMap32 {
+    /// `(v0, v1, 1 / (v1 − v0), [c0, c1, c2, c3])`: height = c0 + c1·t + c2·t² + c3·t³.
+    intervals: Vec<(f32, f32, f32, [f32; 4])>,
+    /// The first entry's value and height (the height below it), and the last's (above it).
+    first: (f32, f32),
+    last: (f32, f32),
+}
+
+impl SlopeMap32 {
+    /// `None` for an empty map. `entries` are sorted by value (`lower::textures`).
+    pub fn new(entries: &[SlopeEntry]) -> Option<SlopeMap32> {
+        let (first, last) = (entries.first()?, entries.last()?);
+        let intervals = entries
+            .windows(2)
+            .filter(|w| w[1].value > w[0].value)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                // Hermite from (h0, s0) at t = 0 to (h1, s1) at t = 1, collected by powers of t.
+                let c = [
+                    a.height,
+                    a.slope,
+                    -3.0 * a.height - 2.0 * a.slope + 3.0 * b.height - b.slope,
+                    2.0 * a.height + a.slope - 2.0 * b.height + b.slope,
+                ];
+                (a.value as f32, b.value as f32, (1.0 / (b.value - a.value)) as f32, c.map(|x| x as f32))
+            })
+            .collect();
+        Some(SlopeMap32 {
+            intervals,
+            first: (first.value as f32, first.height as f32),
+            last: (last.value as f32, last.height as f32),
+        })
+    }
+
+    /// The height at pattern value `v`: the first entry's below it, the last's above it, the
+    /// lowest interval holding `v` between (so at a value written twice the later entry starts
+    /// the next interval).
+    #[inline(always)]
+    pub fn height<L: Lane>(&self, v: L) -> L {
+        let mut out = L::splat(self.last.1);
+        for &(v0, v1, inv, [c0, c1, c2, c3]) in self.intervals.iter().rev() {
+            let t = (v - L::splat(v0)) * L::splat(inv);
+            let h = L::splat(c0) + t * (L::splat(c1) + t * (L::splat(c2) + t * L::splat(c3)));
+            out = L::select(v.le(L::splat(v1)), h, out);
+        }
+        L::select(v.le(L::splat(self.first.0)), L::splat(self.first.1), out)
+    }
 }
 
 /// The finite-difference step for pattern normals, in pattern units.
@@ -61,6 +114,8 @@ pub struct NormalF32 {
     pub normal_to_pattern: Mat3A,
     /// Carries a pattern-space normal back: the transpose of the linear part.
     pub normal_from_pattern: Mat3A,
+    /// `accuracy`: the tetrahedron's radius for the general pattern kinds.
+    pub accuracy: f32,
 }
 
 /// Our dnoise is a little rougher than POV-Ray's: on a bumpy plane (`bumps 0.4`, scale 1 and
@@ -79,7 +134,11 @@ impl NormalF32 {
         let linear = pattern_from_render.matrix3;
         let pattern = match &d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
-            NormalPattern::Pattern(p, a) => NormalPattern32::Pattern(Box::new(Pattern32::from_desc(p)), *a as f32),
+            NormalPattern::Pattern(p, a) => NormalPattern32::Pattern(
+                Box::new(Pattern32::from_desc(p)),
+                *a as f32,
+                SlopeMap32::new(&d.slope_map).map(Box::new),
+            ),
             NormalPattern::Map(p, entries) => NormalPattern32::Map(
                 Box::new(Pattern32::from_desc(p)),
                 entries.iter().map(|(v, n)| (*v as f32, NormalF32::from_desc(n, world_from_render))).collect(),
@@ -91,6 +150,7 @@ impl NormalF32 {
             pattern_from_render,
             normal_to_pattern: linear.inverse().transpose(),
             normal_from_pattern: linear.transpose(),
+            accuracy: d.accuracy as f32,
         }
     }
 }
@@ -114,7 +174,7 @@ pub fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>,
             let bumped = np.add(dnoise_lanes(p).scale(L::splat(*amount)));
             bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
         }
-        NormalPattern32::Pattern(pat, amount) => pattern_normal(nrm, pat, *amount, p, n, q),
+        NormalPattern32::Pattern(pat, amount, slope) => pattern_normal(nrm, pat, *amount, slope.as_deref(), p, n, q),
         NormalPattern32::Map(pat, entries) => normal_map(pat, entries, p, p_render, n, q),
     }
 }
@@ -154,11 +214,39 @@ fn pattern_normal<L: Lane>(
     nrm: &NormalF32,
     pat: &Pattern32,
     amount: f32,
+    slope: Option<&SlopeMap32>,
     p: V3<L>,
     n: V3<L>,
     q: PatternQuality,
 ) -> V3<L> {
-    let at = |d: Vec3| pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
+    // With a slope_map the gradient is the height's, by the same differences: POV-Ray 3.7
+    // differentiates across the map too (a step in height shows as a ridge as wide as the
+    // differences reach, measured on `[0.5 <0,0>] [0.5 <1,0>]`).
+    let at = |d: Vec3| {
+        let v = pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
+        match slope {
+            Some(m) => m.height(v),
+            None => v,
+        }
+    };
+    let grad = match &pat.kind {
+        Kind32::Image(_) | Kind32::Wrinkles | Kind32::Dents | Kind32::Ripples | Kind32::Waves => {
+            forward_gradient(pat, at)
+        }
+        _ => tetrahedron_gradient(at, nrm.accuracy),
+    };
+    let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
+    let mut bumped = np.sub(grad.scale(L::splat(amount)));
+    if matches!(pat.kind, Kind32::Wrinkles) {
+        bumped = bumped.add(V3::splat(Vec3::splat(WRINKLES_BIAS * amount)));
+    }
+    bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
+}
+
+/// The gradient by forward differences along the pattern axes, scaled by the kind's gain:
+/// the images' own texel step, and the calibrated noise and wave kinds.
+#[inline(always)]
+fn forward_gradient<L: Lane>(pat: &Pattern32, at: impl Fn(Vec3) -> L) -> V3<L> {
     let v0 = at(Vec3::ZERO);
     // Images (`bump_map`) step one texel and tilt by the height difference itself
     // (`shading::image_map::ImageLookup::normal_step`); other patterns take the gradient.
@@ -169,19 +257,47 @@ fn pattern_normal<L: Lane>(
         Kind32::Ripples | Kind32::Waves => (NORMAL_DELTA, WAVE_NORMAL_GAIN / NORMAL_DELTA),
         _ => (NORMAL_DELTA, PATTERN_NORMAL_GAIN / NORMAL_DELTA),
     };
-    let dy = if matches!(pat.kind, Kind32::Image(_)) { -delta } else { delta };
+    let image = matches!(pat.kind, Kind32::Image(_));
+    let dy = if image { -delta } else { delta };
     let (inv, inv_y) = (L::splat(inv), L::splat(inv * dy.signum()));
-    let grad = V3 {
-        x: (at(Vec3::X * delta) - v0) * inv,
-        y: (at(Vec3::Y * dy) - v0) * inv_y,
-        z: (at(Vec3::Z * delta) - v0) * inv,
+    // POV-Ray 3.7 differentiates a bump_map forward along y (to the next row down) and
+    // centrally along x on that next row (half the difference of the texels either side):
+    // across a 16-texel disc's edge (heights 30 and 230) `bump_size 1` tilts by 0.392 over
+    // two texels in x, by 0.784 over one in y, and a row whose edge starts a texel later than
+    // the row below shows the lower row's x ridge; a 16-texel ramp tilts by its step a texel.
+    let dx = if image {
+        (at(Vec3::new(delta, dy, 0.0)) - at(Vec3::new(-delta, dy, 0.0))) * L::splat(0.5)
+    } else {
+        at(Vec3::X * delta) - v0
     };
-    let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
-    let mut bumped = np.sub(grad.scale(L::splat(amount)));
-    if matches!(pat.kind, Kind32::Wrinkles) {
-        bumped = bumped.add(V3::splat(Vec3::splat(WRINKLES_BIAS * amount)));
+    V3 { x: dx * inv, y: (at(Vec3::Y * dy) - v0) * inv_y, z: (at(Vec3::Z * delta) - v0) * inv }
+}
+
+/// The unit vertices of the tetrahedron POV-Ray 3.7 samples a pattern on for its normal, in
+/// pattern space: one along +y, three below it at y = −1/3. Measured by where a step in height
+/// (`slope_map { [0.5 <0,0>] [0.5 <1,0>] }`) shows as a ridge: the samples reach 0.0192 and
+/// −0.0096 along x, 0.02 and −0.0064 along y, ±0.016 along z, at `NORMAL_DELTA` = 0.02.
+/// Their offset also explains the lean of a smooth map's measured slope (0.0230 at value
+/// 0.025 of `[0 <0,0>] [1 <1,0>]` against 0.0196 for the exact gradient).
+const TETRAHEDRON: [Vec3; 4] = [
+    Vec3::new(0.0, 1.0, 0.0),
+    Vec3::new(0.942_809, -1.0 / 3.0, 0.0),
+    Vec3::new(-0.471_405, -1.0 / 3.0, 0.816_497),
+    Vec3::new(-0.471_405, -1.0 / 3.0, -0.816_497),
+];
+
+/// The gradient (times `PATTERN_NORMAL_GAIN`) from the tetrahedron's four samples at distance
+/// `delta` (`accuracy`; POV-Ray's default `NORMAL_DELTA`): for unit
+/// vertices summing to zero, Σ dᵢ dᵢᵀ = 4/3 I, so Σ h(p + δ dᵢ) dᵢ · 3 / (4δ) is exact for a
+/// linear height. Four pattern lookups, as forward differences take.
+#[inline(always)]
+fn tetrahedron_gradient<L: Lane>(at: impl Fn(Vec3) -> L, delta: f32) -> V3<L> {
+    let k = L::splat(PATTERN_NORMAL_GAIN * 3.0 / (4.0 * delta));
+    let mut g = V3 { x: L::splat(0.0), y: L::splat(0.0), z: L::splat(0.0) };
+    for d in TETRAHEDRON {
+        g = g.add(V3::splat(d).scale(at(d * delta)));
     }
-    bumped.mat3_mul(&nrm.normal_from_pattern).normalize_or(n)
+    g.scale(k)
 }
 
 #[cfg(test)]
@@ -196,8 +312,46 @@ mod tests {
             pattern: NormalPattern::Bumps(amount),
             turbulence: None,
             transform: Transform { matrix: m, inverse: m.inverse() },
+            slope_map: Vec::new(),
+            accuracy: 0.02,
         };
         NormalF32::from_desc(&d, &DMat4::from_translation(DVec3::new(3.0, 1.0, -4.0)))
+    }
+
+    fn entry(value: f64, height: f64, slope: f64) -> SlopeEntry {
+        SlopeEntry { value, height, slope }
+    }
+
+    #[test]
+    fn slope_map_heights_follow_hermite_curves_with_slopes_per_interval() {
+        // The identity map is the value itself; `[0 <0,1>] [0.5 <1,1>]` is twice the value
+        // (slopes per unit of the interval, POV-Ray 3.7 measured); outside the map the ends hold.
+        let identity = SlopeMap32::new(&[entry(0.0, 0.0, 1.0), entry(1.0, 1.0, 1.0)]).unwrap();
+        let half = SlopeMap32::new(&[entry(0.0, 0.0, 1.0), entry(0.5, 1.0, 1.0), entry(1.0, 0.0, -1.0)]).unwrap();
+        let inner = SlopeMap32::new(&[entry(0.2, 0.3, 0.0), entry(0.8, 0.9, 0.0)]).unwrap();
+        for i in 0..=100 {
+            let v = i as f32 / 100.0;
+            assert!((identity.height(v) - v).abs() < 1e-6);
+            if v <= 0.5 {
+                assert!((half.height(v) - 2.0 * v).abs() < 1e-5, "{v}");
+            }
+            let t = ((v - 0.2) / 0.6).clamp(0.0, 1.0);
+            let smooth = 0.3 + 0.6 * t * t * (3.0 - 2.0 * t);
+            assert!((inner.height(v) - smooth).abs() < 1e-5, "{v}: {}", inner.height(v));
+        }
+        // A value written twice: the later entry starts the next interval.
+        let step =
+            SlopeMap32::new(&[entry(0.0, 0.0, 0.0), entry(0.5, 0.0, 0.0), entry(0.5, 1.0, 0.0), entry(1.0, 1.0, 0.0)])
+                .unwrap();
+        assert_eq!((step.height(0.5f32), step.height(0.5001f32)), (0.0, 1.0));
+        assert!(SlopeMap32::new(&[]).is_none());
+    }
+
+    #[test]
+    fn tetrahedron_gradient_is_exact_for_linear_heights() {
+        let g = Vec3::new(0.3, -1.2, 2.5);
+        let got = tetrahedron_gradient::<f32>(|d| 7.0 + g.dot(d), 0.02).vec3() / PATTERN_NORMAL_GAIN;
+        assert!((got - g).length() < 1e-3, "{got}");
     }
 
     #[test]
@@ -238,7 +392,13 @@ mod tests {
     fn far_bumps_reduce_by_the_noise_lattice() {
         // Bumps evaluated 256·3907 units from their origin (the camera there, the texture not
         // moved) become the numbers of the camera 3 units from it.
-        let d = NormalDesc { pattern: NormalPattern::Bumps(0.4), turbulence: None, transform: Transform::default() };
+        let d = NormalDesc {
+            pattern: NormalPattern::Bumps(0.4),
+            turbulence: None,
+            transform: Transform::default(),
+            slope_map: Vec::new(),
+            accuracy: 0.02,
+        };
         let at = |x: f64| NormalF32::from_desc(&d, &DMat4::from_translation(DVec3::new(x, 1.0, -4.0)));
         assert_eq!(at(256.0 * 3907.0 + 3.0).pattern_from_render, at(3.0).pattern_from_render);
     }

@@ -323,6 +323,7 @@ impl<'f> Lowerer<'f> {
             DeclValue::Interior(i) => Value::Interior(self.interior(i)?),
             DeclValue::Material(m) => Value::Material(Box::new(self.material(m)?)),
             DeclValue::ColorMap(m) => Value::ColorMap(self.color_map(m)?),
+            DeclValue::SlopeMap(m) => Value::SlopeMap(self.slope_map(m)?),
             DeclValue::Object(o) => Value::Object(Box::new(self.object(o)?)),
             DeclValue::Camera(items) => Value::Camera(Box::new(self.camera_state(items)?)),
             DeclValue::Light(l) => self.declared_light(l)?,

@@ -7,8 +7,9 @@ use crate::pov::ast::{PigmentItem, Texture, TextureItem};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc, Transform,
+    FinishDesc, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc, Transform,
 };
+use glam::DVec3;
 
 impl Lowerer<'_> {
     pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
@@ -99,20 +100,46 @@ impl Lowerer<'_> {
 /// Puts `upper` over `out` as a texture layer: the pigments stack, the upper normal (if any)
 /// replaces the lower one.
 pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
-    // Over a pattern of textures, the layer lies over each of them.
-    if let Some(p) = &mut out.pattern {
-        p.entries.iter_mut().for_each(|t| layer_over(t, upper.clone()));
-    }
+    // The layers so far, whole, in case they must be shaded one by one (below).
+    let mut layers = match out.pattern.take() {
+        Some(p) if p.layered => p.entries,
+        mut pattern => {
+            // Over a pattern of textures, the layer lies over each of them.
+            if let Some(p) = &mut pattern {
+                p.entries.iter_mut().for_each(|t| layer_over(t, upper.clone()));
+            }
+            let bottom = TextureDesc { pattern: None, ..out.clone() };
+            out.pattern = pattern;
+            if out.pattern.is_some() {
+                Vec::new()
+            } else {
+                vec![bottom]
+            }
+        }
+    };
     let below = std::mem::take(&mut out.pigment);
-    let mut layers = match below.pattern {
+    let mut pigments = match below.pattern {
         PigmentPattern::Layered(l) if below.transform.is_identity() => l,
         _ => vec![below],
     };
-    layers.push(upper.pigment);
-    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(layers), ..Default::default() };
+    pigments.push(upper.pigment.clone());
+    out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(pigments), ..Default::default() };
     if upper.normal.is_some() {
-        out.normal = upper.normal;
+        out.normal = upper.normal.clone();
     }
+    if layers.is_empty() {
+        return;
+    }
+    // POV-Ray shades each layer with its own finish; one finish over the composited pigment
+    // gives the same only while no layer differs in finish and none shines or reflects
+    // (every layer's highlights and reflection add up). Those keep the cheaper composite.
+    layers.push(TextureDesc { pattern: None, ..upper });
+    let bottom = &layers[0].finish;
+    let plain = |f: &FinishDesc| f.phong == 0.0 && f.specular == 0.0 && f.reflection == DVec3::ZERO;
+    if layers.iter().all(|t| t.finish == *bottom && plain(&t.finish)) {
+        return;
+    }
+    out.pattern = Some(Box::new(TexturePatternDesc { selector: out.pigment.clone(), entries: layers, layered: true }));
 }
 
 /// Moves `t` with its object by `tr`; a uv-mapped texture stays on the surface's (u, v).
@@ -168,6 +195,7 @@ fn texture_pattern(
     out.normal = first.normal.clone();
     out.finish = first.finish;
     let uniform = entries.iter().all(|t| t.normal == first.normal && t.finish == first.finish && t.pattern.is_none());
-    out.pattern = (!uniform).then(|| Box::new(TexturePatternDesc { selector: selector.clone(), entries }));
+    out.pattern =
+        (!uniform).then(|| Box::new(TexturePatternDesc { selector: selector.clone(), entries, layered: false }));
     out.pigment = selector;
 }

@@ -147,6 +147,7 @@ impl Parser<'_, '_> {
             Some("interior") => DeclValue::Interior(self.interior()?),
             Some("material") => DeclValue::Material(self.material()?),
             Some("color_map" | "colour_map") => DeclValue::ColorMap(self.color_map()?),
+            Some("slope_map") => DeclValue::SlopeMap(self.slope_map()?.0),
             Some("camera") => DeclValue::Camera(self.camera_items()?.0),
             Some("light_source") => DeclValue::Light(self.light()?),
             Some(w @ ("sky_sphere" | "fog" | "rainbow")) => {
@@ -286,6 +287,7 @@ pub(super) fn starts_declared_block(word: &str) -> bool {
             | "material"
             | "color_map"
             | "colour_map"
+            | "slope_map"
             | "camera"
             | "array"
             | "light_source"
@@ -305,15 +307,5 @@ enum Declared {
 
 /// Values POV-Ray can declare that strahl does not model yet: their declarations are kept as
 /// unmodelled (an error only where they are used).
-const DECLARABLE_UNMODELLED: &[&str] = &[
-    "media",
-    "density",
-    "pigment_map",
-    "normal_map",
-    "texture_map",
-    "slope_map",
-    "density_map",
-    "photons",
-    "radiosity",
-    "matrix",
-];
+const DECLARABLE_UNMODELLED: &[&str] =
+    &["media", "density", "pigment_map", "normal_map", "texture_map", "density_map", "photons", "radiosity", "matrix"];

@@ -7,7 +7,7 @@ use std::rc::Rc;
 
 use crate::pov::ast::{
     ColorMap, ColorMapBody, Expr, ExprKind, MapEntry, Normal, NormalItem, PatternAst, PatternMod, Pigment, PigmentItem,
-    Texture, TextureItem, Turb, TurbKind, WarpAst,
+    SlopeMapBody, Texture, TextureItem, Turb, TurbKind, WarpAst,
 };
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
@@ -429,24 +429,46 @@ impl Parser<'_, '_> {
                 }
                 Some("accuracy") => {
                     self.bump();
-                    self.expr()?;
-                    continue;
+                    NormalItem::Accuracy(self.expr()?)
                 }
                 Some("normal_map") => {
                     let span = self.bump().span;
                     NormalItem::NormalMap(self.block_map("normal_map", span, |p| p.normal())?, span)
                 }
-                Some(w @ "slope_map") => {
-                    let w = w.to_string();
-                    let span = self.bump().span;
-                    self.skip_braced(&w, span)?;
-                    NormalItem::Ignored(w, span)
+                Some("slope_map") => {
+                    let (body, span) = self.slope_map()?;
+                    NormalItem::SlopeMap(body, span)
                 }
                 _ => return Err(self.unknown_in("normal", NORMAL)),
             };
             items.push(item);
         }
         Ok(items)
+    }
+
+    /// `slope_map { [v, <height, slope>] .. }` or `slope_map { NAME }`.
+    pub(super) fn slope_map(&mut self) -> PResult<(SlopeMapBody, crate::pov::source::Span)> {
+        let kw = self.bump().span;
+        self.open_block("slope_map", kw)?;
+        if matches!(self.peek().kind, TokenKind::Ident(_)) {
+            let name = self.expr()?;
+            self.close_block("slope_map", kw)?;
+            return Ok((SlopeMapBody::Named(name), kw));
+        }
+        let mut entries = Vec::new();
+        while !self.at_block_end() {
+            let open = self.expect_punct('[', "to start a slope_map entry")?;
+            let value = self.expr()?;
+            self.eat_punct(',');
+            let point = self.expr()?;
+            let close = self.expect_punct(']', "to close the slope_map entry (`[value, <height, slope>]`)")?;
+            entries.push((value, point, open.to(close)));
+        }
+        self.close_block("slope_map", kw)?;
+        if entries.is_empty() {
+            return Err(Diag::new(kw, "slope_map needs at least one entry"));
+        }
+        Ok((SlopeMapBody::Entries(entries), kw))
     }
 
     /// One `texture { }` block alone (a `texture_list` entry), without the layers after it.

@@ -333,6 +333,26 @@ pub struct NormalDesc {
     pub turbulence: Option<Turbulence>,
     /// Pattern space → world space.
     pub transform: Transform,
+    /// `slope_map`: the pattern's value turned into a height before the normal tilts down its
+    /// gradient; empty for none (the value is the height). Sorted by value.
+    pub slope_map: Vec<SlopeEntry>,
+    /// `accuracy`: how far from the point (pattern units) the pattern is sampled for its
+    /// gradient; POV-Ray's default is 0.02.
+    pub accuracy: f64,
+}
+
+/// POV-Ray 3.7's `accuracy` when none is written.
+pub const DEFAULT_NORMAL_ACCURACY: f64 = 0.02;
+
+/// One `[value, <height, slope>]` entry of a `slope_map`. Between two entries the height is the
+/// cubic Hermite curve from one to the other whose slopes are per unit of the interval, not of
+/// the pattern's value (POV-Ray 3.7, measured: `[0 <0,1>] [0.5 <1,1>]` is the straight line
+/// height = 2·value, tilting twice as far as `gradient x` alone).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SlopeEntry {
+    pub value: f64,
+    pub height: f64,
+    pub slope: f64,
 }
 
 /// `finish { ... }` with POV-Ray 3.7's defaults.
@@ -428,6 +448,10 @@ pub struct TexturePatternDesc {
     /// over the entries' pigments, with the pattern's modifiers and transforms.
     pub selector: PigmentDesc,
     pub entries: Vec<TextureDesc>,
+    /// Layered textures (`texture { A } texture { B }`) whose layers differ in finish or
+    /// reflect or shine: `entries` are the layers, bottom first, and `selector` is their
+    /// composited pigment; the renderer shades each layer with its own finish.
+    pub layered: bool,
 }
 
 impl TextureDesc {

@@ -168,18 +168,21 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
         aa: options.aa,
         quality: options.quality,
         threads: options.threads,
+        reproject: options.reproject,
     };
     let json = playback::report(&playback, &scene, &cx)?;
     playback::write_report(report, &json)?;
     let num = |k: &str, f: &str| json.get(k).and_then(|v| v.get(f)).and_then(|v| v.as_f64()).unwrap_or(f64::NAN);
     eprintln!(
-        "{}: {:.1} fps presented, frame {:.1} ms median {:.1} ms p95, scale {:.2} mean, PSNR {:.2} dB mean (min {:.2}, pooled {:.2}), SSIM {:.3} mean",
+        "{}: {:.1} fps presented, frame {:.1} ms median {:.1} ms p95, scale {:.2} mean, PSNR {:.2} dB mean (median {:.2}, p5 {:.2}, min {:.2}, pooled {:.2}), SSIM {:.3} mean",
         report.display(),
         json.get("presented_fps").and_then(|v| v.as_f64()).unwrap_or(0.0),
         num("frame_time_ms", "median"),
         num("frame_time_ms", "p95"),
         num("render_scale", "mean"),
         num("psnr_db", "mean"),
+        num("psnr_db", "median"),
+        num("psnr_db", "p5"),
         num("psnr_db", "min"),
         json.get("psnr_db_pooled").and_then(|v| v.as_f64()).unwrap_or(f64::NAN),
         num("ssim", "mean"),

@@ -165,6 +165,8 @@ pub struct ReportContext<'a> {
     pub aa: u32,
     pub quality: Quality,
     pub threads: usize,
+    /// Moving frames were reprojected (`render::reproject`), not rendered whole.
+    pub reproject: bool,
 }
 
 fn stats(values: &[f64], unit: f64) -> Json {
@@ -174,6 +176,7 @@ fn stats(values: &[f64], unit: f64) -> Json {
     Json::object(vec![
         ("mean", Json::Number(mean)),
         ("median", Json::Number(percentile(&sorted, 50.0))),
+        ("p5", Json::Number(percentile(&sorted, 5.0))),
         ("p95", Json::Number(percentile(&sorted, 95.0))),
         ("min", Json::Number(sorted.first().copied().unwrap_or(f64::NAN))),
         ("max", Json::Number(sorted.last().copied().unwrap_or(f64::NAN))),
@@ -231,6 +234,7 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
         ("height", Json::Number(cx.height as f64)),
         ("path_seconds", Json::Number(playback.seconds)),
         ("target_fps", Json::Number(cx.target_fps)),
+        ("reproject", Json::Bool(cx.reproject)),
         ("wall_seconds", Json::Number(wall)),
         ("frames_presented", Json::Number(playback.frames_presented() as f64)),
         ("presented_fps", Json::Number(fps)),
@@ -352,6 +356,7 @@ mod tests {
             aa: 1,
             quality: Quality::default(),
             threads: 1,
+            reproject: true,
         };
         let json = report(&p, &scene, &cx).unwrap();
         assert_eq!(json.get("frames_presented").and_then(Json::as_u64), Some(10));

@@ -304,10 +304,7 @@ pub fn render_pixels(
     let gen = RayGen::new(camera, scene, &settings.quality);
     let use_packets = settings.packets && packet::supported(scene) && gen.packets() && gen.lens.is_none();
     let (w, h, aa) = (settings.width.max(1), settings.height.max(1), settings.aa.max(1));
-    let samples = match settings.subsample {
-        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
-        None => Samples::All,
-    };
+    let samples = Samples::of(settings.subsample, aa);
     // Colours are returned, not written through `out` here.
     let raster =
         Raster { w, h, out_w: w, lattice: Lattice::FULL, aa, samples, out: SharedPixels(std::ptr::null_mut()) };
@@ -330,17 +327,14 @@ pub fn render_pixels(
             a
         });
     stats.pixels = pixels.len() as u64;
-    stats.samples = match samples {
-        Samples::All => stats.pixels * (aa * aa) as u64,
-        Samples::One(..) => stats.pixels,
-    };
+    stats.samples = stats.pixels * samples.per_pixel(aa);
     stats
 }
 
 /// Up to 64 listed pixels as one packet: lane i of row r is pixel `8r + i` of the list (the
-/// last one repeated to fill the packet), each ray made with `block_rays`' operations.
+/// last one repeated to fill the packet), each ray made as `block_rays` makes it.
 fn render_listed_block(tracer: &mut Tracer, gen: &RayGen, pixels: &[u32], raster: &Raster, out: &mut [Vec3]) {
-    let Raster { w, h, aa, samples, .. } = *raster;
+    let Raster { w, aa, samples, .. } = *raster;
     let lanes = (packet::BLOCK as usize).min(pixels.len());
     let rows = pixels.len().div_ceil(packet::BLOCK as usize);
     let b = Block { x: 0, y: 0, w: lanes as u32, h: rows as u32 };
@@ -349,10 +343,7 @@ fn render_listed_block(tracer: &mut Tracer, gen: &RayGen, pixels: &[u32], raster
     samples.each(aa, |sx, sy| {
         let rays: [Ray8; 8] = std::array::from_fn(|r| {
             let (xs, ys) = (F8::from_fn(|i| (pixel(r, i) % w) as f32), F8::from_fn(|i| (pixel(r, i) / w) as f32));
-            let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
-            let v = (ys + F8::splat((sy as f32 + 0.5) / aa as f32)) / F8::splat(h as f32);
-            let d = gen.dir_lanes(u, v);
-            Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+            lane_rays(gen, raster, xs, ys, (sx, sy))
         });
         add_traced(tracer, &rays, &b, &mut sums);
     });
@@ -425,10 +416,7 @@ pub(crate) fn render_tiles(
     let tiles_x = w.div_ceil(tile);
     let tiles_y = h.div_ceil(tile);
     let aa = settings.aa.max(1);
-    let samples = match settings.subsample {
-        Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
-        None => Samples::All,
-    };
+    let samples = Samples::of(settings.subsample, aa);
     let raster = Raster { w: fw, h: fh, out_w: w, lattice, aa, samples, out: SharedPixels(image.pixels.as_mut_ptr()) };
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
@@ -441,10 +429,7 @@ pub(crate) fn render_tiles(
             a
         });
     stats.pixels = w as u64 * h as u64;
-    stats.samples = match samples {
-        Samples::All => stats.pixels * (aa * aa) as u64,
-        Samples::One(..) => stats.pixels,
-    };
+    stats.samples = stats.pixels * samples.per_pixel(aa);
     stats
 }
 
@@ -457,6 +442,22 @@ pub(crate) struct Block {
 }
 
 impl Samples {
+    /// All aa×aa sub-samples, or the one `RenderSettings::subsample` names (clamped to the grid).
+    fn of(subsample: Option<(u32, u32)>, aa: u32) -> Samples {
+        match subsample {
+            Some((sx, sy)) => Samples::One(sx.min(aa - 1), sy.min(aa - 1)),
+            None => Samples::All,
+        }
+    }
+
+    /// Samples traced per pixel.
+    fn per_pixel(self, aa: u32) -> u64 {
+        match self {
+            Samples::All => (aa * aa) as u64,
+            Samples::One(..) => 1,
+        }
+    }
+
     fn each(self, aa: u32, mut f: impl FnMut(u32, u32)) {
         match self {
             Samples::One(sx, sy) => f(sx, sy),
@@ -497,16 +498,23 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
 /// operations `render_pixel` uses for each. Lanes past the block's edge repeat its last pixel;
 /// their results are dropped.
 #[inline(always)]
-pub(crate) fn block_rays(gen: &RayGen, b: &Block, raster: &Raster, (sx, sy): (u32, u32)) -> [Ray8; 8] {
-    let Raster { w, h, aa, .. } = *raster;
+pub(crate) fn block_rays(gen: &RayGen, b: &Block, raster: &Raster, sub: (u32, u32)) -> [Ray8; 8] {
     let xs = F8::from_fn(|i| raster.frame_pixel(b.x + (i as u32).min(b.w - 1), 0).0 as f32);
     std::array::from_fn(|r| {
         let y = raster.frame_pixel(0, b.y + (r as u32).min(b.h - 1)).1;
-        let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
-        let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
-        let d = gen.dir_lanes(u, F8::splat(v));
-        Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
+        lane_rays(gen, raster, xs, F8::splat(y as f32), sub)
     })
+}
+
+/// The perspective rays of sub-sample (sx, sy) of the eight frame pixels (xs, ys): per lane the
+/// operations `render_pixel` does for one ray, so every lane has its single ray's bits.
+#[inline(always)]
+fn lane_rays(gen: &RayGen, raster: &Raster, xs: F8, ys: F8, (sx, sy): (u32, u32)) -> Ray8 {
+    let Raster { w, h, aa, .. } = *raster;
+    let u = (xs + F8::splat((sx as f32 + 0.5) / aa as f32)) / F8::splat(w as f32);
+    let v = (ys + F8::splat((sy as f32 + 0.5) / aa as f32)) / F8::splat(h as f32);
+    let d = gen.dir_lanes(u, v);
+    Ray8 { o: V3::splat(gen.origin), d, inv: d.recip() }
 }
 
 /// Traces one block's rays as packets and adds each valid lane's output sample to `acc`

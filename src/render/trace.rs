@@ -209,13 +209,7 @@ impl<'a> Tracer<'a> {
                 color += transmit * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
             }
         }
-        if !entering {
-            // Leaving the object: what is seen here travelled through it from the ray's origin.
-            if let Some(fade) = &material.fade {
-                color *= fade.attenuation((p - ray.origin).length());
-            }
-        }
-        color
+        faded(color, material, ray, p, entering)
     }
 
     /// Ambient and every light's diffuse and highlights at `surface`, with the mirror direction.
@@ -337,12 +331,7 @@ impl<'a> Tracer<'a> {
         if level < self.max_level() && w >= ADC_BAILOUT {
             color += above * self.refract(ray, p, facing, normal, entering, material.ior, level, w);
         }
-        if !entering {
-            if let Some(fade) = &material.fade {
-                color *= fade.attenuation((p - ray.origin).length());
-            }
-        }
-        color
+        faded(color, material, ray, p, entering)
     }
 
     /// Out of line: most materials are not patterns of materials. Each material the pattern
@@ -596,4 +585,14 @@ pub fn light_direction(s: &Surface, light: Vec3) -> Option<Vec3> {
 pub fn shadow_ray(p: Vec3, facing: Vec3, l: Vec3, light: Vec3) -> ShadowRay {
     let origin = offset_origin(p, facing, l);
     ShadowRay { ray: Ray::new(origin, l), t_max: shadow_t_max(origin, light), light }
+}
+
+/// `color` seen at `p` on `ray`: where the ray leaves the object, what is seen there travelled
+/// through it from the ray's origin, dimmed by its interior's `fade_distance`/`fade_power`.
+#[inline(always)]
+fn faded(color: Vec3, material: &Material, ray: &Ray, p: Vec3, entering: bool) -> Vec3 {
+    match &material.fade {
+        Some(fade) if !entering => color * fade.attenuation((p - ray.origin).length()),
+        _ => color,
+    }
 }

@@ -6,6 +6,7 @@
 
 pub mod blit;
 pub mod font;
+pub mod frame_costs;
 pub mod gamepad;
 pub mod hud;
 pub mod keys;

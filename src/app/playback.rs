@@ -7,6 +7,7 @@
 use std::path::Path;
 use std::time::Instant;
 
+use crate::app::frame_costs::{self, FrameCosts};
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
 use crate::headless::bench::{cpu_model, percentile};
@@ -67,6 +68,8 @@ pub struct Playback {
     scales: Vec<f64>,
     stride: u64,
     samples: Vec<Sample>,
+    /// Each fresh present's non-tracing stages, in order.
+    costs: Vec<FrameCosts>,
 }
 
 impl Playback {
@@ -82,6 +85,7 @@ impl Playback {
             scales: Vec::new(),
             stride: FIRST_STRIDE,
             samples: Vec::new(),
+            costs: Vec::new(),
         }
     }
 
@@ -133,6 +137,13 @@ impl Playback {
             self.stride *= 2;
             let stride = self.stride;
             self.samples.retain(|s| (s.index - 1).is_multiple_of(stride));
+        }
+    }
+
+    /// Records what the last fresh present cost outside tracing (ignored outside the path).
+    pub fn costs(&mut self, costs: FrameCosts) {
+        if !self.finished() && self.start.is_some() {
+            self.costs.push(costs);
         }
     }
 
@@ -240,6 +251,8 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
         ("presented_fps", Json::Number(fps)),
         ("frame_time_ms", stats(&playback.intervals, 1e3)),
         ("render_scale", stats(&playback.scales, 1.0)),
+        // Milliseconds per fresh present outside tracing (render thread and window), by stage.
+        ("non_tracing_ms", frame_costs::report(&playback.costs, stats)),
         ("psnr_db", stats(&psnrs, 1.0)),
         // PSNR of all samples' pixels together (of the mean squared error, not the mean of dB):
         // not dominated by a few near-identical frames the way the mean is.
@@ -345,8 +358,11 @@ mod tests {
         for i in 1..=10 {
             let shown = p.wants_sample().then_some((&exact[..], w, h));
             p.presented(t0 + Duration::from_millis(i * 20), 1.0, camera, shown);
+            let blit = Duration::from_micros(100 * i);
+            p.costs(FrameCosts { blit, ..FrameCosts::default() });
         }
         p.camera(t0 + Duration::from_secs(1), &camera);
+        p.costs(FrameCosts { blit: Duration::from_secs(9), ..FrameCosts::default() }); // after the end
         let cx = ReportContext {
             scene: "seed.pov",
             path: Path::new("p.path"),
@@ -367,5 +383,13 @@ mod tests {
         assert_eq!(samples[0].get("psnr_db").and_then(Json::as_f64), Some(PSNR_CAP));
         assert_eq!(samples[0].get("ssim").and_then(Json::as_f64), Some(1.0));
         assert_eq!(json.get("psnr_db_pooled").and_then(Json::as_f64), Some(PSNR_CAP));
+        // Stage costs: the ten presents on the path (0.1 .. 1.0 ms of blit), not the one after.
+        let costs = json.get("non_tracing_ms").unwrap();
+        assert_eq!(costs.get("frames").and_then(Json::as_u64), Some(10));
+        let blit = costs.get("blit").unwrap();
+        assert!((blit.get("mean").and_then(Json::as_f64).unwrap() - 0.55).abs() < 1e-9);
+        assert_eq!(blit.get("max").and_then(Json::as_f64), Some(1.0));
+        assert_eq!(costs.get("total").unwrap().get("max").and_then(Json::as_f64), Some(1.0));
+        assert_eq!(costs.get("hud").unwrap().get("max").and_then(Json::as_f64), Some(0.0));
     }
 }

@@ -38,10 +38,12 @@ const SETTLE: Duration = Duration::from_millis(60);
 const FRAMES: usize = 3;
 
 fn encode(image: &Image, srgb: bool, frame: &mut Frame) {
+    let start = Instant::now();
     frame.width = image.width;
     frame.height = image.height;
     frame.pixels.resize(image.pixels.len(), 0);
     image.write_xrgb(srgb, &mut frame.pixels);
+    frame.encode_time = start.elapsed();
 }
 
 /// What to render: the camera and the full (window) resolution.
@@ -89,6 +91,10 @@ pub struct Frame {
     pub view: Option<View>,
     /// Where a reprojected moving frame's pixels came from; `None` for frames rendered whole.
     pub reprojected: Option<ReprojectStats>,
+    /// The part of `render_time` spent turning the traced result into `pixels`.
+    pub encode_time: Duration,
+    /// When the render thread sent the frame (for the window's hand-off time).
+    pub sent_at: Option<Instant>,
 }
 
 /// What the render thread needs to rebuild its scene from disk.
@@ -297,8 +303,10 @@ impl Worker {
                         frame.stats = stats;
                         frame.reprojected = Some(counts);
                         (frame.width, frame.height) = (w, h);
+                        let copy = Instant::now();
                         frame.pixels.clear();
                         frame.pixels.extend_from_slice(pixels);
+                        frame.encode_time = copy.elapsed();
                     } else {
                         frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
                         encode(&pass, self.scene.srgb, &mut frame);
@@ -327,6 +335,7 @@ impl Worker {
                 Job::Reload => unreachable!("handled above"),
             }
             frame.render_time = start.elapsed();
+            frame.sent_at = Some(Instant::now());
             if self.frames.send(frame).is_err() {
                 return;
             }

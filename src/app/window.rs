@@ -16,6 +16,7 @@ use winit::window::{CursorGrabMode, Window, WindowId};
 
 use crate::app::blit::Blitter;
 use crate::app::font::Canvas;
+use crate::app::frame_costs::FrameCosts;
 use crate::app::gamepad::Gamepads;
 use crate::app::hud::{draw_error, draw_hud_and_help, FrameTimes, HudInfo};
 use crate::app::keys::{apply_key, Command};
@@ -244,6 +245,7 @@ impl App {
             }
             self.surface_size = (w, h);
         }
+        let acquire = Instant::now();
         let mut buffer = match win.surface.buffer_mut() {
             Ok(b) => b,
             Err(e) => {
@@ -251,8 +253,17 @@ impl App {
                 return;
             }
         };
+        let blit = Instant::now();
         self.blitter.blit(&frame.pixels, frame.width, frame.height, &mut buffer, w, h);
         let now = Instant::now();
+        let mut costs = FrameCosts {
+            trace: frame.render_time.saturating_sub(frame.encode_time),
+            encode: frame.encode_time,
+            handoff: frame.sent_at.map_or(Duration::ZERO, |sent| acquire.saturating_duration_since(sent)),
+            acquire: blit - acquire,
+            blit: now - blit,
+            ..FrameCosts::default()
+        };
         if fresh {
             // Only gaps between moving frames measure the frame rate: a still view presents
             // rarely, and the gap from its last frame to the first moving one is idle time.
@@ -269,6 +280,7 @@ impl App {
                 playback.presented(now, frame.scale, view.camera, shown);
             }
         }
+        let hud = Instant::now();
         if self.hud {
             let (avg, p95) = self.times.summary();
             let secs = frame.render_time.as_secs_f64();
@@ -289,6 +301,7 @@ impl App {
             let mut canvas = Canvas { pixels: &mut buffer, width: w, height: h };
             draw_hud_and_help(&mut canvas, &info);
         }
+        costs.hud = hud.elapsed();
         let status = self.render.reload_status();
         if status.generation != self.reload.generation {
             if let Some(camera) = status.camera {
@@ -318,8 +331,13 @@ impl App {
             self.screenshot = self.options.screenshot.clone();
         }
         let shot = self.screenshot.take().map(|path| (path, save_screenshot(&buffer, w, h)));
+        let present = Instant::now();
         if let Err(e) = buffer.present() {
             eprintln!("warning: cannot present: {e}");
+        }
+        costs.present = present.elapsed();
+        if let (true, Some(playback)) = (fresh, &mut self.playback) {
+            playback.costs(costs);
         }
         if let Some((path, rgb)) = shot {
             match output::write_png(&path, w, h, &rgb) {

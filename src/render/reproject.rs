@@ -159,7 +159,9 @@ impl Reprojector {
         RayGen::new(camera, scene, &Default::default()).pinhole().is_some()
     }
 
-    /// Forgets the previous frame (a new scene, or a new size).
+    /// Forgets the previous frame (a new scene). A new size keeps it: the previous frame is
+    /// reprojected from its own resolution, so the window's adaptive scale can change while
+    /// the history lasts.
     pub fn reset(&mut self) {
         self.frames = 0;
         self.history.camera = None;
@@ -185,9 +187,6 @@ impl Reprojector {
             self.full.write_xrgb(srgb, &mut self.history.pixels);
             return (&self.history.pixels, stats, ReprojectStats { lattice: n as u64, ..Default::default() });
         };
-        if (self.history.seen.width, self.history.seen.height) != (w, h) {
-            self.reset();
-        }
         let mut stats = self.current.seen.trace(scene, camera, w, h, &settings.quality);
         let (x, y) = PHASES[(self.frames % PHASES.len() as u64) as usize];
         let lattice = Lattice { step: 2, x: x.min(w - 1), y: y.min(h - 1) };
@@ -208,8 +207,14 @@ impl Reprojector {
             busy: &self.busy,
             seen: &self.current.seen.seen,
             camera: pinhole,
-            history: history.camera.map(|camera| (camera, &history.seen.seen[..], &history.pixels[..])),
-            still: history.camera == Some(pinhole),
+            history: history.camera.map(|camera| History {
+                camera,
+                w: history.seen.width,
+                h: history.seen.height,
+                seen: &history.seen.seen,
+                colors: &history.pixels,
+            }),
+            still: history.camera == Some(pinhole) && (history.seen.width, history.seen.height) == (w, h),
         };
         self.current
             .pixels
@@ -294,10 +299,19 @@ struct Context<'a> {
     seen: &'a [Seen],
     /// The frame's own camera.
     camera: Pinhole,
-    /// The previous frame: its camera, what its pixels saw, their colours.
-    history: Option<(Pinhole, &'a [Seen], &'a [u32])>,
-    /// The camera is exactly where the previous frame's was.
+    history: Option<History<'a>>,
+    /// The camera is exactly where the previous frame's was, at the same size.
     still: bool,
+}
+
+/// The previous frame: its camera and size, what its pixels saw, their colours.
+#[derive(Clone, Copy)]
+struct History<'a> {
+    camera: Pinhole,
+    w: u32,
+    h: u32,
+    seen: &'a [Seen],
+    colors: &'a [u32],
 }
 
 /// A pixel's lattice neighbours on its own object: their mean and the box of their colours
@@ -340,9 +354,9 @@ impl Context<'_> {
         }
         let i = self.at(x, y);
         let here = self.seen[i];
-        if let (true, Some((_, seen, colors))) = (self.still, self.history) {
-            if seen[i].id == here.id {
-                return (colors[i], Source::Reused);
+        if let (true, Some(history)) = (self.still, self.history) {
+            if history.seen[i].id == here.id {
+                return (history.colors[i], Source::Reused);
             }
         }
         // Detail the lattice cannot stand for (an edge in the texture, aliasing towards the
@@ -363,31 +377,33 @@ impl Context<'_> {
     /// The previous frame's colour (0–255) of the surface point pixel (x, y) sees, from the
     /// taps around where it saw it that saw the same object at the same depth.
     fn reuse(&self, x: u32, y: u32, here: Seen, slope: f32) -> Option<Vec3> {
-        let (camera, seen, colors) = self.history?;
+        let History { camera, w: hw, h: hh, seen, colors } = self.history?;
         if here.view_dependent() {
             return None;
         }
         let dir = self.camera.pixel_dir(x, y, self.w, self.h);
         let (miss, point) = (here.is_miss(), self.camera.origin + dir * here.depth);
         let (u, v) = if miss { camera.project_dir(dir)? } else { camera.project(point)? };
-        let (px, py) = (u * self.w as f32 - 0.5, v * self.h as f32 - 0.5);
-        if !(px > -1.0 && py > -1.0 && px < self.w as f32 && py < self.h as f32) {
+        let (px, py) = (u * hw as f32 - 0.5, v * hh as f32 - 0.5);
+        if !(px > -1.0 && py > -1.0 && px < hw as f32 && py < hh as f32) {
             return None;
         }
         let (x0, y0) = (px.floor(), py.floor());
         let (fx, fy) = (px - x0, py - y0);
         // Depths compare from the previous eye, where the taps' depths were measured.
         let depth = if miss { 0.0 } else { (point - camera.origin).length() };
-        let tolerance = DEPTH_TOLERANCE * depth + SLOPE_PIXELS * slope;
+        // A coarser history's taps lie further off, in this frame's pixels.
+        let coarser = (self.w as f32 / hw as f32).max(1.0);
+        let tolerance = DEPTH_TOLERANCE * depth + SLOPE_PIXELS * slope * coarser;
         let (mut sum, mut weight) = (Vec3::ZERO, 0.0);
         for (dx, dy, wt) in
             [(0, 0, (1.0 - fx) * (1.0 - fy)), (1, 0, fx * (1.0 - fy)), (0, 1, (1.0 - fx) * fy), (1, 1, fx * fy)]
         {
             let (tx, ty) = (x0 as i64 + dx, y0 as i64 + dy);
-            if wt <= 0.0 || tx < 0 || ty < 0 || tx >= self.w as i64 || ty >= self.h as i64 {
+            if wt <= 0.0 || tx < 0 || ty < 0 || tx >= hw as i64 || ty >= hh as i64 {
                 continue;
             }
-            let t = (ty as u32 * self.w + tx as u32) as usize;
+            let t = (ty as u32 * hw + tx as u32) as usize;
             let tap = seen[t];
             if tap.id != here.id || (!miss && (tap.depth - depth).abs() > tolerance) {
                 continue;

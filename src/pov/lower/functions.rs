@@ -16,18 +16,36 @@ pub const MAX_STRING_LEN: usize = 16 << 20;
 /// Most random streams (`seed(...)` calls) a scene may open.
 pub const MAX_RANDOM_STREAMS: usize = 1 << 20;
 
-/// The random streams `seed()` opened, each a counter: `rand` hashes (seed, counter), so the
-/// numbers depend only on the scene, never on the run or the thread count.
+/// The random streams `seed()` opened, each the 32-bit state of its generator, so the numbers
+/// depend only on the scene, never on the run or the thread count.
+///
+/// The generator is POV-Ray 3.7's, measured from its output (`#debug str(rand(S), 0, 17)`):
+/// a linear congruential generator `state = state · 1812433253 + 12345 (mod 2³²)` whose value is
+/// the new state divided by 2³² − 1; `seed(v)` starts it at `v` truncated to a 32-bit integer
+/// (out of range: −2³¹, as C's conversion gives). So `seed(0)` yields 2.87e-6, 0.46656, 0.24907,
+/// ... as POV-Ray does, and scenes that scatter objects with `rand` place them where POV-Ray does.
 #[derive(Debug, Default)]
 pub struct RandomStreams {
-    streams: RefCell<Vec<(u64, u64)>>,
+    streams: RefCell<Vec<u32>>,
 }
 
-/// SplitMix64's finaliser: a well-mixed 64-bit hash.
-fn mix(mut z: u64) -> u64 {
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
+const LCG_MULTIPLIER: u32 = 1_812_433_253;
+const LCG_INCREMENT: u32 = 12_345;
+
+/// The state `seed(v)` starts a stream at.
+fn seed_state(v: f64) -> u32 {
+    let t = v.trunc();
+    if (-2_147_483_648.0..2_147_483_648.0).contains(&t) {
+        t as i32 as u32
+    } else {
+        i32::MIN as u32
+    }
+}
+
+/// Advances `state` and returns the next number, in [0, 1].
+fn next_rand(state: &mut u32) -> f64 {
+    *state = state.wrapping_mul(LCG_MULTIPLIER).wrapping_add(LCG_INCREMENT);
+    *state as f64 / u32::MAX as f64
 }
 
 impl Lowerer<'_> {
@@ -121,7 +139,7 @@ impl Lowerer<'_> {
                 if streams.len() >= MAX_RANDOM_STREAMS {
                     return Err(Diag::new(e.span, format!("more than {MAX_RANDOM_STREAMS} random streams")));
                 }
-                streams.push(((f(0)? as i64) as u64, 0));
+                streams.push(seed_state(f(0)?));
                 Ok(Value::Float((streams.len() - 1) as f64))
             })(),
             "rand" => (|| {
@@ -130,10 +148,7 @@ impl Lowerer<'_> {
                 let Some(stream) = streams.get_mut(id as usize).filter(|_| id >= 0.0 && id.fract() == 0.0) else {
                     return Err(Diag::new(args[0].span, "rand() needs a stream made by seed()"));
                 };
-                stream.1 += 1;
-                let bits = mix(mix(stream.0) ^ stream.1);
-                // 53 random bits: a float in [0, 1).
-                Ok(Value::Float((bits >> 11) as f64 / (1u64 << 53) as f64))
+                Ok(Value::Float(next_rand(stream)))
             })(),
             "bitwise_and" | "bitwise_or" | "bitwise_xor" => (|| {
                 let mut acc = f(0)? as i64;

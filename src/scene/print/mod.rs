@@ -13,6 +13,7 @@
 //! finishes), `world` (lights, atmosphere), `transform` (matrices as modifiers).
 
 mod shapes;
+mod texture_blocks;
 mod textures;
 mod transform;
 mod world;
@@ -23,6 +24,7 @@ use glam::DVec3;
 
 use crate::scene::desc::{Color, SceneDesc};
 use shapes::object;
+use texture_blocks::Declarations;
 pub use transform::{decompose, recomposed, Decomposed};
 use world::{atmosphere, light};
 
@@ -51,8 +53,12 @@ pub fn to_pov(desc: &SceneDesc) -> String {
         light(&mut s, l);
     }
     atmosphere(&mut s, desc);
+    let mut declared = Declarations::default();
     for o in &desc.objects {
-        object(&mut s, o);
+        let mut text = String::new();
+        object(&mut text, o, &mut declared);
+        s.push_str(&std::mem::take(&mut declared.text));
+        s.push_str(&text);
     }
     s
 }

@@ -2,26 +2,38 @@
 
 use std::fmt::Write;
 
-use super::textures::{finish, normal, pigment};
+use super::texture_blocks::{texture_blocks, Declarations};
 use super::transform::modifiers;
 use super::{num, vec, vec2s};
 use crate::scene::desc::{BlobShape, ComplexFn, Container, CsgOp, JuliaFunction, ObjectDesc, PolyForm, ShapeDesc};
 
-pub(super) fn object(s: &mut String, o: &ObjectDesc) {
+/// An object with its textures and interior; layered textures that its patterns of textures
+/// hold go to `d`, to be declared before it.
+pub(super) fn object(s: &mut String, o: &ObjectDesc, d: &mut Declarations) {
+    write_object(s, o, Some(d));
+}
+
+/// An object's shape, CSG and transform alone, for the `object` pattern, which asks only
+/// what is inside.
+pub(super) fn solid(s: &mut String, o: &ObjectDesc) {
+    write_object(s, o, None);
+}
+
+fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>) {
     let inverse = if o.inverse { "  inverse\n" } else { "" };
     if let ShapeDesc::Csg { op, children } = &o.shape {
         // The node's transforms and textures are on its shapes.
         match (op, children.split_first()) {
             (CsgOp::Clip, Some((first, clips))) => {
                 let _ = writeln!(s, "object {{");
-                object(s, first);
+                write_object(s, first, d.as_deref_mut());
                 let _ = writeln!(s, "clipped_by {{");
-                clips.iter().for_each(|c| object(s, c));
+                clips.iter().for_each(|c| write_object(s, c, d.as_deref_mut()));
                 let _ = writeln!(s, "}}\n{inverse}}}");
             }
             _ => {
                 let _ = writeln!(s, "{} {{", op.keyword());
-                children.iter().for_each(|c| object(s, c));
+                children.iter().for_each(|c| write_object(s, c, d.as_deref_mut()));
                 let _ = writeln!(s, "{inverse}}}");
             }
         }
@@ -176,21 +188,16 @@ pub(super) fn object(s: &mut String, o: &ObjectDesc) {
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
     }
-    let object_inverse = o.transform.inverse;
-    let t = &o.texture;
-    let _ = write!(s, "\n  texture {{\n    ");
-    pigment(s, &t.pigment, &object_inverse);
-    if let Some(n) = &t.normal {
-        let _ = write!(s, "\n    ");
-        normal(s, n, &object_inverse);
+    if let Some(d) = d {
+        texture_blocks(s, &o.texture, &o.transform.inverse, d);
+        let _ = write!(s, "\n  interior {{ ior {}", num(o.interior.ior));
+        if let Some(f) = &o.interior.fade {
+            let (distance, power, color) = (num(f.distance), num(f.power), vec(f.color));
+            let _ = write!(s, " fade_distance {distance} fade_power {power} fade_color {color}");
+        }
+        let _ = write!(s, " }}");
     }
-    let _ = write!(s, "\n    ");
-    finish(s, &t.finish);
-    let _ = write!(s, "\n  }}\n  interior {{ ior {}", num(o.interior.ior));
-    if let Some(f) = &o.interior.fade {
-        let _ = write!(s, " fade_distance {} fade_power {} fade_color {}", num(f.distance), num(f.power), vec(f.color));
-    }
-    let _ = writeln!(s, " }}");
+    let _ = writeln!(s);
     let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix).trim_start());
 }
 

@@ -10,7 +10,8 @@ use crate::scene::desc::{FinishDesc, NormalDesc, NormalPattern, PigmentDesc, Pig
 
 pub(super) fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
     if let PigmentPattern::Layered(list) = &p.pattern {
-        // Layers belong to textures; printed as the bottom layer alone (lossy).
+        // Layers belong to textures (`texture_blocks` writes one block per layer); a layered
+        // pigment elsewhere (a sky sphere's are a list) is printed as its bottom layer.
         if let Some(bottom) = list.first() {
             return pigment(s, bottom, object_inverse);
         }
@@ -39,16 +40,13 @@ pub(super) fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
             write!(s, "}}")
         }
         PigmentPattern::List(pd, list) => {
-            // The list right after the keyword, its options (`brick_size`, `mortar`) after it,
-            // as POV-Ray reads them.
-            let text = pattern_text(pd);
-            let (keyword, options) = text.split_once(' ').unwrap_or((&text, ""));
-            let _ = write!(s, "{keyword} ");
+            let (head, tail) = list_head(pd);
+            let _ = write!(s, "{head} ");
             for p in list {
                 pigment(s, p, &outer.transform.inverse);
                 let _ = write!(s, " ");
             }
-            write!(s, "{options}")
+            write!(s, "{tail}")
         }
         PigmentPattern::Layered(_) => unreachable!("handled above"),
         PigmentPattern::ImageMap(im) => write!(s, "image_map {{ {} }}", image_text(im)),
@@ -141,8 +139,46 @@ fn fractal_text(f: &crate::scene::desc::Fractal) -> String {
     format!("{head} interior {}, {} exterior {}, {}", f.interior.0, num(f.interior.1), f.exterior.0, num(f.exterior.1))
 }
 
+/// A list pattern as the text before its list and the text after it. The list comes right
+/// after the keyword and its options (`brick_size`, `mortar`) after it, as POV-Ray reads them;
+/// the `object` pattern's list is inside its block, after the object.
+pub(super) fn list_head(pd: &crate::scene::desc::PatternDesc) -> (String, String) {
+    let text = pattern_text(pd);
+    if let crate::scene::desc::PatternKind::Object(solid) = &pd.kind {
+        let written = object_text(solid);
+        let rest = text.strip_prefix(&written).unwrap_or("");
+        return (written.trim_end_matches('}').to_string(), format!("}}{rest}"));
+    }
+    let (keyword, options) = text.split_once(' ').unwrap_or((&text, ""));
+    (keyword.to_string(), options.to_string())
+}
+
+/// The `object` pattern's block without its list: `object { OBJECT }` (a union of the parts
+/// it was made of), each part's shape and transform; their textures do not matter to it.
+fn object_text(solid: &crate::scene::desc::SolidRef) -> String {
+    let parts = solid.0.objects();
+    let mut out = String::from("object { ");
+    if parts.len() != 1 {
+        out.push_str(
+            "union {
+",
+        );
+    }
+    for o in parts {
+        super::shapes::solid(&mut out, o);
+    }
+    if parts.len() != 1 {
+        out.push_str(
+            "}
+",
+        );
+    }
+    out.push('}');
+    out
+}
+
 /// A pattern keyword with its parameters and value modifiers.
-fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
+pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     use crate::scene::desc::{PatternKind as K, Warp, Wave};
     let v = |d: glam::DVec3| format!("<{}, {}, {}>", num(d.x), num(d.y), num(d.z));
     let mut out = match &p.kind {
@@ -189,8 +225,7 @@ fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Wood => "wood".into(),
         K::Average => "average".into(),
         K::Image(ref im) => format!("image_pattern {{ {} }}", image_text(im)),
-        // The object itself is not kept: the printed scene shows where it was.
-        K::Object(_) => "object { /* a solid */ }".into(),
+        K::Object(solid) => object_text(solid),
     };
     let wave = match p.wave {
         Wave::Ramp => "ramp_wave".to_string(),

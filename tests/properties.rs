@@ -754,8 +754,7 @@ fn shipped_scenes_print_and_load_back() {
             "parametrics.pov",
             "patterns_function.pov",
             "functions_pigment.pov",
-            // uv_vectors, uv_mapping and mesh cameras, which the printer does not write yet.
-            "uv_mapping.pov",
+            // Mesh cameras, which the printer does not write yet.
             "cameras_mesh.pov",
             "cameras_mesh_rows.pov",
             // The object pattern's solid is equal only to itself: compared by its render in
@@ -780,8 +779,9 @@ fn shipped_scenes_print_and_load_back() {
 
 /// Layered textures (composited or shaded layer by layer, with their own normals and
 /// finishes), patterns of whole textures (`texture_map`, lists of textures, `tiles`,
-/// `material_map`, layered entries declared by name) and the `object` pattern print and load
-/// back as the same picture: the printed scene renders the original's bytes.
+/// `material_map`, layered entries declared by name), the `object` pattern and `uv_mapping`
+/// (boxes, spheres, tori, meshes' `uv_vectors`) print and load back as the same picture: the printed scene renders the original's
+/// bytes.
 #[test]
 fn printed_textures_render_the_same_bytes() {
     let rgb = |d: &SceneDesc| {
@@ -791,7 +791,7 @@ fn printed_textures_render_the_same_bytes() {
         render(&scene, &Camera::from_desc(&d.camera), &settings, &mut image);
         image.to_rgb8(scene.srgb)
     };
-    for name in ["layered", "layers_finish", "layers_normal", "tiles", "materials", "texture_patterns"] {
+    for name in ["layered", "layers_finish", "layers_normal", "tiles", "materials", "texture_patterns", "uv_box", "uv_mapping"] {
         let path = root().join("tests/reference/scenes").join(format!("{name}.pov"));
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
         let src = to_pov(&desc);

@@ -213,28 +213,41 @@ fn mesh_body(s: &mut String, mesh: &crate::scene::desc::MeshDesc) {
         let _ = write!(s, " }}");
     };
     let ix = |i: [u32; 3]| format!("<{}, {}, {}>", i[0], i[1], i[2]);
+    // `uv_vectors` (for `uv_mapping`): one uv triple per face, as the loader keeps them.
+    let uv = !mesh.uv_faces.is_empty() && mesh.uv_faces.len() == mesh.faces.len();
     if smooth == 0 || smooth == mesh.faces.len() {
         let _ = write!(s, "mesh2 {{");
         list(s, "vertex_vectors", &mut mesh.vertices.iter().map(|v| vec(*v)), mesh.vertices.len());
         if smooth > 0 {
             list(s, "normal_vectors", &mut mesh.normals.iter().map(|v| vec(*v)), mesh.normals.len());
         }
+        if uv {
+            list(s, "uv_vectors", &mut mesh.uvs.iter().map(|p| vec2s(&[*p])), mesh.uvs.len());
+        }
         list(s, "face_indices", &mut mesh.faces.iter().map(|f| ix(f.vertices)), mesh.faces.len());
         if smooth > 0 {
             let normals = &mut mesh.faces.iter().filter_map(|f| f.normals.map(ix));
             list(s, "normal_indices", normals, mesh.faces.len());
         }
+        if uv {
+            list(s, "uv_indices", &mut mesh.uv_faces.iter().map(|f| ix(*f)), mesh.uv_faces.len());
+        }
         return;
     }
     let _ = write!(s, "mesh {{");
-    for f in &mesh.faces {
+    for (i, f) in mesh.faces.iter().enumerate() {
         let v = |k: usize| vec(mesh.vertices[f.vertices[k] as usize]);
         let _ = match f.normals {
             Some(n) => {
                 let n = |k: usize| vec(mesh.normals[n[k] as usize]);
-                write!(s, "\n  smooth_triangle {{ {}, {}, {}, {}, {}, {} }}", v(0), n(0), v(1), n(1), v(2), n(2))
+                write!(s, "\n  smooth_triangle {{ {}, {}, {}, {}, {}, {}", v(0), n(0), v(1), n(1), v(2), n(2))
             }
-            None => write!(s, "\n  triangle {{ {}, {}, {} }}", v(0), v(1), v(2)),
+            None => write!(s, "\n  triangle {{ {}, {}, {}", v(0), v(1), v(2)),
         };
+        if uv {
+            let corners = mesh.uv_faces[i].map(|k| mesh.uvs[k as usize]);
+            let _ = write!(s, " uv_vectors {}", vec2s(&corners));
+        }
+        let _ = write!(s, " }}");
     }
 }

@@ -94,8 +94,15 @@ pub(super) fn texture_blocks(s: &mut String, t: &TextureDesc, object_inverse: &D
     }
 }
 
-/// A plain texture's items: `pigment`, its normal, its finish.
+/// A plain texture's items: `uv_mapping` where it has it, `pigment`, its normal, its finish.
 fn plain_body(s: &mut String, pigment_desc: &PigmentDesc, t: &TextureDesc, object_inverse: &DMat4) {
+    // A uv-mapped texture's transforms are in uv space: its object's do not move it.
+    let object_inverse = if t.uv_mapping {
+        let _ = write!(s, "uv_mapping\n    ");
+        &DMat4::IDENTITY
+    } else {
+        object_inverse
+    };
     pigment(s, pigment_desc, object_inverse);
     if let Some(n) = &t.normal {
         let _ = write!(s, "\n    ");

@@ -791,7 +791,9 @@ fn printed_textures_render_the_same_bytes() {
         render(&scene, &Camera::from_desc(&d.camera), &settings, &mut image);
         image.to_rgb8(scene.srgb)
     };
-    for name in ["layered", "layers_finish", "layers_normal", "tiles", "materials", "texture_patterns", "uv_box", "uv_mapping"] {
+    for name in
+        ["layered", "layers_finish", "layers_normal", "tiles", "materials", "texture_patterns", "uv_box", "uv_mapping"]
+    {
         let path = root().join("tests/reference/scenes").join(format!("{name}.pov"));
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
         let src = to_pov(&desc);

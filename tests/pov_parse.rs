@@ -826,6 +826,36 @@ fn layered_textures_composite_also_after_a_pigment_or_on_a_declared_object() {
     }
 }
 
+/// Layers carry their own normals (POV-Ray 3.7 lights each layer by its own, the surface's
+/// where it has none, and refracts by the top one's): layers whose normals differ are kept
+/// whole for `Tracer::shade_layers`, and the texture's normal is the top layer's; layers of
+/// one normal and one plain finish stay a composited pigment.
+#[test]
+fn layers_keep_their_own_normals() {
+    use strahl::scene::desc::PigmentPattern;
+    let n = "normal { gradient x 0.5 }";
+    let load = |name: &str, bottom: &str, top: &str| {
+        let text = format!(
+            "sphere {{ 0, 1 texture {{ pigment {{ rgb 1 }} {bottom} }}\n  texture {{ pigment {{ rgbt 0.5 }} {top} }} }}"
+        );
+        let s = load_text(name, &text).unwrap_or_else(|e| panic!("{name}: {e:?}"));
+        s.objects[0].texture.clone()
+    };
+    let bottom = load("layer_n_bottom", n, "");
+    let p = bottom.pattern.as_ref().expect("layers of different normals are shaded one by one");
+    assert!(p.layered);
+    assert!(p.entries[0].normal.is_some() && p.entries[1].normal.is_none(), "{:?}", p.entries);
+    assert!(bottom.normal.is_none(), "the top layer's normal refracts");
+    let top = load("layer_n_top", "", n);
+    assert!(top.pattern.as_ref().is_some_and(|p| p.layered) && top.normal.is_some());
+    for (name, b, t) in [("layer_n_both", n, n), ("layer_n_none", "", "")] {
+        let same = load(name, b, t);
+        assert!(same.pattern.is_none(), "{name}: one normal, one finish: composited");
+        assert!(matches!(same.pigment.pattern, PigmentPattern::Layered(_)), "{name}");
+        assert_eq!(same.normal.is_some(), !b.is_empty(), "{name}");
+    }
+}
+
 #[test]
 fn patterns_parse_and_unknown_ones_are_located_errors() {
     use strahl::scene::desc::{NormalPattern, PatternKind, PigmentPattern, Wave};

@@ -9,6 +9,7 @@
 //! | sphere | `0.75 + atan2(x, -z) / 2π` (mod 1), from the centre | `acos(-y) / π` |
 //! | torus | `0.5 - atan2(z, x) / 2π` (mod 1) around the major circle | `0.5 + atan2(y, ρ - R) / 2π` (mod 1) around the minor one, ρ = √(x² + z²) |
 //! | mesh, mesh2 | the face's `uv_vectors` interpolated barycentrically | |
+//! | box | the faces unfolded into a cross (`box_uv`) | |
 //!
 //! Only uv-mapped materials compute these (`render::trace`); everything else pays nothing.
 
@@ -21,7 +22,7 @@ use crate::scene::desc::{MeshDesc, ShapeDesc};
 /// Whether `shape` has surface coordinates here (others keep 3-D pattern space, warned).
 pub fn has_uv(shape: &ShapeDesc) -> bool {
     match shape {
-        ShapeDesc::Sphere { .. } | ShapeDesc::Torus { .. } => true,
+        ShapeDesc::Sphere { .. } | ShapeDesc::Torus { .. } | ShapeDesc::Box { .. } => true,
         ShapeDesc::Mesh { mesh, .. } => !mesh.uv_faces.is_empty(),
         _ => false,
     }
@@ -35,6 +36,10 @@ pub enum UvShape {
     },
     Torus {
         major: f64,
+    },
+    Box {
+        min: DVec3,
+        max: DVec3,
     },
     /// The description's faces and uvs; hits name faces in `MeshData` order, which
     /// `MeshData::source_face` maps back.
@@ -54,6 +59,9 @@ impl UvMap {
         let shape = match shape {
             ShapeDesc::Sphere { center, .. } => UvShape::Sphere { center: *center },
             ShapeDesc::Torus { major, .. } => UvShape::Torus { major: *major },
+            ShapeDesc::Box { corner1, corner2 } => {
+                UvShape::Box { min: corner1.min(*corner2), max: corner1.max(*corner2) }
+            }
             ShapeDesc::Mesh { mesh, .. } if !mesh.uv_faces.is_empty() => UvShape::Mesh(mesh.clone()),
             _ => return None,
         };
@@ -80,6 +88,7 @@ impl UvMap {
                     (0.5 + q.y.atan2(rho - major) / turn).rem_euclid(1.0),
                 )
             }
+            UvShape::Box { min, max } => box_uv(q, *min, *max),
             UvShape::Mesh(mesh) => {
                 let Some((f, [a, b, c])) = face else { return DVec2::ZERO };
                 let Some(uv) = mesh.uv_faces.get(f) else { return DVec2::ZERO };
@@ -89,6 +98,29 @@ impl UvMap {
             }
         }
     }
+}
+
+/// POV-Ray 3.7's box map (the reference's "UV Boxmap" figure), measured with `uv_mapping`
+/// gradients on each face of a cube and of a box of sides 4, 4, 4 offset from the origin:
+/// the faces unfold into a cross four faces wide and three high, each face scaled to its
+/// cell. The middle row (v from 1/3 to 2/3, up the box) runs -x, +z, +x, -z in u, each seen
+/// from outside with u growing to the right; +y is the cell above +z (its -z edge at the
+/// top), -y the cell below (its +z edge at the top). A point takes the face it is nearest.
+fn box_uv(q: DVec3, min: DVec3, max: DVec3) -> DVec2 {
+    let a = ((q - min) / (max - min).max(DVec3::splat(f64::MIN_POSITIVE))).clamp(DVec3::ZERO, DVec3::ONE);
+    let (below, above) = ((q - min).abs(), (max - q).abs());
+    let gap = below.min(above);
+    let (u, v) = if gap.x <= gap.y && gap.x <= gap.z {
+        let u = if below.x <= above.x { a.z } else { 2.0 + (1.0 - a.z) };
+        (u, 1.0 + a.y)
+    } else if gap.y <= gap.z {
+        let v = if below.y <= above.y { a.z } else { 2.0 + (1.0 - a.z) };
+        (1.0 + a.x, v)
+    } else {
+        let u = if below.z <= above.z { 3.0 + (1.0 - a.x) } else { 1.0 + a.x };
+        (u, 1.0 + a.y)
+    };
+    DVec2::new(u / 4.0, v / 3.0)
 }
 
 /// Barycentric weights of `p` (on or near the triangle's plane) in triangle a, b, c.
@@ -124,6 +156,29 @@ mod tests {
         close(t.uv(DVec3::new(0.0, 0.0, 1.25), None), DVec2::new(0.25, 0.5));
         close(t.uv(DVec3::new(1.0, 0.25, 0.0), None), DVec2::new(0.5, 0.75));
         close(t.uv(DVec3::new(-1.0, -0.25, 0.0), None), DVec2::new(0.0, 0.25));
+    }
+
+    #[test]
+    fn box_faces_unfold_into_a_cross() {
+        // Figures read back from POV-Ray 3.7 (16-bit PPM) on a box of sides 4, 4, 4.
+        let shape = ShapeDesc::Box { corner1: DVec3::new(3.0, 2.0, 1.0), corner2: DVec3::new(-1.0, -2.0, -3.0) };
+        let b = UvMap::new(&shape, DMat4::IDENTITY).unwrap();
+        let near = |p: DVec3, u: f64, v: f64| {
+            let got = b.uv(p, None);
+            assert!((got - DVec2::new(u, v)).length() < 1e-4, "{p}: {got} vs ({u}, {v})");
+        };
+        near(DVec3::new(0.108, 0.892, -3.0), 0.9307, 0.5743);
+        near(DVec3::new(1.692, -0.692, -3.0), 0.8318, 0.4424);
+        near(DVec3::new(0.108, 2.0, 0.892), 0.3193, 0.6757);
+        near(DVec3::new(1.692, 2.0, -0.692), 0.4182, 0.8076);
+        near(DVec3::new(3.0, 0.892, -0.692), 0.6057, 0.5743);
+        near(DVec3::new(3.0, -0.692, 0.892), 0.5068, 0.4424);
+        // The unit cube's -x, +z and -y faces, and a point just inside a face takes that face.
+        let c = UvMap::new(&ShapeDesc::Box { corner1: -DVec3::ONE, corner2: DVec3::ONE }, DMat4::IDENTITY).unwrap();
+        close(c.uv(DVec3::new(-1.0, 0.0, 0.0), None), DVec2::new(0.125, 0.5));
+        close(c.uv(DVec3::new(0.0, 0.0, 1.0), None), DVec2::new(0.375, 0.5));
+        close(c.uv(DVec3::new(0.0, -1.0, 0.0), None), DVec2::new(0.375, 1.0 / 6.0));
+        close(c.uv(DVec3::new(0.5, 0.999_999_999, 0.2), None), DVec2::new(0.4375, 0.8));
     }
 
     #[test]

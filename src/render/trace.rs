@@ -300,7 +300,9 @@ impl<'a> Tracer<'a> {
     /// highlights) are dimmed by what the layers above let through (filter tinted, transmit
     /// not), but its reflection is added whole, untinted, once any light reaches the layer;
     /// layers under an opaque one are not seen at all; what all the layers let through
-    /// refracts once, into the object.
+    /// refracts once, into the object. Each layer is lit and reflects by its own normal (the
+    /// surface's where it has none), and the refraction takes the top layer's
+    /// (tests/reference/scenes/layers_normal.pov).
     #[inline(never)]
     fn shade_layers(
         &mut self,
@@ -316,7 +318,12 @@ impl<'a> Tracer<'a> {
         let mut color = Vec3::ZERO;
         for layer in layers.iter().rev() {
             let pigment = self.pigment_at(layer, surface.shape, p);
-            let s = Surface { material: layer, pigment, ..*surface };
+            // Each layer is lit by its own normal; `normal`, the top layer's, refracts.
+            let normal = match &layer.normal {
+                Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
+                None => facing,
+            };
+            let s = Surface { material: layer, pigment, normal, ..*surface };
             let (lit, reflected_dir) = self.lit(ray, &s, shadows);
             color += above * lit;
             if level < self.max_level() {

@@ -50,11 +50,12 @@ pub fn inside(objects: &[ObjectDesc], p: DVec3) -> bool {
 
 /// The objects as a `Solid` for the `object` pattern: built once, asked per point.
 pub fn solid(objects: &[ObjectDesc]) -> SolidRef {
-    SolidRef(Arc::new(ProbeSolid { scene: scene_of(objects) }))
+    SolidRef(Arc::new(ProbeSolid { scene: scene_of(objects), objects: objects.to_vec() }))
 }
 
 struct ProbeSolid {
     scene: Scene,
+    objects: Vec<ObjectDesc>,
 }
 
 impl std::fmt::Debug for ProbeSolid {
@@ -66,6 +67,10 @@ impl std::fmt::Debug for ProbeSolid {
 impl Solid for ProbeSolid {
     fn contains(&self, p: DVec3) -> bool {
         scene_contains(&self.scene, p)
+    }
+
+    fn objects(&self) -> &[ObjectDesc] {
+        &self.objects
     }
 }
 

@@ -40,7 +40,7 @@ done
 for s in lights_spot lights_area fog sky_sphere rainbow; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral slope_map layers_finish; do
+for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral slope_map layers_finish layers_normal; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in materials tiles; do
@@ -48,7 +48,7 @@ for s in materials tiles; do
 done
 # patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.
 (cd "$here/scenes" && render "$here/scenes/patterns_density.pov" patterns_density)
-# images.pov, bump_maps.pov, uv_mapping.pov and texture_patterns.pov read ../images/*.png (made by tests/reference/images/make_images.py).
-for s in images bump_maps uv_mapping texture_patterns; do
+# images.pov, bump_maps.pov, uv_mapping.pov, uv_box.pov and texture_patterns.pov read ../images/*.png (made by tests/reference/images/make_images.py).
+for s in images bump_maps uv_mapping uv_box texture_patterns; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
 done

@@ -97,8 +97,8 @@ impl Lowerer<'_> {
     }
 }
 
-/// Puts `upper` over `out` as a texture layer: the pigments stack, the upper normal (if any)
-/// replaces the lower one.
+/// Puts `upper` over `out` as a texture layer: the pigments stack; each layer keeps its own
+/// normal (see below).
 pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
     // The layers so far, whole, in case they must be shaded one by one (below).
     let mut layers = match out.pattern.take() {
@@ -124,19 +124,25 @@ pub(super) fn layer_over(out: &mut TextureDesc, upper: TextureDesc) {
     };
     pigments.push(upper.pigment.clone());
     out.pigment = PigmentDesc { pattern: PigmentPattern::Layered(pigments), ..Default::default() };
-    if upper.normal.is_some() {
-        out.normal = upper.normal.clone();
-    }
     if layers.is_empty() {
+        if upper.normal.is_some() {
+            out.normal = upper.normal.clone();
+        }
         return;
     }
+    // POV-Ray 3.7 lights each layer with its own normal, the surface's own where the layer
+    // has none, and refracts what passes through them all by the top layer's (measured on a
+    // flat plate lit from the side, a tilting normal on the bottom or the top layer of two:
+    // only that layer's diffuse changes; through glass, only the top one's shifts the view).
+    out.normal = upper.normal.clone();
     // POV-Ray shades each layer with its own finish; one finish over the composited pigment
-    // gives the same only while no layer differs in finish and none shines or reflects
-    // (every layer's highlights and reflection add up). Those keep the cheaper composite.
+    // gives the same only while no layer differs in finish or normal and none shines or
+    // reflects (every layer's highlights and reflection add up). Those keep the cheaper
+    // composite.
     layers.push(TextureDesc { pattern: None, ..upper });
-    let bottom = &layers[0].finish;
+    let bottom = &layers[0];
     let plain = |f: &FinishDesc| f.phong == 0.0 && f.specular == 0.0 && f.reflection == DVec3::ZERO;
-    if layers.iter().all(|t| t.finish == *bottom && plain(&t.finish)) {
+    if layers.iter().all(|t| t.finish == bottom.finish && plain(&t.finish) && t.normal == bottom.normal) {
         return;
     }
     out.pattern = Some(Box::new(TexturePatternDesc { selector: out.pigment.clone(), entries: layers, layered: true }));

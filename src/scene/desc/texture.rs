@@ -162,6 +162,8 @@ pub enum PatternKind {
 /// own kernels; the shading layer only asks.
 pub trait Solid: Send + Sync + std::fmt::Debug {
     fn contains(&self, p: glam::DVec3) -> bool;
+    /// The objects it was made of, as written (for `scene::print`).
+    fn objects(&self) -> &[super::ObjectDesc];
 }
 
 /// A shared `Solid`; two are equal when they are the same one.

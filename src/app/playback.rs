@@ -70,6 +70,8 @@ pub struct Playback {
     samples: Vec<Sample>,
     /// Each fresh present's non-tracing stages, in order.
     costs: Vec<FrameCosts>,
+    /// Fresh presents of reprojected frames.
+    reprojected: u64,
 }
 
 impl Playback {
@@ -86,6 +88,7 @@ impl Playback {
             stride: FIRST_STRIDE,
             samples: Vec::new(),
             costs: Vec::new(),
+            reprojected: 0,
         }
     }
 
@@ -140,10 +143,12 @@ impl Playback {
         }
     }
 
-    /// Records what the last fresh present cost outside tracing (ignored outside the path).
-    pub fn costs(&mut self, costs: FrameCosts) {
+    /// Records what the last fresh present cost outside tracing and whether its frame was
+    /// reprojected (ignored outside the path).
+    pub fn costs(&mut self, costs: FrameCosts, reprojected: bool) {
         if !self.finished() && self.start.is_some() {
             self.costs.push(costs);
+            self.reprojected += reprojected as u64;
         }
     }
 
@@ -246,6 +251,8 @@ pub fn report(playback: &Playback, scene: &Scene, cx: &ReportContext) -> Result<
         ("path_seconds", Json::Number(playback.seconds)),
         ("target_fps", Json::Number(cx.target_fps)),
         ("reproject", Json::Bool(cx.reproject)),
+        // How many presented frames were reprojected (where allowed, the cheaper way is chosen).
+        ("reprojected_frames", Json::Number(playback.reprojected as f64)),
         ("wall_seconds", Json::Number(wall)),
         ("frames_presented", Json::Number(playback.frames_presented() as f64)),
         ("presented_fps", Json::Number(fps)),
@@ -359,10 +366,10 @@ mod tests {
             let shown = p.wants_sample().then_some((&exact[..], w, h));
             p.presented(t0 + Duration::from_millis(i * 20), 1.0, camera, shown);
             let blit = Duration::from_micros(100 * i);
-            p.costs(FrameCosts { blit, ..FrameCosts::default() });
+            p.costs(FrameCosts { blit, ..FrameCosts::default() }, i % 2 == 0);
         }
         p.camera(t0 + Duration::from_secs(1), &camera);
-        p.costs(FrameCosts { blit: Duration::from_secs(9), ..FrameCosts::default() }); // after the end
+        p.costs(FrameCosts { blit: Duration::from_secs(9), ..FrameCosts::default() }, true); // after the end
         let cx = ReportContext {
             scene: "seed.pov",
             path: Path::new("p.path"),
@@ -384,6 +391,7 @@ mod tests {
         assert_eq!(samples[0].get("ssim").and_then(Json::as_f64), Some(1.0));
         assert_eq!(json.get("psnr_db_pooled").and_then(Json::as_f64), Some(PSNR_CAP));
         // Stage costs: the ten presents on the path (0.1 .. 1.0 ms of blit), not the one after.
+        assert_eq!(json.get("reprojected_frames").and_then(Json::as_u64), Some(5));
         let costs = json.get("non_tracing_ms").unwrap();
         assert_eq!(costs.get("frames").and_then(Json::as_u64), Some(10));
         let blit = costs.get("blit").unwrap();

@@ -25,6 +25,7 @@ use crate::camera::Camera;
 use crate::headless::CliError;
 use crate::render::adaptive::ScaleController;
 use crate::render::image::Image;
+use crate::render::moving_mode::{Mode, ModeChoice, Recorded};
 use crate::render::progressive::Accumulator;
 use crate::render::reproject::{ReprojectStats, Reprojector};
 use crate::render::stats::RenderStats;
@@ -56,8 +57,9 @@ pub struct View {
     pub quality: Quality,
     /// Upper bound on the adaptive scale while moving (a preset's `res_scale`; 1 = none).
     pub max_scale: f64,
-    /// Moving frames trace a quarter of their pixels and reuse the rest from the frame before
-    /// (`render::reproject`) where the camera allows it.
+    /// Moving frames may trace a quarter of their pixels and reuse the rest from the frame
+    /// before (`render::reproject`) where the camera allows it and that is measured to be
+    /// cheaper here (`render::moving_mode`).
     pub reproject: bool,
 }
 
@@ -167,6 +169,7 @@ impl RenderThread {
             recycle: recycle_rx,
             allocated: 0,
             controller: ScaleController::new(target_fps),
+            mode: ModeChoice::default(),
             reprojector: Reprojector::default(),
             reprojected_quality: None,
             wake: Box::new(wake),
@@ -245,6 +248,8 @@ struct Worker {
     recycle: Receiver<Frame>,
     allocated: usize,
     controller: ScaleController,
+    /// Whether moving frames are made whole or reprojected, by what each costs here.
+    mode: ModeChoice,
     /// Moving frames by reuse of the frame before; reset with a new scene or quality.
     reprojector: Reprojector,
     reprojected_quality: Option<Quality>,
@@ -277,6 +282,7 @@ impl Worker {
                     last = None;
                     acc_view = None;
                     self.reprojector.reset();
+                    self.mode = ModeChoice::default();
                 }
                 (self.wake)();
                 continue;
@@ -293,9 +299,12 @@ impl Worker {
                     let settings = self.settings(&view, w, h, None);
                     if self.reprojected_quality != Some(view.quality) {
                         self.reprojector.reset();
+                        self.mode = ModeChoice::default();
                     }
                     frame.reprojected = None;
-                    if view.reproject && Reprojector::supports(&self.scene, &view.camera) {
+                    let reprojectable = view.reproject && Reprojector::supports(&self.scene, &view.camera);
+                    let mode = if reprojectable { self.mode.next() } else { Mode::Whole };
+                    if mode == Mode::Reprojected {
                         self.reprojected_quality = Some(view.quality);
                         let (scene, reprojector) = (&self.scene, &mut self.reprojector);
                         let (pixels, stats, counts) =
@@ -309,12 +318,19 @@ impl Worker {
                         frame.encode_time = copy.elapsed();
                     } else {
                         frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
-                        encode(&pass, self.scene.srgb, &mut frame);
+                        self.pool.install(|| encode(&pass, self.scene.srgb, &mut frame));
                     }
                     frame.progress = Progress::Moving;
                     frame.scale = w as f64 / view.width as f64;
                     frame.view = Some(view);
-                    self.controller.update(frame.scale, start.elapsed().as_secs_f64());
+                    let seconds = start.elapsed().as_secs_f64();
+                    match reprojectable.then(|| self.mode.record(mode, frame.scale, seconds)) {
+                        None | Some(Recorded::Chosen) => {
+                            self.controller.update(frame.scale, seconds);
+                        }
+                        Some(Recorded::Probe) => {}
+                        Some(Recorded::Switched(ratio)) => self.controller.rescale_cost(ratio),
+                    }
                 }
                 Job::Refine(view) => {
                     if acc_view != Some(view) {
@@ -326,7 +342,7 @@ impl Worker {
                     frame.stats = self.pool.install(|| render(&self.scene, &view.camera, &settings, &mut pass));
                     acc.add(&pass);
                     acc.resolve(&mut resolved);
-                    encode(&resolved, self.scene.srgb, &mut frame);
+                    self.pool.install(|| encode(&resolved, self.scene.srgb, &mut frame));
                     frame.reprojected = None;
                     frame.progress = Progress::Refining { pass: acc.passes(), total: acc.total() };
                     frame.scale = 1.0;

@@ -337,7 +337,7 @@ impl App {
         }
         costs.present = present.elapsed();
         if let (true, Some(playback)) = (fresh, &mut self.playback) {
-            playback.costs(costs);
+            playback.costs(costs, frame.reprojected.is_some());
         }
         if let Some((path, rgb)) = shot {
             match output::write_png(&path, w, h, &rgb) {

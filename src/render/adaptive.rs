@@ -58,6 +58,14 @@ impl ScaleController {
         self.target
     }
 
+    /// Multiplies the smoothed cost by `factor` (frames are about to cost that much more or less,
+    /// as when the window changes how it makes them); the next `update` aims by it.
+    pub fn rescale_cost(&mut self, factor: f64) {
+        if let (Some(c), true) = (&mut self.cost, factor.is_finite() && factor > 0.0) {
+            *c *= factor;
+        }
+    }
+
     /// Reports that a frame rendered at `scale` took `seconds`; returns the next scale.
     pub fn update(&mut self, scale: f64, seconds: f64) -> f64 {
         if !(seconds.is_finite() && seconds > 0.0 && scale > 0.0) {

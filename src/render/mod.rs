@@ -9,6 +9,7 @@ pub mod csg;
 pub mod image;
 pub mod intersect;
 pub mod light;
+pub mod moving_mode;
 pub mod packet;
 pub mod precision;
 pub mod preset;

@@ -171,7 +171,7 @@ impl RenderThread {
             controller: ScaleController::new(target_fps),
             mode: ModeChoice::default(),
             reprojector: Reprojector::default(),
-            reprojected_quality: None,
+            moving_quality: None,
             wake: Box::new(wake),
         };
         let handle = std::thread::Builder::new()
@@ -252,7 +252,8 @@ struct Worker {
     mode: ModeChoice,
     /// Moving frames by reuse of the frame before; reset with a new scene or quality.
     reprojector: Reprojector,
-    reprojected_quality: Option<Quality>,
+    /// The quality the reprojector's history and the mode choice belong to.
+    moving_quality: Option<Quality>,
     wake: Box<dyn Fn() + Send>,
 }
 
@@ -297,15 +298,15 @@ impl Worker {
                     let w = ((view.width as f64 * scale).round() as u32).max(1);
                     let h = ((view.height as f64 * scale).round() as u32).max(1);
                     let settings = self.settings(&view, w, h, None);
-                    if self.reprojected_quality != Some(view.quality) {
+                    if self.moving_quality != Some(view.quality) {
                         self.reprojector.reset();
                         self.mode = ModeChoice::default();
+                        self.moving_quality = Some(view.quality);
                     }
                     frame.reprojected = None;
                     let reprojectable = view.reproject && Reprojector::supports(&self.scene, &view.camera);
                     let mode = if reprojectable { self.mode.next() } else { Mode::Whole };
                     if mode == Mode::Reprojected {
-                        self.reprojected_quality = Some(view.quality);
                         let (scene, reprojector) = (&self.scene, &mut self.reprojector);
                         let (pixels, stats, counts) =
                             self.pool.install(|| reprojector.frame(scene, &view.camera, &settings));

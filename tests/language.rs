@@ -215,6 +215,7 @@ fn rand_is_deterministic_per_seed_and_in_range() {
 /// objects with `rand` place them where POV-Ray does: seed 0's first six, the first of seeds
 /// -7 and 2.7 (truncated), and of 5e9 (out of 32-bit range).
 #[test]
+#[allow(clippy::excessive_precision)] // POV-Ray's 17 printed digits, as printed
 fn rand_gives_pov_rays_sequence() {
     let out = debug(
         "rand_pov",

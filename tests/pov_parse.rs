@@ -828,6 +828,30 @@ fn layered_textures_composite_also_after_a_pigment_or_on_a_declared_object() {
 
 /// Layers carry their own normals (POV-Ray 3.7 lights each layer by its own, the surface's
 /// where it has none, and refracts by the top one's): layers whose normals differ are kept
+/// `interior_texture` is an object's second texture, for the inner side: POV-Ray requires the
+/// outer one first ("Interior texture requires an exterior texture"), and so does strahl; a
+/// union's goes to its children that have none, moved by transforms after it.
+#[test]
+fn interior_texture_follows_the_texture() {
+    let (line, col, message) = err("it_alone", "sphere { 0, 1\n  interior_texture { pigment { rgb 1 } } }");
+    assert_eq!((line, col), (2, 3), "{message}");
+    assert!(message.contains("interior_texture needs the object's own texture"), "{message}");
+    let (_, _, message) =
+        err("it_union", "union { sphere { 0, 1 } sphere { x, 1 } interior_texture { pigment { rgb 1 } } }");
+    assert!(message.contains("interior_texture needs"), "{message}");
+    let s = load_text(
+        "it_union_ok",
+        "union { sphere { 0, 1 pigment { rgb 1 } interior_texture { pigment { rgb x } } } sphere { x, 1 }\n\
+         pigment { rgb 1 } interior_texture { pigment { rgb y } } translate x }",
+    )
+    .unwrap();
+    let inner = |i: usize| s.objects[i].interior_texture.as_ref().map(|t| t.pigment.clone());
+    assert!(inner(0).is_some() && inner(1).is_some(), "both spheres have an inner side");
+    assert_ne!(inner(0), inner(1), "the first keeps its own");
+    let plain = load_text("it_none", "sphere { 0, 1 pigment { rgb 1 } }").unwrap();
+    assert!(plain.objects[0].interior_texture.is_none());
+}
+
 /// whole for `Tracer::shade_layers`, and the texture's normal is the top layer's; layers of
 /// one normal and one plain finish stay a composited pigment.
 #[test]

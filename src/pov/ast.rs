@@ -666,6 +666,8 @@ pub enum Modifier {
     Interior(Interior),
     /// `material { }`: a texture and an interior given together.
     Material(Material),
+    /// `interior_texture { }`: the texture of the surface's inner side.
+    InteriorTexture(Texture),
     Transform(TransformItem),
     NoShadow,
     /// `hollow [on|off]`: kept for media (not modelled yet); changes nothing else in POV-Ray.

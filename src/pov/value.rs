@@ -160,6 +160,7 @@ impl Part {
             shape: ShapeDesc::Csg { op, children: Vec::new() },
             transform: Transform::default(),
             texture: TextureDesc::default(),
+            interior_texture: None,
             interior: InteriorDesc::default(),
             no_shadow: false,
             inverse: false,

@@ -222,6 +222,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             && !material.may_be_transparent()
             && material.uv.is_none()
             && material.blend.is_none()
+            && material.inside.is_none()
         {
             // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
             let ray = &rays[r];

@@ -127,10 +127,13 @@ impl<'a> Tracer<'a> {
     pub fn surface(&self, ray: &Ray, hit: &Hit) -> Surface<'a> {
         let scene = self.scene;
         let p = ray.at(hit.t);
-        let material = &scene.materials[scene.material_of(hit.shape) as usize];
+        let mut material = &scene.materials[scene.material_of(hit.shape) as usize];
         let geometric = scene.normal_at(hit.shape, p);
         // POV-Ray shades the side the ray sees: flip the normal towards the viewer.
         let entering = geometric.dot(ray.dir) < 0.0;
+        if let (false, Some(inside)) = (entering, material.inside) {
+            material = &scene.materials[inside as usize];
+        }
         let facing = if entering { geometric } else { -geometric };
         self.dressed(p, facing, entering, hit.shape, material)
     }

@@ -63,7 +63,13 @@ impl Visibility {
         // Every pixel is written below.
         self.seen.resize(w as usize * h as usize, Seen::default());
         let gen = RayGen::new(camera, scene, quality);
-        let dependent: Vec<bool> = scene.materials.iter().map(|m| m.reflects() || m.may_be_transparent()).collect();
+        let looks = |m: &crate::scene::material::Material| m.reflects() || m.may_be_transparent();
+        // An interior texture counts for its object: either side may be what a pixel shows.
+        let dependent: Vec<bool> = scene
+            .materials
+            .iter()
+            .map(|m| looks(m) || m.inside.is_some_and(|i| looks(&scene.materials[i as usize])))
+            .collect();
         let cx = Looks { scene, view_dependent: &dependent };
         let use_packets = packet::supported(scene) && gen.packets();
         let raster = Raster {

@@ -318,25 +318,39 @@ impl Scene {
             let object_from_render = object.transform.inverse * self.frame.world_from_render();
             crate::geometry::uv::UvMap::new(&object.shape, object_from_render)
         });
-        if let Some(&(.., index)) = self.material_cache.iter().find(same).filter(|_| uv.is_none()) {
+        let shared = uv.is_none() && object.interior_texture.is_none();
+        if let Some(&(.., index)) = self.material_cache.iter().find(same).filter(|_| shared) {
             return index;
         }
-        let mut m = Material::from_desc(&object.texture, &object.interior, &self.frame.world_from_render());
-        m.place(
-            uv.flatten().map(Box::new),
-            self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten(),
-        );
-        self.features.transparency |= m.may_be_transparent();
-        self.features.reflection |= m.reflects();
-        self.features.normals |= m.has_normal();
+        let uv = uv.flatten().map(Box::new);
+        let lights = self.light_masks.get(object.light_group.map_or(0, |g| g as usize + 1)).cloned().flatten();
+        let world_from_render = self.frame.world_from_render();
+        let inside = object.interior_texture.as_ref().map(|inner| {
+            let mut m = Material::from_desc(inner, &object.interior, &world_from_render);
+            m.place(uv.clone(), lights.clone());
+            self.note_material(&m);
+            self.materials.push(m);
+            self.materials.len() as u32 - 1
+        });
+        let mut m = Material::from_desc(&object.texture, &object.interior, &world_from_render);
+        m.place(uv, lights);
+        m.inside = inside;
+        self.note_material(&m);
         self.materials.push(m);
         let index = self.materials.len() as u32 - 1;
         // A bounded list: a scene of a million different looks compares each object with
         // MATERIAL_CACHE entries at most and shares none, as before.
-        if self.material_cache.len() < MATERIAL_CACHE {
+        if self.material_cache.len() < MATERIAL_CACHE && shared {
             self.material_cache.push((object.texture.clone(), object.interior.clone(), object.light_group, index));
         }
         index
+    }
+
+    /// Notes in `features` what `m` needs.
+    fn note_material(&mut self, m: &Material) {
+        self.features.transparency |= m.may_be_transparent();
+        self.features.reflection |= m.reflects();
+        self.features.normals |= m.has_normal();
     }
 
     /// One object of the scene: a primitive (or plane), or a CSG node over leaves.

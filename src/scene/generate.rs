@@ -124,6 +124,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
             uv_mapping: false,
             pattern: None,
         },
+        interior_texture: None,
         interior: Default::default(),
         no_shadow: false,
         inverse: false,

@@ -261,6 +261,9 @@ pub struct Material {
     /// A pattern of materials that differ in normal or finish (`TexturePatternDesc`): each
     /// hit is shaded as the entries it shows. `None` for every plain texture.
     pub blend: Option<Box<Blend>>,
+    /// `interior_texture`: the material (an index into the scene's materials) a ray sees where
+    /// it meets the surface from inside. `None`: this one on both sides.
+    pub inside: Option<u32>,
 }
 
 /// A pattern of whole materials; `Material::pigment` holds the same pattern over their
@@ -377,6 +380,7 @@ impl Material {
             lights: None,
             uv: None,
             blend: texture.pattern.as_ref().map(|p| Box::new(Blend::from_desc(p, interior, world_from_render))),
+            inside: None,
         }
     }
 

@@ -19,6 +19,9 @@ render "$root/scenes/seed.pov" seed
 for s in flat reflection refraction shadows interior_fade legacy gamma22 noversion cones tori csg; do
     render "$here/scenes/$s.pov" "$s"
 done
+for s in interior_texture; do
+    render "$here/scenes/$s.pov" "$s"
+done
 for s in quadrics; do
     render "$here/scenes/$s.pov" "$s"
 done

@@ -32,6 +32,7 @@ impl Lowerer<'_> {
                     shape: shape.expect("a shape was lowered above"),
                     transform: Transform::default(),
                     texture: TextureDesc::default(),
+                    interior_texture: None,
                     interior: InteriorDesc::default(),
                     no_shadow: false,
                     inverse: false,
@@ -207,10 +208,15 @@ impl Lowerer<'_> {
                     part.has_interior = true;
                 }
             }
+            Modifier::InteriorTexture(t) if !part.textured => return Err(interior_without_texture(t.span)),
+            Modifier::InteriorTexture(t) => obj.interior_texture = Some(Box::new(self.texture(t)?)),
             Modifier::Transform(t) => {
                 let t = self.transform(t)?;
                 obj.transform = obj.transform.then(&t);
                 transform_texture(&mut obj.texture, &t);
+                if let Some(inner) = &mut obj.interior_texture {
+                    transform_texture(inner, &t);
+                }
             }
             Modifier::NoShadow => obj.no_shadow = true,
             Modifier::Hollow(on) => obj.hollow = self.hollow(on.as_ref())?,
@@ -380,11 +386,23 @@ impl Lowerer<'_> {
                     pending.interior = interior;
                 }
             }
+            // Given to the shapes below that have none (as the texture is, but at once: a
+            // transform after it moves it with them below).
+            Modifier::InteriorTexture(t) if pending.texture.is_none() => return Err(interior_without_texture(t.span)),
+            Modifier::InteriorTexture(t) => {
+                let inner = self.texture(t)?;
+                each(parts, &mut |leaf| {
+                    leaf.desc.interior_texture.get_or_insert_with(|| Box::new(inner.clone()));
+                });
+            }
             Modifier::Transform(t) => {
                 let t = self.transform(t)?;
                 each(parts, &mut |leaf| {
                     leaf.desc.transform = leaf.desc.transform.then(&t);
                     transform_texture(&mut leaf.desc.texture, &t);
+                    if let Some(inner) = &mut leaf.desc.interior_texture {
+                        transform_texture(inner, &t);
+                    }
                 });
                 if let Some(tex) = &mut pending.texture {
                     transform_texture(tex, &t);
@@ -648,4 +666,9 @@ struct Inherited {
 /// `flag` written on a shape that does not take it.
 fn flag_not_taken(span: Span, flag: &str, on: &str, takes: &str) -> Diag {
     Diag::new(span, format!("`{flag}` does not apply to {on} (only to {takes})"))
+}
+
+/// POV-Ray's rule: an `interior_texture` follows the object's own texture (or pigment).
+fn interior_without_texture(span: crate::pov::source::Span) -> Diag {
+    Diag::new(span, "interior_texture needs the object's own texture (or pigment) before it, as in POV-Ray")
 }

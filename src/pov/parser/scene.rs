@@ -438,12 +438,7 @@ impl Parser<'_, '_> {
                     self.skip_unmodelled(&w)?;
                     continue;
                 }
-                Some("interior_texture") => {
-                    let at = self.peek().span;
-                    self.low.not_modelled("interior_texture", at);
-                    self.texture()?;
-                    continue;
-                }
+                Some("interior_texture") => Modifier::InteriorTexture(self.texture()?),
                 Some("hollow") => {
                     self.bump();
                     // `hollow` alone means on; a boolean may follow (`hollow off`, `hollow 0`).

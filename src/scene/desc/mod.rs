@@ -107,6 +107,9 @@ pub struct ObjectDesc {
     /// Object space → world space.
     pub transform: Transform,
     pub texture: TextureDesc,
+    /// `interior_texture`: the texture a ray sees where it meets the surface from inside
+    /// (against the outward normal); `None`: `texture` on both sides.
+    pub interior_texture: Option<Box<TextureDesc>>,
     pub interior: InteriorDesc,
     /// `no_shadow`: the object is visible but casts no shadow (shadow rays ignore it).
     pub no_shadow: bool,

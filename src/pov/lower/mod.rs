@@ -18,6 +18,7 @@ mod julia;
 mod lights;
 mod material;
 mod objects;
+mod shape_args;
 mod sweeps;
 mod text;
 mod texture_block;

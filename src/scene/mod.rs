@@ -12,3 +12,4 @@ pub mod material;
 pub mod place;
 pub mod print;
 pub mod probe;
+pub mod shape_kind;

@@ -99,26 +99,31 @@ pub fn checker<L: Lane>(p: V3<L>) -> L {
     L::select(checker_lanes(p, L::splat(0.0)), L::splat(1.0), L::splat(0.0))
 }
 
-/// `brick`: 0 in the mortar, 1 in a brick. Courses of `size.y` along y; every other course is
-/// shifted by half a brick along x and z; the mortar (`mortar` wide) runs along the upper
-/// faces of every brick.
+/// `brick`: 0 in the mortar, 1 in a brick. Courses of `size.y` along y; the joints across x
+/// are shifted by half a brick in odd courses and those across z in even ones, so the joints
+/// of neighbouring courses never line up on either face; the mortar (`mortar` wide) runs along
+/// the upper faces of every brick, from `size − mortar` up. Measured with POV-Ray 3.7's
+/// `function { pattern { brick } }` in courses −2 to 1, to 0.02 units and at the boundaries.
 #[inline(always)]
 pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
     L::from_fn(|i| {
         let q = p.lane(i);
+        // Every coordinate is nudged by 1e-4 of the brick along it: a face lying on a joint's
+        // plane (a wall box from z = 0) is hit within f32 rounding of it, on either side, where
+        // POV-Ray's double hits land on the plane and show the brick, not speckles of mortar.
+        let q = q + size * 1e-4;
         let course = (q.y / size.y).floor();
         let odd = course.rem_euclid(2.0) != 0.0;
         let (mut x, y, mut z) = (q.x, q.y - course * size.y, q.z);
         if odd {
             x += size.x * 0.5;
+        } else {
             z += size.z * 0.5;
         }
         let fx = x.rem_euclid(size.x);
         let fz = z.rem_euclid(size.z);
-        // The mortar runs along the upper faces of each brick (POV-Ray 3.7 shows bricks, not
-        // mortar, on the face z = 0).
         let m = mortar;
-        let in_mortar = y > size.y - m || fx > size.x - m || fz > size.z - m;
+        let in_mortar = y >= size.y - m || fx >= size.x - m || fz >= size.z - m;
         if in_mortar {
             0.0
         } else {
@@ -128,7 +133,9 @@ pub fn brick<L: Lane>(p: V3<L>, size: Vec3, mortar: f32) -> L {
 }
 
 /// `hexagon`: a tiling of the x-z plane by hexagons of unit side (√3 across the flats), coloured
-/// 0, 1, 2 so that no two neighbours match; a hexagon is centred on the origin with colour 0.
+/// 0, 1, 2 so that no two neighbours match; a hexagon is centred on the origin with colour 0,
+/// the one across its +z flat has colour 1 and the one beyond its +x, +z side colour 2 (POV-Ray
+/// 3.7's `function { pattern { hexagon } }`, measured on a 65×33 grid over [−2, 2]²).
 #[inline(always)]
 pub fn hexagon<L: Lane>(p: V3<L>) -> L {
     L::from_fn(|i| hexagon_one(p.x.get(i), p.z.get(i)))
@@ -147,7 +154,7 @@ fn hexagon_one(x: f32, z: f32) -> f32 {
     } else if dr > ds {
         rr = -rq - rs;
     }
-    (rq - rr).rem_euclid(3.0)
+    (rr - rq).rem_euclid(3.0)
 }
 
 /// `quilted`: unit cells whose value rises from the edges to the middle along a curve set by
@@ -200,20 +207,48 @@ mod tests {
 
     #[test]
     fn brick_mortar_and_courses() {
-        let b = |p| one(|q| brick(q, Vec3::new(8.0, 3.0, 4.5), 0.5), p);
-        assert_eq!(b([4.0, 1.5, 2.0]), 1.0);
-        assert_eq!(b([0.0, 1.5, 0.0]), 1.0, "the corner at the origin is brick");
-        assert_eq!(b([7.9, 1.5, 2.0]), 0.0, "vertical joint");
-        assert_eq!(b([4.0, 2.9, 2.0]), 0.0, "bed joint");
-        // The next course is shifted by half a brick: its joint is at x = 4 − mortar.
-        assert_eq!(b([3.7, 4.5, 1.0]), 0.0);
-        assert_eq!(b([0.5, 4.5, 1.0]), 1.0);
+        // POV-Ray 3.7's values, read with `function { pattern { brick brick_size <1, 0.5, 1>
+        // mortar 0.1 } }`.
+        let b = |p| one(|q| brick(q, Vec3::new(1.0, 0.5, 1.0), 0.1), p);
+        assert_eq!(b([0.2, 0.25, 0.2]), 1.0);
+        assert_eq!(b([0.9, 0.25, 0.2]), 0.0, "the vertical joint starts at size − mortar");
+        assert_eq!(b([0.99, 0.25, 0.2]), 0.0);
+        assert_eq!(b([1.0, 0.25, 0.2]), 1.0, "and ends at the next brick");
+        assert_eq!(b([0.2, 0.45, 0.2]), 0.0, "bed joint");
+        assert_eq!(b([0.2, 0.5, 0.2]), 1.0);
+        // Even courses shift the joints across z by half a brick, odd ones those across x.
+        assert_eq!(b([0.2, 0.25, 0.45]), 0.0);
+        assert_eq!(b([0.2, 0.25, 0.95]), 1.0);
+        assert_eq!(b([0.45, 0.75, 0.2]), 0.0);
+        assert_eq!(b([0.95, 0.75, 0.2]), 1.0);
+        assert_eq!(b([0.2, 0.75, 0.95]), 0.0);
+        // A face on a joint's plane, hit a rounding error short of it, shows the brick.
+        assert_eq!(b([0.2, 0.75, -1e-6]), 1.0);
+        assert_eq!(b([1.0 - 1e-6, 0.25, 0.2]), 1.0);
+        // The price: the mortar starts 1e-4 of a brick early (POV-Ray: brick at 0.9 − 1e-6).
+        assert_eq!(b([0.9 - 1e-6, 0.25, 0.2]), 0.0);
+        assert_eq!(b([0.9 - 2e-4, 0.25, 0.2]), 1.0);
+        // Negative courses alternate the same way: −1 is odd, −2 even.
+        assert_eq!(b([0.45, -0.25, 0.2]), 0.0);
+        assert_eq!(b([0.2, -0.25, 0.95]), 0.0);
+        assert_eq!(b([0.95, -0.75, 0.2]), 0.0);
+        assert_eq!(b([0.2, -0.75, 0.45]), 0.0);
+        assert_eq!(b([0.2, -0.75, 0.95]), 1.0);
     }
 
     #[test]
     fn hexagon_neighbours_differ() {
         let h = |x, z| hexagon_one(x, z);
         assert_eq!(h(0.0, 0.0), 0.0);
+        // POV-Ray 3.7's colours around the origin's hexagon.
+        assert_eq!(h(0.0, 1.75), 1.0);
+        assert_eq!(h(0.0, -1.75), 2.0);
+        assert_eq!(h(1.5, 0.87), 2.0);
+        assert_eq!(h(-1.5, 0.87), 2.0);
+        assert_eq!(h(1.5, -0.87), 1.0);
+        assert_eq!(h(-1.5, -0.87), 1.0);
+        assert_eq!(h(0.9, 0.0), 0.0);
+        assert_eq!(h(1.1, 0.05), 2.0);
         let c = h(0.0, 0.0);
         // The six neighbours √3 away (across the flats) all differ from the centre.
         for k in 0..6 {

@@ -106,7 +106,7 @@ impl UvMap {
 /// cell. The middle row (v from 1/3 to 2/3, up the box) runs -x, +z, +x, -z in u, each seen
 /// from outside with u growing to the right; +y is the cell above +z (its -z edge at the
 /// top), -y the cell below (its +z edge at the top). A point takes the face it is nearest.
-fn box_uv(q: DVec3, min: DVec3, max: DVec3) -> DVec2 {
+pub(crate) fn box_uv(q: DVec3, min: DVec3, max: DVec3) -> DVec2 {
     let a = ((q - min) / (max - min).max(DVec3::splat(f64::MIN_POSITIVE))).clamp(DVec3::ZERO, DVec3::ONE);
     let (below, above) = ((q - min).abs(), (max - q).abs());
     let gap = below.min(above);

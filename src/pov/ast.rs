@@ -399,8 +399,20 @@ pub enum WarpAst {
         strength: Option<Expr>,
         falloff: Option<Expr>,
         inverse: bool,
+        repeat: Option<Expr>,
+        /// `turbulence` (jitter of repeated holes): read, not modelled.
+        turbulence: Option<Span>,
     },
-    /// A warp read but not modelled (mapping warps), with its keyword.
+    /// `cylindrical`, `spherical`, `toroidal`, `planar [N, D]` or `cubic` (the word), with
+    /// `orientation`, `dist_exp` and `major_radius`.
+    Mapping {
+        map: String,
+        plane: Option<(Expr, Expr)>,
+        orientation: Option<Expr>,
+        dist_exp: Option<Expr>,
+        major_radius: Option<Expr>,
+    },
+    /// A warp read but not modelled, with its keyword.
     Other(String, Span),
 }
 

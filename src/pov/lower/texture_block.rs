@@ -73,7 +73,7 @@ impl Lowerer<'_> {
                 }
                 TextureItem::Mod(m) => {
                     if let Some(pd) = &mut pattern {
-                        self.pattern_mod(m, pd)?;
+                        self.pattern_mod(m, pd, &pattern_transform)?;
                     }
                 }
                 TextureItem::TextureMap(entries, _) => {

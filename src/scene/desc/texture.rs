@@ -239,13 +239,49 @@ pub enum Warp {
         offset: DVec3,
         flip: DVec3,
     },
+    /// `warp { black_hole C, R ... }`; `repeat` (zero components: no repeat) places one in
+    /// every cell of that size, C being the offset into each.
     BlackHole {
         center: DVec3,
         radius: f64,
         strength: f64,
         falloff: f64,
         inverse: bool,
+        repeat: DVec3,
     },
+    /// `warp { cylindrical | spherical | toroidal | planar | cubic }`: the point mapped onto
+    /// (u, v, depth) as image maps wrap, then turned by `orientation` (for `planar`, the
+    /// plane's normal).
+    Mapping {
+        map: WarpMap,
+        orientation: DVec3,
+        dist_exp: f64,
+    },
+}
+
+/// A warp and where it was written among the pattern's transforms: `space` maps pattern space
+/// to the space the warp works in (the transforms written before it; identity for none).
+/// POV-Ray applies warps and transforms in one list, so `warp { black_hole 0, 1 } scale 2`
+/// and `scale 2 warp { black_hole 0, 1 }` differ.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlacedWarp {
+    pub warp: Warp,
+    pub space: super::Transform,
+}
+
+/// The surface a mapping warp wraps the pattern around.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WarpMap {
+    Cylindrical,
+    Spherical,
+    Toroidal {
+        major_radius: f64,
+    },
+    /// The pattern on the plane `distance` along the normal, extruded along z.
+    Planar {
+        distance: f64,
+    },
+    Cubic,
 }
 
 /// A pattern with its value modifiers; the transform and classic turbulence live with the
@@ -256,7 +292,8 @@ pub struct PatternDesc {
     pub wave: Wave,
     pub frequency: f64,
     pub phase: f64,
-    pub warps: Vec<Warp>,
+    /// In written order; POV-Ray applies the last written first.
+    pub warps: Vec<PlacedWarp>,
 }
 
 impl PatternDesc {

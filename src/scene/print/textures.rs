@@ -179,7 +179,7 @@ fn object_text(solid: &crate::scene::desc::SolidRef) -> String {
 
 /// A pattern keyword with its parameters and value modifiers.
 pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
-    use crate::scene::desc::{PatternKind as K, Warp, Wave};
+    use crate::scene::desc::{PatternKind as K, Warp, WarpMap, Wave};
     let v = |d: glam::DVec3| format!("<{}, {}, {}>", num(d.x), num(d.y), num(d.z));
     let mut out = match &p.kind {
         K::Function(f) => format!("function {{ /* {} instructions */ }}", f.len()),
@@ -238,8 +238,11 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     if p.kind.list_len().is_none() && !matches!(p.kind, K::Average) {
         let _ = write!(out, " {wave} frequency {} phase {}", num(p.frequency), num(p.phase));
     }
-    for w in &p.warps {
-        let _ = match *w {
+    for placed in &p.warps {
+        // A warp written after transforms: those transforms, the warp, and their undoing, so
+        // the warp works in the same space when the printed scene is read again.
+        out.push_str(&modifiers(&placed.space.matrix));
+        let _ = match placed.warp {
             Warp::Turbulence(t) => write!(
                 out,
                 " warp {{ turbulence {} octaves {} omega {} lambda {} }}",
@@ -251,16 +254,36 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
             Warp::Repeat { dir, offset, flip } => {
                 write!(out, " warp {{ repeat {} offset {} flip {} }}", v(dir), v(offset), v(flip))
             }
-            Warp::BlackHole { center, radius, strength, falloff, inverse } => write!(
+            Warp::BlackHole { center, radius, strength, falloff, inverse, repeat } => write!(
                 out,
-                " warp {{ black_hole {}, {} strength {} falloff {}{} }}",
+                " warp {{ black_hole {}, {} strength {} falloff {}{} repeat {} }}",
                 v(center),
                 num(radius),
                 num(strength),
                 num(falloff),
-                if inverse { " inverse" } else { "" }
+                if inverse { " inverse" } else { "" },
+                v(repeat)
             ),
+            Warp::Mapping { map, orientation, dist_exp } => match map {
+                WarpMap::Planar { distance } => write!(out, " warp {{ planar {}, {} }}", v(orientation), num(distance)),
+                WarpMap::Cubic => write!(out, " warp {{ cubic }}"),
+                WarpMap::Toroidal { major_radius } => write!(
+                    out,
+                    " warp {{ toroidal orientation {} dist_exp {} major_radius {} }}",
+                    v(orientation),
+                    num(dist_exp),
+                    num(major_radius)
+                ),
+                WarpMap::Cylindrical | WarpMap::Spherical => write!(
+                    out,
+                    " warp {{ {} orientation {} dist_exp {} }}",
+                    if map == WarpMap::Cylindrical { "cylindrical" } else { "spherical" },
+                    v(orientation),
+                    num(dist_exp)
+                ),
+            },
         };
+        out.push_str(&modifiers(&placed.space.inverse));
     }
     out
 }

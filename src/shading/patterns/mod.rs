@@ -9,10 +9,11 @@
 pub mod cells;
 pub mod density;
 pub mod fractal;
+pub mod mapping;
 pub mod simple;
 pub mod turbulent;
 
-use glam::Vec3;
+use glam::{Affine3A, Vec3};
 
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{PatternDesc, PatternKind, Warp, Wave};
@@ -76,7 +77,16 @@ pub enum Wave32 {
 pub enum Warp32 {
     Turbulence(TurbulenceF32),
     Repeat { axis: usize, width: f32, offset: Vec3, flip: Vec3 },
-    BlackHole { center: Vec3, radius: f32, strength: f32, falloff: f32, inverse: bool },
+    BlackHole { center: Vec3, radius: f32, strength: f32, falloff: f32, inverse: bool, repeat: Vec3 },
+    Mapping(mapping::MappingWarp),
+}
+
+/// A warp in pattern space: where it was written among the pattern's transforms, `to` moves
+/// the point into the space it works in and `back` returns it (`None`: written before any).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlacedWarp32 {
+    pub warp: Warp32,
+    pub space: Option<(Affine3A, Affine3A)>,
 }
 
 /// A render-ready pattern: kind, warps, frequency, phase and wave.
@@ -86,7 +96,8 @@ pub struct Pattern32 {
     pub wave: Wave32,
     pub frequency: f32,
     pub phase: f32,
-    pub warps: Vec<Warp32>,
+    /// In written order; applied last first, as POV-Ray does.
+    pub warps: Vec<PlacedWarp32>,
 }
 
 impl Pattern32 {
@@ -142,8 +153,12 @@ impl Pattern32 {
         let warps = d
             .warps
             .iter()
-            .filter_map(|w| {
-                Some(match *w {
+            .filter_map(|placed| {
+                let space = (!placed.space.is_identity()).then(|| {
+                    let f = |m: &glam::DMat4| Affine3A::from_mat4(m.as_mat4());
+                    (f(&placed.space.matrix), f(&placed.space.inverse))
+                });
+                let warp = match placed.warp {
                     Warp::Turbulence(t) => Warp32::Turbulence(TurbulenceF32::from_desc(&t)),
                     Warp::Repeat { dir, offset, flip } => {
                         let axis = (0..3).find(|&a| dir[a] != 0.0)?;
@@ -154,14 +169,19 @@ impl Pattern32 {
                             flip: flip.as_vec3(),
                         }
                     }
-                    Warp::BlackHole { center, radius, strength, falloff, inverse } => Warp32::BlackHole {
+                    Warp::BlackHole { center, radius, strength, falloff, inverse, repeat } => Warp32::BlackHole {
                         center: center.as_vec3(),
                         radius: radius as f32,
                         strength: strength as f32,
                         falloff: falloff as f32,
                         inverse,
+                        repeat: repeat.as_vec3(),
                     },
-                })
+                    Warp::Mapping { map, orientation, dist_exp } => {
+                        Warp32::Mapping(mapping::MappingWarp::new(map, orientation, dist_exp))
+                    }
+                };
+                Some(PlacedWarp32 { warp, space })
             })
             .collect();
         Pattern32 { kind, wave, frequency: d.frequency as f32, phase: d.phase as f32, warps }
@@ -177,8 +197,11 @@ impl Pattern32 {
     #[inline(always)]
     pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
         let mut p = p;
-        for w in &self.warps {
-            p = apply_warp(w, p, max_octaves);
+        for w in self.warps.iter().rev() {
+            p = match w.space {
+                None => apply_warp(&w.warp, p, max_octaves),
+                Some((to, back)) => apply_warp(&w.warp, p.transform_point(&to), max_octaves).transform_point(&back),
+            };
         }
         let v = kernel(&self.kind, p);
         if self.is_list() {
@@ -284,20 +307,26 @@ fn apply_warp<L: Lane>(w: &Warp32, p: V3<L>, max_octaves: Option<u32>) -> V3<L> 
             }
             q + offset * cell
         }),
-        Warp32::BlackHole { center, radius, strength, falloff, inverse } => V3::from_lanes(|i| {
+        Warp32::BlackHole { center, radius, strength, falloff, inverse, repeat } => V3::from_lanes(|i| {
             let q = p.lane(i);
-            let d = q - center;
+            // With `repeat`, the hole of the cell the point is in (centre offset into it).
+            let cell = Vec3::select(repeat.cmpgt(Vec3::ZERO), (q / repeat).floor() * repeat, Vec3::ZERO);
+            let d = q - (cell + center);
             let r = d.length();
             if r >= radius || r == 0.0 {
                 return q;
             }
-            let amount = (1.0 - r / radius).powf(falloff) * strength;
+            // A point moves at most its distance from the centre (POV-Ray's reference). The
+            // hole pulls the pattern in: a point reads the pattern from further out (POV-Ray
+            // 3.7 renders a star of small checks); `inverse` pushes it out.
+            let amount = ((1.0 - r / radius).powf(falloff) * strength).min(1.0);
             if inverse {
-                q + d * amount
-            } else {
                 q - d * amount
+            } else {
+                q + d * amount
             }
         }),
+        Warp32::Mapping(ref m) => V3::from_lanes(|i| m.apply(p.lane(i))),
     }
 }
 
@@ -306,7 +335,7 @@ mod tests {
     use super::*;
     use crate::function::{Binary, Node, Program};
     use crate::lanes::F8;
-    use crate::scene::desc::Turbulence;
+    use crate::scene::desc::{PlacedWarp, Transform, Turbulence, WarpMap};
     use glam::DVec3;
 
     fn all_kinds() -> Vec<PatternKind> {
@@ -372,10 +401,18 @@ mod tests {
                 (Wave::Ramp, vec![]),
                 (Wave::Sine, vec![Warp::Turbulence(Turbulence { amount: DVec3::splat(0.3), ..Default::default() })]),
                 (Wave::Poly(2.0), vec![Warp::Repeat { dir: DVec3::X, offset: DVec3::Y, flip: DVec3::X }]),
+                (
+                    Wave::Ramp,
+                    vec![Warp::Mapping {
+                        map: WarpMap::Toroidal { major_radius: 0.7 },
+                        orientation: DVec3::Y,
+                        dist_exp: 1.0,
+                    }],
+                ),
             ] {
                 let mut d = PatternDesc::new(kind.clone());
                 d.wave = wave;
-                d.warps = warps;
+                d.warps = warps.into_iter().map(|warp| PlacedWarp { warp, space: Transform::default() }).collect();
                 d.frequency = 2.0;
                 let pat = Pattern32::from_desc(&d);
                 for k in 0..100 {

@@ -10,7 +10,7 @@ mod normals;
 mod patterns;
 
 use super::Lowerer;
-use crate::pov::ast::{ColorItem, ColorKey, Expr, ExprKind, Pigment, PigmentItem, Turb, TurbKind};
+use crate::pov::ast::{ColorItem, ColorKey, Expr, ExprKind, PatternMod, Pigment, PigmentItem, Turb, TurbKind};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
@@ -190,8 +190,14 @@ impl Lowerer<'_> {
                     if let Pattern::Wood = pattern {
                         pattern = Pattern::Generic(PatternDesc::new(PatternKind::Wood), Vec::new());
                     }
+                    // A warped checker goes through the general list pattern; an unwarped one
+                    // keeps its own fast path (wave modifiers do nothing to it).
+                    if let (Pattern::Checker(a, b), PatternMod::Warp(_)) = (&pattern, m) {
+                        let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
+                        pattern = Pattern::Generic(PatternDesc::new(PatternKind::Checker), vec![solid(*a), solid(*b)]);
+                    }
                     if let Pattern::Generic(pd, _) = &mut pattern {
-                        self.pattern_mod(m, pd)?;
+                        self.pattern_mod(m, pd, &transform)?;
                     }
                 }
                 PigmentItem::ImageMap(im, _) => pattern = Pattern::Done(PigmentPattern::ImageMap(im.clone())),

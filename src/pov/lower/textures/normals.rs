@@ -77,7 +77,7 @@ impl Lowerer<'_> {
                 }
                 NormalItem::Mod(m) => {
                     if let Some(NormalPattern::Pattern(pd, _) | NormalPattern::Map(pd, _)) = &mut pattern {
-                        self.pattern_mod(m, pd)?;
+                        self.pattern_mod(m, pd, &transform)?;
                     }
                 }
                 NormalItem::BumpSize(e) => {

@@ -8,7 +8,7 @@ use crate::pov::ast::{Expr, PatternAst, PatternMod, Stmt, WarpAst};
 use crate::pov::lower::Lowerer;
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
-use crate::scene::desc::{Fractal, FractalKind, PatternDesc, PatternKind, Warp, Wave};
+use crate::scene::desc::{Fractal, FractalKind, PatternDesc, PatternKind, PlacedWarp, Transform, Warp, WarpMap, Wave};
 
 impl Lowerer<'_> {
     /// The pattern a keyword names, with its argument.
@@ -162,7 +162,14 @@ impl Lowerer<'_> {
     }
 
     /// Applies one modifier to a pattern.
-    pub(in crate::pov::lower) fn pattern_mod(&mut self, m: &PatternMod, pd: &mut PatternDesc) -> PResult<()> {
+    /// `placed`: the pattern's transforms written so far (where a warp sits among them).
+    pub(in crate::pov::lower) fn pattern_mod(
+        &mut self,
+        m: &PatternMod,
+        pd: &mut PatternDesc,
+        placed: &Transform,
+    ) -> PResult<()> {
+        let place = |warp| PlacedWarp { warp, space: *placed };
         match m {
             PatternMod::Wave(w, e) => {
                 pd.wave = match w.as_str() {
@@ -234,14 +241,16 @@ impl Lowerer<'_> {
                         self.turb(t, &mut state)?;
                     }
                     // `octaves` etc. after a `turbulence` warp of a texture extend it.
-                    if let (false, Some(Warp::Turbulence(last))) = (state.given, pd.warps.last_mut()) {
+                    if let (false, Some(Warp::Turbulence(last))) =
+                        (state.given, pd.warps.last_mut().map(|w| &mut w.warp))
+                    {
                         for t in items {
                             let mut s = TurbState { value: *last, given: true };
                             self.turb(t, &mut s)?;
                             *last = s.value;
                         }
                     } else if let Some(t) = state.finish() {
-                        pd.warps.push(Warp::Turbulence(t));
+                        pd.warps.push(place(Warp::Turbulence(t)));
                     }
                 }
                 WarpAst::Repeat { dir, offset, flip } => {
@@ -254,20 +263,67 @@ impl Lowerer<'_> {
                         Some(e) => self.vec3(e)?,
                         None => DVec3::ZERO,
                     };
-                    pd.warps.push(Warp::Repeat { dir, offset, flip });
+                    pd.warps.push(place(Warp::Repeat { dir, offset, flip }));
                 }
-                WarpAst::BlackHole { center, radius, strength, falloff, inverse } => {
+                WarpAst::BlackHole { center, radius, strength, falloff, inverse, repeat, turbulence } => {
                     let opt = |l: &Self, e: &Option<Expr>, d: f64| match e {
                         Some(e) => l.float(e),
                         None => Ok(d),
                     };
-                    pd.warps.push(Warp::BlackHole {
-                        center: self.vec3(center)?,
-                        radius: self.float(radius)?,
+                    if let Some(span) = turbulence {
+                        self.warn(Diag::new(
+                            *span,
+                            "black_hole `turbulence` (jittered repeats) is not modelled; the holes repeat exactly",
+                        ));
+                    }
+                    let repeat = match repeat {
+                        Some(e) => self.vec3(e)?.max(DVec3::ZERO),
+                        None => DVec3::ZERO,
+                    };
+                    // Repeated holes must lie inside their cells: along a repeated axis the
+                    // centre is at least the radius into the cell and the cell at least the
+                    // centre plus the radius wide (POV-Ray moves them the same way, measured:
+                    // `black_hole 0, 0.3 repeat <0.8, 0.8, 0>` centres its holes at 0.3).
+                    let (mut center, radius) = (self.vec3(center)?, self.float(radius)?);
+                    let mut repeat = repeat;
+                    for a in 0..3 {
+                        if repeat[a] > 0.0 {
+                            center[a] = center[a].max(radius);
+                            repeat[a] = repeat[a].max(center[a] + radius);
+                        }
+                    }
+                    pd.warps.push(place(Warp::BlackHole {
+                        center,
+                        radius,
                         strength: opt(self, strength, 1.0)?,
                         falloff: opt(self, falloff, 2.0)?,
                         inverse: *inverse,
-                    });
+                        repeat,
+                    }));
+                }
+                WarpAst::Mapping { map, plane, orientation, dist_exp, major_radius } => {
+                    let opt = |l: &Self, e: &Option<Expr>, d: f64| match e {
+                        Some(e) => l.float(e),
+                        None => Ok(d),
+                    };
+                    let (map, orientation) = match (map.as_str(), plane) {
+                        ("cylindrical", _) => (WarpMap::Cylindrical, orientation.as_ref()),
+                        ("spherical", _) => (WarpMap::Spherical, orientation.as_ref()),
+                        ("toroidal", _) => {
+                            (WarpMap::Toroidal { major_radius: opt(self, major_radius, 1.0)? }, orientation.as_ref())
+                        }
+                        ("planar", Some((normal, distance))) => {
+                            (WarpMap::Planar { distance: self.float(distance)? }, Some(normal))
+                        }
+                        ("planar", None) => (WarpMap::Planar { distance: 0.0 }, None),
+                        _ => (WarpMap::Cubic, None),
+                    };
+                    let orientation = match orientation {
+                        Some(e) => self.vec3(e)?.try_normalize().unwrap_or(DVec3::Z),
+                        None => DVec3::Z,
+                    };
+                    let dist_exp = opt(self, dist_exp, 0.0)?;
+                    pd.warps.push(place(Warp::Mapping { map, orientation, dist_exp }));
                 }
                 WarpAst::Other(word, span) => {
                     self.warn(Diag::new(*span, format!("warp `{word}` is not modelled; ignored")));

@@ -265,6 +265,7 @@ impl Parser<'_, '_> {
                 self.eat_punct(',');
                 let radius = self.expr()?;
                 let (mut strength, mut falloff, mut inverse) = (None, None, false);
+                let (mut repeat, mut turbulence) = (None, None);
                 loop {
                     match self.peek_ident().as_deref() {
                         Some("strength") => {
@@ -279,10 +280,47 @@ impl Parser<'_, '_> {
                             self.bump();
                             inverse = true;
                         }
+                        Some("repeat") => {
+                            self.bump();
+                            repeat = Some(self.expr()?);
+                        }
+                        Some("turbulence") => {
+                            turbulence = Some(self.bump().span);
+                            self.expr()?;
+                        }
                         _ => break,
                     }
                 }
-                WarpAst::BlackHole { center, radius, strength, falloff, inverse }
+                WarpAst::BlackHole { center, radius, strength, falloff, inverse, repeat, turbulence }
+            }
+            Some(map @ ("cylindrical" | "spherical" | "toroidal" | "planar" | "cubic")) => {
+                self.bump();
+                let plane = if map == "planar" && self.starts_expr(&[]) {
+                    let normal = self.expr()?;
+                    self.expect_punct(',', "after the planar warp's normal")?;
+                    Some((normal, self.expr()?))
+                } else {
+                    None
+                };
+                let (mut orientation, mut dist_exp, mut major_radius) = (None, None, None);
+                loop {
+                    match self.peek_ident().as_deref() {
+                        Some("orientation") if map != "planar" && map != "cubic" => {
+                            self.bump();
+                            orientation = Some(self.expr()?);
+                        }
+                        Some("dist_exp") if map != "planar" && map != "cubic" => {
+                            self.bump();
+                            dist_exp = Some(self.expr()?);
+                        }
+                        Some("major_radius") if map == "toroidal" => {
+                            self.bump();
+                            major_radius = Some(self.expr()?);
+                        }
+                        _ => break,
+                    }
+                }
+                WarpAst::Mapping { map: map.to_string(), plane, orientation, dist_exp, major_radius }
             }
             _ => {
                 let span = self.peek().span;

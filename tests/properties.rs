@@ -20,8 +20,8 @@ use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
 use strahl::scene::desc::{
     BlobComponent, BlobShape, CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc,
-    NormalPattern, ObjectDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef, SplineKind,
-    TextureDesc, Transform, Turbulence,
+    NormalPattern, ObjectDesc, PatternDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef,
+    SplineKind, TextureDesc, Transform, Turbulence, Warp,
 };
 use strahl::scene::print::to_pov;
 
@@ -463,6 +463,25 @@ fn close_xf(a: &Transform, b: &Transform) -> bool {
     a.matrix.to_cols_array().iter().zip(b.matrix.to_cols_array()).all(|(p, q)| close(*p, q))
 }
 
+/// Patterns whose numbers print exactly; the spaces warps work in are transforms, which print
+/// rounded.
+fn same_pattern(a: &PatternDesc, b: &PatternDesc) -> bool {
+    let strip = |p: &PatternDesc| PatternDesc { warps: Vec::new(), ..p.clone() };
+    strip(a) == strip(b)
+        && a.warps.len() == b.warps.len()
+        && a.warps.iter().zip(&b.warps).all(|(x, y)| {
+            let warp_ok = match (x.warp, y.warp) {
+                // Orientations are normalised again when read back.
+                (
+                    Warp::Mapping { map: m1, orientation: o1, dist_exp: d1 },
+                    Warp::Mapping { map: m2, orientation: o2, dist_exp: d2 },
+                ) => m1 == m2 && close3(o1, o2) && d1 == d2,
+                (p, q) => p == q,
+            };
+            warp_ok && close_xf(&x.space, &y.space)
+        })
+}
+
 /// Field-by-field equality up to float rounding; `Err` names the first field that differs.
 fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
     check(close(a.version, b.version), "version".into())?;
@@ -606,12 +625,13 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         }
         // A list's entries carry the transforms composed over them, which print rounded.
         (PigmentPattern::List(p, l), PigmentPattern::List(q, m)) => {
-            p == q
+            same_pattern(p, q)
                 && l.len() == m.len()
                 && l.iter().zip(m).all(|(x, y)| {
                     x.pattern == y.pattern && x.turbulence == y.turbulence && close_xf(&x.transform, &y.transform)
                 })
         }
+        (PigmentPattern::Mapped(p, m1), PigmentPattern::Mapped(q, m2)) => same_pattern(p, q) && m1 == m2,
         // The pattern kinds, maps and lists print their numbers exactly (shortest round trip).
         (x, y) => x == y,
     };

@@ -46,7 +46,7 @@ done
 for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral slope_map layers_finish layers_normal; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in materials tiles warps; do
+for s in materials tiles warps warps_nested; do
     render "$here/scenes/$s.pov" "$s"
 done
 # patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.

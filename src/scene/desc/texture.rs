@@ -323,6 +323,37 @@ impl PigmentDesc {
         }
     }
 
+    /// Warps written in an enclosing pigment after this one (in its `pigment_map` or list):
+    /// POV-Ray warps the point for the pigments a pattern is made of too. Each `(warp,
+    /// before)` works in the space of the enclosing block's transforms written before it, so
+    /// here in that of this pigment's transform so far followed by them. Wood and solid
+    /// colours take none (a warped wood is lowered as a general pattern); images ignore them.
+    pub fn inherit_warps(&mut self, warps: &[(Warp, super::Transform)]) {
+        if warps.is_empty() {
+            return;
+        }
+        let own = self.transform;
+        let placed = || warps.iter().map(|(warp, before)| PlacedWarp { warp: *warp, space: own.then(before) });
+        if let PigmentPattern::Checker(a, b) = self.pattern {
+            let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
+            self.pattern = PigmentPattern::List(PatternDesc::new(PatternKind::Checker), vec![solid(a), solid(b)]);
+        }
+        match &mut self.pattern {
+            PigmentPattern::Mapped(pd, _) => pd.warps.extend(placed()),
+            PigmentPattern::PigmentMap(pd, entries) => {
+                pd.warps.extend(placed());
+                entries.iter_mut().for_each(|(_, p)| p.inherit_warps(warps));
+            }
+            PigmentPattern::List(pd, list) => {
+                pd.warps.extend(placed());
+                list.iter_mut().for_each(|p| p.inherit_warps(warps));
+            }
+            PigmentPattern::Layered(list) => list.iter_mut().for_each(|p| p.inherit_warps(warps)),
+            PigmentPattern::Solid(_) | PigmentPattern::Checker(..) | PigmentPattern::Wood(_) => {}
+            PigmentPattern::ImageMap(_) => {}
+        }
+    }
+
     /// Whether the pigment is a single colour that needs no pattern work.
     pub fn is_solid(&self) -> bool {
         matches!(self.pattern, PigmentPattern::Solid(_))

@@ -238,10 +238,15 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     if p.kind.list_len().is_none() && !matches!(p.kind, K::Average) {
         let _ = write!(out, " {wave} frequency {} phase {}", num(p.frequency), num(p.phase));
     }
+    // A warp written after transforms: those transforms before it (what changed since the
+    // previous warp's), and their undoing after the last, so each warp works in the same
+    // space when the printed scene is read again.
+    let mut space = DMat4::IDENTITY;
     for placed in &p.warps {
-        // A warp written after transforms: those transforms, the warp, and their undoing, so
-        // the warp works in the same space when the printed scene is read again.
-        out.push_str(&modifiers(&placed.space.matrix));
+        if placed.space.matrix != space {
+            out.push_str(&modifiers(&(placed.space.matrix * space.inverse())));
+            space = placed.space.matrix;
+        }
         let _ = match placed.warp {
             Warp::Turbulence(t) => write!(
                 out,
@@ -283,8 +288,8 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
                 ),
             },
         };
-        out.push_str(&modifiers(&placed.space.inverse));
     }
+    out.push_str(&modifiers(&space.inverse()));
     out
 }
 

@@ -14,7 +14,7 @@ use crate::pov::ast::{ColorItem, ColorKey, Expr, ExprKind, PatternMod, Pigment, 
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
 use crate::scene::desc::{
-    Color, ColorMapEntry, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, Transform, Turbulence,
+    Color, ColorMapEntry, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, Transform, Turbulence, Warp,
 };
 pub(super) use color_maps::sorted_map;
 use color_maps::{default_list_colors, default_pattern_map, default_wood_map};
@@ -107,6 +107,9 @@ impl Lowerer<'_> {
     pub(crate) fn pigment(&mut self, p: &Pigment) -> PResult<PigmentDesc> {
         let (mut pattern, mut map, mut turb, mut transform) = pigment_state(self.default_texture.pigment.clone());
         let mut own_transform = Transform::default();
+        // Warps written in this block, each with the block's transforms before it: they also
+        // move the pigments the pattern is made of.
+        let mut own_warps: Vec<(Warp, Transform)> = Vec::new();
         let mut default_map = default_pattern_map("");
         let mut pigment_map: Option<(Vec<(f64, PigmentDesc)>, Span)> = None;
         for item in &p.items {
@@ -197,7 +200,23 @@ impl Lowerer<'_> {
                         pattern = Pattern::Generic(PatternDesc::new(PatternKind::Checker), vec![solid(*a), solid(*b)]);
                     }
                     if let Pattern::Generic(pd, _) = &mut pattern {
+                        let before = pd.warps.len();
                         self.pattern_mod(m, pd, &transform)?;
+                        own_warps.extend(pd.warps[before..].iter().map(|w| (w.warp, own_transform)));
+                    } else if let (
+                        Pattern::Done(PigmentPattern::PigmentMap(pd, _) | PigmentPattern::List(pd, _)),
+                        PatternMod::Warp(_),
+                    ) = (&mut pattern, m)
+                    {
+                        // A declared pigment_map or list pigment, warped where it is used.
+                        let before = pd.warps.len();
+                        self.pattern_mod(m, pd, &transform)?;
+                        own_warps.extend(pd.warps[before..].iter().map(|w| (w.warp, own_transform)));
+                    } else if let (Pattern::Done(PigmentPattern::ImageMap(_)), PatternMod::Warp(_)) = (&pattern, m) {
+                        self.warn(Diag::new(
+                            p.span,
+                            "a warp on an `image_map` is not modelled; the image is not warped",
+                        ));
                     }
                 }
                 PigmentItem::ImageMap(im, _) => pattern = Pattern::Done(PigmentPattern::ImageMap(im.clone())),
@@ -216,7 +235,10 @@ impl Lowerer<'_> {
         }
         // Transforms written in this block also move the pigments it is made of.
         let children = |mut list: Vec<PigmentDesc>| {
-            list.iter_mut().for_each(|p| p.transform_by(&own_transform));
+            list.iter_mut().for_each(|p| {
+                p.inherit_warps(&own_warps);
+                p.transform_by(&own_transform)
+            });
             list
         };
         let pattern = match (pattern, map) {
@@ -231,14 +253,26 @@ impl Lowerer<'_> {
             (Pattern::Generic(pd, _), map) => match (pigment_map, map) {
                 (Some((entries, _)), _) => {
                     let mut entries = entries;
-                    entries.iter_mut().for_each(|(_, p)| p.transform_by(&own_transform));
+                    entries.iter_mut().for_each(|(_, p)| {
+                        p.inherit_warps(&own_warps);
+                        p.transform_by(&own_transform)
+                    });
                     entries.sort_by(|a, b| a.0.total_cmp(&b.0));
                     PigmentPattern::PigmentMap(pd, entries)
                 }
                 (None, Some((m, _))) => PigmentPattern::Mapped(pd, m),
                 (None, None) => PigmentPattern::Mapped(pd, default_map),
             },
-            (Pattern::Done(p), _) => p,
+            (Pattern::Done(mut p), _) => {
+                match &mut p {
+                    PigmentPattern::PigmentMap(_, entries) => {
+                        entries.iter_mut().for_each(|(_, e)| e.inherit_warps(&own_warps))
+                    }
+                    PigmentPattern::List(_, list) => list.iter_mut().for_each(|e| e.inherit_warps(&own_warps)),
+                    _ => {}
+                }
+                p
+            }
             (_, Some((_, Some(span)))) => return Err(Diag::new(span, "color_map needs a pattern that uses it")),
             (Pattern::Solid(c), _) => PigmentPattern::Solid(c),
             (Pattern::Checker(a, b), _) => PigmentPattern::Checker(a, b),

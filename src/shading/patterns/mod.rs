@@ -172,15 +172,21 @@ impl Pattern32 {
         matches!(self.kind, Kind32::Checker | Kind32::Brick(..) | Kind32::Hexagon | Kind32::Object(_))
     }
 
-    /// The value at a pattern-space point (transform and classic turbulence already applied):
-    /// warps, the kernel, then frequency, phase and the wave.
+    /// A pattern-space point moved by the pattern's warps, in order.
     #[inline(always)]
-    pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
+    pub fn warped<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> V3<L> {
         let mut p = p;
         for w in &self.warps {
             p = apply_warp(w, p, max_octaves);
         }
-        let v = kernel(&self.kind, p);
+        p
+    }
+
+    /// The value at a pattern-space point (transform and classic turbulence already applied):
+    /// warps, the kernel, then frequency, phase and the wave.
+    #[inline(always)]
+    pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
+        let v = kernel(&self.kind, self.warped(p, max_octaves));
         if self.is_list() {
             return v;
         }

@@ -169,15 +169,32 @@ fn hexagon_one(x: f32, z: f32) -> f32 {
 #[inline(always)]
 pub fn quilted<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> L {
     L::from_fn(|i| {
-        let q = p.lane(i);
-        let v = q - q.floor() - Vec3::splat(0.5);
-        let t = v.length();
-        let s = 1.0 - t;
-        let cubic = t * t * t + 3.0 * t * s * s * c0 + 3.0 * t * t * s * c1;
-        // The measured scale: 2 / (3·√3) to the 8 digits POV-Ray printed.
-        const NORM: f32 = 0.384_900_18;
-        (v.x.abs() + v.y.abs() + v.z.abs()) * cubic.abs() * NORM
+        let w = quilt_vector(p.lane(i), c0, c1);
+        // The mean of |w| over the axes: (2/√3)/3 = 1/(1.5·√3), the scale measured on the
+        // pigment (2/(3·√3) to the 8 digits POV-Ray printed).
+        (w.x.abs() + w.y.abs() + w.z.abs()) * (1.0 / 3.0)
     })
+}
+
+/// `quilted` as a normal (3.4.7.1.21): POV-Ray 3.7 adds `amount · w` to the normal facing the
+/// ray, `w = (2/√3)·q(t)·v` in pattern space (v, t and q as for the pigment, whose value is the
+/// mean of |w| over the axes). Measured on planes facing −z at z = 0.05, 0.3 and 0.5 with
+/// `quilted 0.05`, `0.5` and `1`, lit by parallel lights straight on and 30° off in ±x and
+/// ±y: the slopes n_x/n_z and n_y/n_z are those of `n + amount·w` to 1e-3 (v_z = 0 shows
+/// the 2/√3: 1.155 × v·q(t), whatever the amount; v_z ≠ 0 shows w_z in the denominator).
+#[inline(always)]
+pub fn quilted_normal<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> V3<L> {
+    V3::from_lanes(|i| quilt_vector(p.lane(i), c0, c1))
+}
+
+/// `(2/√3)·q(|v|)·v`, v the offset from the unit cube's centre: see `quilted`.
+#[inline(always)]
+fn quilt_vector(p: Vec3, c0: f32, c1: f32) -> Vec3 {
+    let v = p - p.floor() - Vec3::splat(0.5);
+    let t = v.length();
+    let s = 1.0 - t;
+    let cubic = t * t * t + 3.0 * t * s * s * c0 + 3.0 * t * t * s * c1;
+    v * (cubic * 1.154_701) // 2/√3
 }
 
 /// Raw wood rings: `frac(r)` around z (the triangle wave makes POV-Ray's `wood`).
@@ -211,19 +228,28 @@ mod tests {
         assert!((one(leopard, [-std::f32::consts::FRAC_PI_2, 0.0, 0.0]) - 1.0 / 9.0).abs() < 1e-6);
     }
 
-    /// POV-Ray 3.7's values, printed by `#debug` from `function { pattern { quilted control0 C0
-    /// control1 C1 } }`: offsets of 0.095, 0.238, 0.4 and 0.476 along x from a cube's centre
-    /// (½, ½, ½), a corner, a point two cells off and one below zero.
+    /// POV-Ray 3.7's values (to 6 digits), printed by `#debug` from `function { pattern {
+    /// quilted control0 C0 control1 C1 } }`: offsets of 0.095, 0.238, 0.4 and 0.476 along x
+    /// from a cube's centre (½, ½, ½), a corner, a point two cells off and one below zero.
     #[test]
     fn quilted_matches_povray() {
-        let pts = [[0.595, 0.5, 0.5], [0.738, 0.5, 0.5], [0.1, 0.5, 0.5], [0.024, 0.5, 0.5], [0.0, 0.0, 0.0], [0.3, 0.8, 0.5], [-1.3, 2.15, 0.7], [0.05, -0.2, 3.1]];
+        let pts = [
+            [0.595, 0.5, 0.5],
+            [0.738, 0.5, 0.5],
+            [0.1, 0.5, 0.5],
+            [0.024, 0.5, 0.5],
+            [0.0, 0.0, 0.0],
+            [0.3, 0.8, 0.5],
+            [-1.3, 2.15, 0.7],
+            [0.05, -0.2, 3.1],
+        ];
         let cases: [((f32, f32), [f32; 8]); 6] = [
-            ((1.0, 1.0), [0.009462511, 0.051074994, 0.120704696, 0.156852272, 0.575961894, 0.142131618, 0.240646809, 0.427112809]),
-            ((0.0, 0.0), [3.135e-05, 0.001234969, 0.009853445, 0.019759499, 0.375, 0.009020553, 0.026305522, 0.134732953]),
-            ((0.5, 0.5), [0.004746931, 0.026154981, 0.06527907, 0.088305885, 0.475480947, 0.075576085, 0.133476165, 0.280922881]),
-            ((-1.0, 2.0), [0.00671193, 0.013019279, 0.032023695, 0.078435206, 0.696152422, 0.019891119, 0.101324972, 0.432388396]),
-            ((0.0, 1.0), [0.000927311, 0.013096895, 0.054193945, 0.085015659, 0.549038105, 0.05701443, 0.122759101, 0.331411386]),
-            ((5.0, 5.0), [0.047187155, 0.250435095, 0.564109703, 0.705223363, 1.379809471, 0.674575877, 1.098011958, 1.596632232]),
+            ((1.0, 1.0), [0.00946251, 0.051075, 0.120705, 0.156852, 0.575962, 0.142132, 0.240647, 0.427113]),
+            ((0.0, 0.0), [3.135e-05, 0.00123497, 0.00985345, 0.0197595, 0.375, 0.00902055, 0.0263055, 0.134733]),
+            ((0.5, 0.5), [0.00474693, 0.026155, 0.0652791, 0.0883059, 0.475481, 0.0755761, 0.133476, 0.280923]),
+            ((-1.0, 2.0), [0.00671193, 0.0130193, 0.0320237, 0.0784352, 0.696152, 0.0198911, 0.101325, 0.432388]),
+            ((0.0, 1.0), [0.000927311, 0.0130969, 0.0541939, 0.0850157, 0.549038, 0.0570144, 0.122759, 0.331411]),
+            ((5.0, 5.0), [0.0471872, 0.250435, 0.56411, 0.705223, 1.37981, 0.674576, 1.09801, 1.59663]),
         ];
         for ((c0, c1), want) in cases {
             for (p, w) in pts.iter().zip(want) {
@@ -234,15 +260,15 @@ mod tests {
         assert_eq!(one(|q| quilted(q, 1.0, 1.0), [3.5, -0.5, 0.5]), 0.0, "0 at every cube's centre");
     }
 
-    /// POV-Ray 3.7's values of `function { pattern { spiral2 N ramp_wave } }`, printed by
-    /// `#debug`, on the plane z = 0 and off it.
+    /// POV-Ray 3.7's values (to 6 digits) of `function { pattern { spiral2 N ramp_wave } }`,
+    /// printed by `#debug`, on the plane z = 0 and off it.
     #[test]
     fn spiral2_matches_povray() {
         let pts = [[0.3, 0.4, 0.0], [-0.7, 0.2, 0.1], [1.2, -0.9, 0.45], [-0.3, -1.6, -0.8], [0.05, 1.9, 1.3]];
         let cases: [(f32, [f32; 5]); 3] = [
-            (1.0, [0.204822765, 0.476531577, 0.195157235, 0.147459846, 0.80574352]),
-            (2.0, [0.590324471, 0.022818934, 0.490324471, 0.206457931, 0.583250714]),
-            (3.0, [0.614488294, 0.653712643, 0.785491706, 0.265456016, 0.822492806]),
+            (1.0, [0.204823, 0.476532, 0.195157, 0.14746, 0.805744]),
+            (2.0, [0.590324, 0.0228189, 0.490324, 0.206458, 0.583251]),
+            (3.0, [0.614488, 0.653713, 0.785492, 0.265456, 0.822493]),
         ];
         for (n, want) in cases {
             for (p, w) in pts.iter().zip(want) {

@@ -192,10 +192,9 @@ impl Pattern32 {
         matches!(self.kind, Kind32::Checker | Kind32::Brick(..) | Kind32::Hexagon | Kind32::Object(_))
     }
 
-    /// The value at a pattern-space point (transform and classic turbulence already applied):
-    /// warps, the kernel, then frequency, phase and the wave.
+    /// A pattern-space point moved by the pattern's warps, in order.
     #[inline(always)]
-    pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
+    pub fn warped<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> V3<L> {
         let mut p = p;
         for w in self.warps.iter().rev() {
             p = match w.space {
@@ -203,7 +202,14 @@ impl Pattern32 {
                 Some((to, back)) => apply_warp(&w.warp, p.transform_point(&to), max_octaves).transform_point(&back),
             };
         }
-        let v = kernel(&self.kind, p);
+        p
+    }
+
+    /// The value at a pattern-space point (transform and classic turbulence already applied):
+    /// warps, the kernel, then frequency, phase and the wave.
+    #[inline(always)]
+    pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
+        let v = kernel(&self.kind, self.warped(p, max_octaves));
         if self.is_list() {
             return v;
         }

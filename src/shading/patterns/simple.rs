@@ -79,16 +79,22 @@ pub fn spiral1<L: Lane>(p: V3<L>, arms: f32) -> L {
     })
 }
 
-/// `spiral2 N`: two sets of arms winding in opposite senses.
+/// `spiral2 N` (3.4.7.1.26), before its wave: `frac(tri(z + r + N·(θ/2π + 1/4)) + tri(r))` with
+/// `tri(u) = 1 − |2·frac(u) − 1|` and θ from +x, as for `spiral1`. Fitted to POV-Ray 3.7's own
+/// values (`function { pattern { spiral2 N ramp_wave } }` at 60 random points in [−2, 2]³ for
+/// N = 1, 2, 3: within 1e-5, which is POV-Ray wrapping at 1.00001 instead of 1) and checked on
+/// 48×48 16-bit renders of planes at z = 0 and 0.37 for N = 1, 2, 3, 5 with the default
+/// triangle wave, ramp and sine (the 16-bit steps, 3e-5). The second term depends on r alone:
+/// on a line along z the value is a triangle wave of z lifted by `tri(r)` and wrapped.
+/// POV-Ray gives 0 on the z axis itself; this gives the limit of the arms there.
 #[inline(always)]
 pub fn spiral2<L: Lane>(p: V3<L>, arms: f32) -> L {
+    let tri = |u: f32| 1.0 - (2.0 * (u - u.floor()) - 1.0).abs();
     L::from_fn(|i| {
         let (x, y, z) = (p.x.get(i), p.y.get(i), p.z.get(i));
-        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI);
+        let turn = y.atan2(x) * (0.5 / std::f32::consts::PI) + 0.25;
         let r = (x * x + y * y).sqrt();
-        let a = z + r + arms * turn;
-        let b = z + r - arms * turn;
-        let v = 0.5 * ((a - a.floor()) + (b - b.floor()));
+        let v = tri(z + r + arms * turn) + tri(r);
         v - v.floor()
     })
 }
@@ -157,21 +163,45 @@ fn hexagon_one(x: f32, z: f32) -> f32 {
     (rr - rq).rem_euclid(3.0)
 }
 
-/// `quilted`: unit cells whose value rises from the edges to the middle along a curve set by
-/// `control0`/`control1` (a cubic through 0, c0, c1, 1).
+/// `quilted` (3.4.7.1.21) as a pigment pattern: unit cubes between integer planes, 0 at each
+/// cube's centre and rising towards its faces. With `v = frac(p) − ½` and `t = |v|`, the value
+/// is `(|vx| + |vy| + |vz|) · |q(t)| / (1.5·√3)` where `q` is the cubic the documentation
+/// draws (and `scenes/animations/quilted/plotqlt.pov` plots) through 0, c0, c1, 1:
+/// `q(t) = t³ + 3t(1 − t)²·c0 + 3t²(1 − t)·c1`. Fitted to POV-Ray 3.7's own values
+/// (`function { pattern { quilted ... } }` at 40 random points in [−3, 3]³ for controls
+/// (1, 1), (0, 0), (0.5, 0.5), (0.3, 0.8), (−1, 2), (5, 5), (3, −4): within 4e-9) and checked
+/// on 32×32 16-bit renders of planes at z = 0 and 0.3 (the 16-bit steps, 8e-6). Not clamped:
+/// controls above about 3 give values over 1 at the corners (1.38 for 5, 5), which POV-Ray's
+/// colour map clamps as strahl's does.
 #[inline(always)]
 pub fn quilted<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> L {
     L::from_fn(|i| {
-        let q = p.lane(i);
-        let f = |v: f32| {
-            let t = (v - v.floor() - 0.5).abs() * 2.0; // 0 in the middle, 1 at the edges
-            let u = 1.0 - t;
-            // Cubic Bezier 0, c0, c1, 1 at u.
-            let a = 1.0 - u;
-            3.0 * a * a * u * c0 + 3.0 * a * u * u * c1 + u * u * u
-        };
-        (f(q.x) * f(q.y) * f(q.z)).cbrt()
+        let w = quilt_vector(p.lane(i), c0, c1);
+        // The mean of |w| over the axes: (2/√3)/3 = 1/(1.5·√3), the scale measured on the
+        // pigment (2/(3·√3) to the 8 digits POV-Ray printed).
+        (w.x.abs() + w.y.abs() + w.z.abs()) * (1.0 / 3.0)
     })
+}
+
+/// `quilted` as a normal (3.4.7.1.21): POV-Ray 3.7 adds `amount · w` to the normal facing the
+/// ray, `w = (2/√3)·q(t)·v` in pattern space (v, t and q as for the pigment, whose value is the
+/// mean of |w| over the axes). Measured on planes facing −z at z = 0.05, 0.3 and 0.5 with
+/// `quilted 0.05`, `0.5` and `1`, lit by parallel lights straight on and 30° off in ±x and
+/// ±y: the slopes n_x/n_z and n_y/n_z are those of `n + amount·w` to 1e-3 (v_z = 0 shows
+/// the 2/√3: 1.155 × v·q(t), whatever the amount; v_z ≠ 0 shows w_z in the denominator).
+#[inline(always)]
+pub fn quilted_normal<L: Lane>(p: V3<L>, c0: f32, c1: f32) -> V3<L> {
+    V3::from_lanes(|i| quilt_vector(p.lane(i), c0, c1))
+}
+
+/// `(2/√3)·q(|v|)·v`, v the offset from the unit cube's centre: see `quilted`.
+#[inline(always)]
+fn quilt_vector(p: Vec3, c0: f32, c1: f32) -> Vec3 {
+    let v = p - p.floor() - Vec3::splat(0.5);
+    let t = v.length();
+    let s = 1.0 - t;
+    let cubic = t * t * t + 3.0 * t * s * s * c0 + 3.0 * t * t * s * c1;
+    v * (cubic * 1.154_701) // 2/√3
 }
 
 /// Raw wood rings: `frac(r)` around z (the triangle wave makes POV-Ray's `wood`).
@@ -203,6 +233,57 @@ mod tests {
         assert!((one(planar, [3.0, 0.25, 3.0]) - 0.75).abs() < 1e-6);
         assert!((one(cylindrical, [0.6, 9.0, 0.0]) - 0.4).abs() < 1e-6);
         assert!((one(leopard, [-std::f32::consts::FRAC_PI_2, 0.0, 0.0]) - 1.0 / 9.0).abs() < 1e-6);
+    }
+
+    /// POV-Ray 3.7's values (to 6 digits), printed by `#debug` from `function { pattern {
+    /// quilted control0 C0 control1 C1 } }`: offsets of 0.095, 0.238, 0.4 and 0.476 along x
+    /// from a cube's centre (½, ½, ½), a corner, a point two cells off and one below zero.
+    #[test]
+    fn quilted_matches_povray() {
+        let pts = [
+            [0.595, 0.5, 0.5],
+            [0.738, 0.5, 0.5],
+            [0.1, 0.5, 0.5],
+            [0.024, 0.5, 0.5],
+            [0.0, 0.0, 0.0],
+            [0.3, 0.8, 0.5],
+            [-1.3, 2.15, 0.7],
+            [0.05, -0.2, 3.1],
+        ];
+        let cases: [((f32, f32), [f32; 8]); 6] = [
+            ((1.0, 1.0), [0.00946251, 0.051075, 0.120705, 0.156852, 0.575962, 0.142132, 0.240647, 0.427113]),
+            ((0.0, 0.0), [3.135e-05, 0.00123497, 0.00985345, 0.0197595, 0.375, 0.00902055, 0.0263055, 0.134733]),
+            ((0.5, 0.5), [0.00474693, 0.026155, 0.0652791, 0.0883059, 0.475481, 0.0755761, 0.133476, 0.280923]),
+            ((-1.0, 2.0), [0.00671193, 0.0130193, 0.0320237, 0.0784352, 0.696152, 0.0198911, 0.101325, 0.432388]),
+            ((0.0, 1.0), [0.000927311, 0.0130969, 0.0541939, 0.0850157, 0.549038, 0.0570144, 0.122759, 0.331411]),
+            ((5.0, 5.0), [0.0471872, 0.250435, 0.56411, 0.705223, 1.37981, 0.674576, 1.09801, 1.59663]),
+        ];
+        for ((c0, c1), want) in cases {
+            for (p, w) in pts.iter().zip(want) {
+                let got = one(|q| quilted(q, c0, c1), *p);
+                assert!((got - w).abs() < 1e-4, "quilted {c0} {c1} at {p:?}: {got}, POV-Ray {w}");
+            }
+        }
+        assert_eq!(one(|q| quilted(q, 1.0, 1.0), [3.5, -0.5, 0.5]), 0.0, "0 at every cube's centre");
+    }
+
+    /// POV-Ray 3.7's values (to 6 digits) of `function { pattern { spiral2 N ramp_wave } }`,
+    /// printed by `#debug`, on the plane z = 0 and off it.
+    #[test]
+    fn spiral2_matches_povray() {
+        let pts = [[0.3, 0.4, 0.0], [-0.7, 0.2, 0.1], [1.2, -0.9, 0.45], [-0.3, -1.6, -0.8], [0.05, 1.9, 1.3]];
+        let cases: [(f32, [f32; 5]); 3] = [
+            (1.0, [0.204823, 0.476532, 0.195157, 0.14746, 0.805744]),
+            (2.0, [0.590324, 0.0228189, 0.490324, 0.206458, 0.583251]),
+            (3.0, [0.614488, 0.653713, 0.785492, 0.265456, 0.822493]),
+        ];
+        for (n, want) in cases {
+            for (p, w) in pts.iter().zip(want) {
+                let got = one(|q| spiral2(q, n), *p);
+                // POV-Ray wraps at 1.00001, not 1: 1e-5 apart where the sum passed 1.
+                assert!((got - w).abs() < 1e-4, "spiral2 {n} at {p:?}: {got}, POV-Ray {w}");
+            }
+        }
     }
 
     #[test]

@@ -478,7 +478,7 @@ fn same_pattern(a: &PatternDesc, b: &PatternDesc) -> bool {
                 ) => m1 == m2 && close3(o1, o2) && d1 == d2,
                 (p, q) => p == q,
             };
-            warp_ok && close_xf(&x.space, &y.space)
+            warp_ok && x.inherited == y.inherited && close_xf(&x.space, &y.space)
         })
 }
 
@@ -632,6 +632,22 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
                 })
         }
         (PigmentPattern::Mapped(p, m1), PigmentPattern::Mapped(q, m2)) => same_pattern(p, q) && m1 == m2,
+        // Entries warped by the map's pattern carry transforms, which print rounded.
+        (PigmentPattern::PigmentMap(p, e1), PigmentPattern::PigmentMap(q, e2)) => {
+            same_pattern(p, q)
+                && e1.len() == e2.len()
+                && e1.iter().zip(e2).all(|((v1, x), (v2, y))| {
+                    v1 == v2
+                        && x.turbulence == y.turbulence
+                        && close_xf(&x.transform, &y.transform)
+                        && match (&x.pattern, &y.pattern) {
+                            (PigmentPattern::Mapped(p, m1), PigmentPattern::Mapped(q, m2)) => {
+                                same_pattern(p, q) && m1 == m2
+                            }
+                            (a, b) => a == b,
+                        }
+                })
+        }
         // The pattern kinds, maps and lists print their numbers exactly (shortest round trip).
         (x, y) => x == y,
     };

@@ -267,6 +267,9 @@ pub enum Warp {
 pub struct PlacedWarp {
     pub warp: Warp,
     pub space: super::Transform,
+    /// Written in an enclosing pigment (`inherit_warps`), not in this pattern's own block:
+    /// the scene printer leaves it to the enclosing one.
+    pub inherited: bool,
 }
 
 /// The surface a mapping warp wraps the pattern around.
@@ -333,7 +336,8 @@ impl PigmentDesc {
             return;
         }
         let own = self.transform;
-        let placed = || warps.iter().map(|(warp, before)| PlacedWarp { warp: *warp, space: own.then(before) });
+        let placed =
+            || warps.iter().map(|(warp, before)| PlacedWarp { warp: *warp, space: own.then(before), inherited: true });
         if let PigmentPattern::Checker(a, b) = self.pattern {
             let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
             self.pattern = PigmentPattern::List(PatternDesc::new(PatternKind::Checker), vec![solid(a), solid(b)]);

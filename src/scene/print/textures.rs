@@ -242,7 +242,7 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
     // previous warp's), and their undoing after the last, so each warp works in the same
     // space when the printed scene is read again.
     let mut space = DMat4::IDENTITY;
-    for placed in &p.warps {
+    for placed in p.warps.iter().filter(|w| !w.inherited) {
         if placed.space.matrix != space {
             out.push_str(&modifiers(&(placed.space.matrix * space.inverse())));
             space = placed.space.matrix;

@@ -418,7 +418,10 @@ mod tests {
             ] {
                 let mut d = PatternDesc::new(kind.clone());
                 d.wave = wave;
-                d.warps = warps.into_iter().map(|warp| PlacedWarp { warp, space: Transform::default() }).collect();
+                d.warps = warps
+                    .into_iter()
+                    .map(|warp| PlacedWarp { warp, space: Transform::default(), inherited: false })
+                    .collect();
                 d.frequency = 2.0;
                 let pat = Pattern32::from_desc(&d);
                 for k in 0..100 {

@@ -169,7 +169,7 @@ impl Lowerer<'_> {
         pd: &mut PatternDesc,
         placed: &Transform,
     ) -> PResult<()> {
-        let place = |warp| PlacedWarp { warp, space: *placed };
+        let place = |warp| PlacedWarp { warp, space: *placed, inherited: false };
         match m {
             PatternMod::Wave(w, e) => {
                 pd.wave = match w.as_str() {

@@ -192,7 +192,7 @@ impl Pattern32 {
         matches!(self.kind, Kind32::Checker | Kind32::Brick(..) | Kind32::Hexagon | Kind32::Object(_))
     }
 
-    /// A pattern-space point moved by the pattern's warps, in order.
+    /// A pattern-space point moved by the pattern's warps, the last written first.
     #[inline(always)]
     pub fn warped<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> V3<L> {
         let mut p = p;

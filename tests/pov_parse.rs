@@ -1840,15 +1840,24 @@ fn mesh_camera_errors_are_located() {
 }
 
 #[test]
-fn camera_normal_is_read_and_reported() {
+fn camera_normal_is_read_without_warning_and_the_last_one_counts() {
     let d = dir("camera_normal");
-    let (_, w) = load_scene_with_warnings(
-        &write(&d, "s.pov", "camera { location -5*z normal { bumps 0.5 scale 0.1 } }"),
+    let (desc, w) = load_scene_with_warnings(
+        &write(
+            &d,
+            "s.pov",
+            "#declare C = camera { location -5*z normal { bumps 0.5 scale 0.1 } normal { gradient x 0.3 } }\n\
+             camera { C }\nsphere { 0, 1 }",
+        ),
         &std_include(),
     )
     .unwrap();
-    let text = format!("{w:?}");
-    assert!(text.contains("camera `normal`") && text.contains("not modelled"), "{text}");
+    assert!(w.is_empty(), "{w:?}");
+    let n = desc.camera_normal.expect("the camera's normal");
+    assert!(matches!(n.pattern, strahl::scene::desc::NormalPattern::Pattern(_, a) if a == 0.3), "{n:?}");
+    // A bad normal inside the camera is located like any other.
+    let (line, col, m) = err("camera_normal_bad", "camera { normal { bumps 0.5 foo } }");
+    assert_eq!((line, col), (1, 29), "{m}");
 }
 
 // ---- bicubic_patch, light_group, gif and pot height fields ----------------------------------

@@ -499,6 +499,14 @@ fn same_scene(a: &SceneDesc, b: &SceneDesc) -> Result<(), String> {
     ] {
         check(close3(x, y), format!("camera {name}: {x} vs {y}"))?;
     }
+    match (&a.camera_normal, &b.camera_normal) {
+        (None, None) => {}
+        (Some(na), Some(nb)) => check(
+            close_xf(&na.transform, &nb.transform) && format!("{:?}", na.pattern) == format!("{:?}", nb.pattern),
+            format!("camera normal: {na:?} vs {nb:?}"),
+        )?,
+        _ => return Err("camera normal given in one scene only".into()),
+    }
     check(a.lights.len() == b.lights.len(), "light count".into())?;
     for (i, (la, lb)) in a.lights.iter().zip(&b.lights).enumerate() {
         check(close3(la.position, lb.position) && close3(la.color, lb.color), format!("light {i}"))?;

@@ -226,8 +226,10 @@ pub enum CameraItem {
     FocalPoint(Expr),
     Confidence(Expr),
     Variance(Expr),
-    /// Read in full but not modelled (`normal { }`, `bokeh { }`): a warning names it.
+    /// Read in full but not modelled (`bokeh { }`): a warning names it.
     Unmodelled(&'static str, Span),
+    /// `normal { .. }`: perturbs the eye rays (`render::RayGen`).
+    Normal(Normal),
     /// `mesh_camera { .. }`, its numbers evaluated and its meshes looked up as it was read.
     MeshCamera(std::sync::Arc<crate::scene::desc::MeshCameraDesc>, Span),
     /// `smooth` in the camera's body (POV-Ray's grammar puts it there; the samples write it

@@ -78,6 +78,8 @@ pub struct CameraState {
     pub(crate) transforms: Vec<Transform>,
     /// A `mesh_camera`'s meshes (the projection is then `Projection::Mesh`).
     pub(crate) mesh: Option<std::sync::Arc<crate::scene::desc::MeshCameraDesc>>,
+    /// `normal { .. }`: tilts every eye ray (`render::RayGen`).
+    pub(crate) normal: Option<std::sync::Arc<crate::scene::desc::NormalDesc>>,
 }
 
 /// `array[d1][d2]...`: up to five dimensions, elements unset until declared.

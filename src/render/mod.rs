@@ -14,6 +14,7 @@ pub mod packet;
 pub mod precision;
 pub mod preset;
 pub mod progressive;
+mod raygen;
 pub mod reproject;
 pub mod resample;
 pub mod shade;
@@ -25,13 +26,12 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
-use crate::camera::lens::{self, LensRays};
-use crate::camera::{Camera, Lens, Projection};
+use crate::camera::{Camera, Projection};
 use crate::geometry::ray::Ray;
 use crate::lanes::{Lane, F8, V3};
 use crate::scene::build::Scene;
 use image::Image;
-use reproject::Pinhole;
+pub(crate) use raygen::{PixelSample, RayGen};
 use stats::RenderStats;
 use trace::{RayKind, Tracer};
 
@@ -131,117 +131,6 @@ impl Default for RenderSettings {
     }
 }
 
-/// Camera vectors in render space, f32, and the lens for projections other than plain
-/// perspective.
-///
-/// The plain perspective camera keeps its f32 eight-lane ray code (the seed scene's bits).
-/// Every other projection, and focal blur, makes each ray in f64 (`camera::lens`) and rounds
-/// it to f32 once; packets build their lanes from those same single rays, so packets and
-/// single rays trace the same bits.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct RayGen<'a> {
-    origin: Vec3,
-    direction: Vec3,
-    right: Vec3,
-    up: Vec3,
-    /// `None`: POV-Ray's default perspective camera without blur.
-    lens: Option<LensRays<'a>>,
-    /// Blur rays averaged per sample (1 without focal blur), after the quality cap; a mesh
-    /// camera's rays per pixel.
-    blur_samples: u32,
-    /// How far primary rays reach (render units): a mesh camera's `max_distance`, else ∞.
-    max_distance: f32,
-}
-
-impl<'a> RayGen<'a> {
-    pub(crate) fn new(camera: &Camera, scene: &'a Scene, quality: &Quality) -> RayGen<'a> {
-        let frame = &scene.frame;
-        let lens = (camera.lens != Lens::default()).then(|| {
-            LensRays::new(
-                &camera.lens,
-                (frame.point(camera.location), camera.location),
-                frame.vector(camera.direction),
-                frame.vector(camera.right),
-                frame.vector(camera.up),
-                frame.per_unit,
-            )
-            .with_mesh(scene.camera_mesh.as_deref())
-        });
-        let max_distance = match camera.lens.projection {
-            Projection::Mesh { max_distance, .. } if max_distance > 0.0 => (max_distance * frame.per_unit) as f32,
-            _ => f32::INFINITY,
-        };
-        RayGen {
-            origin: frame.point(camera.location).as_vec3(),
-            direction: frame.vector(camera.direction).as_vec3(),
-            right: frame.vector(camera.right).as_vec3(),
-            up: frame.vector(camera.up).as_vec3(),
-            lens,
-            blur_samples: camera.lens.blur_samples(quality.max_blur_samples),
-            max_distance,
-        }
-    }
-
-    /// POV-Ray's perspective ray through image coordinates `u, v` in [0, 1] (v down).
-    #[inline]
-    fn ray(&self, u: f32, v: f32) -> Ray {
-        Ray::new(self.origin, self.dir_lanes(u, v).vec3())
-    }
-
-    /// The unit directions of `ray` for one or eight pixels, with the same operations.
-    #[inline(always)]
-    fn dir_lanes<L: Lane>(&self, u: L, v: L) -> V3<L> {
-        let half = L::splat(0.5);
-        let d = V3::splat(self.direction)
-            .add(V3::splat(self.right).scale(u - half))
-            .add(V3::splat(self.up).scale(half - v));
-        d.normalize()
-    }
-
-    /// The plain perspective camera's vectors in render space, `None` for every other
-    /// projection and for focal blur (whose rays do not meet in one point).
-    pub(crate) fn pinhole(&self) -> Option<Pinhole> {
-        let Self { origin, direction, right, up, .. } = *self;
-        self.lens.is_none().then(|| Pinhole::new(origin, direction, right, up))
-    }
-
-    /// Whether blocks of this camera's rays may be traced as packets: every pixel must have a
-    /// ray (fisheye and omnimax leave corners black, so they go through single rays).
-    pub(crate) fn packets(&self) -> bool {
-        self.lens.is_none_or(|l| l.covers_image())
-    }
-
-    /// The ray of blur sample `s` of sub-sample (sx, sy) of pixel (x, y) through a lens
-    /// (`self.lens` is `Some`); `None` where the projection has no ray.
-    pub(crate) fn lens_ray(&self, p: &PixelSample, s: u32) -> Option<Ray> {
-        let lens = self.lens.as_ref().expect("lens rays need a lens");
-        let PixelSample { x, y, sx, sy, w, h, aa } = *p;
-        let cell = |i: u32, si: u32, n: u32, jitter: f64| (i as f64 + (si as f64 + jitter) / aa as f64) / n as f64;
-        let (o, d) = if let Projection::Mesh { .. } = lens.projection {
-            lens.mesh_ray((x, y, w, h), (cell(x, sx, w, 0.0), cell(y, sy, h, 0.0)), s)?
-        } else if self.blur_samples > 1 || lens.has_blur() {
-            let j = lens::blur_jitter(x, y, sx, sy, s);
-            let r = lens.ray(cell(x, sx, w, j[2]), cell(y, sy, h, j[3]))?;
-            lens.blurred(r, (j[0], j[1]))
-        } else {
-            lens.ray(cell(x, sx, w, 0.5), cell(y, sy, h, 0.5))?
-        };
-        let d = d.try_normalize()?;
-        Some(Ray::new(o.as_vec3(), d.as_vec3()))
-    }
-}
-
-/// Where one sample of a pixel lies: pixel (x, y) of a w×h image, sub-sample (sx, sy) of aa×aa.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct PixelSample {
-    pub x: u32,
-    pub y: u32,
-    pub sx: u32,
-    pub sy: u32,
-    pub w: u32,
-    pub h: u32,
-    pub aa: u32,
-}
 
 /// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
 /// for that pixel without antialiasing. For tools that ask what a pixel sees. Where the
@@ -553,12 +442,12 @@ fn render_block_lens(
     for s in 0..n {
         let rays: [Ray8; 8] = std::array::from_fn(|r| {
             let y = raster.frame_pixel(0, b.y + (r as u32).min(b.h - 1)).1;
-            let lane: [Ray; 8] = std::array::from_fn(|i| {
+            let samples: [PixelSample; 8] = std::array::from_fn(|i| {
                 let x = raster.frame_pixel(b.x + (i as u32).min(b.w - 1), 0).0;
-                let p = PixelSample { x, y, sx, sy, w, h, aa };
-                // `packets()` admits only projections with a ray for every pixel.
-                gen.lens_ray(&p, s).unwrap_or_else(|| Ray::new(gen.origin, gen.direction))
+                PixelSample { x, y, sx, sy, w, h, aa }
             });
+            // `packets()` admits only projections with a ray for every pixel.
+            let lane = gen.lens_rays8(&samples, s).map(|r| r.unwrap_or_else(|| Ray::new(gen.origin, gen.direction)));
             Ray8::from_rays(&lane)
         });
         add_traced(tracer, &rays, b, &mut cell);

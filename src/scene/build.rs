@@ -143,6 +143,8 @@ pub struct Scene {
     pub atmosphere: Atmosphere,
     /// A `mesh_camera`'s faces in render space (`camera::mesh`); `None` for other cameras.
     pub camera_mesh: Option<Arc<crate::camera::mesh::CameraMesh>>,
+    /// The camera's `normal`, in screen space (`render::RayGen`); `None` in most scenes.
+    pub camera_normal: Option<Arc<crate::shading::normal::NormalF32>>,
     pub ambient_light: Vec3,
     pub max_trace_level: u32,
     /// Whether output pixels are sRGB-encoded (3.7 gamma handling) or written linear (legacy).
@@ -197,6 +199,11 @@ impl Scene {
             background: Rgbft::from_desc(&desc.background),
             atmosphere: Atmosphere::build(desc, &frame),
             camera_mesh: desc.camera_mesh.as_ref().map(|m| Arc::new(crate::camera::mesh::CameraMesh::build(m, &frame))),
+            // Read at screen points, not in the scene: no render frame between.
+            camera_normal: desc
+                .camera_normal
+                .as_ref()
+                .map(|n| Arc::new(crate::shading::normal::NormalF32::from_desc(n, &glam::DMat4::IDENTITY))),
             ambient_light: desc.global.ambient_light.as_vec3(),
             max_trace_level: desc.global.max_trace_level.max(1),
             srgb: desc.writes_srgb(),

@@ -30,7 +30,7 @@ for s in superellipsoids; do
 done
 for s in cameras_ortho cameras_ortho_plain cameras_ortho_area cameras_fisheye cameras_ultra cameras_omnimax \
     cameras_panoramic cameras_cylinder cameras_cylinder2 cameras_cylinder3 cameras_cylinder4 cameras_spherical \
-    cameras_focal_blur cameras_mesh cameras_mesh_rows; do
+    cameras_focal_blur cameras_mesh cameras_mesh_rows cameras_normal; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in prisms text lathes sors blobs julias isosurfaces parametrics finishes bicubic light_groups; do

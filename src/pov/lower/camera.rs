@@ -14,6 +14,7 @@ impl Lowerer<'_> {
     pub(super) fn camera(&mut self, items: &[CameraItem], span: Span) -> PResult<CameraDesc> {
         let state = self.camera_state(items)?;
         self.scene.camera_mesh = state.mesh.clone();
+        self.scene.camera_normal = state.normal.clone();
         self.resolve_camera(state, span)
     }
 
@@ -28,7 +29,7 @@ impl Lowerer<'_> {
         let mut blur = None::<FocalBlur>;
         let mut blur_span = None;
         for item in items {
-            let CameraState { cam, angle, look_at, transforms, mesh } = &mut state;
+            let CameraState { cam, angle, look_at, transforms, mesh, normal } = &mut state;
             match item {
                 CameraItem::Declared(e) => match self.eval(e)? {
                     Value::Camera(declared) => state = *declared,
@@ -95,6 +96,8 @@ impl Lowerer<'_> {
                 CameraItem::Variance(e) => {
                     blur.get_or_insert(cam.lens.blur.unwrap_or_default()).variance = self.float(e)?;
                 }
+                // A later `normal` replaces an earlier one (POV-Ray reads it as a new normal).
+                CameraItem::Normal(n) => *normal = Some(std::sync::Arc::new(self.normal(n)?)),
                 CameraItem::Unmodelled(what, span) => {
                     self.warn(Diag::new(*span, format!("{what} is not modelled; the camera ignores it")));
                 }

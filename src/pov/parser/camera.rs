@@ -102,20 +102,15 @@ impl Parser<'_, '_> {
                 }
                 Some("mesh_camera") => self.mesh_camera()?,
                 Some("smooth") => CameraItem::Smooth(self.bump().span),
-                Some(word @ ("normal" | "bokeh")) => {
-                    let span = self.peek().span;
-                    if word == "normal" {
-                        self.normal()?;
-                        CameraItem::Unmodelled("camera `normal` (perturbed eye rays)", span)
-                    } else {
-                        let kw = self.bump().span;
-                        self.open_block("bokeh", kw)?;
-                        if self.peek_ident().as_deref() == Some("pigment") {
-                            self.pigment()?;
-                        }
-                        self.close_block("bokeh", kw)?;
-                        CameraItem::Unmodelled("focal blur `bokeh` (the lens samples a uniform disc)", span)
+                Some("normal") => CameraItem::Normal(self.normal()?),
+                Some("bokeh") => {
+                    let kw = self.bump().span;
+                    self.open_block("bokeh", kw)?;
+                    if self.peek_ident().as_deref() == Some("pigment") {
+                        self.pigment()?;
                     }
+                    self.close_block("bokeh", kw)?;
+                    CameraItem::Unmodelled("focal blur `bokeh` (the lens samples a uniform disc)", kw)
                 }
                 Some("rotate" | "scale" | "translate" | "matrix" | "transform") => {
                     CameraItem::Transform(self.transform_item()?)

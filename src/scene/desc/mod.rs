@@ -144,6 +144,9 @@ pub struct SceneDesc {
     pub camera: CameraDesc,
     /// The meshes of a `mesh_camera` (`camera.lens.projection` is `Projection::Mesh`).
     pub camera_mesh: Option<std::sync::Arc<MeshCameraDesc>>,
+    /// The camera's `normal { .. }`, read at screen points (x, y, 0) and tilting the eye rays
+    /// (`render::RayGen`).
+    pub camera_normal: Option<std::sync::Arc<NormalDesc>>,
     pub lights: Vec<LightDesc>,
     /// `background { color C }`; black by default.
     pub background: Color,
@@ -187,6 +190,7 @@ impl Default for SceneDesc {
             version_directive: false,
             camera: CameraDesc::default(),
             camera_mesh: None,
+            camera_normal: None,
             lights: Vec::new(),
             background: Color::BLACK,
             sky_sphere: None,

@@ -40,15 +40,21 @@ pub fn to_pov(desc: &SceneDesc) -> String {
     let _ = writeln!(s, " max_trace_level {} ambient_light rgb {} }}", g.max_trace_level, vec(g.ambient_light));
     let _ = writeln!(s, "background {{ {} }}", color(&desc.background));
     let c = &desc.camera;
-    let _ = writeln!(
+    let _ = write!(
         s,
-        "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n  sky {}\n}}",
+        "camera {{\n  location {}\n  direction {}\n  right {}\n  up {}\n  sky {}\n",
         vec(c.location),
         vec(c.direction),
         vec(c.right),
         vec(c.up),
         vec(c.sky)
     );
+    if let Some(n) = &desc.camera_normal {
+        s.push_str("  ");
+        textures::normal(&mut s, n, &glam::DMat4::IDENTITY);
+        s.push('\n');
+    }
+    s.push_str("}\n");
     for l in &desc.lights {
         light(&mut s, l);
     }

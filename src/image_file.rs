@@ -2,9 +2,9 @@
 //! decoded into plain pixel arrays: what a pixel means (a height, a colour) is left to the
 //! caller. GIF through the `gif` crate: indices and palette as stored, the first frame placed on
 //! its logical screen. `read_image` decodes PNG (1-16 bit grey, grey+alpha, RGB, RGBA,
-//! palette with tRNS), GIF, PGM/PPM (P2, P3, P5, P6) and TGA (colour-mapped, true colour 16/24/32
-//! bit, grey; uncompressed and RLE) into one `Image`; IFF, JPEG, TIFF, BMP, EXR and HDR are
-//! refused by name. The height-field readers in `pov::lower::height_field` keep their own
+//! palette with tRNS), GIF, PGM/PPM (P2, P3, P5, P6), TGA (colour-mapped, true colour 16/24/32
+//! bit, grey; uncompressed and RLE) and JPEG (grey, RGB, CMYK; through `jpeg-decoder`) into one
+//! `Image`; IFF, TIFF, BMP, EXR and HDR are refused by name. The height-field readers in `pov::lower::height_field` keep their own
 //! 16-bit red/green conventions.
 
 use std::io::Cursor;
@@ -106,7 +106,7 @@ impl Image {
 }
 
 /// The image types POV-Ray names, and whether `read_image` reads them.
-pub const READ_TYPES: &[&str] = &["png", "gif", "ppm", "pgm", "tga", "sys"];
+pub const READ_TYPES: &[&str] = &["png", "gif", "ppm", "pgm", "tga", "jpeg", "sys"];
 
 /// The image type a file name's extension names (for blocks that give no type keyword).
 pub fn type_from_extension(name: &str) -> Option<&'static str> {
@@ -146,10 +146,11 @@ pub fn read_image(format: &str, bytes: &[u8], max_side: usize) -> Result<Image, 
         }
         "ppm" | "pgm" => read_pnm(bytes, max_side)?,
         "tga" => read_tga(bytes, max_side)?,
-        "iff" | "jpeg" | "tiff" | "bmp" | "exr" | "hdr" => {
-            return Err(format!("{format} images are not read (png, gif, ppm, pgm and tga are)"))
+        "jpeg" => read_jpeg(bytes, max_side)?,
+        "iff" | "tiff" | "bmp" | "exr" | "hdr" => {
+            return Err(format!("{format} images are not read (png, gif, ppm, pgm, tga and jpeg are)"))
         }
-        other => return Err(format!("unknown image type `{other}` (png, gif, ppm, pgm and tga are read)")),
+        other => return Err(format!("unknown image type `{other}` (png, gif, ppm, pgm, tga and jpeg are read)")),
     };
     if img.width == 0 || img.height == 0 {
         return Err("the image has no pixels".into());
@@ -224,6 +225,35 @@ fn read_png(bytes: &[u8], max_side: usize) -> Result<Image, String> {
     }
     let max = if channels == Channels::Indexed { 255 } else { (1u32 << depth) - 1 };
     Ok(Image { width: w, height: h, channels, max, samples, palette })
+}
+
+/// JPEG: 8-bit grey or RGB (CMYK converted to RGB, 16-bit lossless grey kept at 16 bits).
+fn read_jpeg(bytes: &[u8], max_side: usize) -> Result<Image, String> {
+    let mut dec = jpeg_decoder::Decoder::new(Cursor::new(bytes));
+    dec.read_info().map_err(|e| format!("not a readable JPEG: {e}"))?;
+    let info = dec.info().ok_or("not a readable JPEG: no frame header")?;
+    let (w, h) = (info.width as usize, info.height as usize);
+    too_big(w, h, max_side)?;
+    let pixels = dec.decode().map_err(|e| format!("not a readable JPEG: {e}"))?;
+    let (channels, max, samples): (Channels, u32, Vec<u16>) = match info.pixel_format {
+        jpeg_decoder::PixelFormat::L8 => (Channels::Grey, 255, pixels.iter().map(|&v| v as u16).collect()),
+        jpeg_decoder::PixelFormat::L16 => {
+            (Channels::Grey, 65535, pixels.chunks_exact(2).map(|b| u16::from_be_bytes([b[0], b[1]])).collect())
+        }
+        jpeg_decoder::PixelFormat::RGB24 => (Channels::Rgb, 255, pixels.iter().map(|&v| v as u16).collect()),
+        // Adobe's CMYK JPEGs store inverted inks; the decoder gives them as stored.
+        jpeg_decoder::PixelFormat::CMYK32 => {
+            let rgb = pixels.chunks_exact(4).flat_map(|p| {
+                let k = 255 - p[3] as u16;
+                [0, 1, 2].map(|i| (255 - p[i] as u16) * k / 255)
+            });
+            (Channels::Rgb, 255, rgb.map(|v| 255 - v).collect())
+        }
+    };
+    if samples.len() != w * h * channels.count() {
+        return Err("truncated JPEG".into());
+    }
+    Ok(Image { width: w, height: h, channels, max, samples, palette: Vec::new() })
 }
 
 /// PGM (P2, P5) and PPM (P3, P6), 8 or 16 bits.
@@ -461,10 +491,27 @@ mod tests {
         assert_eq!((gif.index(1, 0), gif.rgba(1, 0)), (Some(1), [1.0, 0.0, 0.0, 1.0]));
     }
 
+    /// Made by Pillow (quality 95): 16×8 grey, the left half black and the right white; 16×16
+    /// RGB red without chroma subsampling.
+    #[test]
+    fn jpegs_decode_grey_and_colour_and_refuse_big_ones() {
+        let grey = read_image("jpeg", include_bytes!("../tests/reference/images/halves.jpg"), 16).unwrap();
+        assert_eq!((grey.width, grey.height, grey.channels), (16, 8, Channels::Grey));
+        assert!(grey.rgba(0, 0)[0] < 0.03 && grey.rgba(15, 7)[0] > 0.97, "{:?}", grey.rgba(15, 7));
+        let red = include_bytes!("../tests/reference/images/red.jpg");
+        let rgb = read_image("sys", red, 16).unwrap();
+        assert_eq!(rgb.channels, Channels::Rgb);
+        let [r, g, b, a] = rgb.rgba(7, 9);
+        assert!(r > 0.97 && g < 0.03 && b < 0.03 && a == 1.0, "{:?}", rgb.rgba(7, 9));
+        assert!(read_image("jpeg", red, 15).unwrap_err().contains("at most 15"));
+        assert!(read_image("jpeg", &red[..200], 16).is_err());
+    }
+
     #[test]
     fn unread_types_and_bad_bytes_are_errors() {
-        assert!(read_image("jpeg", b"\xff\xd8", 16).unwrap_err().contains("jpeg images are not read"));
-        assert!(read_image("sys", b"\xff\xd8\xff", 16).unwrap_err().contains("jpeg"));
+        assert!(read_image("jpeg", b"\xff\xd8", 16).unwrap_err().contains("not a readable JPEG"));
+        assert!(read_image("sys", b"\xff\xd8\xff", 16).unwrap_err().contains("JPEG"));
+        assert!(read_image("tiff", b"II*\x00", 16).unwrap_err().contains("tiff images are not read"));
         assert!(read_image("png", b"\x89PNG\r\n", 16).is_err());
         assert!(read_image("ppm", b"P6 2 2 255\n\x00", 16).is_err());
         assert!(read_image("tga", &[0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 0, 24, 0, 1], 16).is_err());

@@ -1495,9 +1495,18 @@ fn height_field_reads_pgm_and_locates_a_missing_file() {
     let (l, c, m) = err("hf_missing", "\nheight_field { png \"nowhere.png\" }");
     assert_eq!((l, c), (2, 20));
     assert!(m.starts_with("height_field image \"nowhere.png\" not found"), "{m}");
-    let (l, c, m) = err("hf_type", "height_field { jpeg \"a.jpg\" }");
+    let (l, c, m) = err("hf_type", "height_field { tiff \"a.tif\" }");
     assert_eq!((l, c), (1, 16));
-    assert!(m.contains("`jpeg` images are not supported"), "{m}");
+    assert!(m.contains("`tiff` images are not supported"), "{m}");
+    // JPEG: a grey picture's values (tests/reference/images/halves.jpg: black | white).
+    let d = dir("hf_jpeg");
+    std::fs::copy(repo().join("tests/reference/images/halves.jpg"), d.join("h.jpg")).unwrap();
+    for text in ["height_field { jpeg \"h.jpg\" }", "height_field { \"h.jpg\" }"] {
+        let s = load_scene(&write(&d, "scene.pov", text), &std_include()).unwrap_or_else(|e| panic!("{e}"));
+        let ShapeDesc::HeightField { field, .. } = &s.objects[0].shape else { panic!("height field") };
+        assert_eq!((field.width, field.height, field.format.as_str()), (16, 8, "jpeg"));
+        assert!(field.heights[0] < 0.03 && field.heights[15] > 0.97, "{:?}", &field.heights[..16]);
+    }
     let d = dir("hf_bad");
     std::fs::write(d.join("bad.pgm"), "P5 3 2 255\n\x01").unwrap();
     let path = write(&d, "scene.pov", "height_field { pgm \"bad.pgm\" }");
@@ -1514,9 +1523,9 @@ fn height_field_without_a_type_takes_it_from_the_extension() {
     let s = load_scene(&path, &std_include()).unwrap_or_else(|e| panic!("{e}"));
     let ShapeDesc::HeightField { field, smooth, .. } = &s.objects[0].shape else { panic!("height field") };
     assert_eq!((field.width, field.height, *smooth, field.heights[0]), (3, 2, true, 1.0));
-    let (l, c, m) = err("hf_ext_jpeg", "height_field {\n  \"a.jpg\" }");
+    let (l, c, m) = err("hf_ext_tiff", "height_field {\n  \"a.tif\" }");
     assert_eq!((l, c), (2, 3), "{m}");
-    assert!(m.contains("`jpeg` images are not supported"), "{m}");
+    assert!(m.contains("`tiff` images are not supported"), "{m}");
     let (_, _, m) = err("hf_ext_none", "height_field { \"noext\" }");
     assert!(m.contains("no image type given and none known from \"noext\"'s extension"), "{m}");
 }
@@ -2101,7 +2110,11 @@ fn image_map_reads_its_modifiers_and_locates_bad_files() {
     assert!(e.message.contains("not a readable PNG"), "{}", e.message);
     let path = write(&d, "scene.pov", "plane { y, 0 pigment { image_map { jpeg \"a.jpg\" } } }");
     let e = load_scene(&path, &std_include()).expect_err("jpeg");
-    assert!(e.message.contains("jpeg images are not read"), "{}", e.message);
+    assert!(e.message.contains("not a readable JPEG"), "{}", e.message);
+    std::fs::write(d.join("a.tif"), "II*\0").unwrap();
+    let path = write(&d, "scene.pov", "plane { y, 0 pigment { image_map { tiff \"a.tif\" } } }");
+    let e = load_scene(&path, &std_include()).expect_err("tiff");
+    assert!(e.message.contains("tiff images are not read"), "{}", e.message);
     let (_, _, m) = err("im_maptype", "plane { y, 0 pigment { image_map { png \"x.png\" map_type 3 } } }");
     assert!(m.contains("map_type 3 is not supported"), "{m}");
     let (_, _, m) = err("im_word", "plane { y, 0 pigment { image_map { png \"x.png\" wobble } } }");

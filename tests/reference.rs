@@ -560,6 +560,13 @@ fn image_maps_match_povray() {
     check_psnr("images", &scene("images"), 35.0);
 }
 
+/// JPEG: an image_map (plain and interpolated) and a height_field from a grey JPEG stored as
+/// RGB (tests/reference/images/*.jpg): POV-Ray decodes with libjpeg, strahl with jpeg-decoder.
+#[test]
+fn jpeg_images_match_povray() {
+    check_psnr("images_jpeg", &scene("images_jpeg"), 35.0);
+}
+
 /// `uv_mapping`: a checker and an image_map through the surface coordinates of spheres, tori,
 /// a mesh with uv_vectors and a mesh2 with uv_indices, transformed after their textures.
 #[test]

@@ -13,3 +13,4 @@ pub mod place;
 pub mod print;
 pub mod probe;
 pub mod shape_kind;
+mod store;

@@ -9,5 +9,6 @@ pub mod image_map;
 pub mod noise;
 pub mod normal;
 pub mod pattern;
+pub mod pattern_space;
 pub mod patterns;
 pub mod pigment;

@@ -23,7 +23,7 @@ use crate::lanes::{Lane, V3};
 
 /// The noise lattice repeats every this many units on each axis: `cell` and `dnoise_lanes`
 /// wrap the lattice coordinates with `& 255`. Patterns made of noise repeat with it, which
-/// lets `pigment::pattern_from_render` drop whole periods from a far pattern origin.
+/// lets `pattern_space::pattern_from_render` drop whole periods from a far pattern origin.
 pub const LATTICE_PERIOD: f64 = 256.0;
 
 /// Turbulence of a pattern, render-ready.

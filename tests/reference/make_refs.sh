@@ -51,7 +51,8 @@ for s in materials tiles warps warps_nested; do
 done
 # patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.
 (cd "$here/scenes" && render "$here/scenes/patterns_density.pov" patterns_density)
-# images.pov, bump_maps.pov, uv_mapping.pov, uv_box.pov and texture_patterns.pov read ../images/*.png (made by tests/reference/images/make_images.py).
-for s in images bump_maps uv_mapping uv_box texture_patterns; do
+# images.pov, images_jpeg.pov, bump_maps.pov, uv_mapping.pov, uv_box.pov and texture_patterns.pov read
+# ../images/*.png and *.jpg (made by tests/reference/images/make_images.py, the JPEGs by Pillow).
+for s in images images_jpeg bump_maps uv_mapping uv_box texture_patterns; do
     (cd "$here/scenes" && render "$here/scenes/$s.pov" "$s")
 done

@@ -46,6 +46,7 @@ impl Lowerer<'_> {
             "pgm" | "ppm" => pnm_heights(&bytes),
             "gif" => gif_heights(&bytes),
             "pot" => pot_heights(&bytes),
+            "jpeg" => jpeg_heights(&bytes),
             _ => tga_heights(&bytes),
         };
         let (width, height, heights) =
@@ -177,6 +178,19 @@ fn png_heights(bytes: &[u8]) -> Result<Heights, String> {
         }
     }
     Ok((w, h, out))
+}
+
+/// JPEG: a grey image's value; a colour one's red and green as one 16-bit height, as 8-bit
+/// colour PNG and TGA are read (a grey picture stored as RGB gives its grey either way).
+fn jpeg_heights(bytes: &[u8]) -> Result<Heights, String> {
+    let img = crate::image_file::read_image("jpeg", bytes, MAX_SIDE)?;
+    let n = img.channels.count();
+    let heights = img
+        .samples
+        .chunks_exact(n)
+        .map(|s| if n == 1 { s[0] as f32 / img.max as f32 } else { red_green(s[0] as u8, s[1] as u8) })
+        .collect();
+    Ok((img.width, img.height, heights))
 }
 
 /// GIF: a pixel's palette index over 255 (POV-Ray 3.4.5.1.6: entry 0 is height 0, entry 255

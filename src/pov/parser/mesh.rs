@@ -18,9 +18,9 @@ const TRIANGLE_ITEMS: &[&str] = &["texture", "uv_vectors"];
 const MESH2_SECTIONS: &[&str] =
     &["vertex_vectors", "normal_vectors", "uv_vectors", "texture_list", "face_indices", "normal_indices", "uv_indices"];
 /// Image types a height field reads.
-pub const HF_TYPES: &[&str] = &["png", "pgm", "ppm", "tga", "gif", "pot"];
+pub const HF_TYPES: &[&str] = &["png", "pgm", "ppm", "tga", "gif", "pot", "jpeg"];
 /// Types POV-Ray reads that strahl does not.
-const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "jpeg", "sys", "tiff"];
+const HF_OTHER_TYPES: &[&str] = &["exr", "hdr", "iff", "sys", "tiff"];
 
 /// Per-triangle features read but not modelled, for one warning each.
 #[derive(Default)]

@@ -339,8 +339,8 @@ impl PigmentDesc {
         let placed =
             || warps.iter().map(|(warp, before)| PlacedWarp { warp: *warp, space: own.then(before), inherited: true });
         if let PigmentPattern::Checker(a, b) = self.pattern {
-            let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
-            self.pattern = PigmentPattern::List(PatternDesc::new(PatternKind::Checker), vec![solid(a), solid(b)]);
+            let (pd, list) = PigmentDesc::checker_list(a, b);
+            self.pattern = PigmentPattern::List(pd, list);
         }
         match &mut self.pattern {
             PigmentPattern::Mapped(pd, _) => pd.warps.extend(placed()),
@@ -356,6 +356,13 @@ impl PigmentDesc {
             PigmentPattern::Solid(_) | PigmentPattern::Checker(..) | PigmentPattern::Wood(_) => {}
             PigmentPattern::ImageMap(_) => {}
         }
+    }
+
+    /// `checker a b` as the general pattern over a list of two solid pigments: what a warped
+    /// checker needs (the plain one keeps its fast path, `PigmentPattern::Checker`).
+    pub fn checker_list(a: Color, b: Color) -> (PatternDesc, Vec<PigmentDesc>) {
+        let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
+        (PatternDesc::new(PatternKind::Checker), vec![solid(a), solid(b)])
     }
 
     /// Whether the pigment is a single colour that needs no pattern work.

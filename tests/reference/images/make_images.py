@@ -40,3 +40,11 @@ png("bump16.png", 16, 16, 0, rows)
 
 pal = [[255, 0, 0], [0, 255, 0], [0, 0, 255], [255, 255, 0]]
 png("pal8.png", 8, 8, 3, [[(x + y) % 4 for x in range(8)] for y in range(8)], pal)
+
+# The JPEGs are made by Pillow (not the standard library), so they are committed as made:
+#   test16.jpg: test16.png at quality 95, no chroma subsampling (Image.save(.., "JPEG",
+#               quality=95, subsampling=0));
+#   hill.jpg:   32x32 grey stored as RGB, v = 255 (0.5 + 0.5 cos(r / 6)) exp(-r² / 300), r from
+#               the centre (15.5, 15.5), quality 90 (a height_field);
+#   halves.jpg: 16x8 grey (one component), black left half, white right half, quality 95;
+#   red.jpg:    16x16 RGB pure red, quality 95, no chroma subsampling.

@@ -196,8 +196,8 @@ impl Lowerer<'_> {
                     // A warped checker goes through the general list pattern; an unwarped one
                     // keeps its own fast path (wave modifiers do nothing to it).
                     if let (Pattern::Checker(a, b), PatternMod::Warp(_)) = (&pattern, m) {
-                        let solid = |c: Color| PigmentDesc { pattern: PigmentPattern::Solid(c), ..Default::default() };
-                        pattern = Pattern::Generic(PatternDesc::new(PatternKind::Checker), vec![solid(*a), solid(*b)]);
+                        let (pd, list) = PigmentDesc::checker_list(*a, *b);
+                        pattern = Pattern::Generic(pd, list);
                     }
                     if let Pattern::Generic(pd, _) = &mut pattern {
                         let before = pd.warps.len();

@@ -2369,3 +2369,33 @@ fn layers_keep_their_finishes_only_where_they_shade_differently() {
     assert_eq!(layers(1), vec![(0.0, 0.6, 0.0), (1.0, 0.6, 0.0)]);
     assert_eq!(layers(2), vec![(0.0, 0.3, 0.0), (0.0, 0.6, 0.0), (0.0, 0.6, 0.2)]);
 }
+
+#[test]
+fn slope_pattern_is_read_and_its_bad_vectors_and_ranges_are_located() {
+    use strahl::scene::desc::{PatternKind, PigmentPattern, Slope};
+    let s = load_text(
+        "slope_ok",
+        "sphere { 0, 1 pigment { slope { y, 0.5, 1 altitude <0, 2, 0>, -1, 1 } color_map { [0 rgb 0] [1 rgb 1] } } }\n\
+         sphere { 0, 1 pigment { slope -x color_map { [0 rgb 0] [1 rgb 1] } } }",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let PigmentPattern::Mapped(pd, _) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    let want = Slope {
+        direction: DVec3::Y,
+        point_at: false,
+        range: [0.5, 1.0],
+        altitude: Some((DVec3::new(0.0, 2.0, 0.0), [-1.0, 1.0])),
+    };
+    assert_eq!(pd.kind, PatternKind::Slope(want));
+    let PigmentPattern::Mapped(pd, _) = &s.objects[1].texture.pigment.pattern else { panic!() };
+    assert!(matches!(&pd.kind, PatternKind::Slope(s) if s.direction == -DVec3::X && s.range == [0.0, 1.0]));
+    let (l, c, m) = err("slope_zero", "sphere { 0, 1\n pigment { slope { 0 } } }");
+    assert_eq!((l, c), (2, 20), "{m}");
+    assert!(m.contains("non-zero direction"), "{m}");
+    let (l, c, m) = err("slope_empty", "sphere { 0, 1\n pigment { slope { y, 0.5, 0.5 } } }");
+    assert_eq!((l, c), (2, 23), "{m}");
+    assert!(m.contains("empty"), "{m}");
+    let (l, c, m) = err("slope_alt", "sphere { 0, 1 pigment { slope { y altitude 0 } } }");
+    assert_eq!((l, c), (1, 44), "{m}");
+    assert!(m.contains("altitude"), "{m}");
+}

@@ -137,6 +137,15 @@ fn quilted_and_spiral2_match_povray() {
     check_psnr("patterns_quilted", &scene("patterns_quilted"), 35.0);
 }
 
+/// `slope`: texture and colour maps picked by the angle to a direction in world axes, Lo/Hi,
+/// altitude in pattern space, `point_at`, nested in a map under transforms written before it,
+/// and the bare `slope V`: POV-Ray 3.7's bytes (every value measured first, see
+/// `shading::patterns::slope`).
+#[test]
+fn slope_pattern_matches_povray() {
+    check_psnr("patterns_slope", &scene("patterns_slope"), 35.0);
+}
+
 /// `quilted` as a normal on lit quads (controls 1 1, 0 0, 0 1 rotated, 0.5 0.5): POV-Ray's own
 /// perturbation, not the pigment's gradient (25.39 dB with the gradient, 92.59 dB now).
 #[test]

@@ -56,10 +56,12 @@ pub fn faces(
     out
 }
 
-/// The two triangles of the square at grid position (i, k), as (column, z index) corners.
+/// The two triangles of the square at grid position (i, k), as (column, z index) corners,
+/// wound so that their normals point up, out of the solid below the surface, as POV-Ray's do
+/// (the `slope` pattern reads them: flat ground under `slope -y` is 0).
 fn cell(i: usize, k: usize) -> [[(usize, usize); 3]; 2] {
     let (a, b, c, d) = ((i, k), (i + 1, k), (i, k + 1), (i + 1, k + 1));
-    [[a, b, c], [b, d, c]]
+    [[a, c, b], [b, c, d]]
 }
 
 #[cfg(test)]
@@ -76,5 +78,9 @@ mod tests {
         assert!(f.iter().any(|(v, _)| v.contains(&Vec3::new(1.0, 128.0 / 255.0, 0.0))));
         // Water at 0.6 leaves out the right square, wholly below it.
         assert_eq!(faces(3, 2, &h, false, 0.6).len(), 2);
+        // Every face's normal (by the triangle's winding) points up.
+        for (v, _) in faces(3, 2, &h, false, 0.0) {
+            assert!((v[1] - v[0]).cross(v[2] - v[0]).y > 0.0, "{v:?}");
+        }
     }
 }

@@ -371,7 +371,18 @@ pub struct PatternAst {
     /// `object { sphere {..} A, B }`: the pattern's object written out (a declared one is
     /// `arg`).
     pub object: Option<Box<Object>>,
+    /// `slope { .. }`'s ranges and altitude (its direction or `point_at` point is `arg`).
+    pub slope: Option<Box<SlopeAst>>,
     pub span: Span,
+}
+
+/// `slope { D [, Lo, Hi] [altitude A [, Lo, Hi]] }` or `slope { point_at P [, Lo, Hi] }`;
+/// `slope D` without braces is the direction alone.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SlopeAst {
+    pub point_at: bool,
+    pub range: Option<(Expr, Expr)>,
+    pub altitude: Option<(Expr, Option<(Expr, Expr)>)>,
 }
 
 /// A modifier of a pattern's value.

@@ -26,7 +26,7 @@ use crate::scene::build::{Scene, ShapeKind};
 use crate::scene::material::Material;
 use crate::shading::normal::perturb_normal_lanes;
 use crate::shading::pattern::RgbftLanes;
-use crate::shading::pigment::eval_pigment_lanes;
+use crate::shading::pigment::eval_surface_pigment_lanes;
 
 /// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
 pub const BLOCK: u32 = 8;
@@ -248,7 +248,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             soa.facing[r] = Soa3::from(facing);
             soa.normal[r] = Soa3::from(normal);
             soa.valid[r] = hit;
-            shading[r] = RowShading::Lanes(material, eval_pigment_lanes(&material.pigment, p, q));
+            shading[r] = RowShading::Lanes(material, eval_surface_pigment_lanes(&material.pigment, p, geometric, q));
         } else {
             for i in 0..lanes {
                 let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };

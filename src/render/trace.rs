@@ -23,7 +23,7 @@ use crate::scene::build::{Light, Scene};
 use crate::scene::material::{Blend, Material, Select};
 use crate::shading::normal::perturb_normal;
 use crate::shading::pattern::Rgbft;
-use crate::shading::pigment::{eval_pigment, pattern_value, PatternQuality};
+use crate::shading::pigment::{eval_pigment, eval_surface_pigment_lanes, surface_pattern_value, PatternQuality};
 
 /// POV-Ray's `adc_bailout`: rays that could change the pixel by less than one 8-bit step are
 /// not traced.
@@ -157,16 +157,21 @@ impl<'a> Tracer<'a> {
             Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
             None => facing,
         };
-        let pigment = self.pigment_at(material, shape, p);
+        let outward = if entering { facing } else { -facing };
+        let pigment = self.pigment_at(material, shape, p, outward);
         Surface { p, facing, normal, entering, material, pigment, shape }
     }
 
-    /// `material`'s pigment at hit point `p` of `shape`: in 3-D pattern space, or at the
-    /// surface's (u, v, 0) for a uv-mapped material.
+    /// `material`'s pigment at hit point `p` of `shape` (unit outward normal `outward`, which
+    /// `slope` reads): in 3-D pattern space, or at the surface's (u, v, 0) for a uv-mapped
+    /// material.
     #[inline(always)]
-    fn pigment_at(&self, material: &Material, shape: HitShape, p: Vec3) -> Rgbft {
+    fn pigment_at(&self, material: &Material, shape: HitShape, p: Vec3, outward: Vec3) -> Rgbft {
         match &material.uv {
-            None => eval_pigment(&material.pigment, p, self.pattern_quality()),
+            None => {
+                let (p, n) = (V3::from_vec3(p), V3::from_vec3(outward));
+                eval_surface_pigment_lanes(&material.pigment, p, n, self.pattern_quality()).lane(0)
+            }
             Some(uv) => self.uv_pigment(material, uv, shape, p),
         }
     }
@@ -320,7 +325,8 @@ impl<'a> Tracer<'a> {
         let mut above = Vec3::ONE;
         let mut color = Vec3::ZERO;
         for layer in layers.iter().rev() {
-            let pigment = self.pigment_at(layer, surface.shape, p);
+            let outward = if entering { facing } else { -facing };
+            let pigment = self.pigment_at(layer, surface.shape, p, outward);
             // Each layer is lit by its own normal; `normal`, the top layer's, refracts.
             let normal = match &layer.normal {
                 Some(n) => perturb_normal(n, p, facing, self.pattern_quality()),
@@ -360,7 +366,8 @@ impl<'a> Tracer<'a> {
         if blend.select == Select::Layers {
             return self.shade_layers(ray, surface, &blend.entries, level, weight, shadows);
         }
-        let v = pattern_value(&blend.selector, surface.p, self.pattern_quality());
+        let outward = if surface.entering { surface.facing } else { -surface.facing };
+        let v = surface_pattern_value(&blend.selector, surface.p, outward, self.pattern_quality());
         let mut color = Vec3::ZERO;
         blend.for_each_weight(v, |i, w| {
             let s = self.surface_as(surface, &blend.entries[i]);
@@ -524,7 +531,7 @@ impl<'a> Tracer<'a> {
             let n = scene.normal_at(hit.shape, p);
             if scene.casts_shadow(hit.shape) {
                 let material = &scene.materials[scene.material_of(hit.shape) as usize];
-                let pig = self.pigment_at(material, hit.shape, p);
+                let pig = self.pigment_at(material, hit.shape, p, n);
                 pass *= pig.rgb * pig.filter + Vec3::splat(pig.transmit);
                 // Leaving a fading object: the light crossed it since the last surface.
                 if let (Some(fade), true) = (&material.fade, n.dot(ray.dir) > 0.0) {

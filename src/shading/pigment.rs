@@ -88,6 +88,9 @@ fn sin_turns<L: Lane>(x: L) -> L {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pigment {
     pub pattern: PigmentPattern32,
+    /// Whether its pattern, or a pattern of a pigment it is made of, reads the surface's
+    /// normal (`slope`): such a pigment is evaluated by `eval_surface_pigment_lanes`.
+    pub reads_normal: bool,
     pub turbulence: Option<TurbulenceF32>,
     /// Render space (`scene::build::RenderFrame`) → pattern space.
     pub pattern_from_render: Affine3A,
@@ -139,8 +142,18 @@ impl Pigment {
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let m = pattern_from_render.matrix3;
         let row_norm = (0..3).map(|r| m.row(r).abs().element_sum()).fold(0.0, f32::max);
+        let reads_normal = match &pattern {
+            PigmentPattern32::Mapped(pat, _) => pat.reads_normal(),
+            PigmentPattern32::PigmentMap(pat, entries) => {
+                pat.reads_normal() || entries.iter().any(|(_, p)| p.reads_normal)
+            }
+            PigmentPattern32::List(pat, list) => pat.reads_normal() || list.iter().any(|p| p.reads_normal),
+            PigmentPattern32::Layered(list) => list.iter().any(|p| p.reads_normal),
+            _ => false,
+        };
         Pigment {
             pattern,
+            reads_normal,
             turbulence: d.turbulence.as_ref().map(TurbulenceF32::from_desc),
             pattern_from_render,
             slack_per_render: 0.25 * f32::EPSILON * row_norm,
@@ -180,7 +193,18 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
             )
         }
         PigmentPattern32::Wood(map) => map.lookup_lanes(wood_value(pig, p_render, q)),
-        _ => eval_composite_lanes(pig, p_render, q),
+        _ => eval_composite_lanes(pig, p_render, None, q),
+    }
+}
+
+/// `eval_pigment_lanes` on a surface whose unit outward normal (world axes) is `n`: a `slope`
+/// pigment reads it; every other pigment is `eval_pigment_lanes`.
+#[inline(always)]
+pub fn eval_surface_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, n: V3<L>, q: PatternQuality) -> RgbftLanes<L> {
+    if pig.reads_normal {
+        eval_composite_lanes(pig, p_render, Some(n), q)
+    } else {
+        eval_pigment_lanes(pig, p_render, q)
     }
 }
 
@@ -223,20 +247,49 @@ pub fn pattern_value(pig: &Pigment, p_render: Vec3, q: PatternQuality) -> f32 {
     }
 }
 
+/// `pattern_value` on a surface whose unit outward normal (world axes) is `n` (what picks a
+/// `slope` texture map's entries).
+pub fn surface_pattern_value(pig: &Pigment, p_render: Vec3, n: Vec3, q: PatternQuality) -> f32 {
+    match &pig.pattern {
+        PigmentPattern32::Mapped(pat, _) | PigmentPattern32::PigmentMap(pat, _) | PigmentPattern32::List(pat, _)
+            if pat.reads_normal() =>
+        {
+            let p = pig.pattern_point(V3::from_vec3(p_render), q);
+            pat.surface_value_lanes(p, V3::from_vec3(n), q.max_octaves)
+        }
+        _ => pattern_value(pig, p_render, q),
+    }
+}
+
 /// The pigments of the pattern layer (`shading::patterns`), kept out of line so that solid,
 /// checker and wood pigments stay as small as they were.
 #[inline(never)]
-fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuality) -> RgbftLanes<L> {
-    match &pig.pattern {
-        PigmentPattern32::Mapped(pat, map) => {
-            let p = pig.pattern_point(p_render, q);
-            map.lookup_lanes(pat.value_lanes(p, q.max_octaves))
+fn eval_composite_lanes<L: Lane>(
+    pig: &Pigment,
+    p_render: V3<L>,
+    n: Option<V3<L>>,
+    q: PatternQuality,
+) -> RgbftLanes<L> {
+    // The pigments it is made of, and the pattern's value: on a surface (`n`, the outward
+    // normal) as `slope` reads it.
+    let eval = |p: &Pigment| match n {
+        Some(n) => eval_surface_pigment_lanes(p, p_render, n, q),
+        None => eval_pigment_lanes(p, p_render, q),
+    };
+    let value = |pat: &Pattern32| {
+        let p = pig.pattern_point(p_render, q);
+        match n {
+            Some(n) => pat.surface_value_lanes(p, n, q.max_octaves),
+            None => pat.value_lanes(p, q.max_octaves),
         }
+    };
+    match &pig.pattern {
+        PigmentPattern32::Mapped(pat, map) => map.lookup_lanes(value(pat)),
         PigmentPattern32::PigmentMap(pat, entries) if pat.kind == Kind32::Average => {
             let total: f32 = entries.iter().map(|e| e.0).sum();
             let mut out = RgbftLanes::splat(Rgbft::default());
             for (w, p) in entries {
-                let c = eval_pigment_lanes(p, p_render, q);
+                let c = eval(p);
                 let k = L::splat(if total != 0.0 { w / total } else { 0.0 });
                 out = RgbftLanes {
                     rgb: out.rgb.add(c.rgb.scale(k)),
@@ -247,19 +300,19 @@ fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuali
             out
         }
         PigmentPattern32::PigmentMap(pat, entries) => {
-            let v = pat.value_lanes(pig.pattern_point(p_render, q), q.max_octaves);
+            let v = value(pat);
             let colors: Vec<(f32, RgbftLanes<L>)> =
-                entries.iter().map(|(value, p)| (*value, eval_pigment_lanes(p, p_render, q))).collect();
+                entries.iter().map(|(value, p)| (*value, eval(p))).collect();
             blend_entries(&colors, v)
         }
         PigmentPattern32::List(pat, list) => {
-            let v = pat.value_lanes(pig.pattern_point(p_render, q), q.max_octaves);
+            let v = value(pat);
             let mut out = match list.first() {
-                Some(p) => eval_pigment_lanes(p, p_render, q),
+                Some(p) => eval(p),
                 None => return RgbftLanes::splat(Rgbft::default()),
             };
             for (k, p) in list.iter().enumerate().skip(1) {
-                let c = eval_pigment_lanes(p, p_render, q);
+                let c = eval(p);
                 out = RgbftLanes::select(L::splat(k as f32 - 0.5).lt(v), c, out);
             }
             out
@@ -268,7 +321,7 @@ fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQuali
         PigmentPattern32::Layered(list) => {
             let mut out = RgbftLanes::splat(Rgbft::default());
             for (k, p) in list.iter().enumerate() {
-                let c = eval_pigment_lanes(p, p_render, q);
+                let c = eval(p);
                 out = if k == 0 { c } else { layer_over(c, out) };
             }
             out

@@ -43,7 +43,7 @@ done
 for s in lights_spot lights_area fog sky_sphere rainbow; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral patterns_quilted normals_quilted slope_map layers_finish layers_normal; do
+for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral patterns_quilted normals_quilted slope_map layers_finish layers_normal patterns_slope; do
     render "$here/scenes/$s.pov" "$s"
 done
 for s in materials tiles warps warps_nested; do

@@ -82,6 +82,10 @@ impl Lowerer<'_> {
                         m.push((self.float(v)?, self.texture(t)?));
                     }
                     m.sort_by(|a, b| a.0.total_cmp(&b.0));
+                    // The pattern's transforms written before the map move its textures too
+                    // (POV-Ray 3.7: `gradient y scale 3 texture_map {..}` renders as `gradient
+                    // y texture_map {..} scale 3`, both for a `slope` texture in the map).
+                    m.iter_mut().for_each(|(_, t)| transform_texture(t, &pattern_transform));
                     texture_map = Some(m);
                 }
                 TextureItem::Layer(t) => {

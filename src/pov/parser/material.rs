@@ -76,6 +76,7 @@ impl Parser<'_, '_> {
             pigments: Vec::new(),
             textures,
             object: None,
+            slope: None,
             span: kw.to(end),
         })
     }

@@ -155,6 +155,20 @@ pub enum PatternKind {
     Image(Arc<ImageMapDesc>),
     /// `object { OBJECT A, B }` (3.4.7.2.5): 1 inside the object, 0 outside.
     Object(SolidRef),
+    /// `slope { .. }` (3.4.7.3.2): read from the surface's normal (`shading::patterns::slope`).
+    Slope(Slope),
+}
+
+/// The `slope` pattern as written.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Slope {
+    /// The direction (world axes), or with `point_at` the point the surface is aimed at.
+    pub direction: DVec3,
+    pub point_at: bool,
+    /// `Lo_slope, Hi_slope`: the slope values that become 0 and 1 (0, 1 unless written).
+    pub range: [f64; 2],
+    /// `altitude A, Lo_alt, Hi_alt`: a gradient along A in pattern space, from Lo to Hi.
+    pub altitude: Option<(DVec3, [f64; 2])>,
 }
 
 /// What the `object` pattern asks of its object: whether a point (in the pattern's space,

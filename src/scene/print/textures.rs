@@ -213,6 +213,14 @@ pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
         K::Spherical => "spherical".into(),
         K::Planar => "planar".into(),
         &K::Quilted { c0, c1 } => format!("quilted control0 {} control1 {}", num(c0), num(c1)),
+        K::Slope(sl) => {
+            let at = if sl.point_at { "point_at " } else { "" };
+            let mut t = format!("slope {{ {at}{}, {}, {}", vec(sl.direction), num(sl.range[0]), num(sl.range[1]));
+            if let Some((a, r)) = sl.altitude {
+                t += &format!(" altitude {}, {}, {}", vec(a), num(r[0]), num(r[1]));
+            }
+            t + " }"
+        }
         K::Fractal(f) => fractal_text(f),
         K::Density { file, interpolate, .. } => {
             format!("density_file df3 \"{}\" interpolate {interpolate}", file.replace('"', "\\\""))

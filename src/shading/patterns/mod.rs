@@ -11,6 +11,7 @@ pub mod density;
 pub mod fractal;
 pub mod mapping;
 pub mod simple;
+pub mod slope;
 pub mod turbulent;
 
 use glam::{Affine3A, Vec3};
@@ -61,6 +62,8 @@ pub enum Kind32 {
     Image(std::sync::Arc<crate::shading::image_map::ImageLookup>),
     /// The `object` pattern: asked lane by lane.
     Object(crate::scene::desc::SolidRef),
+    /// `slope`: needs the surface's normal (`Pattern32::surface_value_lanes`).
+    Slope(slope::Slope32),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -138,6 +141,7 @@ impl Pattern32 {
             PatternKind::Average => Kind32::Average,
             PatternKind::Function(f) => Kind32::Function(f.clone()),
             PatternKind::Object(s) => Kind32::Object(s.clone()),
+            PatternKind::Slope(s) => Kind32::Slope(slope::Slope32::from_desc(s)),
             PatternKind::Image(im) => {
                 Kind32::Image(std::sync::Arc::new(crate::shading::image_map::ImageLookup::from_desc(im)))
             }
@@ -213,6 +217,28 @@ impl Pattern32 {
         if self.is_list() {
             return v;
         }
+        self.shaped(v)
+    }
+
+    /// Whether the value depends on the surface's normal (`slope`).
+    #[inline(always)]
+    pub fn reads_normal(&self) -> bool {
+        matches!(self.kind, Kind32::Slope(_))
+    }
+
+    /// `value_lanes` on a surface whose unit outward normal is `n` (world axes): what `slope`
+    /// needs; every other pattern ignores `n`.
+    #[inline(always)]
+    pub fn surface_value_lanes<L: Lane>(&self, p: V3<L>, n: V3<L>, max_octaves: Option<u32>) -> L {
+        match &self.kind {
+            Kind32::Slope(s) => self.shaped(s.value_lanes(self.warped(p, max_octaves), n)),
+            _ => self.value_lanes(p, max_octaves),
+        }
+    }
+
+    /// Frequency, phase and the wave, on a kernel's value.
+    #[inline(always)]
+    fn shaped<L: Lane>(&self, v: L) -> L {
         let v = if self.frequency != 1.0 || self.phase != 0.0 {
             simple::frac(v * L::splat(self.frequency) + L::splat(self.phase))
         } else {
@@ -259,6 +285,8 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>) -> L {
             simple::frac(L::from_fn_f64(|i| f.eval(&[p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i)])))
         }
         Kind32::Image(ref im) => im.value_lanes(p),
+        // No surface here (`surface_value_lanes` has one).
+        Kind32::Slope(_) => L::splat(0.0),
         Kind32::Object(ref s) => L::from_fn_f64(|i| {
             let q = glam::DVec3::new(p.x.get_f64(i), p.y.get_f64(i), p.z.get_f64(i));
             if s.0.contains(q) {

@@ -85,8 +85,40 @@ impl Lowerer<'_> {
                 _ => return Err(Diag::new(pa.span, "function pattern needs a function body")),
             },
             "object" => PatternKind::Object(self.pattern_object(pa)?),
+            "slope" => PatternKind::Slope(self.slope(pa)?),
             other => return Err(Diag::new(pa.span, format!("unknown pattern `{other}`"))),
         })
+    }
+
+    /// `slope`'s vectors and ranges; a zero direction or altitude, or an empty range, is an
+    /// error at the vector or range.
+    fn slope(&mut self, pa: &PatternAst) -> PResult<crate::scene::desc::Slope> {
+        let (Some(d), Some(sa)) = (&pa.arg, &pa.slope) else {
+            return Err(Diag::new(pa.span, "slope needs a direction"));
+        };
+        let direction = self.vec3(d)?;
+        if direction == DVec3::ZERO && !sa.point_at {
+            return Err(Diag::new(d.span, "slope needs a non-zero direction"));
+        }
+        let range = |l: &mut Self, r: &Option<(Expr, Expr)>| -> PResult<[f64; 2]> {
+            let Some((lo, hi)) = r else { return Ok([0.0, 1.0]) };
+            let v = [l.float(lo)?, l.float(hi)?];
+            if v[0] == v[1] {
+                return Err(Diag::new(lo.span, format!("slope range {} to {} is empty", v[0], v[1])));
+            }
+            Ok(v)
+        };
+        let altitude = match &sa.altitude {
+            Some((a, r)) => {
+                let v = self.vec3(a)?;
+                if v == DVec3::ZERO {
+                    return Err(Diag::new(a.span, "slope altitude needs a non-zero vector"));
+                }
+                Some((v, range(self, r)?))
+            }
+            None => None,
+        };
+        Ok(crate::scene::desc::Slope { direction, point_at: sa.point_at, range: range(self, &sa.range)?, altitude })
     }
 
     /// The solid of an `object` pattern: its object written out or declared, asked by

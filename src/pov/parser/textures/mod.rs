@@ -216,6 +216,7 @@ impl Parser<'_, '_> {
                             pigments,
                             textures: Vec::new(),
                             object: None,
+                            slope: None,
                             span,
                         })
                     } else {

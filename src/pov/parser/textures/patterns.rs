@@ -4,7 +4,7 @@ use super::Parser;
 use super::{turb_kind, PIGMENT};
 use std::rc::Rc;
 
-use crate::pov::ast::{Expr, ExprKind, PatternAst, PatternMod, Pigment, Turb, TurbKind, WarpAst};
+use crate::pov::ast::{Expr, ExprKind, PatternAst, PatternMod, Pigment, SlopeAst, Turb, TurbKind, WarpAst};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
@@ -47,6 +47,7 @@ pub(crate) const PATTERNS: &[&str] = &[
     "wood",
     "function",
     "object",
+    "slope",
 ];
 
 /// Modifiers of a pattern's value, in any block that has a pattern.
@@ -93,6 +94,7 @@ impl Parser<'_, '_> {
             pigments: Vec::new(),
             textures: Vec::new(),
             object: None,
+            slope: None,
             span,
         };
         match pat.name.as_str() {
@@ -150,6 +152,7 @@ impl Parser<'_, '_> {
                 pat.pigments.push(Pigment { items, span: span.to(end) });
             }
             "quilted" if self.starts_expr(stop) && !self.starts_mod() => {}
+            "slope" => self.slope(&mut pat)?,
             "checker" | "brick" | "hexagon" => {
                 let max = if pat.name == "hexagon" { 3 } else { 2 };
                 self.list_items(&mut pat, max, context)?;
@@ -169,6 +172,41 @@ impl Parser<'_, '_> {
             _ => {}
         }
         Ok(pat)
+    }
+
+    /// `slope`'s arguments: a block, or POV-Ray 3.5's bare direction (`slope -z`).
+    fn slope(&mut self, pat: &mut PatternAst) -> PResult<()> {
+        let span = pat.span;
+        if !self.is_punct('{') {
+            pat.arg = Some(self.expr()?);
+            pat.slope = Some(Box::new(SlopeAst { point_at: false, range: None, altitude: None }));
+            return Ok(());
+        }
+        self.open_block("slope", span)?;
+        let point_at = self.peek_ident().as_deref() == Some("point_at");
+        if point_at {
+            self.bump();
+        }
+        pat.arg = Some(self.expr()?);
+        let range = |p: &mut Self| -> PResult<Option<(Expr, Expr)>> {
+            if !p.eat_punct(',') {
+                return Ok(None);
+            }
+            let lo = p.expr()?;
+            p.expect_punct(',', "between a slope range's low and high values")?;
+            Ok(Some((lo, p.expr()?)))
+        };
+        let range_of_slope = range(self)?;
+        let altitude = if !point_at && self.peek_ident().as_deref() == Some("altitude") {
+            self.bump();
+            let a = self.expr()?;
+            Some((a, range(self)?))
+        } else {
+            None
+        };
+        self.close_block("slope", span)?;
+        pat.slope = Some(Box::new(SlopeAst { point_at, range: range_of_slope, altitude }));
+        Ok(())
     }
 
     /// Up to `max` entries of a list pattern (`checker A, B`) in a `context` block.

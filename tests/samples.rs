@@ -130,15 +130,7 @@ const SCENES: &[(&str, Expect)] = &[
     ("incdemo/metals/golds.pov", Psnr),
     ("lights/spotlite.pov", Psnr),
     ("lights/circular.pov", Psnr),
-    (
-        "camera/omnimax.pov",
-        Gap {
-            cause: "omnimax: the image's circular rim lies about a pixel off POV-Ray's (as in the \
-                    reference scene cameras_omnimax); inside the rim the images match",
-            floor: 27.3,
-            noise: false,
-        },
-    ),
+    ("camera/omnimax.pov", Psnr),
     ("objects/torus1.pov", Regions),
     ("objects/isosurfaces.pov", Psnr),
     ("objects/bezier.pov", Psnr),

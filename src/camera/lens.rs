@@ -12,7 +12,7 @@
 //! | orthographic | from `location + px·R + py·U` along `Dn` |
 //! | fisheye | polar (r, φ) of (2px, 2py) stretched to a circle; θ = r·angle/2 off `Dn`; none past r = 1 |
 //! | ultra_wide_angle | x = px·angle, y = py·angle·\|U\|/\|R\|; `sin x·Rn + sin y·Un + cos x cos y·Dn` |
-//! | omnimax | r from a centre 0.1417 below the image's, x in units of |R|/|U|; θ = 2.19928 r − 0.35762 r³ + 2.36026 r⁵ (fitted), none outside the disc touching the top or the inscribed ellipse |
+//! | omnimax | polar (r, φ) as fisheye's where \|R\|/\|U\| ≤ 1, else about a centre moved down (`omnimax_polar`); θ = 1.41127 r − 0.09439 r³ + 0.25674 r⁵; none past r = 1 or more than 45° below the axis's horizon |
 //! | panoramic | lon = px·π, lat = py·π; `cos lat (sin lon·R + cos lon·D) + sin lat·U` (the vectors' lengths are the ellipsoid's axes) |
 //! | cylinder 1 | vertical axis, fixed eye: x = px·angle; `sin x·Rn + py·U + cos x·Dn` |
 //! | cylinder 2 | horizontal axis, fixed eye: y = py·angle; `px·R + sin y·Un + cos y·Dn` |
@@ -239,23 +239,14 @@ impl<'a> LensRays<'a> {
                 (o, self.off_axis(phi, theta))
             }
             Projection::Omnimax => {
-                // Fitted to POV-Ray 3.7's ray directions (three renders coding x, y, z as
-                // 16-bit grey, 640×480; rms error 0.003°): a fisheye centred OMNIMAX_CENTRE
-                // below the image centre, so the dome's spring line lies low in the frame,
-                // with θ an odd quintic of the distance from that centre. A pixel has a ray
-                // inside the ellipse inscribed in the image and inside the disc.
-                let x = px * self.aspect;
-                if (x / 0.665).powi(2) + (2.0 * py).powi(2) > 1.0 {
+                let (phi, rad) = self.omnimax_polar(px, py)?;
+                let [a, b, c] = OMNIMAX_THETA;
+                let d = self.off_axis(phi, rad * (a + rad * rad * (b + rad * rad * c)));
+                // Nothing more than 45° below the view axis's horizon: the dome's lower edge.
+                if d.dot(un) + d.dot(dn) < 0.0 {
                     return None;
                 }
-                let y = py + OMNIMAX_CENTRE;
-                let r2 = x * x + y * y;
-                // The disc reaches the image's top edge: about 90° off the axis there.
-                if r2 > (0.5 + OMNIMAX_CENTRE).powi(2) {
-                    return None;
-                }
-                let theta = r2.sqrt() * (2.19928 + r2 * (-0.35762 + r2 * 2.36026));
-                (o, self.off_axis(y.atan2(x), theta))
+                (o, d)
             }
             Projection::UltraWideAngle { angle } => {
                 let a = angle.to_radians();
@@ -301,6 +292,24 @@ impl<'a> LensRays<'a> {
         (r <= 1.0).then(|| (y.atan2(x), r))
     }
 
+    /// Omnimax's polar coordinates (φ, r) of the centred point, measured from POV-Ray 3.7
+    /// (each ray's x, y and z coded as 16-bit grey at five `right`/`up` ratios a: every
+    /// pixel's ray or its absence reproduced, directions to 0.001°). With both image axes
+    /// spanning [-1, 1], a ≤ 1 stretches y by 1/a as the fisheye does; above 1 the centre
+    /// moves down by s − 1 and both axes shrink by s = min(a, OMNIMAX_STRETCH), x stretched
+    /// by a. `None` outside the unit circle.
+    fn omnimax_polar(&self, px: f64, py: f64) -> Option<(f64, f64)> {
+        let (u, v, a) = (2.0 * px, 2.0 * py, self.aspect);
+        let (x, y) = if a <= 1.0 {
+            (u, v / a)
+        } else {
+            let s = a.min(OMNIMAX_STRETCH);
+            (u * a / s, (v + s - 1.0) / s)
+        };
+        let r = x.hypot(y);
+        (r <= 1.0).then(|| (y.atan2(x), r))
+    }
+
     /// The unit direction `theta` off the view axis, at polar angle `phi` in the image plane.
     fn off_axis(&self, phi: f64, theta: f64) -> DVec3 {
         let (sp, cp) = phi.sin_cos();
@@ -326,8 +335,13 @@ impl<'a> LensRays<'a> {
     }
 }
 
-/// How far below the image centre (in image heights) an omnimax image's axis lies (measured).
-const OMNIMAX_CENTRE: f64 = 0.1417;
+/// The largest `right`/`up` ratio by which an omnimax image moves its axis down and
+/// shrinks (measured: `Lens::omnimax_polar`).
+const OMNIMAX_STRETCH: f64 = 1.283458;
+
+/// Omnimax's θ off the axis, an odd quintic of the polar radius (fitted to POV-Ray 3.7's
+/// rays, 0.0014° rms): about 90° at the rim.
+const OMNIMAX_THETA: [f64; 3] = [1.41126898, -0.09439041, 0.25674048];
 
 /// A well-mixed 64-bit hash (SplitMix64's finaliser) of a few words: the jitter of one sample.
 pub fn hash_words(words: &[u64]) -> u64 {
@@ -373,7 +387,7 @@ mod tests {
             Projection::Orthographic,
             Projection::Fisheye { angle: 180.0 },
             Projection::UltraWideAngle { angle: 270.0 },
-            // (Omnimax looks above the axis at the centre: `omnimax_rim_angle`.)
+            // (Omnimax looks above the axis at the centre: `omnimax_matches_povrays_rays_..`.)
             Projection::Panoramic,
             Projection::Cylinder { kind: 1, angle: 90.0 },
             Projection::Cylinder { kind: 2, angle: 90.0 },
@@ -410,19 +424,60 @@ mod tests {
     }
 
     #[test]
-    fn omnimax_rim_angle() {
-        let g = gen(Projection::Omnimax);
-        // The image centre looks 17.8° above the axis (POV-Ray: 17.29° at the centre pixel of
-        // 160×120, half a pixel below it, where strahl gives 17.3°).
-        let theta: f64 = 0.1417 * (2.19928 + 0.1417f64.powi(2) * (-0.35762 + 0.1417f64.powi(2) * 2.36026));
-        close(dir(&g, 0.5, 0.5), DVec3::new(0.0, theta.sin(), theta.cos()));
-        assert!((theta.to_degrees() - 17.8).abs() < 0.1, "{}", theta.to_degrees());
-        let below = dir(&g, 0.5, 0.5 + 0.5 / 120.0);
-        assert!((below.y.asin().to_degrees() - 17.29).abs() < 0.05, "{below}");
-        // The left and right edges are outside the ellipse, the top beside its centre outside
-        // the disc.
-        assert!(g.ray(0.0, 0.5).is_none() && g.ray(1.0, 0.5).is_none() && g.ray(0.55, 0.0).is_none());
-        assert!(g.ray(0.5, 1.0).is_some(), "the bottom centre looks 45° down");
+    fn omnimax_matches_povrays_rays_at_several_aspects() {
+        // POV-Ray 3.7's rays at pixel centres of 480×480 images (x, y, z coded as 16-bit grey,
+        // so to about 3e-5), `None` where it traces no ray, for `right` a·x and `up` y.
+        let povray: &[(f64, [(u32, u32, Option<[f64; 3]>); 6])] = &[
+            (
+                0.8,
+                [
+                    (100, 100, Some([-0.61724, 0.77155, 0.15405])),
+                    (240, 240, Some([0.00295, -0.00368, 0.99999])),
+                    (380, 420, None),
+                    (60, 300, Some([-0.85392, -0.35978, 0.37602])),
+                    (240, 470, None),
+                    (20, 240, Some([-0.98238, -0.00279, 0.18689])),
+                ],
+            ),
+            (
+                1.2,
+                [
+                    (100, 100, Some([-0.64154, 0.71857, 0.26850])),
+                    (240, 240, Some([0.00291, 0.23029, 0.97313])),
+                    (380, 420, None),
+                    (60, 300, Some([-0.87962, -0.05104, 0.47292])),
+                    (240, 470, None),
+                    (20, 240, Some([-0.97200, 0.17529, 0.15640])),
+                ],
+            ),
+            (
+                2.0,
+                [
+                    (100, 100, None),
+                    (240, 240, Some([0.00450, 0.30365, 0.95278])),
+                    (380, 420, None),
+                    (60, 300, None),
+                    (240, 470, Some([0.00417, -0.67502, 0.73780])),
+                    (20, 240, None),
+                ],
+            ),
+        ];
+        for (a, pixels) in povray {
+            let lens = Lens { projection: Projection::Omnimax, blur: None };
+            let g = LensRays::new(&lens, (DVec3::ZERO, DVec3::ZERO), DVec3::Z, DVec3::X * *a, DVec3::Y, 1.0);
+            for &(x, y, want) in pixels {
+                let (u, v) = ((x as f64 + 0.5) / 480.0, (y as f64 + 0.5) / 480.0);
+                let got = g.ray(u, v).map(|(_, d)| d.normalize());
+                match (got, want) {
+                    (Some(d), Some(w)) => {
+                        let err = (d - DVec3::from(w)).length();
+                        assert!(err < 2e-4, "aspect {a}, pixel ({x}, {y}): {d} != {w:?}");
+                    }
+                    (None, None) => {}
+                    _ => panic!("aspect {a}, pixel ({x}, {y}): strahl {got:?}, POV-Ray {want:?}"),
+                }
+            }
+        }
     }
 
     #[test]

@@ -133,7 +133,7 @@ impl NormalF32 {
         let pattern_from_render =
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let linear = pattern_from_render.matrix3;
-        let pattern = match &d.pattern {
+        let mut pattern = match &d.pattern {
             NormalPattern::Bumps(a) => NormalPattern32::Bumps((a * BUMPS_GAIN) as f32),
             NormalPattern::Pattern(p, a) => NormalPattern32::Pattern(
                 Box::new(Pattern32::from_desc(p)),
@@ -145,9 +145,17 @@ impl NormalF32 {
                 entries.iter().map(|(v, n)| (*v as f32, NormalF32::from_desc(n, world_from_render))).collect(),
             ),
         };
+        // Marble and wood build their turbulence in, so their slope follows it
+        // (`Pattern32::build_in_turbulence`); other patterns are warped once before the
+        // differences, as POV-Ray does.
+        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from_desc);
+        let turbulence = match &mut pattern {
+            NormalPattern32::Pattern(pat, ..) | NormalPattern32::Map(pat, _) => pat.build_in_turbulence(turbulence),
+            NormalPattern32::Bumps(_) => turbulence,
+        };
         NormalF32 {
             pattern,
-            turbulence: d.turbulence.as_ref().map(TurbulenceF32::from_desc),
+            turbulence,
             pattern_from_render,
             normal_to_pattern: linear.inverse().transpose(),
             normal_from_pattern: linear.transpose(),

@@ -4,9 +4,10 @@
 
 use glam::{Affine3A, DMat4, Vec3};
 
-use super::noise::{turbulence_lanes, warp_lanes, TurbulenceF32};
+use super::noise::{warp_lanes, TurbulenceF32};
 use super::pattern_space::{pattern_from_render, Period};
 use super::pattern::{checker_lanes_within, wood_lanes, ColorMap, Rgbft, RgbftLanes, CHECKER_TOLERANCE};
+use super::patterns::turbulent::wood_cycloidal;
 use super::patterns::{Kind32, Pattern32};
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{PigmentDesc, PigmentPattern};
@@ -22,7 +23,7 @@ pub struct PatternQuality {
 pub enum PigmentPattern32 {
     Solid(Rgbft),
     Checker([Rgbft; 2]),
-    /// Turbulence displaces wood cycloidally (see `wood_cycloidal`), not by the plain warp.
+    /// Turbulence displaces wood cycloidally (see `patterns::turbulent::wood_cycloidal`), not by the plain warp.
     Wood(ColorMap),
     /// Any other pattern through a colour map.
     Mapped(Box<Pattern32>, ColorMap),
@@ -55,36 +56,6 @@ impl PigmentPattern32 {
     }
 }
 
-/// POV-Ray 3.7's `wood` does not take `turbulence` as a plain warp. Measured on renders of
-/// `wood turbulence A` (no transform): the rings come closer by 1 + 5.9·A (A = 0.005: 2.9%,
-/// 0.01: 5.9%, 0.02: 10.4%) whatever the octaves, while `onion` and `gradient` keep their
-/// spacing, and the rings wobble far more than the warp predicts. Both fit a cycloidal
-/// displacement, x' = x + sin(2π·A·(x + T_x)) with T the vector turbulence (5.9 ≈ 2π is its
-/// slope at the origin). With it the DMFWood4 red channel differs from POV-Ray's by 0.035 per
-/// pixel on average (0.043 with the warp and a ring-density factor; the rest is our noise).
-#[inline(always)]
-fn wood_cycloidal<L: Lane>(p: V3<L>, t: &TurbulenceF32, max_octaves: Option<u32>) -> V3<L> {
-    let turb = turbulence_lanes(p, t, max_octaves);
-    let (ax, ay) = (L::splat(t.amount.x), L::splat(t.amount.y));
-    V3 { x: p.x + sin_turns((p.x + turb.x) * ax), y: p.y + sin_turns((p.y + turb.y) * ay), z: p.z }
-}
-
-/// `sin(2π·x)` by range reduction to one turn and an odd polynomial (max error 1e-6, against
-/// `f32::sin`'s ~40 instructions and a libm call; two per wood hit were 3% of the seed scene).
-#[inline(always)]
-fn sin_turns<L: Lane>(x: L) -> L {
-    // y in [-0.5, 0.5] turns, then fold to [-0.25, 0.25] where the polynomial is accurate.
-    let y = x - x.map(f32::round);
-    let (quarter, half) = (L::splat(0.25), L::splat(0.5));
-    let y = L::select(quarter.lt(y), half - y, L::select(y.lt(-quarter), -half - y, y));
-    let z = y * y;
-    // Taylor coefficients of sin(2πy) up to y^11: (2π)^k / k!, alternating.
-    let c = |v: f32| L::splat(v);
-    let p = c(6.283_185_5)
-        + z * (c(-41.341_7) + z * (c(81.605_25) + z * (c(-76.705_86) + z * (c(42.058_69) + z * c(-15.094_64)))));
-    y * p
-}
-
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pigment {
     pub pattern: PigmentPattern32,
@@ -109,7 +80,7 @@ pub struct Pigment {
 
 impl Pigment {
     pub fn from_desc(d: &PigmentDesc, world_from_render: &DMat4) -> Pigment {
-        let pattern = match &d.pattern {
+        let mut pattern = match &d.pattern {
             PigmentPattern::Solid(c) => PigmentPattern32::Solid(Rgbft::from_desc(c)),
             PigmentPattern::Checker(a, b) => PigmentPattern32::Checker([Rgbft::from_desc(a), Rgbft::from_desc(b)]),
             PigmentPattern::Wood(map) => PigmentPattern32::Wood(ColorMap::from_desc(map)),
@@ -142,6 +113,15 @@ impl Pigment {
             pattern_from_render(&d.transform.inverse, world_from_render, periods, d.turbulence.as_ref());
         let m = pattern_from_render.matrix3;
         let row_norm = (0..3).map(|r| m.row(r).abs().element_sum()).fold(0.0, f32::max);
+        // Marble and wood (in a pigment_map or list) build their turbulence in; the wood pigment
+        // has its own path (`wood_value`) and keeps it here.
+        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from_desc);
+        let turbulence = match &mut pattern {
+            PigmentPattern32::Mapped(pat, _)
+            | PigmentPattern32::PigmentMap(pat, _)
+            | PigmentPattern32::List(pat, _) => pat.build_in_turbulence(turbulence),
+            _ => turbulence,
+        };
         let reads_normal = match &pattern {
             PigmentPattern32::Mapped(pat, _) => pat.reads_normal(),
             PigmentPattern32::PigmentMap(pat, entries) => {
@@ -154,7 +134,7 @@ impl Pigment {
         Pigment {
             pattern,
             reads_normal,
-            turbulence: d.turbulence.as_ref().map(TurbulenceF32::from_desc),
+            turbulence,
             pattern_from_render,
             slack_per_render: 0.25 * f32::EPSILON * row_norm,
             checker_tolerance: [0, 1, 2].map(|r| CHECKER_TOLERANCE * m.row(r).abs().element_sum().min(1.0)),
@@ -371,14 +351,6 @@ mod tests {
     use super::*;
     use glam::DVec3;
 
-    #[test]
-    fn sin_turns_matches_sin() {
-        for i in -20_000..20_000 {
-            let x = i as f32 * 0.000_37;
-            let want = (x as f64 * std::f64::consts::TAU).sin();
-            assert!((sin_turns::<f32>(x) as f64 - want).abs() < 2e-6, "x = {x}");
-        }
-    }
     use crate::scene::desc::{Color, ColorMapEntry, Transform};
     use crate::shading::pattern::checker;
 

@@ -590,14 +590,15 @@ fn interior_texture_matches_povray() {
 }
 
 /// `bump_map`: grey and colour images as heights, `bump_size` (negative too), `interpolate 2`,
-/// `use_color`, repeated and rotated. 27.28 dB (26.95 before): heights differentiated as
-/// POV-Ray 3.7 does (forward to the next row down in y, centrally on that row in x, by the
-/// height difference a texel: `shading::normal`), which matches its tilt texel for texel on a
-/// plane; the tiles still differ where the disc's rim meets the light at a slant (bump_size 2
-/// and 3 and the colour image, 21.8–27 dB a tile), unexplained; the threshold guards the rest.
+/// `use_color`, repeated and rotated; tile by tile, each at 35 dB. 71.0 dB overall (27.28
+/// before; tiles 28.1 24.7 28.2 25.5 / 20.0 39.0 31.2 26.5 dB in 160-pixel crops, now ∞ on
+/// every tile's interior but the `use_color` one, 91.5 dB): POV-Ray 3.7 takes the y slope as the mean of the two texels
+/// either side on the next row down less the point's own, not the texel straight below, so
+/// a vertical edge tilts in y too (`shading::normal`); and `bump_size` defaults to 0.5, not 1
+/// (`pov::lower::textures::normals`).
 #[test]
 fn bump_maps_match_povray() {
-    check_psnr("bump_maps", &scene("bump_maps"), 27.0);
+    check_psnr_by_region("bump_maps", &scene("bump_maps"), 35.0, &[]);
 }
 
 /// Pattern and pigment functions: a pigment function's channels in function patterns (the

@@ -99,8 +99,8 @@ impl ImageLookup {
 
     /// The finite-difference step of a `bump_map` normal in pattern units (one texel) and the
     /// factor on a height difference over it, `BUMP_GAIN` per unit `bump_size`
-    /// (`shading::normal` differentiates centrally along x, forward along y, as POV-Ray 3.7
-    /// does). The step is negative in y: image rows run down.
+    /// (`shading::normal` differentiates over the point's texel and the two either side of it
+    /// on the next row, as POV-Ray 3.7 does). The step is negative in y: image rows run down.
     pub fn normal_step(&self) -> (f32, f32) {
         let step = 1.0 / self.width.max(self.height) as f32;
         (step, BUMP_GAIN)

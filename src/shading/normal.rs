@@ -276,17 +276,22 @@ fn forward_gradient<L: Lane>(pat: &Pattern32, at: impl Fn(Vec3) -> L) -> V3<L> {
     let image = matches!(pat.kind, Kind32::Image(_));
     let dy = if image { -delta } else { delta };
     let (inv, inv_y) = (L::splat(inv), L::splat(inv * dy.signum()));
-    // POV-Ray 3.7 differentiates a bump_map forward along y (to the next row down) and
-    // centrally along x on that next row (half the difference of the texels either side):
-    // across a 16-texel disc's edge (heights 30 and 230) `bump_size 1` tilts by 0.392 over
-    // two texels in x, by 0.784 over one in y, and a row whose edge starts a texel later than
-    // the row below shows the lower row's x ridge; a 16-texel ramp tilts by its step a texel.
-    let dx = if image {
-        (at(Vec3::new(delta, dy, 0.0)) - at(Vec3::new(-delta, dy, 0.0))) * L::splat(0.5)
-    } else {
-        at(Vec3::X * delta) - v0
-    };
-    V3 { x: dx * inv, y: (at(Vec3::Y * dy) - v0) * inv_y, z: (at(Vec3::Z * delta) - v0) * inv }
+    // POV-Ray 3.7 differentiates a bump_map over a triangle: the point's texel and the two
+    // texels either side of it on the next row down. Their difference (halved) is the x slope,
+    // their mean less the point's height the y slope. Measured on a 16-texel disc (heights 30
+    // and 230, `bump_size 1`): across a horizontal edge the tilt is 0.784 in y over one texel;
+    // across a vertical edge 0.392 in x over two texels, and 0.392 in y as well, + outside the
+    // edge and − inside it (a texel's mean neighbour below is 130, between its heights), which
+    // a difference straight down the column (0 there) missed: 27.3 → 38.3 dB on bump_maps.pov,
+    // the slope maps now equal POV-Ray's to 0.001 on bump16 and test16, plain and
+    // `interpolate 2`. A 16-texel ramp tilts by its step a texel.
+    if image {
+        let (right, left) = (at(Vec3::new(delta, dy, 0.0)), at(Vec3::new(-delta, dy, 0.0)));
+        let half = L::splat(0.5);
+        let y = (right + left) * half - v0;
+        return V3 { x: (right - left) * half * inv, y: y * inv_y, z: (at(Vec3::Z * delta) - v0) * inv };
+    }
+    V3 { x: (at(Vec3::X * delta) - v0) * inv, y: (at(Vec3::Y * dy) - v0) * inv_y, z: (at(Vec3::Z * delta) - v0) * inv }
 }
 
 /// The unit vertices of the tetrahedron POV-Ray 3.7 samples a pattern on for its normal, in

@@ -228,10 +228,20 @@ fn pattern_normal<L: Lane>(
     n: V3<L>,
     q: PatternQuality,
 ) -> V3<L> {
+    // The warps move the point once and the unwarped pattern is differentiated around where
+    // they put it, as POV-Ray 3.7 does (and as it does with the classic `turbulence`). Measured
+    // on a plane lit from ±x and ±y, slope spread (n_x/n_z, n_y/n_z): `marble 0.6 warp {
+    // turbulence 0.8 } scale 0.15` 0.157, 0.011 (differentiated through the warp: 0.242,
+    // 0.195); `gradient x 1 triangle_wave` 0.259, 0.017 under `warp { turbulence 0.8 }` and
+    // 0.261, 0.007 under a `black_hole` (0.419, 0.346 and 0.264, 0.023 through the warp), the
+    // same as unwarped; `bozo 1 warp { turbulence 0.5 }` 0.039 as plain bozo (0.066 through it);
+    // and under `warp { repeat x*0.3 flip x }` a constant slope of −0.264, the rising edge of
+    // the triangle wave inside the first cell, flipped or not (through it: ±0.26).
+    let pw = pat.warped(p, q.max_octaves);
     // quilted has a normal of its own, not its pigment's gradient (3.4.7.1.21: "similar ...
     // but not identical"); POV-Ray takes no slope_map or wave with it.
     if let Kind32::Quilted(c0, c1) = pat.kind {
-        let w = super::patterns::simple::quilted_normal(pat.warped(p, q.max_octaves), c0, c1);
+        let w = super::patterns::simple::quilted_normal(pw, c0, c1);
         let np = n.mat3_mul(&nrm.normal_to_pattern).normalize_or(n);
         return np.add(w.scale(L::splat(amount))).mat3_mul(&nrm.normal_from_pattern).normalize_or(n);
     }
@@ -239,7 +249,7 @@ fn pattern_normal<L: Lane>(
     // differentiates across the map too (a step in height shows as a ridge as wide as the
     // differences reach, measured on `[0.5 <0,0>] [0.5 <1,0>]`).
     let at = |d: Vec3| {
-        let v = pat.value_lanes(p.add(V3::splat(d)), q.max_octaves);
+        let v = pat.value_at_warped_lanes(pw.add(V3::splat(d)), q.max_octaves);
         match slope {
             Some(m) => m.height(v),
             None => v,

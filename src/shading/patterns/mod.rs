@@ -235,7 +235,14 @@ impl Pattern32 {
     /// warps, the kernel, then frequency, phase and the wave.
     #[inline(always)]
     pub fn value_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
-        let v = kernel(&self.kind, self.warped(p, max_octaves), max_octaves);
+        self.value_at_warped_lanes(self.warped(p, max_octaves), max_octaves)
+    }
+
+    /// The value at a point the warps have already moved (`warped`): the kernel, then
+    /// frequency, phase and the wave. Normals differentiate this around the warped point.
+    #[inline(always)]
+    pub fn value_at_warped_lanes<L: Lane>(&self, p: V3<L>, max_octaves: Option<u32>) -> L {
+        let v = kernel(&self.kind, p, max_octaves);
         if self.is_list() {
             return v;
         }

@@ -633,3 +633,41 @@ fn a_transform_function_gives_the_moved_point() {
     let e = error("transform_function_arity", "#declare F = function { transform { scale 2 } }\nsphere { F(1, 2), 1 }");
     assert!(e.to_string().contains("takes 3 arguments"), "{e}");
 }
+
+/// A macro whose value ends inside a running `#if` branch (`arrays.inc`'s `Rand_Array_Item`:
+/// `#if (..) Array[i] #else #error .. #end`) can be continued by operators after the call, in
+/// a declaration and as a pigment's colour (advanced/isocacti.pov); a `#while` after a
+/// declaration still waits for the value to be stored.
+#[test]
+fn a_macro_value_ending_in_an_if_branch_continues_the_expression() {
+    let pick = "#declare A = array[2] {rgb 1, rgb <0.5, 1, 0>}\n\
+                #macro Pick(Arr)\n  #if (dimensions(Arr) = 1)\n    Arr[1]\n  #else\n    #error \"1D only\"\n  #end\n#end\n";
+    let out =
+        debug("macro_if_value", &format!("{pick}#declare V = Pick(A)*0.5 + 0.25;\n#debug vstr(5, V, \",\", 0, 3)"));
+    assert_eq!(out, "0.500,0.750,0.250,0.250,0.250");
+    let (scene, _) = load("macro_if_pigment", &format!("{pick}sphere {{ 0, 1 pigment {{ Pick(A)*0.5 }} }}")).unwrap();
+    assert_eq!(scene.objects.len(), 1);
+    let out = debug(
+        "while_after_if",
+        "#declare I = 0;\n#if (1) #declare N = 2 #end\n#while (I < N) #declare I = I + 1 #end\n#debug str(I, 0, 0)",
+    );
+    assert_eq!(out, "2");
+}
+
+/// A function body may read a declared spline per point (`S(t).y`, language/splinefunction.pov),
+/// with the spline's own kind or one given; a point used whole is a located error.
+#[test]
+fn functions_read_declared_splines_per_point() {
+    let spline = "#declare S = function { spline { linear_spline 0, <0, 0, 0> 1, <2, 4, 1> 2, <2, 0, 3> } }\n";
+    let out = debug(
+        "spline_function",
+        &format!(
+            "{spline}#declare F = function {{ S(x).y + S(x, linear_spline).z }}\n\
+             #debug concat(str(F(0.5, 0, 0), 0, 3), \" \", str(F(1.5, 0, 0), 0, 3), \" \", str(S(0.25).x, 0, 3))"
+        ),
+    );
+    assert_eq!(out, "2.500 4.000 0.500");
+    let e = error("spline_function_whole", &format!("{spline}#declare F = function {{ S(x) + 1 }}"));
+    assert_eq!((e.line, e.col), (2, 25), "{e}");
+    assert!(e.message.contains("pick a component"), "{e}");
+}

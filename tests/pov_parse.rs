@@ -1181,6 +1181,42 @@ fn text_loads_glyphs_from_the_include_path() {
     assert!(x_range(&glyphs[1]).0 < x_range(&glyphs[0]).1);
 }
 
+/// `text { internal N ... }` (advanced/benchmark/benchmark.pov): POV-Ray's built-in fonts are
+/// its own TrueType files by number (1 timrom, 2 cyrvetic, 3 crystal, 0 and any other number
+/// povlogo), read from the include path; where the file is missing the number is named.
+#[test]
+fn internal_fonts_are_pov_rays_font_files_by_number() {
+    let fonts = PathBuf::from("/usr/share/povray-3.7/include");
+    if fonts.join("timrom.ttf").is_file() {
+        let include = IncludePath { dirs: vec![fonts] };
+        for (n, file) in
+            [(0, "povlogo.ttf"), (1, "timrom.ttf"), (2, "cyrvetic.ttf"), (3, "crystal.ttf"), (7, "povlogo.ttf")]
+        {
+            let load = |font: &str| {
+                let p = write(&dir("internal_font"), "scene.pov", &format!("text {{ {font} \"Ray\" 0.25, 0 }}"));
+                match load_scene(&p, &include).unwrap().objects[0].shape.clone() {
+                    ShapeDesc::Text { font, glyphs, .. } => (font, glyphs),
+                    other => panic!("{other:?}"),
+                }
+            };
+            let (internal, by_name) = (load(&format!("internal {n}")), load(&format!("ttf \"{file}\"")));
+            assert!(internal.0.ends_with(file), "{n}: {}", internal.0);
+            assert_eq!(internal.1, by_name.1, "{n}");
+        }
+    } else {
+        println!("skipped the font half: timrom.ttf is not in /usr/share/povray-3.7/include (install fonts-povray)");
+    }
+    let (l, c, m) = err("internal_font_missing", "text { internal 1 \"A\" 1, 0 }");
+    assert_eq!(
+        ((l, c), m.as_str()),
+        (
+            (1, 17),
+            "built-in font 1 is POV-Ray's \"timrom.ttf\" (package fonts-povray), which was not found \
+             (searched as written, the scene's folder and the include path)"
+        )
+    );
+}
+
 #[test]
 fn bad_text_is_a_located_error() {
     for (text, at, message) in [
@@ -1189,7 +1225,11 @@ fn bad_text_is_a_located_error() {
             (1, 12),
             "font \"nosuchfont.ttf\" not found (searched as written, the scene's folder and the include path)",
         ),
-        ("text { \"timrom.ttf\" \"A\" 1, 0 }", (1, 8), "text needs `ttf` and a font file first"),
+        (
+            "text { \"timrom.ttf\" \"A\" 1, 0 }",
+            (1, 8),
+            "text needs `ttf` and a font file, or `internal` and a font number, first",
+        ),
         ("text { ttf \"x.ttf\" \"A\" 0, 0 }", (1, 24), "text thickness must not be 0"),
         ("text { ttf 3 \"A\" 1, 0 }", (1, 12), "expected a string, found a float"),
     ] {
@@ -1537,7 +1577,7 @@ fn functions_parse_call_and_bad_ones_are_located_errors() {
     // The declarations of POV-Ray's functions.inc that these scenes use (the package's own
     // file need not be installed).
     let inc = "#declare f_sphere = function { internal(61) }\n#declare f_torus = function { internal(70) }\n\
-               #declare f_helix1 = function { internal(25) }\n#declare f_agate = function { pattern { agate } }\n";
+               #declare f_helix2 = function { internal(26) }\n#declare f_agate = function { pattern { agate } }\n";
     let load = |test: &str, text: &str| {
         let d = dir(test);
         write(&d, "functions.inc", inc);
@@ -1591,11 +1631,11 @@ fn functions_parse_call_and_bad_ones_are_located_errors() {
     // An unmodelled internal function is an error where it is used, not where it is declared.
     let (l, c, m) = err(
         "helix",
-        "#include \"functions.inc\"\n#declare F = function { f_helix1(x, y, z, 1, 2, 3, 4, 5, 6, 7) }\n\
+        "#include \"functions.inc\"\n#declare F = function { f_helix2(x, y, z, 1, 2, 3, 4, 5, 6, 7) }\n\
          sphere { 0, F(1, 2, 3) }",
     );
     assert_eq!((l, c), (3, 13), "{m}");
-    assert!(m.contains("internal function 25 is not supported"), "{m}");
+    assert!(m.contains("internal function 26 is not supported"), "{m}");
 }
 
 /// Isosurfaces load with their items and POV-Ray's defaults.

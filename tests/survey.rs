@@ -8,10 +8,11 @@ use std::process::Command;
 
 const SAMPLES: &str = "/usr/share/povray-3.7/scenes";
 
-/// Scenes that rendered when this floor was last raised (385 measured, with `slope` and JPEG;
+/// Scenes that rendered when this floor was last raised (389 measured, with `f_helix1`, the
+/// built-in fonts, splines in functions and macro values continued after an `#if`; before, 385 with `slope` and JPEG;
 /// two below it for a scene near the 10 s timeout on a loaded machine, as chess2.pov was,
 /// and landscape.pov is now); raise it as features land.
-const FLOOR: usize = 383;
+const FLOOR: usize = 387;
 
 #[test]
 #[ignore = "needs Debian's povray-examples (/usr/share/povray-3.7/scenes): .ci/run runs it with --ignored"]

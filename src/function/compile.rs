@@ -13,6 +13,7 @@ use std::sync::Arc;
 use super::internal::Internal;
 use super::ops::{Binary, Unary};
 use super::shade::{Channel, Shade};
+use super::spline::SplineRead;
 use super::Node;
 
 /// Registers kept on the stack while running; a deeper function uses a heap buffer.
@@ -60,6 +61,12 @@ enum Instr {
     Shade {
         s: Arc<Shade>,
         ch: Channel,
+        d: Reg,
+        a: Reg,
+    },
+    /// `d = s(register a)`.
+    Spline {
+        s: Arc<SplineRead>,
         d: Reg,
         a: Reg,
     },
@@ -143,6 +150,10 @@ impl Compiler {
                 let a = self.arguments(args, env);
                 self.code.push(Instr::Shade { s: s.clone(), ch: *ch, d, a });
             }
+            Node::Spline(s, t) => {
+                let a = self.node(t, env);
+                self.code.push(Instr::Spline { s: s.clone(), d, a });
+            }
             Node::Call(f, args) => {
                 // The arguments stay in their registers while the inlined body runs; one
                 // that is a parameter as it is (`F(x, y, z)`) is read where it stands.
@@ -223,6 +234,7 @@ impl Program {
                     let a = *a as usize;
                     r[*d as usize] = s.value(*ch, &r[a..a + 3]);
                 }
+                Instr::Spline { s, d, a } => r[*d as usize] = s.value(r[*a as usize]),
             }
         }
         r[self.result as usize]

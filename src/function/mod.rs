@@ -1,7 +1,7 @@
 //! User-defined functions (POV-Ray 3.7's `function { ... }`, reference 3.3.1.8): the expression
 //! tree the parser builds (`Node`), the compiler that turns it into register code once
 //! (`Program`: constants folded, calls to other functions inlined), and the internal functions
-//! `functions.inc` names (`internal`).
+//! `functions.inc` names (`internal`), and the splines a body may read (`spline`).
 //!
 //! The parser (`pov`) produces `Node`s and knows nothing of `Program`; shapes (`geometry`) only
 //! run `Program`s. This module depends on neither.
@@ -10,6 +10,7 @@ mod compile;
 pub mod internal;
 mod ops;
 pub mod shade;
+pub mod spline;
 
 use std::rc::Rc;
 use std::sync::Arc;
@@ -18,6 +19,7 @@ pub use compile::Program;
 pub use internal::Internal;
 pub use ops::{Binary, Unary};
 pub use shade::{Channel, Shade};
+pub use spline::SplineRead;
 
 /// Most parameters a function may take, as in POV-Ray 3.7.
 pub const MAX_PARAMS: usize = 56;
@@ -43,6 +45,9 @@ pub enum Node {
     Call(Rc<Function>, Vec<Node>),
     /// One channel of a pattern or pigment function at the point of its three arguments.
     Shade(Arc<Shade>, Channel, Vec<Node>),
+    /// One component of a declared spline at the parameter computed by the node
+    /// (`Spl(x).y`).
+    Spline(Arc<SplineRead>, Box<Node>),
 }
 
 /// A declared function: its parameter names (for messages) and body.
@@ -141,13 +146,14 @@ impl Node {
                 let v: Vec<f64> = args.iter().map(|a| a.eval(p)).collect();
                 s.value(*ch, &v)
             }
+            Node::Spline(s, t) => s.value(t.eval(p)),
         }
     }
 
     fn call_depth(&self) -> usize {
         match self {
             Node::Const(_) | Node::Param(_) => 0,
-            Node::Unary(_, a) => a.call_depth(),
+            Node::Unary(_, a) | Node::Spline(_, a) => a.call_depth(),
             Node::Binary(_, a, b) => a.call_depth().max(b.call_depth()),
             Node::Cond(c, a, b) => c.call_depth().max(a.call_depth()).max(b.call_depth()),
             Node::Internal(_, args) | Node::Shade(_, _, args) => args.iter().map(Node::call_depth).max().unwrap_or(0),
@@ -198,6 +204,10 @@ impl Node {
                     None => Node::Shade(s.clone(), *ch, args),
                 }
             }
+            Node::Spline(s, t) => match t.folded() {
+                Node::Const(v) => Node::Const(s.value(v)),
+                t => Node::Spline(s.clone(), Box::new(t)),
+            },
         }
     }
 }

@@ -226,6 +226,23 @@ fn internal_functions_give_pov_rays_values() {
     close(Internal::Torus, &[0.3, -0.7, 0.2, 1.0, 0.3], 0.64809796);
     close(Internal::Sphere, &[0.3, -0.7, 0.2, 0.7], 0.08740079);
     close(Internal::Paraboloid, &[0.3, -0.7, 0.2, 2.0], -1.66);
+    // f_helix1 over every parameter: round, square, diamond-like and concave sections, turned
+    // sections, one to four tubes, negative periods and shapes, and points past the cap.
+    let helix = |p: [f64; 3], k: [f64; 7], want: f64| {
+        let mut a = p.to_vec();
+        a.extend(k);
+        close(Internal::Helix1, &a, want);
+    };
+    let (a, b, c, d) = ([1.2, -3.0, 0.3], [0.7, 0.4, -0.9], [-0.3, 1.7, 0.2], [0.9, -0.2, -0.1]);
+    helix(a, [1.0, 1.0, 0.1, 1.0, 1.0, 3.0, 30.0], 0.41462259);
+    helix(c, [1.0, 1.0, 0.1, 1.0, 1.0, 3.0, 30.0], 1.26055513);
+    helix(b, [2.0, 1.5, 0.2, 0.8, 1.5, 1.0, 20.0], 0.45562093);
+    helix(c, [3.0, 2.0, 0.1, 1.0, 0.7, 0.0, -40.0], 0.70368099);
+    helix(d, [1.0, 1.0, 0.1, 1.0, 1.0, -1.0, 0.0], -0.00559106);
+    helix(d, [4.0, 3.0, 0.2, 0.9, 1.3, 2.5, 75.0], -0.16763180);
+    helix(a, [1.0, -2.0, 0.15, 1.2, -0.8, 0.7, 200.0], 1.71491827);
+    helix([0.05, 0.3, 0.02], [3.0, 35.0, 0.0105, 0.0165, 2.0, 1.0, 0.0], 0.02794983);
+    helix(a, [0.0, 1.0, 0.1, 1.0, 1.0, 1.0, 0.0], 2.13693169);
     for n in 0..100 {
         if let Some(f) = Internal::from_number(n) {
             assert!(Internal::NUMBERS.contains(&format!("{n} (")), "{n}");

@@ -9,7 +9,6 @@ mod lower;
 mod names;
 pub mod parser;
 pub mod source;
-pub mod spline;
 pub mod value;
 
 use std::fmt;

@@ -50,7 +50,7 @@ pub enum Value {
     Transform(Transform),
     /// `spline { ... }` (also `function { spline { ... } }`): evaluated as `S(t)` where it
     /// is read.
-    Spline(Rc<crate::pov::spline::Spline>),
+    Spline(Rc<crate::function::spline::Spline>),
     /// `function { transform { ... } }`: `F(x, y, z)` is the point moved by the transform.
     TransformFunction(Transform),
     /// A declaration whose syntax was read but which needs a feature strahl does not model

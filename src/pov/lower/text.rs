@@ -1,4 +1,5 @@
-//! `text { ttf "font.ttf" "string" thickness, offset }` → glyph outlines (`ShapeDesc::Text`).
+//! `text { ttf "font.ttf" "string" thickness, offset }` (or `internal N` for one of POV-Ray's
+//! built-in fonts) → glyph outlines (`ShapeDesc::Text`).
 //!
 //! The font is found as POV-Ray finds it: the name as written, then the scene's folder and the
 //! include path (as `#include` searches them). Glyphs come from `ttf-parser`: each outline is
@@ -67,11 +68,21 @@ impl Lowerer<'_> {
         let arg = |i: usize| {
             args.get(i).ok_or_else(|| Diag::new(span, "text needs: ttf \"font.ttf\" \"string\" thickness, offset"))
         };
-        if !matches!(&arg(0)?.kind, ExprKind::Ident(w) if w == "ttf") {
-            return Err(Diag::new(arg(0)?.span, "text needs `ttf` and a font file first"));
-        }
         let font_expr = arg(1)?;
-        let name = self.string(font_expr)?;
+        let (name, builtin) = match &arg(0)?.kind {
+            ExprKind::Ident(w) if w == "ttf" => (self.string(font_expr)?, None),
+            ExprKind::Ident(w) if w == "internal" => {
+                let n = self.float(font_expr)?;
+                let file = internal_font(n);
+                (file.to_string(), Some(n))
+            }
+            _ => {
+                return Err(Diag::new(
+                    arg(0)?.span,
+                    "text needs `ttf` and a font file, or `internal` and a font number, first",
+                ))
+            }
+        };
         let string = self.string(arg(2)?)?;
         let thickness = self.float(arg(3)?)?;
         let offset = self.vec3(arg(4)?)?;
@@ -92,9 +103,13 @@ impl Lowerer<'_> {
             }
         });
         let path = found.ok_or_else(|| {
+            let what = match builtin {
+                Some(n) => format!("built-in font {n} is POV-Ray's \"{name}\" (package fonts-povray), which was"),
+                None => format!("font \"{name}\""),
+            };
             Diag::new(
                 font_expr.span,
-                format!("font \"{name}\" not found (searched as written, the scene's folder and the include path)"),
+                format!("{what} not found (searched as written, the scene's folder and the include path)"),
             )
         })?;
         let data = std::fs::read(&path)
@@ -104,6 +119,16 @@ impl Lowerer<'_> {
         let glyphs = layout(&face, &string, offset);
         Ok(ShapeDesc::Text { font: path.display().to_string(), string, thickness, offset, glyphs })
     }
+}
+
+/// The font file of `text { internal N ... }`. POV-Ray 3.7 builds four fonts in so that its
+/// benchmark runs without installed files (the reference's `text` section): 0 povlogo, 1 timrom,
+/// 2 cyrvetic, 3 crystal, and any other number is 0. They are the TrueType files POV-Ray ships
+/// (Debian's fonts-povray puts them on the include path), so strahl reads those.
+fn internal_font(n: f64) -> &'static str {
+    const FONTS: [&str; 4] = ["povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf"];
+    let i = if n >= 0.0 && n < FONTS.len() as f64 { n as usize } else { 0 };
+    FONTS[i]
 }
 
 /// The glyphs of `string` placed along x, the em scaled to 1.

@@ -341,6 +341,16 @@ impl Parser<'_, '_> {
         }
     }
 
+    /// Whether directive `name` at the cursor only ends the `#if` branch being run, in the
+    /// frame that opened it (its `#else`, `#elseif` or `#end`): it skips tokens or closes the
+    /// block, reading no variable, so an expression may run it and go on. A macro body
+    /// `#if (..) Value #else #error ".." #end` is then a value the caller can continue
+    /// (`Rand_Array_Item(A, S) * 2` in advanced/isocacti.pov).
+    pub(super) fn ends_running_branch(&self, name: &str) -> bool {
+        matches!(name, "else" | "elseif" | "end")
+            && matches!(self.conds.last(), Some(c) if matches!(c.kind, CondKind::If) && c.frame == self.stream.frame_id())
+    }
+
     fn end(&mut self, start: Span) -> PResult<()> {
         let Some(cond) = self.conds.pop() else {
             return Err(Diag::new(

@@ -176,10 +176,16 @@ impl Parser<'_, '_> {
     /// The next token where it may continue what was just read (an operator, a component):
     /// a directive or macro call there ends the expression instead of running first, so that
     /// `#declare A = 1` stores `A` before a following `#if (A)` or `M(A)` reads it, even without
-    /// the `;`.
+    /// the `;`. The end of a running `#if` branch reads nothing, so it runs and the expression
+    /// goes on after it.
     fn peek_more(&mut self) -> Token {
         loop {
             match self.cur.kind {
+                TokenKind::Directive(d) if self.ends_running_branch(d) => {
+                    if let Err(e) = self.directive(d) {
+                        self.fail(e);
+                    }
+                }
                 TokenKind::Directive(_) => return Token { kind: TokenKind::Eof, span: self.cur.span },
                 // A word cannot continue an expression (only start one): a macro call there
                 // waits too (`#declare C = "a"` before `M(C)` on the next line).

@@ -2,12 +2,15 @@
 //! resolved as they are read (parameters, declared floats and functions, internal functions,
 //! POV-Ray's float functions), with a located error for an unknown name or a wrong number of
 //! arguments. `pattern { }` and `pigment { }` bodies are lowered at once into the function's
-//! `Shade`; `transform` and `spline` bodies are not modelled.
+//! `Shade`; a declared spline is read per point (`S(t).y`). `function { transform { } }` and
+//! `function { spline { } }` are values of their own (`parser::spline`).
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use super::Parser;
-use crate::function::{Binary, Channel, Function, Internal, Node, Shade, Unary, MAX_PARAMS};
+use crate::function::spline::Spline;
+use crate::function::{Binary, Channel, Function, Internal, Node, Shade, SplineRead, Unary, MAX_PARAMS};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
@@ -330,14 +333,7 @@ impl Parser<'_, '_> {
                 self.bump();
                 let t = self.bump();
                 let index = match &t.kind {
-                    TokenKind::Ident(w) => match &**w {
-                        "x" | "u" | "red" => Some(0),
-                        "y" | "v" | "green" => Some(1),
-                        "z" | "blue" => Some(2),
-                        "t" | "filter" => Some(3),
-                        "transmit" => Some(4),
-                        _ => None,
-                    },
+                    TokenKind::Ident(w) => component_index(w),
                     _ => None,
                 };
                 match index.and_then(|i| c.get(i)) {
@@ -345,9 +341,43 @@ impl Parser<'_, '_> {
                     None => Err(Diag::new(t.span, format!("`{word}` has no component {}", t.describe()))),
                 }
             }
+            Value::Spline(s) => self.fn_spline(&s, word, span, params),
             Value::Unmodelled(u) => Err(u.used_at(span)),
             other => Err(Diag::new(span, format!("`{word}` is {}, which a function cannot use", other.kind_name()))),
         }
+    }
+
+    /// `S(t [, kind]).c` in a body after the name `word` (at `span`) of a declared spline:
+    /// component `c` of its point at `t`, read per point (POV-Ray lets a function body
+    /// call a spline; language/splinefunction.pov draws a gradient with `Spl_Pat(x).y`).
+    fn fn_spline(&mut self, s: &Spline, word: &str, span: Span, params: &[String]) -> PResult<Node> {
+        let open = self.expect_punct('(', &format!("after `{word}`"))?;
+        self.enter(open)?;
+        let t = self.fn_expr(params)?;
+        let kind = if self.eat_punct(',') { self.spline_kind_arg()? } else { s.kind };
+        let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
+        self.leave();
+        if s.is_empty() {
+            return Err(Diag::new(span.to(close), format!("spline `{word}` has no points")));
+        }
+        if !self.eat_punct('.') {
+            return Err(Diag::new(
+                span.to(close),
+                format!("`{word}(...)` is a point, a function's value a float: pick a component (`.x`, `.y`, ...)"),
+            ));
+        }
+        let c = self.bump();
+        let index = match &c.kind {
+            TokenKind::Ident(w) => component_index(w),
+            _ => None,
+        };
+        let Some(index) = index else {
+            return Err(Diag::new(
+                c.span,
+                format!("expected a component (x, y, z, t, transmit) after `{word}(...).`, found {}", c.describe()),
+            ));
+        };
+        Ok(Node::Spline(Arc::new(SplineRead { spline: s.clone(), kind, index }), Box::new(t)))
     }
 
     /// Whether the token after the cursor is `c` (the cursor is a word not yet taken).
@@ -412,6 +442,19 @@ impl Parser<'_, '_> {
             None => Value::Float(f.eval(&args)),
         })
     }
+}
+
+/// The component a member name reads of a vector or colour (`.y` is 1, `.t` 3), as in
+/// ordinary expressions.
+fn component_index(word: &str) -> Option<usize> {
+    Some(match word {
+        "x" | "u" | "red" => 0,
+        "y" | "v" | "green" => 1,
+        "z" | "blue" => 2,
+        "t" | "filter" => 3,
+        "transmit" => 4,
+        _ => return None,
+    })
 }
 
 /// The other name of a parameter: `x` is `u` and `y` is `v` (POV-Ray 3.3.1.8.3).

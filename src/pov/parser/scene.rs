@@ -545,7 +545,7 @@ impl Parser<'_, '_> {
         let mut args = Vec::new();
         let leading = match shape {
             ShapeKind::Prism => PRISM_ITEMS,
-            ShapeKind::Text => &["ttf"],
+            ShapeKind::Text => &["ttf", "internal"],
             ShapeKind::Lathe => &PRISM_ITEMS[..4],
             _ => &[],
         };

@@ -1,15 +1,15 @@
 //! `spline { [S] [kind] key, <point> [,] ... }` (POV-Ray 3.3.1.11) read into a
-//! `pov::spline::Spline`, and a call `S(t [, kind])` evaluated where it is read; the other
+//! `function::spline::Spline`, and a call `S(t [, kind])` evaluated where it is read; the other
 //! vector-valued functions, `function { spline { .. } }` and `function { transform { .. } }`
 //! (`transforms.inc`'s `vtransform`), and their calls. The interpolation lives in
-//! `pov::spline`.
+//! `function::spline`.
 
 use std::rc::Rc;
 
 use super::Parser;
+use crate::function::spline::{Spline, SplineKind, MAX_COMPONENTS};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
-use crate::pov::spline::{Spline, SplineKind, MAX_COMPONENTS};
 use crate::pov::value::Value;
 
 /// The most points one spline may hold: far above what a scene writes by hand or by loop.
@@ -92,29 +92,31 @@ impl Parser<'_, '_> {
         Ok(Value::Vector(vec![p.x, p.y, p.z]))
     }
 
+    /// The `kind` of a call `S(t, kind)`, after its comma.
+    pub(super) fn spline_kind_arg(&mut self) -> PResult<SplineKind> {
+        let k = self.bump();
+        match &k.kind {
+            TokenKind::Ident(w) => SplineKind::from_keyword(w),
+            _ => None,
+        }
+        .ok_or_else(|| {
+            Diag::new(
+                k.span,
+                format!(
+                    "expected a spline kind (linear_spline, quadratic_spline, cubic_spline, natural_spline), found {}",
+                    k.describe()
+                ),
+            )
+        })
+    }
+
     /// `S(t)` or `S(t, kind)` after a declared spline's name `word` (at `span`): the point.
     pub(super) fn call_spline(&mut self, s: Rc<Spline>, word: &str, span: Span) -> PResult<Value> {
         let open = self.expect_punct('(', &format!("after `{word}`"))?;
         self.enter(open)?;
         let t = self.full_expr()?;
         let t = self.low.float(&t)?;
-        let mut kind = s.kind;
-        if self.eat_punct(',') {
-            let k = self.bump();
-            kind = match &k.kind {
-                TokenKind::Ident(w) => SplineKind::from_keyword(w),
-                _ => None,
-            }
-            .ok_or_else(|| {
-                Diag::new(
-                    k.span,
-                    format!(
-                        "expected a spline kind (linear_spline, quadratic_spline, cubic_spline, natural_spline), found {}",
-                        k.describe()
-                    ),
-                )
-            })?;
-        }
+        let kind = if self.eat_punct(',') { self.spline_kind_arg()? } else { s.kind };
         let close = self.expect_punct(')', &format!("to close `{word}(`"))?;
         self.leave();
         if s.is_empty() {

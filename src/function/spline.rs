@@ -1,6 +1,8 @@
 //! POV-Ray's `spline { }` value (3.3.1.11): points of 2 to 5 components keyed by a parameter,
 //! evaluated as `S(t)` or `S(t, kind)` while the scene is read (`transforms.inc`'s
-//! `Spline_Trans` flies objects along one). The parser reads the block (`parser::spline`);
+//! `Spline_Trans` flies objects along one), or per point inside a function body
+//! (`function { S(x).y }`, language/splinefunction.pov), which is why it lives beside the
+//! function compiler rather than in `pov`. The parser reads the block (`pov::parser::spline`);
 //! this module owns the interpolation.
 //!
 //! The four kinds, measured against `povray` 3.7 `#debug` output on unevenly spaced keys
@@ -53,6 +55,23 @@ pub struct Spline {
     dims: usize,
 }
 
+/// `S(t).y` of a declared spline `S` in a function body: the spline (copied, since a compiled
+/// function is shared by render threads and the parser holds splines in an `Rc`), the kind to
+/// interpolate with and the component read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SplineRead {
+    pub spline: Spline,
+    pub kind: SplineKind,
+    /// 0 for x, up to `MAX_COMPONENTS - 1`.
+    pub index: usize,
+}
+
+impl SplineRead {
+    pub fn value(&self, t: f64) -> f64 {
+        self.spline.component(t, self.kind, self.index)
+    }
+}
+
 impl Default for Spline {
     fn default() -> Self {
         Spline { kind: SplineKind::Linear, keys: Vec::new(), points: Vec::new(), dims: 2 }
@@ -89,6 +108,12 @@ impl Spline {
         let mut out = self.eval_all(t, kind).to_vec();
         out.truncate(self.dims);
         out
+    }
+
+    /// Component `index` (0 for x) of `S(t)` interpolated as `kind`, without allocating: the
+    /// per-point read of a function body. Past the widest point written it reads 0.
+    pub fn component(&self, t: f64, kind: SplineKind, index: usize) -> f64 {
+        self.eval_all(t, kind).get(index).copied().unwrap_or(0.0)
     }
 
     fn eval_all(&self, t: f64, kind: SplineKind) -> [f64; MAX_COMPONENTS] {

@@ -426,15 +426,6 @@ fn warped_normals_match_povray_by_region() {
     check_regions("normals_warped", &scene("normals_warped"), &noise_bounds());
 }
 
-/// `agate` as a normal: bands shifted by 1.3 · agate_turb × marble's classic
-/// turbulence sum. With a fractal noise centred on 0 the bands were 1.56× as dense as
-/// POV-Ray's and the normal tilted 1.45× as much (slope spread 0.48 against 0.33 at `agate
-/// 0.6 scale 0.3`; 0.34 now).
-#[test]
-fn agate_matches_povray_by_region() {
-    check_regions("normals_agate", &scene("normals_agate"), &noise_bounds());
-}
-
 /// One reference scene per camera projection and its PSNR floor against POV-Ray 3.7.
 /// `cameras_omnimax` is 47.3 dB since its rays were measured at five `right`/`up` ratios
 /// (28.6 dB while a fit at 4:3 put its rim a pixel off).

@@ -46,7 +46,7 @@ done
 for s in patterns_simple layered patterns_function functions_pigment transforms noise_pigments noise_normals patterns_fractal patterns_spiral patterns_quilted normals_quilted slope_map layers_finish layers_normal patterns_slope; do
     render "$here/scenes/$s.pov" "$s"
 done
-for s in materials tiles warps warps_nested normals_warped normals_agate; do
+for s in materials tiles warps warps_nested normals_warped; do
     render "$here/scenes/$s.pov" "$s"
 done
 # patterns_density.pov reads voxels.df3 and voxels16.df3 beside it.

@@ -286,7 +286,7 @@ fn kernel<L: Lane>(k: &Kind32, p: V3<L>, max_octaves: Option<u32>) -> L {
         Kind32::Granite => turbulent::granite(p),
         Kind32::Marble(None) => simple::frac(p.x),
         Kind32::Marble(Some(ref t)) => simple::frac(turbulent::marble_turbulent(p, t, max_octaves)),
-        Kind32::Agate(t) => turbulent::agate(p, t, max_octaves),
+        Kind32::Agate(t) => turbulent::agate(p, t),
         Kind32::Crackle(ref c) => cells::crackle(p, c),
         Kind32::Cells => cells::cells(p),
         Kind32::Wrinkles => turbulent::wrinkles(p),

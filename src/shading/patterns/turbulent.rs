@@ -32,24 +32,6 @@ pub fn granite<L: Lane>(p: V3<L>) -> L {
 /// Scales our granite's mean to POV-Ray's 0.418 (ours has a narrower noise).
 const GRANITE_GAIN: f32 = 1.0;
 
-/// `agate`: sine bands along z, shifted by marble's classic turbulence sum at its defaults
-/// (`classic_sum`, six octaves, omega 0.5, lambda 2) times 1.3 · `agate_turb`, the sine's
-/// value raised to 0.77. Measured on POV-Ray 3.7's plane z = 0 (`agate agate_turb A`, A = 0.02,
-/// 0.05, 0.1): the band shift asin(2v^(1/0.77) − 1)/(2πA) is 1.300 × the sum that `marble
-/// ramp_wave turbulence 0.02` reads back at the same points, correlation 1.0000 (mean 1.30,
-/// std 0.381). A fractal noise centred on 0 (mean shift 0, bands 1.56× as dense as POV-Ray's,
-/// the normal tilting 1.5×) was used before.
-#[inline(always)]
-pub fn agate<L: Lane>(p: V3<L>, turb: f32, max_octaves: Option<u32>) -> L {
-    let octaves = max_octaves.map_or(AGATE_OCTAVES, |cap| AGATE_OCTAVES.min(cap));
-    let shift = classic_sum(p, octaves, 0.5, 2.0) * L::splat(AGATE_SHIFT * turb);
-    let v = L::splat(0.5) + L::splat(0.5) * sin_turns(p.z + shift);
-    v.map(|x| x.clamp(0.0, 1.0).powf(0.77))
-}
-
-const AGATE_OCTAVES: u32 = 6;
-const AGATE_SHIFT: f32 = 1.3;
-
 /// Fractal sum `0.5 + Σ_{i<n} (noise(2^i p) − 0.5) / 2^i`.
 fn fractal(p: Vec3, octaves: u32) -> f32 {
     let mut sum = 0.5;
@@ -59,6 +41,17 @@ fn fractal(p: Vec3, octaves: u32) -> f32 {
         f *= 2.0;
     }
     sum
+}
+
+/// `agate`: sine bands along z distorted by fractal noise (`agate_turb`, default 1).
+#[inline(always)]
+pub fn agate<L: Lane>(p: V3<L>, turb: f32) -> L {
+    L::from_fn(|i| {
+        let q = p.lane(i);
+        let t = (fractal(q, 6) - 0.5) * 2.0;
+        let v = 0.5 + 0.5 * (std::f32::consts::TAU * (q.z + 2.0 * turb * t)).sin();
+        v.clamp(0.0, 1.0).powf(0.77)
+    })
 }
 
 /// `wrinkles`: ten octaves of fractal noise (POV-Ray: mean 0.53, std 0.14).
@@ -125,22 +118,15 @@ pub fn waves<L: Lane>(p: V3<L>) -> L {
 #[inline(always)]
 pub fn marble_turbulent<L: Lane>(p: V3<L>, t: &TurbulenceF32, max_octaves: Option<u32>) -> L {
     let octaves = max_octaves.map_or(t.octaves, |cap| t.octaves.min(cap));
-    p.x + L::splat(t.amount.x) * classic_sum(p, octaves, t.omega, t.lambda)
-}
-
-/// The classic scalar turbulence sum Σ_{i<octaves} ω^i · (2·noise(λ^i p) − 0.5) that marble
-/// and agate build in.
-#[inline(always)]
-fn classic_sum<L: Lane>(p: V3<L>, octaves: u32, omega: f32, lambda: f32) -> L {
     let mut sum = L::splat(0.0);
     let (mut freq, mut amp) = (1.0f32, 1.0f32);
     for _ in 0..octaves {
         let n = noise_lanes(p.scale(L::splat(freq)));
         sum = sum + (L::splat(2.0) * n - L::splat(0.5)) * L::splat(amp);
-        freq *= lambda;
-        amp *= omega;
+        freq *= t.lambda;
+        amp *= t.omega;
     }
-    sum
+    p.x + L::splat(t.amount.x) * sum
 }
 
 /// POV-Ray 3.7's `wood` does not take `turbulence` as a plain warp. Measured on renders of

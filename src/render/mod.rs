@@ -131,7 +131,6 @@ impl Default for RenderSettings {
     }
 }
 
-
 /// The primary ray through the centre of pixel (x, y), in render space: what `render` traces
 /// for that pixel without antialiasing. For tools that ask what a pixel sees. Where the
 /// camera's projection has no ray (a fisheye's corners), the ray along the view axis.

@@ -427,7 +427,6 @@ impl Scene {
             self.prims = bounded.into_iter().chain(unbounded).collect();
         }
     }
-
 }
 
 /// Whether any shape of `object` may let light through (so a `merge`'s inner surfaces show).

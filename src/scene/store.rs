@@ -34,7 +34,12 @@ use crate::scene::place::RenderShape;
 
 impl Scene {
     /// `text`'s glyphs as prisms sharing one frame: their indices in `prisms`.
-    pub(super) fn store_glyphs(&mut self, render_from_object: DAffine3, glyphs: Vec<Vec<Piece>>, thickness: f64) -> Vec<u32> {
+    pub(super) fn store_glyphs(
+        &mut self,
+        render_from_object: DAffine3,
+        glyphs: Vec<Vec<Piece>>,
+        thickness: f64,
+    ) -> Vec<u32> {
         glyphs
             .into_iter()
             .map(|pieces| {

@@ -11,8 +11,8 @@
 use glam::{DMat4, Mat3A, Vec3};
 
 use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
-use super::patterns::{Kind32, Pattern32};
 use super::pattern_space::{pattern_from_render, Period};
+use super::patterns::{Kind32, Pattern32};
 use super::pigment::PatternQuality;
 use crate::lanes::{Lane, V3};
 use crate::scene::desc::{NormalDesc, NormalPattern, SlopeEntry};

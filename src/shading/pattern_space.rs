@@ -114,4 +114,3 @@ pub fn pattern_from_render(
     }
     Affine3A::from_mat4(m.as_mat4())
 }
-

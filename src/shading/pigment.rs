@@ -5,8 +5,8 @@
 use glam::{Affine3A, DMat4, Vec3};
 
 use super::noise::{warp_lanes, TurbulenceF32};
-use super::pattern_space::{pattern_from_render, Period};
 use super::pattern::{checker_lanes_within, wood_lanes, ColorMap, Rgbft, RgbftLanes, CHECKER_TOLERANCE};
+use super::pattern_space::{pattern_from_render, Period};
 use super::patterns::turbulent::wood_cycloidal;
 use super::patterns::{Kind32, Pattern32};
 use crate::lanes::{Lane, V3};
@@ -180,7 +180,12 @@ pub fn eval_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, q: PatternQua
 /// `eval_pigment_lanes` on a surface whose unit outward normal (world axes) is `n`: a `slope`
 /// pigment reads it; every other pigment is `eval_pigment_lanes`.
 #[inline(always)]
-pub fn eval_surface_pigment_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, n: V3<L>, q: PatternQuality) -> RgbftLanes<L> {
+pub fn eval_surface_pigment_lanes<L: Lane>(
+    pig: &Pigment,
+    p_render: V3<L>,
+    n: V3<L>,
+    q: PatternQuality,
+) -> RgbftLanes<L> {
     if pig.reads_normal {
         eval_composite_lanes(pig, p_render, Some(n), q)
     } else {
@@ -244,12 +249,7 @@ pub fn surface_pattern_value(pig: &Pigment, p_render: Vec3, n: Vec3, q: PatternQ
 /// The pigments of the pattern layer (`shading::patterns`), kept out of line so that solid,
 /// checker and wood pigments stay as small as they were.
 #[inline(never)]
-fn eval_composite_lanes<L: Lane>(
-    pig: &Pigment,
-    p_render: V3<L>,
-    n: Option<V3<L>>,
-    q: PatternQuality,
-) -> RgbftLanes<L> {
+fn eval_composite_lanes<L: Lane>(pig: &Pigment, p_render: V3<L>, n: Option<V3<L>>, q: PatternQuality) -> RgbftLanes<L> {
     // The pigments it is made of, and the pattern's value: on a surface (`n`, the outward
     // normal) as `slope` reads it.
     let eval = |p: &Pigment| match n {
@@ -281,8 +281,7 @@ fn eval_composite_lanes<L: Lane>(
         }
         PigmentPattern32::PigmentMap(pat, entries) => {
             let v = value(pat);
-            let colors: Vec<(f32, RgbftLanes<L>)> =
-                entries.iter().map(|(value, p)| (*value, eval(p))).collect();
+            let colors: Vec<(f32, RgbftLanes<L>)> = entries.iter().map(|(value, p)| (*value, eval(p))).collect();
             blend_entries(&colors, v)
         }
         PigmentPattern32::List(pat, list) => {

@@ -8,10 +8,10 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use glam::{DMat4, DVec3, Vec3};
-use strahl::scene::desc::{
+use strahl::desc::{
     Color, ColorMapEntry, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern, Transform, Turbulence,
 };
-use strahl::shading::noise::{warp, TurbulenceF32};
+use strahl::noise::{warp, TurbulenceF32};
 use strahl::shading::normal::{perturb_normal, NormalF32};
 use strahl::shading::pattern::{checker, wood};
 use strahl::shading::pigment::{eval_pigment, PatternQuality, Pigment};

@@ -192,7 +192,7 @@ pub fn initial_speed(world_bounds: Option<(DVec3, DVec3)>, unit: f64) -> f64 {
 pub const FRAMING_RANGE: f64 = 4.0;
 
 /// The window's default speed: [`initial_speed`] of the scene's subject (its bounded objects
-/// less those around the camera, `camera::orbit::subject_bounds`), its crossing length kept
+/// less those around the camera, `Scene::subject_bounds`), its crossing length kept
 /// within [`FRAMING_RANGE`] of `look_distance`, the camera's distance to its `look_at` (when
 /// the scene gives one: without it the direction's length says nothing about the scene's size).
 pub fn scene_speed(subject: Option<(DVec3, DVec3)>, unit: f64, look_distance: Option<f64>) -> f64 {
@@ -228,7 +228,7 @@ pub fn stick_response(raw: DVec2, dead_zone: f64, exponent: f64) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::desc::CameraDesc;
+    use crate::desc::CameraDesc;
 
     fn seed_camera() -> Camera {
         let base = Camera::from_desc(&CameraDesc::default());

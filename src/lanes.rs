@@ -569,7 +569,7 @@ impl<L: Lane> V3<L> {
     pub fn recip(self) -> V3<L> {
         V3 { x: self.x.recip(), y: self.y.recip(), z: self.z.recip() }
     }
-    /// The largest absolute component, with `Lane::max`'s rule (as `geometry::ray::max_abs`).
+    /// The largest absolute component, with `Lane::max`'s rule (as `ray::max_abs`).
     #[inline(always)]
     pub fn max_abs(self) -> L {
         self.x.abs().max(self.y.abs()).max(self.z.abs())

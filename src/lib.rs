@@ -9,6 +9,8 @@
 pub mod accel;
 pub mod app;
 pub mod camera;
+pub mod density_file;
+pub mod desc;
 pub mod error;
 pub mod fly;
 pub mod function;
@@ -16,7 +18,9 @@ pub mod geometry;
 pub mod headless;
 pub mod image_file;
 pub mod lanes;
+pub mod noise;
 pub mod pov;
+pub mod ray;
 pub mod render;
 pub mod scene;
 pub mod shading;

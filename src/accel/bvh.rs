@@ -7,7 +7,7 @@ use glam::Vec3;
 
 use super::aabb::slabs;
 use super::aabb::Aabb;
-use crate::geometry::ray::Ray;
+use crate::ray::Ray;
 
 /// A flat node: 32 bytes, two per 64-byte cache line.
 ///

@@ -7,7 +7,7 @@ use glam::{IVec3, Vec3};
 
 use super::aabb::slabs;
 use super::aabb::Aabb;
-use crate::geometry::ray::Ray;
+use crate::ray::Ray;
 
 pub struct Grid {
     pub bounds: Aabb,

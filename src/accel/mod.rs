@@ -8,7 +8,7 @@ pub mod bvh;
 pub mod grid;
 pub mod packet;
 
-use crate::geometry::ray::Ray;
+use crate::ray::Ray;
 use aabb::Aabb;
 use bvh::Bvh;
 use grid::Grid;

@@ -12,8 +12,8 @@ use glam::Vec3;
 
 use super::aabb::node_slabs;
 use super::bvh::{Bvh, BvhNode};
-use crate::geometry::ray::{Ray, RayLanes};
 use crate::lanes::{Lane, F8, M8, V3};
+use crate::ray::{Ray, RayLanes};
 
 /// Eight rays in structure-of-arrays form.
 pub type Ray8 = RayLanes<F8>;

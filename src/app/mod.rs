@@ -22,11 +22,11 @@ use crate::app::reload::Reloader;
 use crate::app::render_thread::Watch;
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
+use crate::desc::SceneDesc;
 use crate::headless::{output, CliError};
 use crate::render::preset::Preset;
 use crate::render::Quality;
 use crate::scene::build::{AccelKind, Scene};
-use crate::scene::desc::SceneDesc;
 
 /// Everything `strahl view` was asked for.
 #[derive(Clone, Debug)]
@@ -143,7 +143,7 @@ fn run_watched(desc: &SceneDesc, reloader: Option<Reloader>, options: ViewOption
     let origin = desc.camera.location;
     let scene = Scene::build(desc, origin, options.accel);
     let camera = Camera::from_desc(&desc.camera);
-    let subject = crate::camera::orbit::subject_bounds(&scene, origin);
+    let subject = scene.subject_bounds(origin);
     let look_distance = desc.camera.look_at.map(|p| (p - origin).length());
     let speed = crate::fly::scene_speed(subject, scene.frame.unit, look_distance);
     let unmodelled = unmodelled_names(desc);

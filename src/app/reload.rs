@@ -11,9 +11,9 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant, SystemTime};
 
+use crate::desc::SceneDesc;
 use crate::headless::{include_path, load, CliError};
 use crate::pov::{IncludePath, MAX_INCLUDE_DEPTH};
-use crate::scene::desc::SceneDesc;
 
 /// How often the files are checked for changes.
 pub const POLL: Duration = Duration::from_millis(250);

@@ -29,108 +29,7 @@
 use glam::DVec3;
 
 use super::mesh::CameraMesh;
-
-/// A camera's projection type, with the parameters it reads.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub enum Projection {
-    #[default]
-    Perspective,
-    Orthographic,
-    /// `angle` in degrees; without one, the perspective field of view the vectors give (`lower`).
-    Fisheye {
-        angle: f64,
-    },
-    UltraWideAngle {
-        angle: f64,
-    },
-    Omnimax,
-    Panoramic,
-    /// `cylinder 1|2|3|4` with its angle in degrees.
-    Cylinder {
-        kind: u8,
-        angle: f64,
-    },
-    /// `spherical`, `angle h [v]` in degrees.
-    Spherical {
-        h: f64,
-        v: f64,
-    },
-    /// `mesh_camera { .. }` (`camera::mesh`): the meshes are the scene's `camera_mesh`; the
-    /// camera's vectors are not used. `offset` (world units, from `location.z`) moves each
-    /// origin along its face normal; `reverse` (`direction.z < 0`) turns the rays around;
-    /// `max_distance` (world units, 0 for none) ends them.
-    Mesh {
-        rays_per_pixel: u32,
-        offset: f64,
-        reverse: bool,
-        max_distance: f64,
-    },
-}
-
-impl Projection {
-    /// The POV-Ray keyword(s) that select this projection.
-    pub fn keyword(&self) -> String {
-        match self {
-            Projection::Perspective => "perspective".into(),
-            Projection::Orthographic => "orthographic".into(),
-            Projection::Fisheye { .. } => "fisheye".into(),
-            Projection::UltraWideAngle { .. } => "ultra_wide_angle".into(),
-            Projection::Omnimax => "omnimax".into(),
-            Projection::Panoramic => "panoramic".into(),
-            Projection::Cylinder { kind, .. } => format!("cylinder {kind}"),
-            Projection::Spherical { .. } => "spherical".into(),
-            Projection::Mesh { .. } => "mesh_camera".into(),
-        }
-    }
-}
-
-/// `aperture`, `blur_samples [min,] max`, `focal_point`, `confidence`, `variance`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FocalBlur {
-    pub aperture: f64,
-    /// Parsed; strahl always traces `max_samples` (no adaptive stop).
-    pub min_samples: u32,
-    pub max_samples: u32,
-    pub focal_point: DVec3,
-    /// Parsed, not modelled (POV-Ray's adaptive stop).
-    pub confidence: f64,
-    pub variance: f64,
-}
-
-impl Default for FocalBlur {
-    fn default() -> Self {
-        FocalBlur {
-            aperture: 0.0,
-            min_samples: 4,
-            max_samples: 0,
-            focal_point: DVec3::ZERO,
-            confidence: 0.9,
-            variance: 1.0 / 128.0,
-        }
-    }
-}
-
-/// What a camera looks through: its projection and, when `aperture` and `blur_samples` are
-/// both positive, focal blur.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Lens {
-    pub projection: Projection,
-    pub blur: Option<FocalBlur>,
-}
-
-impl Lens {
-    /// The blur samples traced per (sub-)sample under a cap; 1 without blur.
-    pub fn blur_samples(&self, cap: Option<u32>) -> u32 {
-        // A mesh camera's rays each belong to a mesh (or block of faces): never capped.
-        if let Projection::Mesh { rays_per_pixel, .. } = self.projection {
-            return rays_per_pixel.max(1);
-        }
-        match self.blur {
-            Some(b) => b.max_samples.min(cap.unwrap_or(u32::MAX)).max(1),
-            None => 1,
-        }
-    }
-}
+use crate::desc::{Lens, Projection};
 
 /// A camera's vectors (already in render space) with the projection, ready to make rays in f64.
 #[derive(Clone, Copy, Debug)]
@@ -366,6 +265,7 @@ pub fn blur_jitter(x: u32, y: u32, sx: u32, sy: u32, sample: u32) -> [f64; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::desc::FocalBlur;
 
     fn gen(projection: Projection) -> LensRays<'static> {
         let lens = Lens { projection, blur: None };

@@ -22,8 +22,8 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::scene::desc::MeshCameraDesc;
-use crate::scene::place::RenderFrame;
+use crate::camera::frame::RenderFrame;
+use crate::desc::MeshCameraDesc;
 
 /// One camera face in render space.
 #[derive(Clone, Debug)]
@@ -240,7 +240,7 @@ mod tests {
     use std::sync::Arc;
 
     use super::*;
-    use crate::scene::desc::{MeshCameraMesh, MeshDesc, MeshFace, Transform};
+    use crate::desc::{MeshCameraMesh, MeshDesc, MeshFace, Transform};
 
     /// Two triangles side by side in the z = 0 plane, facing +z, with a uv map.
     fn quad_mesh() -> MeshDesc {

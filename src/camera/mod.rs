@@ -8,6 +8,7 @@
 //! Camera paths (keyframed flights for capture and bench) live in `path`; their file format in
 //! `path_file`; orbits around a scene's `look_at` are generated in `orbit`.
 
+pub mod frame;
 pub mod lens;
 pub mod mesh;
 pub mod orbit;
@@ -16,8 +17,7 @@ mod path_file;
 
 use glam::DVec3;
 
-use crate::scene::desc::CameraDesc;
-pub use lens::{FocalBlur, Lens, Projection};
+use crate::desc::{CameraDesc, Lens, Projection};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {

@@ -11,8 +11,7 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use crate::camera::path::Key;
-use crate::scene::build::Scene;
-use crate::scene::desc::CameraDesc;
+use crate::desc::CameraDesc;
 
 /// A world-space axis-aligned box (min, max).
 pub type Bounds = (DVec3, DVec3);
@@ -38,7 +37,7 @@ impl Orbit {
     /// The orbit of a scene camera: around its `look_at`, at its height and horizontal distance,
     /// starting where it stands. Where that circle has no size (the camera straight above or
     /// below `look_at`) the radius comes from `subject`, the bounds of what the scene shows
-    /// ([`subject_bounds`]). Without a `look_at` the centre is the point on the view ray
+    /// (`Scene::subject_bounds`). Without a `look_at` the centre is the point on the view ray
     /// nearest the subject's centre (without a subject: nearest the origin, when it lies ahead;
     /// else one direction length ahead).
     pub fn for_camera(camera: &CameraDesc, subject: Option<Bounds>) -> Orbit {
@@ -121,16 +120,6 @@ pub fn subject_of(boxes: impl IntoIterator<Item = Bounds>, eye: DVec3) -> Option
         }
     }
     out
-}
-
-/// [`subject_of`] a built scene's bounded primitives, in world units.
-pub fn subject_bounds(scene: &Scene, eye: DVec3) -> Option<Bounds> {
-    let world = scene.frame.world_from_render();
-    let boxes = scene.prim_bounds().into_iter().map(|b| {
-        let (a, c) = (world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3()));
-        (a.min(c), a.max(c))
-    });
-    subject_of(boxes, eye)
 }
 
 #[cfg(test)]

@@ -220,7 +220,7 @@ fn catmull_rom(p: [DVec3; 4], u: f64, alpha: f64) -> DVec3 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::desc::CameraDesc;
+    use crate::desc::CameraDesc;
 
     fn key(time: f64, location: DVec3, look_at: DVec3, angle: Option<f64>) -> Key {
         Key { time, location, look_at, angle }

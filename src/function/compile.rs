@@ -59,7 +59,7 @@ enum Instr {
     },
     /// `d = s(registers a, a + 1, a + 2)`'s channel `ch`.
     Shade {
-        s: Arc<Shade>,
+        s: Arc<dyn Shade>,
         ch: Channel,
         d: Reg,
         a: Reg,

@@ -113,7 +113,7 @@ impl Internal {
                 let w = (x * x + z * z).sqrt() - p(3);
                 (w * w + y * y).sqrt() - p(4)
             }
-            Internal::Noise3d => f64::from(crate::shading::noise::noise(glam::Vec3::new(x as f32, y as f32, z as f32))),
+            Internal::Noise3d => f64::from(crate::noise::noise(glam::Vec3::new(x as f32, y as f32, z as f32))),
         }
     }
 }
@@ -156,7 +156,7 @@ const MAX_OCTAVES: f64 = 32.0;
 /// Musgrave's ridged multifractal at `p` (see `Internal::RidgedMf`).
 fn ridged_mf(p: [f64; 3], h: f64, lacunarity: f64, octaves: f64, offset: f64, gain: f64) -> f64 {
     let noise = |q: [f64; 3]| {
-        let n = crate::shading::noise::noise(glam::Vec3::new(q[0] as f32, q[1] as f32, q[2] as f32));
+        let n = crate::noise::noise(glam::Vec3::new(q[0] as f32, q[1] as f32, q[2] as f32));
         2.0 * f64::from(n) - 1.0
     };
     let octaves = if octaves.is_finite() { octaves.clamp(0.0, MAX_OCTAVES) as usize } else { 0 };

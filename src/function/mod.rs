@@ -44,7 +44,7 @@ pub enum Node {
     /// once and stand for the callee's parameters.
     Call(Rc<Function>, Vec<Node>),
     /// One channel of a pattern or pigment function at the point of its three arguments.
-    Shade(Arc<Shade>, Channel, Vec<Node>),
+    Shade(Arc<dyn Shade>, Channel, Vec<Node>),
     /// One component of a declared spline at the parameter computed by the node
     /// (`Spl(x).y`).
     Spline(Arc<SplineRead>, Box<Node>),
@@ -59,7 +59,7 @@ pub struct Function {
     pub depth: usize,
     /// A pigment function's pigment: a call gives its colour, and a body must pick a
     /// channel of it (`body` reads its gray).
-    pub color: Option<Arc<Shade>>,
+    pub color: Option<Arc<dyn Shade>>,
 }
 
 impl Function {
@@ -78,8 +78,7 @@ impl Function {
 
     /// `function { pattern { ... } }` (`color` false) or `function { pigment { ... } }` of
     /// x, y, z.
-    pub fn shade(shade: Shade, color: bool) -> Function {
-        let shade = Arc::new(shade);
+    pub fn shade(shade: Arc<dyn Shade>, color: bool) -> Function {
         let channel = if color { Channel::Gray } else { Channel::Pattern };
         let body = Node::Shade(shade.clone(), channel, (0..3).map(Node::Param).collect());
         let params = ["x", "y", "z"].iter().map(|s| s.to_string()).collect();

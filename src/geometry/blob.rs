@@ -342,8 +342,8 @@ shape_solved_in_f64!(Blob, normal: normal_unit, inside: inside_unit);
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::geometry::Shape;
+    use crate::ray::Ray;
 
     fn sphere(center: DVec3, radius: f64, strength: f64) -> Component {
         Component {
@@ -475,8 +475,8 @@ mod tests {
 #[cfg(test)]
 mod regressions {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::geometry::Shape;
+    use crate::ray::Ray;
     use glam::{DMat4, DVec4};
 
     #[test]

@@ -10,9 +10,9 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Cone {
@@ -118,8 +118,8 @@ impl Shape for Cone {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::lanes::F8;
+    use crate::ray::Ray;
 
     /// The unit-radius cylinder from z = 0 to z = 2, or a cone narrowing to `r1`.
     fn cone(r1: f32, open: bool) -> Cone {

@@ -4,9 +4,9 @@
 
 use glam::{Affine3A, Mat3A, Vec3};
 
-use super::ray::{pick_root, RayLanes};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{pick_root, RayLanes};
 
 /// An axis-aligned box in its own space, plus the map into it when that is not render space.
 #[derive(Clone, Copy, Debug)]
@@ -117,7 +117,7 @@ pub fn frame_for(render_from_object: Affine3A) -> BoxFrame {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     #[test]
     fn eight_lanes_of_normals_match_one_lane_bit_for_bit() {

@@ -3,9 +3,9 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Disc {
@@ -57,7 +57,7 @@ impl Shape for Disc {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     #[test]
     fn disc_with_a_hole() {

@@ -13,8 +13,8 @@ use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::{affine_f32, transformed_bounds};
+use crate::desc::{Container, IsoParams};
 use crate::function::Program;
-use crate::scene::desc::{Container, IsoParams};
 
 /// Most function evaluations one ray's search may take: a surface that grazes the threshold
 /// for a long way (a plane at the threshold) would otherwise be halved without end.
@@ -247,10 +247,10 @@ shape_solved_in_f64!(Isosurface, normal: normal_object, inside: inside_object);
 mod tests {
     use super::*;
     use crate::function::{Internal, Node};
-    use crate::geometry::ray::Ray;
-    use crate::geometry::ray::RayLanes;
     use crate::geometry::Shape;
     use crate::lanes::V3;
+    use crate::ray::Ray;
+    use crate::ray::RayLanes;
 
     fn sphere_fn(r: f64) -> Program {
         let body =
@@ -342,7 +342,7 @@ mod tests {
             let t8 = iso.hit(&packet, F8::splat(0.0), F8::splat(f32::INFINITY));
             for (i, t) in single.iter().enumerate() {
                 let got = t8.get_f64(i) as f32;
-                assert_eq!(got, t.unwrap_or(crate::geometry::ray::MISS), "lane {i}");
+                assert_eq!(got, t.unwrap_or(crate::ray::MISS), "lane {i}");
             }
             let q = Vec3::new(next(), next(), next()) * 1.5;
             if (q.length() - 1.0).abs() > 1e-3 {

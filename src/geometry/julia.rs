@@ -18,74 +18,10 @@ use glam::{DAffine3, DVec3, DVec4, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::{affine_f32, transformed_bounds};
+use crate::desc::{ComplexFn, JuliaFunction};
 
 /// The escape radius POV-Ray documents, squared.
 const BAILOUT2: f64 = 16.0;
-
-/// Which algebra and function the iteration uses.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum JuliaFunction {
-    QuaternionSqr,
-    QuaternionCube,
-    Hypercomplex(ComplexFn),
-}
-
-/// The functions of hypercomplex numbers, each a complex function applied to both halves.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ComplexFn {
-    Sqr,
-    Cube,
-    Exp,
-    Reciprocal,
-    Sin,
-    Asin,
-    Sinh,
-    Asinh,
-    Cos,
-    Acos,
-    Cosh,
-    Acosh,
-    Tan,
-    Atan,
-    Tanh,
-    Atanh,
-    Ln,
-    /// `h` to the complex power `x + y·i`.
-    Pwr(f64, f64),
-}
-
-/// The functions with a keyword of their own, and the keywords.
-const NAMED: [(ComplexFn, &str); 17] = [
-    (ComplexFn::Sqr, "sqr"),
-    (ComplexFn::Cube, "cube"),
-    (ComplexFn::Exp, "exp"),
-    (ComplexFn::Reciprocal, "reciprocal"),
-    (ComplexFn::Sin, "sin"),
-    (ComplexFn::Asin, "asin"),
-    (ComplexFn::Sinh, "sinh"),
-    (ComplexFn::Asinh, "asinh"),
-    (ComplexFn::Cos, "cos"),
-    (ComplexFn::Acos, "acos"),
-    (ComplexFn::Cosh, "cosh"),
-    (ComplexFn::Acosh, "acosh"),
-    (ComplexFn::Tan, "tan"),
-    (ComplexFn::Atan, "atan"),
-    (ComplexFn::Tanh, "tanh"),
-    (ComplexFn::Atanh, "atanh"),
-    (ComplexFn::Ln, "ln"),
-];
-
-impl ComplexFn {
-    /// The function named by POV-Ray's keyword (`pwr` takes its exponent separately).
-    pub fn from_keyword(word: &str) -> Option<ComplexFn> {
-        NAMED.iter().find(|n| n.1 == word).map(|n| n.0)
-    }
-
-    /// The keyword `from_keyword` reads, `None` for `pwr` (written with its exponent).
-    pub fn keyword(self) -> Option<&'static str> {
-        NAMED.iter().find(|n| n.0 == self).map(|n| n.1)
-    }
-}
 
 /// A complex number, just what the hypercomplex functions need.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -382,8 +318,8 @@ shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object);
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::geometry::Shape;
+    use crate::ray::Ray;
 
     fn q(a: f64, b: f64, c: f64, d: f64) -> DVec4 {
         DVec4::new(a, b, c, d)

@@ -8,11 +8,11 @@
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::RayLanes;
 
 #[derive(Clone, Debug)]
 pub struct Lathe {
@@ -177,8 +177,9 @@ impl Shape for Lathe {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
-    use crate::geometry::spline::{open_pieces, SplineKind};
+    use crate::desc::SplineKind;
+    use crate::geometry::spline::open_pieces;
+    use crate::ray::Ray;
 
     /// A cylinder of radius 1 from y = 0 to 2 as a closed linear outline.
     fn can(xf: DAffine3) -> Lathe {

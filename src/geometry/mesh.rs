@@ -14,13 +14,13 @@ use std::sync::Arc;
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{Ray, RayLanes, MISS};
 use super::triangle::Triangle;
 use super::{transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::accel::aabb::Aabb;
 use crate::accel::bvh::{Bvh, BvhNode};
 use crate::lanes::{Lane, V3};
+use crate::ray::{Ray, RayLanes, MISS};
 
 /// `MeshData::smooth_of` for a flat face.
 const FLAT: u32 = u32::MAX;
@@ -112,7 +112,7 @@ impl MeshData {
     /// single-ray walk uses) wants it, and each leaf's triangles are tested eight lanes at a time
     /// with the single-ray kernel (`Triangle::hit` over `L`). Every lane's result is the least
     /// `t` over the faces it hits in `(t_min, t_max)`, whatever the visiting order, so it is the
-    /// single-ray walk's `t` bit for bit (tests/properties.rs checks it on random meshes).
+    /// single-ray walk's `t` bit for bit (tests/suite/properties.rs checks it on random meshes).
     #[inline(always)]
     pub fn nearest_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         self.walk_lanes::<L, false>(ray, t_min, t_max)

@@ -25,7 +25,7 @@ macro_rules! shape_solved_in_f64 {
             #[inline(never)]
             fn hit<L: $crate::lanes::Lane>(
                 &self,
-                ray: &$crate::geometry::ray::RayLanes<L>,
+                ray: &$crate::ray::RayLanes<L>,
                 t_min: L,
                 t_max: L,
             ) -> L {
@@ -58,7 +58,6 @@ pub mod plane;
 pub mod poly;
 pub mod polygon;
 pub mod prism;
-pub mod ray;
 pub mod roots;
 pub mod sor;
 pub mod sphere;
@@ -71,7 +70,7 @@ pub mod uv;
 use glam::Vec3;
 
 use crate::lanes::{Lane, V3};
-use ray::{Ray, RayLanes, MISS};
+use crate::ray::{Ray, RayLanes, MISS};
 
 /// Render-space bounds of the object-space box `[lo, hi]` under `render_from_object`: the box
 /// of its eight transformed corners.

@@ -15,8 +15,8 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::{affine_f32, transformed_bounds};
+use crate::desc::{Container, ParametricParams};
 use crate::function::Program;
-use crate::scene::desc::{Container, ParametricParams};
 
 /// Cells along u and along v (a power of two, for the quadtree).
 const GRID: usize = 128;
@@ -316,8 +316,8 @@ shape_solved_in_f64!(Parametric, normal: normal_object, inside: none);
 mod tests {
     use super::*;
     use crate::function::{Binary, Node as F, Unary};
-    use crate::geometry::ray::Ray;
     use crate::geometry::Shape;
+    use crate::ray::Ray;
 
     /// The unit sphere of POV-Ray's documentation: (sin u cos v, sin u sin v, cos u).
     fn sphere() -> Parametric {

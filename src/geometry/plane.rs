@@ -2,9 +2,9 @@
 
 use glam::Vec3;
 
-use super::ray::{RayLanes, MISS};
 use super::Shape;
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 /// Points `p` with `normal · p = distance`, `normal` of unit length.
 #[derive(Clone, Copy, Debug)]
@@ -50,7 +50,7 @@ impl Shape for Plane {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     const FLOOR: Plane = Plane { normal: Vec3::Y, distance: 0.0 };
 

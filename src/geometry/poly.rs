@@ -16,10 +16,10 @@
 use glam::{Affine3A, DMat3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
 use super::roots::{smallest_root_by, Solver, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
 /// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
@@ -406,8 +406,8 @@ mod tests {
         let (lo, _) = cone.inside_bounds_within(Vec3::splat(-inf), Vec3::splat(inf)).unwrap();
         assert!(lo.x.is_infinite());
     }
-    use crate::geometry::ray::Ray;
     use crate::lanes::F8;
+    use crate::ray::Ray;
 
     /// A quadric `<A,B,C>, <D,E,F>, <G,H,I>, J` as POV-Ray's order-2 coefficients.
     fn quadric(q: [f64; 10]) -> [f64; 10] {

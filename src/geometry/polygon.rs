@@ -4,9 +4,9 @@
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::plane::Plane;
-use super::ray::{RayLanes, MISS};
 use super::Shape;
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Debug)]
 pub struct Polygon {
@@ -92,7 +92,7 @@ impl Shape for Polygon {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     /// An L-shaped (concave) outline in the plane z = 3.
     fn ell() -> Polygon {

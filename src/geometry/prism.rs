@@ -17,11 +17,11 @@
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::RayLanes;
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::RayLanes;
 
 #[derive(Clone, Debug)]
 pub struct Prism {
@@ -246,10 +246,11 @@ impl Shape for Prism {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
-    use crate::geometry::ray::MISS;
-    use crate::geometry::spline::{closed_pieces, SplineKind};
+    use crate::desc::SplineKind;
+    use crate::geometry::spline::closed_pieces;
     use crate::lanes::F8;
+    use crate::ray::Ray;
+    use crate::ray::MISS;
 
     fn square(kind: SplineKind) -> Vec<Piece> {
         let p = |x: f64, z: f64| DVec2::new(x, z);

@@ -243,9 +243,9 @@ shape_solved_in_f64!(Sor, normal: normal_object, inside: inside_object);
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::geometry::Shape;
     use crate::lanes::V3;
+    use crate::ray::Ray;
 
     /// Radius 1 from height 0 to 2 with straight ends: a cylinder (slopes 0 everywhere).
     fn can(xf: DAffine3, open: bool) -> Sor {

@@ -4,9 +4,9 @@
 use glam::Vec3;
 
 use super::cuboid::BoxFrame;
-use super::ray::{pick_root, RayLanes};
 use super::Shape;
 use crate::lanes::{Lane, V3};
+use crate::ray::{pick_root, RayLanes};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Sphere {
@@ -71,7 +71,7 @@ impl Sphere {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     fn unit() -> Sphere {
         Sphere { center: Vec3::new(0.0, 0.0, 5.0), radius: 1.0 }
@@ -164,7 +164,7 @@ impl Shape for Ellipsoid {
 #[cfg(test)]
 mod ellipsoid_tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
     use glam::Affine3A;
 
     #[test]

@@ -17,36 +17,7 @@
 use glam::DVec2;
 
 use super::roots::{roots_in, MAX_DEGREE};
-
-/// How points connect, as POV-Ray's spline keywords name it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SplineKind {
-    Linear,
-    Quadratic,
-    Cubic,
-    Bezier,
-}
-
-impl SplineKind {
-    pub fn keyword(self) -> &'static str {
-        match self {
-            SplineKind::Linear => "linear_spline",
-            SplineKind::Quadratic => "quadratic_spline",
-            SplineKind::Cubic => "cubic_spline",
-            SplineKind::Bezier => "bezier_spline",
-        }
-    }
-
-    pub fn from_keyword(word: &str) -> Option<SplineKind> {
-        Some(match word {
-            "linear_spline" => SplineKind::Linear,
-            "quadratic_spline" => SplineKind::Quadratic,
-            "cubic_spline" => SplineKind::Cubic,
-            "bezier_spline" => SplineKind::Bezier,
-            _ => return None,
-        })
-    }
-}
+use crate::desc::SplineKind;
 
 /// One piece: `(u(t), v(t)) = Σ c[k] tᵏ` for `t ∈ [0, 1]` (lowest power first), with the box
 /// of its control points.

@@ -13,9 +13,9 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 /// Samples per piece of the ray.
 const SAMPLES: usize = 12;
@@ -205,8 +205,8 @@ impl Shape for Superellipsoid {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::lanes::F8;
+    use crate::ray::Ray;
 
     fn at(e: f64, n: f64) -> Superellipsoid {
         Superellipsoid::new(Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)), e, n)

@@ -9,10 +9,10 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::ray::{RayLanes, MISS};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Torus {
@@ -100,8 +100,8 @@ impl Shape for Torus {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
     use crate::lanes::F8;
+    use crate::ray::Ray;
 
     fn torus() -> Torus {
         // Major 2, minor 0.5, centred at z = 10.

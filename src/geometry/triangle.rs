@@ -2,9 +2,9 @@
 
 use glam::Vec3;
 
-use super::ray::{RayLanes, MISS};
 use super::Shape;
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Triangle {
@@ -66,7 +66,7 @@ impl Shape for Triangle {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
+    use crate::ray::Ray;
 
     fn tri() -> Triangle {
         Triangle::new(Vec3::new(-1.0, -1.0, 2.0), Vec3::new(1.0, -1.0, 2.0), Vec3::new(0.0, 1.0, 2.0))

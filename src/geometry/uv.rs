@@ -17,7 +17,7 @@ use std::sync::Arc;
 
 use glam::{DMat4, DVec2, DVec3};
 
-use crate::scene::desc::{MeshDesc, ShapeDesc};
+use crate::desc::{MeshDesc, ShapeDesc};
 
 /// Whether `shape` has surface coordinates here (others keep 3-D pattern space, warned).
 pub fn has_uv(shape: &ShapeDesc) -> bool {
@@ -185,7 +185,7 @@ mod tests {
     fn mesh_coordinates_interpolate() {
         let mesh = MeshDesc {
             vertices: vec![DVec3::ZERO, DVec3::X, DVec3::Y],
-            faces: vec![crate::scene::desc::MeshFace { vertices: [0, 1, 2], normals: None }],
+            faces: vec![crate::desc::MeshFace { vertices: [0, 1, 2], normals: None }],
             uvs: vec![DVec2::new(0.5, 0.5), DVec2::new(1.0, 0.5), DVec2::new(0.5, 1.0)],
             uv_faces: vec![[0, 1, 2]],
             ..MeshDesc::default()

@@ -23,11 +23,11 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use crate::camera::Camera;
+use crate::desc::SceneDesc;
 use crate::error::LocatedError;
 use crate::pov::{load_scene_with_messages, Clock, IncludePath, ParseOptions};
 use crate::render::RenderSettings;
 use crate::scene::build::{AccelKind, Scene};
-use crate::scene::desc::SceneDesc;
 
 /// An error for the user, with the process exit code it maps to.
 #[derive(Debug)]

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::camera::orbit::{subject_bounds, Orbit};
+use crate::camera::orbit::Orbit;
 use crate::camera::path::CameraPath;
 use crate::headless::{load, output, CliError};
 use crate::scene::build::{AccelKind, Scene};
@@ -45,7 +45,7 @@ pub fn run(args: &OrbitArgs) -> Result<(), CliError> {
     let (desc, _) = load(&args.scene, &args.include)?;
     // Bounds only: no accelerator is needed.
     let scene = Scene::build(&desc, desc.camera.location, AccelKind::None);
-    let subject = subject_bounds(&scene, desc.camera.location);
+    let subject = scene.subject_bounds(desc.camera.location);
     let orbit = Orbit::for_camera(&desc.camera, subject);
     let text = orbit.path_text(&display_name(&args.scene), args.keys, args.seconds);
     // What is written must read back: a path that `view` or `bench` refused would be a bug here.

@@ -14,7 +14,7 @@ pub struct Timings {
 
 /// The files a scene included and from where, one line each, for the statistics (empty when
 /// there were none).
-pub fn included_files(included: &[crate::scene::desc::IncludedFile]) -> String {
+pub fn included_files(included: &[crate::desc::IncludedFile]) -> String {
     let mut o = String::new();
     for f in included {
         let _ = writeln!(o, "Included: {}  (from {}:{}:{})", f.path, f.from.file, f.from.line, f.from.col);

@@ -20,16 +20,16 @@ use crate::accel::bvh::Bvh;
 use crate::accel::grid::Grid;
 use crate::accel::Accel;
 use crate::camera::Camera;
-use crate::geometry::ray::Ray;
+use crate::desc::SceneDesc;
 use crate::headless::bench::{cpu_model, frame_times, timed_run, Run};
 use crate::headless::json::Json;
 use crate::headless::progress::Progress;
 use crate::headless::{output, with_threads, CliError};
+use crate::ray::Ray;
 use crate::render::stats::RenderStats;
 use crate::render::trace::{light_direction, shadow_ray, ShadowRay, Tracer};
 use crate::render::{packet, primary_ray, Quality, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
-use crate::scene::desc::SceneDesc;
 use crate::scene::generate::{generate, write_generated, Kind};
 
 fn parse_kind(s: &str) -> Result<Kind, String> {

@@ -5,7 +5,7 @@ use std::rc::Rc;
 
 use super::source::Span;
 use super::value::Value;
-pub use crate::scene::desc::CsgOp;
+pub use crate::desc::CsgOp;
 
 /// An item of the scene as the parser hands it to `lower`; directives never get here, the
 /// token stream runs them (`parser::directives`).
@@ -231,7 +231,7 @@ pub enum CameraItem {
     /// `normal { .. }`: perturbs the eye rays (`render::RayGen`).
     Normal(Normal),
     /// `mesh_camera { .. }`, its numbers evaluated and its meshes looked up as it was read.
-    MeshCamera(std::sync::Arc<crate::scene::desc::MeshCameraDesc>, Span),
+    MeshCamera(std::sync::Arc<crate::desc::MeshCameraDesc>, Span),
     /// `smooth` in the camera's body (POV-Ray's grammar puts it there; the samples write it
     /// inside `mesh_camera`).
     Smooth(Span),
@@ -350,9 +350,9 @@ pub enum PigmentItem {
     /// `pigment_map { [v pigment {..}] ... }`.
     PigmentMap(Vec<(Expr, Pigment)>, Span),
     /// `image_map { }`, read (and its file decoded) as it is parsed, as `height_field` is.
-    ImageMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    ImageMap(std::sync::Arc<crate::desc::ImageMapDesc>, Span),
     /// `image_pattern { }` as the pigment's pattern.
-    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    ImagePattern(std::sync::Arc<crate::desc::ImageMapDesc>, Span),
     /// `uv_mapping`: the pigment follows the surface's (u, v) (`TextureDesc::uv_mapping`).
     UvMapping(Span),
 }
@@ -454,9 +454,9 @@ pub enum NormalItem {
     /// `slope_map { [v, <height, slope>] .. }` (or a declared map's name), with its keyword.
     SlopeMap(SlopeMapBody, Span),
     /// `bump_map { ... [bump_size F] }` with its bump size, if given inside.
-    BumpMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
+    BumpMap(std::sync::Arc<crate::desc::ImageMapDesc>, Option<Expr>),
     /// `image_pattern { }` with its optional amount.
-    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Option<Expr>),
+    ImagePattern(std::sync::Arc<crate::desc::ImageMapDesc>, Option<Expr>),
 }
 
 /// What a `slope_map { }` holds: `(value, <height, slope>, entry span)` entries, or a name.
@@ -533,10 +533,10 @@ pub enum TextureItem {
     /// A further `texture { }` written right after this one: a layer over it.
     Layer(Box<Texture>),
     /// `image_pattern { }` as the pattern of a `texture_map`.
-    ImagePattern(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Span),
+    ImagePattern(std::sync::Arc<crate::desc::ImageMapDesc>, Span),
     /// `material_map { png "f" .. texture {..}.. transforms }`: the image's palette index
     /// picks the texture.
-    MaterialMap(std::sync::Arc<crate::scene::desc::ImageMapDesc>, Vec<Texture>, Vec<TransformItem>, Span),
+    MaterialMap(std::sync::Arc<crate::desc::ImageMapDesc>, Vec<Texture>, Vec<TransformItem>, Span),
     /// `uv_mapping`: the texture's pigment follows the surface's (u, v).
     UvMapping(Span),
 }
@@ -617,7 +617,7 @@ pub enum ObjectKind {
     Shape(ShapeKind, Vec<Expr>),
     /// A shape the parser evaluated as it read it (`mesh`, `mesh2`, `height_field`: too
     /// large to hold as expressions).
-    Built(crate::scene::desc::ShapeDesc),
+    Built(crate::desc::ShapeDesc),
     /// `object { Name ... }`.
     Ref(Expr),
     /// `object { sphere { ... } ... }`: an object written inside `object`.

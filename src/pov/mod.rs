@@ -14,8 +14,8 @@ pub mod value;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+use crate::desc::{IncludedFile, SceneDesc, SourceRef};
 use crate::error::{visible, LocatedError};
-use crate::scene::desc::{IncludedFile, SceneDesc, SourceRef};
 use crate::text::decode_user_text;
 use lexer::Token;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};

@@ -7,13 +7,13 @@ use std::rc::Rc;
 
 use glam::DVec3;
 
-use crate::pov::ast::BinOp;
-use crate::pov::lexer::Token;
-use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{
+use crate::desc::{
     CameraDesc, Color, ColorMapEntry, CsgOp, FinishDesc, InteriorDesc, LightDesc, NormalDesc, ObjectDesc, PigmentDesc,
     ShapeDesc, SourceRef, TextureDesc, Transform,
 };
+use crate::pov::ast::BinOp;
+use crate::pov::lexer::Token;
+use crate::pov::source::{Diag, PResult, Span};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
@@ -31,7 +31,7 @@ pub enum Value {
     /// A declared `color_map`, already in the sorted form the renderer reads.
     ColorMap(Vec<ColorMapEntry>),
     /// A declared `slope_map`, sorted by value.
-    SlopeMap(Vec<crate::scene::desc::SlopeEntry>),
+    SlopeMap(Vec<crate::desc::SlopeEntry>),
     Object(Box<Group>),
     /// A declared `camera`, before its `look_at` and transforms are resolved.
     Camera(Box<CameraState>),
@@ -77,9 +77,9 @@ pub struct CameraState {
     pub(crate) look_at: Option<(DVec3, Span)>,
     pub(crate) transforms: Vec<Transform>,
     /// A `mesh_camera`'s meshes (the projection is then `Projection::Mesh`).
-    pub(crate) mesh: Option<std::sync::Arc<crate::scene::desc::MeshCameraDesc>>,
+    pub(crate) mesh: Option<std::sync::Arc<crate::desc::MeshCameraDesc>>,
     /// `normal { .. }`: tilts every eye ray (`render::RayGen`).
-    pub(crate) normal: Option<std::sync::Arc<crate::scene::desc::NormalDesc>>,
+    pub(crate) normal: Option<std::sync::Arc<crate::desc::NormalDesc>>,
 }
 
 /// `array[d1][d2]...`: up to five dimensions, elements unset until declared.

@@ -8,8 +8,8 @@
 //! `union` any. Rejected hits cost one more root search each, so a ray pays for the crossings
 //! it passes, not for the node's size.
 
-use crate::geometry::ray::{RayLanes, MISS};
 use crate::lanes::{Lane, V3};
+use crate::ray::{RayLanes, MISS};
 use crate::scene::build::Scene;
 use crate::scene::csg::{CsgChild, CsgRule, CsgTarget};
 

@@ -4,9 +4,9 @@
 
 use glam::Vec3;
 
-use crate::geometry::ray::{Ray, RayLanes, MISS};
 use crate::geometry::Shape;
 use crate::lanes::{Lane, V3};
+use crate::ray::{Ray, RayLanes, MISS};
 use crate::render::stats::RenderStats;
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
 

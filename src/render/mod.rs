@@ -8,11 +8,11 @@ pub mod adaptive;
 pub mod csg;
 pub mod image;
 pub mod intersect;
-pub mod light;
 pub mod moving_mode;
 pub mod packet;
 pub mod precision;
 pub mod preset;
+pub mod probe;
 pub mod progressive;
 mod raygen;
 pub mod reproject;
@@ -26,9 +26,10 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::accel::packet::Ray8;
-use crate::camera::{Camera, Projection};
-use crate::geometry::ray::Ray;
+use crate::camera::Camera;
+use crate::desc::Projection;
 use crate::lanes::{Lane, F8, V3};
+use crate::ray::Ray;
 use crate::scene::build::Scene;
 use image::Image;
 pub(crate) use raygen::{PixelSample, RayGen};
@@ -46,7 +47,7 @@ pub struct Quality {
     /// f32, or f32 with each nearest hit re-solved in f64 (`render::precision`).
     pub precision: precision::Precision,
     /// Caps the points of each `area_light` grid (rows × columns, both scaled down alike): its
-    /// shadow rays per shading point (`render::light::AreaGrid::capped`).
+    /// shadow rays per shading point (`shading::light::AreaGrid::capped`).
     pub max_area_samples: Option<u32>,
     /// Caps a focal-blur camera's `blur_samples` (rays per sample).
     pub max_blur_samples: Option<u32>,

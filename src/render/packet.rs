@@ -13,11 +13,11 @@ use glam::Vec3;
 
 use crate::accel::packet::{Frustum, Ray8, RowTest};
 use crate::accel::Accel;
-use crate::geometry::ray::Ray;
-use crate::geometry::ray::MISS;
-use crate::geometry::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
 use crate::geometry::Shape;
 use crate::lanes::{Lane, F8, M8, V3};
+use crate::ray::Ray;
+use crate::ray::MISS;
+use crate::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
@@ -184,7 +184,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     let background = scene.background.rgb;
 
     // Transparent blockers tint shadow rays, which only single rays model; so do lights other
-    // than plain point lights (`render::light`: spot, cylinder, parallel, fading, area), and
+    // than plain point lights (`shading::light`: spot, cylinder, parallel, fading, area), and
     // the sky sphere, fog and rainbows (`scene::atmosphere`) are applied per ray too. Checked
     // once per block, so the seed scene pays nothing per pixel for them.
     if scene.features.transparency
@@ -437,11 +437,11 @@ fn shadow_setup_generic(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: b
         let dist = to_light.dot(to_light).sqrt();
         let l = V3 { x: to_light.x / dist, y: to_light.y / dist, z: to_light.z / dist };
         let lit = F8::and(F8::and(s.valid[r], zero.lt(dist)), F8::and(zero.lt(normal.dot(l)), zero.lt(facing.dot(l))));
-        // geometry::ray::offset_origin
+        // ray::offset_origin
         let d = p.max_abs() * F8::splat(HIT_ERROR_ULPS) + F8::splat(f32::MIN_POSITIVE * 16.0);
         let towards = zero.le(facing.dot(l));
         let origin = p.add(V3::select(towards, facing.scale(d), facing.neg().scale(d)));
-        // geometry::ray::shadow_t_max
+        // ray::shadow_t_max
         let magnitude = origin.max_abs().max(light_magnitude);
         let span = light8.sub(origin);
         let t = (span.dot(span).sqrt() * F8::splat(SHADOW_SHRINK) - magnitude * F8::splat(HIT_ERROR_ULPS)).max(zero);

@@ -4,9 +4,10 @@ use glam::{DVec3, Vec3};
 
 use super::reproject::Pinhole;
 use crate::camera::lens::{self, LensRays};
-use crate::camera::{Camera, Lens, Projection};
-use crate::geometry::ray::Ray;
+use crate::camera::Camera;
+use crate::desc::{Lens, Projection};
 use crate::lanes::{Lane, F8, V3};
+use crate::ray::Ray;
 use crate::scene::build::Scene;
 use crate::shading::normal::{self, NormalF32};
 use crate::shading::pigment::PatternQuality;

@@ -8,11 +8,10 @@
 
 use glam::Vec3;
 
-use crate::geometry::ray::{offset_origin, shadow_t_max, Ray};
 use crate::geometry::uv::UvMap;
 use crate::lanes::V3;
+use crate::ray::{offset_origin, shadow_t_max, Ray};
 use crate::render::intersect::{Hit, HitShape};
-use crate::render::light::{self, AreaGrid};
 use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
 pub use crate::render::stats::RayKind;
@@ -21,6 +20,7 @@ use crate::render::Quality;
 use crate::scene::atmosphere::MISS_DEPTH;
 use crate::scene::build::{Light, Scene};
 use crate::scene::material::{Blend, Material, Select};
+use crate::shading::light::{self, AreaGrid};
 use crate::shading::normal::perturb_normal;
 use crate::shading::pattern::Rgbft;
 use crate::shading::pigment::{eval_pigment, eval_surface_pigment_lanes, surface_pattern_value, PatternQuality};

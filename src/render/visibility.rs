@@ -5,7 +5,7 @@
 use rayon::prelude::*;
 
 use crate::camera::Camera;
-use crate::geometry::ray::Ray;
+use crate::ray::Ray;
 use crate::render::intersect::Hit;
 use crate::render::packet::{self, NO_HIT};
 use crate::render::stats::RenderStats;

@@ -7,8 +7,8 @@
 
 use glam::{DMat4, Vec3};
 
-use crate::scene::desc::{FogDesc, RainbowDesc, SceneDesc, SkySphereDesc};
-use crate::scene::place::RenderFrame;
+use crate::camera::frame::RenderFrame;
+use crate::desc::{FogDesc, RainbowDesc, SceneDesc, SkySphereDesc};
 use crate::shading::pattern::{ColorMap, Rgbft};
 use crate::shading::pigment::{eval_pigment, PatternQuality, Pigment};
 
@@ -234,7 +234,7 @@ impl Rainbow {
             return None;
         }
         if self.jitter != 0.0 {
-            let (r, _) = crate::render::light::hash2(&[dir.x.to_bits(), dir.y.to_bits(), dir.z.to_bits()]);
+            let (r, _) = crate::shading::light::hash2(&[dir.x.to_bits(), dir.y.to_bits(), dir.z.to_bits()]);
             index += self.jitter * (r - 0.5);
         }
         let around = dir.dot(self.right).atan2(dir.dot(self.up)).abs();

@@ -26,6 +26,8 @@ use glam::{DVec3, Vec3};
 use crate::accel::aabb::Aabb;
 use crate::accel::Accel;
 pub use crate::accel::AccelKind;
+use crate::camera::frame::RenderFrame;
+use crate::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, TextureDesc};
 use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::Cuboid;
@@ -46,10 +48,9 @@ use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::atmosphere::Atmosphere;
 use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
-use crate::scene::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, TextureDesc};
 pub use crate::scene::light::Light;
 use crate::scene::material::Material;
-use crate::scene::place::{RenderFrame, RenderShape};
+use crate::scene::place::RenderShape;
 use crate::shading::pattern::Rgbft;
 
 /// Distinct looks remembered for sharing materials while a scene is built (`add_material`).
@@ -414,6 +415,17 @@ impl Scene {
         }
         let world = self.frame.world_from_render();
         Some((world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3())))
+    }
+
+    /// The bounds of what the scene shows seen from `eye` (`camera::orbit::subject_of` of the
+    /// bounded primitives' world boxes), in world units.
+    pub fn subject_bounds(&self, eye: DVec3) -> Option<(DVec3, DVec3)> {
+        let world = self.frame.world_from_render();
+        let boxes = self.prim_bounds().into_iter().map(|b| {
+            let (a, c) = (world.transform_point3(b.min.as_dvec3()), world.transform_point3(b.max.as_dvec3()));
+            (a.min(c), a.max(c))
+        });
+        crate::camera::orbit::subject_of(boxes, eye)
     }
 
     /// Moves the unbounded primitives behind the bounded ones and sets `unbounded` (see the

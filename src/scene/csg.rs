@@ -9,7 +9,7 @@
 use glam::Vec3;
 
 use crate::accel::aabb::Aabb;
-use crate::scene::desc::CsgOp;
+use crate::desc::CsgOp;
 
 /// How a node's children combine.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -7,7 +7,7 @@
 use glam::{DMat4, DVec3};
 
 use crate::camera::Camera;
-use crate::scene::desc::{
+use crate::desc::{
     CameraDesc, Color, FinishDesc, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc, ShapeDesc, SourceRef,
     TextureDesc, Transform,
 };

@@ -18,7 +18,7 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use crate::camera::Camera;
-use crate::scene::desc::{
+use crate::desc::{
     CameraDesc, Color, FinishDesc, GlobalSettings, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc,
     ShapeDesc, SourceRef, TextureDesc, Transform,
 };
@@ -191,7 +191,7 @@ fn untransformed(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
 /// radius rippled by a few percent: rows of latitude by twice as many columns, each square two
 /// triangles, the poles shared vertices.
 fn bumpy_sphere(n: usize, edge: f64) -> ShapeDesc {
-    use crate::scene::desc::{MeshDesc, MeshFace};
+    use crate::desc::{MeshDesc, MeshFace};
     let rows = ((n as f64 / 4.0).sqrt().round() as usize).max(2);
     let cols = 2 * rows;
     let (center, radius) = (DVec3::new(0.0, 0.8 + 0.5 * edge, 0.0), 0.35 * edge);

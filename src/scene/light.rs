@@ -3,9 +3,9 @@
 
 use glam::{DVec3, Vec3};
 
-use super::desc::{LightDesc, LightKind};
-use super::place::RenderFrame;
-use crate::render::light::{AreaGrid, Beam};
+use crate::camera::frame::RenderFrame;
+use crate::desc::{LightDesc, LightKind};
+use crate::shading::light::{AreaGrid, Beam};
 
 #[derive(Clone, Copy, Debug)]
 pub struct Light {
@@ -14,7 +14,7 @@ pub struct Light {
     pub color: Vec3,
     /// `shadowless`: lights every point that faces it, no shadow rays.
     pub shadowless: bool,
-    /// Spotlight or cylinder falloff (`render::light::Beam`).
+    /// Spotlight or cylinder falloff (`shading::light::Beam`).
     pub beam: Beam,
     /// Unit direction from the light towards `point_at` (spot, cylinder, parallel).
     pub axis: Vec3,

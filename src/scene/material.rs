@@ -2,8 +2,8 @@
 
 use glam::{DMat4, Vec3};
 
+use crate::desc::{FadeDesc, FinishDesc, InteriorDesc, PigmentPattern, TextureDesc, TexturePatternDesc};
 use crate::lanes::Lane;
-use crate::scene::desc::{FadeDesc, FinishDesc, InteriorDesc, PigmentPattern, TextureDesc, TexturePatternDesc};
 use crate::shading::normal::NormalF32;
 use crate::shading::pigment::Pigment;
 
@@ -164,7 +164,7 @@ impl Finish {
 #[cfg(test)]
 mod tests {
     use super::{Blend, Exponent, Material, Select};
-    use crate::scene::desc::{InteriorDesc, TextureDesc};
+    use crate::desc::{InteriorDesc, TextureDesc};
 
     fn blend(select: Select, n: usize) -> Blend {
         let m = Material::from_desc(&TextureDesc::default(), &InteriorDesc::default(), &glam::DMat4::IDENTITY);
@@ -298,7 +298,7 @@ impl Blend {
         let selector = Pigment::from_desc(&d.selector, world_from_render);
         let select = match &d.selector.pattern {
             _ if d.layered => Select::Layers,
-            PigmentPattern::PigmentMap(pd, e) if matches!(pd.kind, crate::scene::desc::PatternKind::Average) => {
+            PigmentPattern::PigmentMap(pd, e) if matches!(pd.kind, crate::desc::PatternKind::Average) => {
                 Select::Average(e.iter().map(|(w, _)| *w as f32).collect())
             }
             PigmentPattern::PigmentMap(_, e) => Select::Map(e.iter().map(|(v, _)| *v as f32).collect()),

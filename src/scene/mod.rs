@@ -4,13 +4,11 @@
 pub mod atmosphere;
 pub mod build;
 pub mod csg;
-pub mod desc;
 pub mod fixtures;
 pub mod generate;
 pub mod light;
 pub mod material;
 pub mod place;
 pub mod print;
-pub mod probe;
 pub mod shape_kind;
 mod store;

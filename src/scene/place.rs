@@ -6,65 +6,10 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DMat4, DVec3};
 
+use crate::camera::frame::RenderFrame;
+use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, ShapeDesc, TextGlyph, Transform};
 use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
-use crate::scene::desc::{
-    BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, SceneDesc, ShapeDesc, TextGlyph, Transform,
-};
-
-/// Where render space sits in world space: `render = (world − origin) / unit`.
-///
-/// The unit is a length the scene's own camera defines, the distance to `look_at` (else the
-/// length of `direction`), so it scales with the scene: scale a whole scene, camera included,
-/// by any factor and its render-space numbers stay the same, up to f64 rounding far below f32's.
-/// A power-of-two unit would only be exact for power-of-two scales. Ray tracing has no
-/// absolute lengths left after this (offsets and epsilons are relative; patterns live in their
-/// own space), so the unit changes no picture, only which f32 numbers represent it.
-///
-/// Every conversion multiplies by the one rounded `1 / unit` (`per_unit`), never divides, so a
-/// point reached through an object's composed matrix and the same point converted directly get
-/// the same f64 bits wherever the world numbers are exact: faces that coincide in the scene
-/// (a box standing on the floor plane) still coincide in render space.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RenderFrame {
-    pub origin: DVec3,
-    pub unit: f64,
-    /// `1 / unit`, rounded once.
-    pub per_unit: f64,
-}
-
-impl RenderFrame {
-    /// Centred on `origin`, in the unit `desc`'s camera sets (1 where it sets none usable).
-    pub fn for_scene(desc: &SceneDesc, origin: DVec3) -> RenderFrame {
-        let c = &desc.camera;
-        let look = c.look_at.map_or(0.0, |p| (p - c.location).length());
-        let unit = [look, c.direction.length()]
-            .into_iter()
-            .find(|u| u.is_finite() && (1e-30..=1e30).contains(u))
-            .unwrap_or(1.0);
-        RenderFrame { origin, unit, per_unit: 1.0 / unit }
-    }
-
-    /// A world point in render space.
-    #[inline]
-    pub fn point(&self, p: DVec3) -> DVec3 {
-        (p - self.origin) * self.per_unit
-    }
-
-    /// A world vector (an offset, not a position) in render space.
-    #[inline]
-    pub fn vector(&self, v: DVec3) -> DVec3 {
-        v * self.per_unit
-    }
-
-    pub fn render_from_world(&self) -> DMat4 {
-        DMat4::from_scale(DVec3::splat(self.per_unit)) * DMat4::from_translation(-self.origin)
-    }
-
-    pub fn world_from_render(&self) -> DMat4 {
-        DMat4::from_translation(self.origin) * DMat4::from_scale(DVec3::splat(self.unit))
-    }
-}
 
 /// One shape of the description placed in render space, in f64: everything subtracted and
 /// composed before `Scene::add_shape` rounds it to the f32 arrays.
@@ -141,7 +86,7 @@ pub(crate) enum RenderShape {
     Julia {
         render_from_object: DAffine3,
         param: glam::DVec4,
-        function: crate::geometry::julia::JuliaFunction,
+        function: crate::desc::JuliaFunction,
         max_iteration: u32,
         precision: f64,
         slice: (glam::DVec4, f64),
@@ -155,14 +100,14 @@ pub(crate) enum RenderShape {
     Isosurface {
         render_from_object: DAffine3,
         function: crate::function::Program,
-        container: crate::scene::desc::Container,
-        params: crate::scene::desc::IsoParams,
+        container: crate::desc::Container,
+        params: crate::desc::IsoParams,
     },
     Parametric {
         render_from_object: DAffine3,
         functions: [crate::function::Program; 3],
-        container: crate::scene::desc::Container,
-        params: crate::scene::desc::ParametricParams,
+        container: crate::desc::Container,
+        params: crate::desc::ParametricParams,
     },
     /// `text`: one linear prism per glyph (its own tight box in the BVH), sharing the frame.
     Glyphs {
@@ -190,6 +135,7 @@ pub(crate) enum RenderShape {
     },
 }
 
+/// Placing shapes: the frame of `camera::frame` carries a description's shape into render space.
 impl RenderFrame {
     /// `shape` under the object transform `t`, in render space.
     pub(crate) fn place(&self, shape: &ShapeDesc, t: &Transform) -> RenderShape {
@@ -348,7 +294,7 @@ impl RenderFrame {
 /// The snap grid of `box_object_origin`, in a rotated box's largest extents: the grid is the
 /// smallest power of two at least this many extents.
 ///
-/// Measured on the in-place twins of `tests/far.rs` (boxes 1.2 to 2.2 units across, offsets
+/// Measured on the in-place twins of `tests/suite/far.rs` (boxes 1.2 to 2.2 units across, offsets
 /// 1e5 = 2^5·3125, 1e6 = 2^6·15625, 1e7 = 2^7·78125): with 64 extents (grids of 128 and 256)
 /// the wood and refraction twins at 1e5 and 1e6 differed from the original on 1 to 33 pixels,
 /// since those offsets are not multiples of the grid; with 16, the refraction twins at 1e5 and

@@ -7,6 +7,7 @@ use glam::{DAffine3, DVec3, Vec3};
 
 use super::build::{PrimRef, Scene, ShapeKind};
 use crate::accel::aabb::Aabb;
+use crate::desc::MeshDesc;
 use crate::geometry::affine_f32;
 use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
@@ -29,7 +30,6 @@ use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::csg::EVERYWHERE;
-use crate::scene::desc::MeshDesc;
 use crate::scene::place::RenderShape;
 
 impl Scene {

@@ -13,9 +13,9 @@
 use glam::Vec3;
 
 use super::pattern::{Rgbft, RgbftLanes};
+use crate::desc::{ImageMapDesc, ImageMapping};
 use crate::image_file::Image;
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{ImageMapDesc, ImageMapping};
 
 /// Tilt (the slope of the normal) per unit height difference per texel and unit `bump_size`:
 /// measured on POV-Ray 3.7, a 16-texel grey ramp (1/15 a texel) with `bump_size` 1, 3, 10, 30

@@ -1,4 +1,4 @@
-//! Procedural textures, render-ready: noise and turbulence, pigments (solid, checker, wood with a
+//! Procedural textures, render-ready: pigments (solid, checker, wood with a
 //! colour map) and normal perturbation (bumps).
 //!
 //! Everything here is f32 and evaluated per hit in render space (world minus the render origin);
@@ -6,9 +6,10 @@
 //! and finishes are left to the renderer.
 
 pub mod image_map;
-pub mod noise;
+pub mod light;
 pub mod normal;
 pub mod pattern;
 pub mod pattern_space;
 pub mod patterns;
 pub mod pigment;
+pub mod pigment_fn;

@@ -10,12 +10,12 @@
 
 use glam::{DMat4, Mat3A, Vec3};
 
-use super::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
 use super::pattern_space::{pattern_from_render, Period};
 use super::patterns::{Kind32, Pattern32};
 use super::pigment::PatternQuality;
+use crate::desc::{NormalDesc, NormalPattern, SlopeEntry};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{NormalDesc, NormalPattern, SlopeEntry};
+use crate::noise::{dnoise_lanes, warp_lanes, TurbulenceF32, LATTICE_PERIOD};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum NormalPattern32 {
@@ -96,7 +96,7 @@ const PATTERN_NORMAL_GAIN: f32 = 0.133;
 const WRINKLES_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 2.0;
 const DENTS_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 1.4;
 /// `ripples` and `waves` too: POV-Ray 3.7's textures/patterns/ripples.pov and waves.pov
-/// measured 0.47–0.48× and 0.51× POV-Ray's texture strength (tests/samples.rs regions).
+/// measured 0.47–0.48× and 0.51× POV-Ray's texture strength (tests/suite/samples.rs regions).
 const WAVE_NORMAL_GAIN: f32 = PATTERN_NORMAL_GAIN * 2.0;
 
 /// POV-Ray's `wrinkles` normal leans one way: on a plane facing −z with `wrinkles 1`, parallel
@@ -148,7 +148,7 @@ impl NormalF32 {
         // Marble and wood build their turbulence in, so their slope follows it
         // (`Pattern32::build_in_turbulence`); other patterns are warped once before the
         // differences, as POV-Ray does.
-        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from_desc);
+        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from);
         let turbulence = match &mut pattern {
             NormalPattern32::Pattern(pat, ..) | NormalPattern32::Map(pat, _) => pat.build_in_turbulence(turbulence),
             NormalPattern32::Bumps(_) => turbulence,
@@ -334,7 +334,7 @@ fn tetrahedron_gradient<L: Lane>(at: impl Fn(Vec3) -> L, delta: f32) -> V3<L> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::desc::Transform;
+    use crate::desc::Transform;
     use glam::DVec3;
 
     fn bumps(amount: f64, scale: DVec3) -> NormalF32 {
@@ -354,7 +354,7 @@ mod tests {
     /// (x, y, z) of cells whose centre is (½, ½, ½).
     #[test]
     fn quilted_normal_matches_povray() {
-        use crate::scene::desc::{PatternDesc, PatternKind};
+        use crate::desc::{PatternDesc, PatternKind};
         let d = NormalDesc {
             pattern: NormalPattern::Pattern(PatternDesc::new(PatternKind::Quilted { c0: 1.0, c1: 1.0 }), 1.0),
             turbulence: None,

@@ -15,7 +15,7 @@ pub struct Rgbft {
 }
 
 impl Rgbft {
-    pub fn from_desc(c: &crate::scene::desc::Color) -> Rgbft {
+    pub fn from_desc(c: &crate::desc::Color) -> Rgbft {
         Rgbft { rgb: c.rgb.as_vec3(), filter: c.filter as f32, transmit: c.transmit as f32 }
     }
 
@@ -162,7 +162,7 @@ impl ColorMap {
         &self.entries
     }
 
-    pub fn from_desc(entries: &[crate::scene::desc::ColorMapEntry]) -> ColorMap {
+    pub fn from_desc(entries: &[crate::desc::ColorMapEntry]) -> ColorMap {
         ColorMap::new(entries.iter().map(|e| (e.value as f32, Rgbft::from_desc(&e.color))).collect())
     }
 

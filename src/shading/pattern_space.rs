@@ -3,8 +3,9 @@
 
 use glam::{Affine3A, DMat4};
 
-use super::noise::LATTICE_PERIOD;
-use crate::scene::desc::Turbulence;
+use crate::desc::Turbulence;
+use crate::noise::TurbulenceF32;
+use crate::noise::LATTICE_PERIOD;
 
 /// How a pattern (turbulence included) repeats along one axis of its own space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -47,7 +48,7 @@ fn turbulence_period(t: Option<&Turbulence>) -> Period {
 ///
 /// Reducing moves every pattern point by whole steps, so the points the camera sees get small
 /// coordinates only if they are near the camera. A checker floor seen through a telephoto
-/// lens from 8.3e4 units away, looking at the pattern origin (`tests/extremes.rs`), had its
+/// lens from 8.3e4 units away, looking at the pattern origin (`tests/suite/extremes.rs`), had its
 /// visible points moved from near 0 to about 2e4, where the checker's tolerance, relative to
 /// the coordinate, shifted edges by a third of a check: 3 995 wrong pixels. Its origin lies
 /// one camera unit away (the unit is the distance to `look_at`), a scene written 1e6 away from
@@ -113,4 +114,10 @@ pub fn pattern_from_render(
         }
     }
     Affine3A::from_mat4(m.as_mat4())
+}
+
+impl From<&Turbulence> for TurbulenceF32 {
+    fn from(t: &Turbulence) -> TurbulenceF32 {
+        TurbulenceF32 { amount: t.amount.as_vec3(), octaves: t.octaves, omega: t.omega as f32, lambda: t.lambda as f32 }
+    }
 }

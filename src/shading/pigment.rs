@@ -4,13 +4,13 @@
 
 use glam::{Affine3A, DMat4, Vec3};
 
-use super::noise::{warp_lanes, TurbulenceF32};
 use super::pattern::{checker_lanes_within, wood_lanes, ColorMap, Rgbft, RgbftLanes, CHECKER_TOLERANCE};
 use super::pattern_space::{pattern_from_render, Period};
 use super::patterns::turbulent::wood_cycloidal;
 use super::patterns::{Kind32, Pattern32};
+use crate::desc::{PigmentDesc, PigmentPattern};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{PigmentDesc, PigmentPattern};
+use crate::noise::{warp_lanes, TurbulenceF32};
 
 /// Per-frame knobs that trade pattern fidelity for speed.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -63,7 +63,7 @@ pub struct Pigment {
     /// normal (`slope`): such a pigment is evaluated by `eval_surface_pigment_lanes`.
     pub reads_normal: bool,
     pub turbulence: Option<TurbulenceF32>,
-    /// Render space (`scene::build::RenderFrame`) → pattern space.
+    /// Render space (`camera::frame::RenderFrame`) → pattern space.
     pub pattern_from_render: Affine3A,
     /// Error of a pattern-space point per render-space unit of the hit's distance from the
     /// camera (render space's origin), through `pattern_from_render`'s largest row. Measured on a
@@ -115,7 +115,7 @@ impl Pigment {
         let row_norm = (0..3).map(|r| m.row(r).abs().element_sum()).fold(0.0, f32::max);
         // Marble and wood (in a pigment_map or list) build their turbulence in; the wood pigment
         // has its own path (`wood_value`) and keeps it here.
-        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from_desc);
+        let turbulence = d.turbulence.as_ref().map(TurbulenceF32::from);
         let turbulence = match &mut pattern {
             PigmentPattern32::Mapped(pat, _)
             | PigmentPattern32::PigmentMap(pat, _)
@@ -350,7 +350,7 @@ mod tests {
     use super::*;
     use glam::DVec3;
 
-    use crate::scene::desc::{Color, ColorMapEntry, Transform};
+    use crate::desc::{Color, ColorMapEntry, Transform};
     use crate::shading::pattern::checker;
 
     fn scaled(s: DVec3) -> Transform {
@@ -399,7 +399,7 @@ mod tests {
         assert_eq!(at(Vec3::new(0.5, -1e-6, 0.5)), first);
     }
 
-    fn checker_desc(turbulence: Option<crate::scene::desc::Turbulence>) -> PigmentDesc {
+    fn checker_desc(turbulence: Option<crate::desc::Turbulence>) -> PigmentDesc {
         PigmentDesc {
             pattern: PigmentPattern::Checker(Color::WHITE, Color::BLACK),
             turbulence,
@@ -437,7 +437,7 @@ mod tests {
 
     #[test]
     fn only_periodic_axes_far_from_the_camera_are_reduced() {
-        use crate::scene::desc::Turbulence;
+        use crate::desc::Turbulence;
         let far = frame_at(DVec3::new(1e6 + 3.0, 1e6 + 3.0, 1e6 + 3.0));
         let t = |d: &PigmentDesc, frame: &DMat4| Pigment::from_desc(d, frame).pattern_from_render.translation;
         // A pattern origin within 16 camera units keeps its translation (a telephoto camera
@@ -478,8 +478,8 @@ mod tests {
 
     #[test]
     fn eight_lanes_match_one_lane_bit_for_bit() {
+        use crate::desc::Turbulence;
         use crate::lanes::F8;
-        use crate::scene::desc::Turbulence;
         let map = vec![
             ColorMapEntry { value: 0.1, color: Color::WHITE },
             ColorMapEntry { value: 0.5, color: Color::BLACK },

@@ -1,6 +1,6 @@
 // The extremes test scene: the seed scene's shapes without noise patterns, so renders of it
 // scaled and translated far from the origin can be compared pixel for pixel
-// (tests/extremes.rs transforms it as a SceneDesc, not through the parser).
+// (tests/suite/extremes.rs transforms it as a SceneDesc, not through the parser).
 #version 3.7;
 global_settings { assumed_gamma 1.0 max_trace_level 5 }
 

@@ -1,4 +1,4 @@
-// scenes/seed.pov written in place around @P at scale @s(1) (tests/far.rs expands the
+// scenes/seed.pov written in place around @P at scale @s(1) (tests/suite/far.rs expands the
 // at-forms into numbers). The floor's checker is not moved with the scene, as a user would not
 // move an infinite floor's texture: it stays the same as long as P/S is an even integer on
 // each axis. The other textures move with their objects.

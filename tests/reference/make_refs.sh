@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the POV-Ray 3.7 reference images that tests/reference.rs compares against.
+# Regenerates the POV-Ray 3.7 reference images that tests/suite/reference.rs compares against.
 # Needs Debian's `povray` and `povray-includes`. Run from anywhere:
 #   sh tests/reference/make_refs.sh
 # Renders at 640x480 without antialiasing (-A), with POV-Ray's own include library, the same

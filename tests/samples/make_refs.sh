@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the POV-Ray 3.7 renders that tests/samples.rs compares strahl's against: every
+# Regenerates the POV-Ray 3.7 renders that tests/suite/samples.rs compares strahl's against: every
 # scene listed in scenes.txt beside this script, from Debian's povray-examples
 # (/usr/share/povray-3.7/scenes), at 320x240 without antialiasing, into
 # expected/<path with / as _>.png (objects/quartic/torus.pov -> objects_quartic_torus.png).

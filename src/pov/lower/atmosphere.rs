@@ -5,9 +5,9 @@ use glam::DVec3;
 
 use super::textures::sorted_map;
 use super::Lowerer;
+use crate::desc::{FogDesc, RainbowDesc, SkySphereDesc, Transform};
 use crate::pov::ast::{AtmoItem, Atmosphere, AtmosphereKind};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{FogDesc, RainbowDesc, SkySphereDesc, Transform};
 
 impl Lowerer<'_> {
     pub(super) fn atmosphere(&mut self, a: &Atmosphere) -> PResult<()> {

@@ -11,7 +11,7 @@
 
 use glam::DVec3;
 
-use crate::scene::desc::{MeshDesc, MeshFace};
+use crate::desc::{MeshDesc, MeshFace};
 
 /// Most subdivision steps per direction: 2^8 = 256 rows of quads, 131 072 triangles a patch.
 pub const MAX_STEPS: u32 = 8;

@@ -3,9 +3,9 @@
 //! the whole blob the blob's texture; POV-Ray blends them by field strength).
 
 use super::Lowerer;
+use crate::desc::{self, BlobComponent, ShapeDesc, Transform};
 use crate::pov::ast::{Blob, BlobShape, Modifier};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{self, BlobComponent, ShapeDesc, Transform};
 
 impl Lowerer<'_> {
     pub(super) fn blob(&mut self, blob: &Blob, span: Span) -> PResult<ShapeDesc> {

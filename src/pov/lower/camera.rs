@@ -4,11 +4,11 @@
 //! with renders), so the written order of these items does not matter.
 
 use super::Lowerer;
-use crate::camera::{FocalBlur, Projection};
+use crate::desc::CameraDesc;
+use crate::desc::{FocalBlur, Projection};
 use crate::pov::ast::{CameraItem, CameraProjection};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{CameraState, Value};
-use crate::scene::desc::CameraDesc;
 
 impl Lowerer<'_> {
     pub(super) fn camera(&mut self, items: &[CameraItem], span: Span) -> PResult<CameraDesc> {

@@ -3,10 +3,10 @@
 use glam::{DMat4, DVec3};
 
 use super::Lowerer;
+use crate::desc::{Color, Transform};
 use crate::pov::ast::{Builtin, ColorItem, ColorKey, Expr, ExprKind, TransformItem, TransformKind};
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::{binary, color_from, negate, truthy, Value};
-use crate::scene::desc::{Color, Transform};
 
 impl Lowerer<'_> {
     pub(crate) fn eval(&self, e: &Expr) -> PResult<Value> {
@@ -249,7 +249,7 @@ impl Lowerer<'_> {
         let v = self.vec3(&t.value)?;
         let matrix = match t.kind {
             // glam's rotation matrices turn the same way as POV-Ray's: `rotate y*90` takes +x
-            // to -z (checked with a POV-Ray 3.7 render; see tests/pov_parse.rs).
+            // to -z (checked with a POV-Ray 3.7 render; see tests/suite/pov_parse.rs).
             TransformKind::Rotate => rotation(v),
             TransformKind::Scale => {
                 // POV-Ray's behaviour: keep each axis scaled by 0 unscaled, and warn, once for
@@ -297,7 +297,7 @@ fn sin_cos_degrees(deg: f64) -> (f64, f64) {
 }
 
 /// Rotation matrices with glam's orientation (the same as POV-Ray's: `rotate y*90` takes +x to
-/// -z, checked with a POV-Ray 3.7 render; see tests/pov_parse.rs), built from exact sin/cos.
+/// -z, checked with a POV-Ray 3.7 render; see tests/suite/pov_parse.rs), built from exact sin/cos.
 fn rotation_x(deg: f64) -> Rotation {
     let (s, c) = sin_cos_degrees(deg);
     Rotation(DMat4::from_cols_array(&[1.0, 0.0, 0.0, 0.0, 0.0, c, s, 0.0, 0.0, -s, c, 0.0, 0.0, 0.0, 0.0, 1.0]))

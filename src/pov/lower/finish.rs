@@ -5,10 +5,10 @@
 use glam::DVec3;
 
 use super::Lowerer;
+use crate::desc::{FadeDesc, FinishDesc, InteriorDesc};
 use crate::pov::ast::{Finish, FinishItem, FinishKey, Interior, InteriorItem};
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
-use crate::scene::desc::{FadeDesc, FinishDesc, InteriorDesc};
 
 impl Lowerer<'_> {
     pub(super) fn finish_block(&mut self, f: &Finish) -> PResult<FinishDesc> {

@@ -5,7 +5,7 @@ use glam::{DMat4, DVec3};
 
 use super::tests::{lower, lower_with_output};
 use super::Output;
-use crate::scene::desc::{Color, PigmentPattern, ShapeDesc};
+use crate::desc::{Color, PigmentPattern, ShapeDesc};
 
 /// The float `expr` evaluates to, read back through a sphere radius offset.
 fn value_of(expr: &str) -> f64 {
@@ -170,7 +170,7 @@ fn nested_and_declared_unions() {
     .unwrap();
     // The union flattens into its four spheres; the merge is one object over its two.
     assert_eq!(s.objects.len(), 5);
-    assert!(matches!(&s.objects[4].shape, crate::scene::desc::ShapeDesc::Csg { children, .. } if children.len() == 2));
+    assert!(matches!(&s.objects[4].shape, crate::desc::ShapeDesc::Csg { children, .. } if children.len() == 2));
     let inner = s.objects[1].transform.matrix;
     assert_eq!(
         inner,

@@ -187,13 +187,13 @@ impl Lowerer<'_> {
                 if !(0.0..=64.0).contains(&octaves) {
                     return Err(Diag::new(args[2].span, "vturbulence takes 0 to 64 octaves"));
                 }
-                let t = crate::shading::noise::TurbulenceF32 {
+                let t = crate::noise::TurbulenceF32 {
                     amount: glam::Vec3::ONE,
                     octaves: octaves as u32,
                     omega: f(1)? as f32,
                     lambda: f(0)? as f32,
                 };
-                let d = crate::shading::noise::turbulence(v(3)?.as_vec3(), &t, None);
+                let d = crate::noise::turbulence(v(3)?.as_vec3(), &t, None);
                 Ok(vector(d.as_dvec3()))
             })(),
             _ => return None,

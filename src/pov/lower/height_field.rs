@@ -9,9 +9,9 @@
 use std::sync::Arc;
 
 use super::Lowerer;
+use crate::desc::{HeightFieldDesc, ShapeDesc};
 use crate::image_file::{pnm_number, tga_pixels};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{HeightFieldDesc, ShapeDesc};
 
 /// Largest image side read (POV-Ray reads larger; 2 × 8191² triangles is 134 M already).
 const MAX_SIDE: usize = 8192;

@@ -5,8 +5,8 @@
 use std::sync::Arc;
 
 use super::Lowerer;
+use crate::desc::{ImageMapDesc, ImageMapping};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{ImageMapDesc, ImageMapping};
 
 /// Largest image side read.
 const MAX_SIDE: usize = 16384;

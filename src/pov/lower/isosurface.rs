@@ -5,10 +5,10 @@
 use glam::DVec3;
 
 use super::Lowerer;
+use crate::desc::{Container, IsoParams, ParametricParams, ShapeDesc};
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{Container, IsoParams, ParametricParams, ShapeDesc};
 
 /// POV-Ray's default container, the box from <-1, -1, -1> to <1, 1, 1>.
 const DEFAULT_CONTAINER: Container = Container::Box { min: DVec3::splat(-1.0), max: DVec3::splat(1.0) };

@@ -5,9 +5,9 @@
 use glam::DVec4;
 
 use super::Lowerer;
+use crate::desc::{ComplexFn, JuliaFunction, ShapeDesc};
 use crate::pov::ast::{JuliaFractal, JuliaItem};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{ComplexFn, JuliaFunction, ShapeDesc};
 
 /// More iterations than this are refused before rendering starts (POV-Ray's own samples use
 /// at most 20; each costs every sample of every ray).

@@ -6,10 +6,10 @@ use std::rc::Rc;
 use glam::{DMat4, DVec3};
 
 use super::Lowerer;
+use crate::desc::{AreaLightDesc, LightDesc, LightKind};
 use crate::pov::ast::{Light, LightItem};
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::{Group, Part, Value};
-use crate::scene::desc::{AreaLightDesc, LightDesc, LightKind};
 
 /// The most points one area light may have (rows × columns): far above the sample scenes'
 /// 9×9 (and the presets' caps), small enough that a typo cannot ask for a billion rays a pixel.

@@ -26,13 +26,13 @@ mod textures;
 
 use std::rc::Rc;
 
+use crate::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc, UnmodelledFeature};
 use crate::pov::ast::{DeclValue, DefaultItem, GlobalItem, Stmt};
 use crate::pov::lexer::Token;
 use crate::pov::names::NameMap;
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
 use crate::pov::ParseOptions;
-use crate::scene::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc, UnmodelledFeature};
 pub(crate) use fileio::Mode as FileMode;
 pub(crate) use images::ImageOptions;
 

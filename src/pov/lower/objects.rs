@@ -6,10 +6,10 @@
 
 use super::texture_block::{layer_over, texture_uv_span, transform_texture, uv_span};
 use super::Lowerer;
+use crate::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, Stmt};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Group, MaterialValue, Part, Value};
-use crate::scene::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
 
 impl Lowerer<'_> {
     pub(super) fn object(&mut self, o: &Object) -> PResult<Group> {
@@ -283,15 +283,15 @@ impl Lowerer<'_> {
     fn light_group(
         &mut self,
         parts: &mut [Part],
-        mut lights: Vec<crate::scene::desc::LightDesc>,
+        mut lights: Vec<crate::desc::LightDesc>,
         global_lights: bool,
-    ) -> Vec<crate::scene::desc::LightDesc> {
+    ) -> Vec<crate::desc::LightDesc> {
         let id = self.scene.light_groups.len() as u32;
         for light in &mut lights {
             light.light_group.get_or_insert(id);
         }
         let groups = &mut self.scene.light_groups;
-        groups.push(crate::scene::desc::LightGroupDesc { lights: Vec::new(), global_lights, parent: None });
+        groups.push(crate::desc::LightGroupDesc { lights: Vec::new(), global_lights, parent: None });
         let mut mark = |p: &mut Part| match p.desc.light_group {
             None => p.desc.light_group = Some(id),
             Some(inner) if inner != id && groups[inner as usize].parent.is_none() => {
@@ -309,7 +309,7 @@ impl Lowerer<'_> {
 
     /// Lights placed in the scene (at the top level, or inside an object placed there): each
     /// joins the scene's lights and, if it is in a `light_group`, that group's list.
-    pub(super) fn place_lights(&mut self, lights: &[crate::scene::desc::LightDesc]) {
+    pub(super) fn place_lights(&mut self, lights: &[crate::desc::LightDesc]) {
         for light in lights {
             if let Some(group) = light.light_group {
                 let index = self.scene.lights.len() as u32;

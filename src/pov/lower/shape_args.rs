@@ -5,10 +5,10 @@
 use glam::DVec3;
 
 use super::Lowerer;
+use crate::desc::{PolyForm, ShapeDesc};
 use crate::geometry::poly::{term_count, MAX_ORDER};
 use crate::pov::ast::{Expr, ShapeKind};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{PolyForm, ShapeDesc};
 
 impl Lowerer<'_> {
     pub(super) fn shape(&mut self, kind: ShapeKind, args: &[Expr], span: Span) -> PResult<ShapeDesc> {

@@ -5,11 +5,12 @@
 use glam::DVec2;
 
 use super::Lowerer;
+use crate::desc::ShapeDesc;
+use crate::desc::SplineKind;
 use crate::geometry::sor::check_points;
-use crate::geometry::spline::{closed_pieces, open_pieces, SplineKind};
+use crate::geometry::spline::{closed_pieces, open_pieces};
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::ShapeDesc;
 
 /// The leading keywords (`Ident`s the parser kept) and the rest of a shape's arguments.
 fn split_words(args: &[Expr]) -> (Vec<(&str, Span)>, &[Expr]) {

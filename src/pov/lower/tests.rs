@@ -5,9 +5,9 @@ use glam::{DMat4, DVec3};
 use std::rc::Rc;
 
 use super::{Files, Lowerer, Output};
+use crate::desc::{Color, SceneDesc, SourceRef};
 use crate::pov::lexer::{lex, Token};
 use crate::pov::source::{Diag, FileId, PResult, Span};
-use crate::scene::desc::{Color, SceneDesc, SourceRef};
 
 /// No includes: these tests lower one string.
 struct NoFiles(String);
@@ -61,10 +61,7 @@ fn color_of(expr: &str) -> Color {
 #[test]
 fn arithmetic_and_functions() {
     let (s, _) = lower("#declare A = (1 + 2) * -3 / 2;\nsphere { <A, sqrt(16), max(2, pow(2, 3))>, abs(-2) }").unwrap();
-    assert_eq!(
-        s.objects[0].shape,
-        crate::scene::desc::ShapeDesc::Sphere { center: DVec3::new(-4.5, 4.0, 8.0), radius: 2.0 }
-    );
+    assert_eq!(s.objects[0].shape, crate::desc::ShapeDesc::Sphere { center: DVec3::new(-4.5, 4.0, 8.0), radius: 2.0 });
 }
 
 #[test]
@@ -139,7 +136,7 @@ fn scale_0_warns_once_not_once_per_axis() {
 #[test]
 fn local_and_declare_scopes() {
     let (s, _) = lower("#local R = 2;\n#declare R = 3;\nsphere { 0, R }").unwrap();
-    assert_eq!(s.objects[0].shape, crate::scene::desc::ShapeDesc::Sphere { center: DVec3::ZERO, radius: 3.0 });
+    assert_eq!(s.objects[0].shape, crate::desc::ShapeDesc::Sphere { center: DVec3::ZERO, radius: 3.0 });
 }
 
 #[test]
@@ -179,7 +176,7 @@ fn pigment_copies_then_modifies() {
     .unwrap();
     let p = &s.objects[0].texture.pigment;
     match &p.pattern {
-        crate::scene::desc::PigmentPattern::Wood(m) => {
+        crate::desc::PigmentPattern::Wood(m) => {
             assert_eq!((m[0].value, m[1].value), (0.1, 0.9))
         }
         other => panic!("{other:?}"),
@@ -190,7 +187,7 @@ fn pigment_copies_then_modifies() {
     // Without a map, wood uses POV-Ray's tan/brown default (measured by rendering).
     let (s, _) = lower("sphere { 0, 1 pigment { wood } }").unwrap();
     match &s.objects[0].texture.pigment.pattern {
-        crate::scene::desc::PigmentPattern::Wood(m) => {
+        crate::desc::PigmentPattern::Wood(m) => {
             assert_eq!(m.len(), 4);
             assert_eq!((m[1].value, m[2].value), (0.6, 0.6));
             assert_eq!(m[0].color, Color::rgb(0.666, 0.312, 0.2));
@@ -204,7 +201,7 @@ fn pigment_copies_then_modifies() {
 fn wood_map(text: &str) -> Vec<(f64, f64, f64, f64)> {
     let (s, _) = lower(text).unwrap();
     match &s.objects[0].texture.pigment.pattern {
-        crate::scene::desc::PigmentPattern::Wood(m) => {
+        crate::desc::PigmentPattern::Wood(m) => {
             m.iter().map(|e| (e.value, e.color.rgb.x, e.color.rgb.y, e.color.rgb.z)).collect()
         }
         other => panic!("{other:?}"),
@@ -243,7 +240,7 @@ fn color_map_band_entries_become_two_points() {
          color rgbt <0.5, 0.3, 0.2, 0.25>] } } }",
     )
     .unwrap();
-    let crate::scene::desc::PigmentPattern::Wood(m) = &s.objects[0].texture.pigment.pattern else { panic!() };
+    let crate::desc::PigmentPattern::Wood(m) = &s.objects[0].texture.pigment.pattern else { panic!() };
     assert_eq!((m[0].color.filter, m[1].color.transmit, m[1].value), (0.5, 0.25, 0.1));
 }
 

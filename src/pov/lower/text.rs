@@ -10,9 +10,9 @@
 use glam::{DVec2, DVec3};
 
 use super::Lowerer;
+use crate::desc::{ShapeDesc, TextGlyph};
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::{ShapeDesc, TextGlyph};
 
 /// Collects one glyph's contours as quadratic pieces, in font units.
 struct Outline {

@@ -3,12 +3,12 @@
 //! `material_map`) and where it says `uv_mapping`.
 
 use super::Lowerer;
+use crate::desc::{
+    FinishDesc, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc, Transform,
+};
 use crate::pov::ast::{PigmentItem, Texture, TextureItem};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{
-    FinishDesc, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc, Transform,
-};
 use glam::DVec3;
 
 impl Lowerer<'_> {

@@ -9,9 +9,9 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use super::Parser;
+use crate::desc::ShapeDesc;
 use crate::pov::lower::bicubic::{tessellate, MAX_STEPS};
 use crate::pov::source::{Diag, PResult, Span};
-use crate::scene::desc::ShapeDesc;
 
 /// The items that may precede the control points.
 const PATCH_ITEMS: &[&str] = &["type", "flatness", "u_steps", "v_steps", "accuracy"];

@@ -1,10 +1,10 @@
 //! `camera { }`: its projection, vectors, modifiers and focal blur.
 
 use super::{is_pov_keyword, Parser};
+use crate::desc::{MeshCameraDesc, MeshCameraMesh, ShapeDesc};
 use crate::pov::ast::{CameraItem, CameraProjection, Stmt};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{MeshCameraDesc, MeshCameraMesh, ShapeDesc};
 
 const CAMERA: &[&str] = &[
     "location",

@@ -10,10 +10,11 @@ use std::sync::Arc;
 
 use super::Parser;
 use crate::function::spline::Spline;
-use crate::function::{Binary, Channel, Function, Internal, Node, Shade, SplineRead, Unary, MAX_PARAMS};
+use crate::function::{Binary, Channel, Function, Internal, Node, SplineRead, Unary, MAX_PARAMS};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
+use crate::shading::pigment_fn::PigmentFn;
 
 /// Float functions a body may call beyond those of one or two arguments.
 const SPECIAL: &[&str] = &["min", "max", "select", "internal"];
@@ -107,7 +108,7 @@ impl Parser<'_, '_> {
         };
         let desc = self.low.pigment(&ast)?;
         self.close_block("function", kw)?;
-        Ok(Function::shade(Shade::new(&desc), word == "pigment"))
+        Ok(Function::shade(Arc::new(PigmentFn::new(&desc)), word == "pigment"))
     }
 
     /// A body expression: `?:` lowest, then `|`, `&`, comparisons, `+ -`, `* /`, `^`, signs.

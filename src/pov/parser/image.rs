@@ -5,11 +5,11 @@
 use std::sync::Arc;
 
 use super::Parser;
+use crate::desc::{ImageMapDesc, ImageMapping};
 use crate::pov::ast::{Expr, TextureItem};
 use crate::pov::lower::ImageOptions;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{ImageMapDesc, ImageMapping};
 
 /// The image type keywords POV-Ray knows (`crate::image_file::read_image` says which it reads).
 const IMAGE_TYPES: &[&str] = &["png", "gif", "tga", "iff", "ppm", "pgm", "jpeg", "tiff", "sys", "exr", "hdr", "bmp"];

@@ -8,9 +8,9 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use super::Parser;
+use crate::desc::{MeshDesc, MeshFace, ShapeDesc};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{MeshDesc, MeshFace, ShapeDesc};
 
 /// What may follow a triangle's vectors.
 const TRIANGLE_ITEMS: &[&str] = &["texture", "uv_vectors"];

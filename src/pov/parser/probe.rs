@@ -1,16 +1,16 @@
 //! `min_extent(O)`, `max_extent(O)`, `trace(O, start, dir [, N])` and `inside(O, P)`
 //! (POV-Ray 3.3.1.4.3): questions about a declared object, answered while parsing by
-//! `scene::probe` (the renderer's own bounds and kernels), their values in the expression.
+//! `render::probe` (the renderer's own bounds and kernels), their values in the expression.
 
 use std::rc::Rc;
 
 use super::Parser;
+use crate::desc::ObjectDesc;
 use crate::pov::ast::{Expr, ExprKind};
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::ObjectDesc;
-use crate::scene::probe;
+use crate::render::probe;
 
 /// The object questions, by keyword.
 pub const PROBES: &[&str] = &["min_extent", "max_extent", "trace", "inside"];

@@ -8,6 +8,7 @@ use super::julia::JULIA_ITEMS;
 use super::{Parser, UNSUPPORTED_SHAPES};
 use glam::{DMat4, DVec4};
 
+use crate::desc::Transform;
 use crate::pov::ast::{
     AtmosphereKind, Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, ShapeKind, Stmt, TransformItem,
     TransformKind,
@@ -15,7 +16,6 @@ use crate::pov::ast::{
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::Transform;
 
 const TOP_LEVEL: &[&str] = &[
     "camera",

@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 
+use crate::desc::{SceneDesc, ShapeDesc};
 use crate::pov::lower::tests::lower;
-use crate::scene::desc::{SceneDesc, ShapeDesc};
 
 fn parse_str(text: &str) -> Result<SceneDesc, String> {
     lower(text).map(|(scene, _)| scene)

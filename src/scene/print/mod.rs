@@ -22,7 +22,7 @@ use std::fmt::Write;
 
 use glam::DVec3;
 
-use crate::scene::desc::{Color, SceneDesc};
+use crate::desc::{Color, SceneDesc};
 use shapes::object;
 use texture_blocks::Declarations;
 pub use transform::{decompose, recomposed, Decomposed};

@@ -5,7 +5,7 @@ use std::fmt::Write;
 use super::texture_blocks::{texture_blocks, Declarations};
 use super::transform::modifiers;
 use super::{num, vec, vec2s};
-use crate::scene::desc::{BlobShape, ComplexFn, Container, CsgOp, JuliaFunction, ObjectDesc, PolyForm, ShapeDesc};
+use crate::desc::{BlobShape, ComplexFn, Container, CsgOp, JuliaFunction, ObjectDesc, PolyForm, ShapeDesc};
 
 /// An object with its textures and interior; layered textures that its patterns of textures
 /// hold go to `d`, to be declared before it.
@@ -203,7 +203,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
 
 /// A mesh as `mesh2` when its faces are all flat or all smooth (its indices as they are), else
 /// as `mesh` triangles (each with its own vertices, as `mesh` reads them).
-fn mesh_body(s: &mut String, mesh: &crate::scene::desc::MeshDesc) {
+fn mesh_body(s: &mut String, mesh: &crate::desc::MeshDesc) {
     let smooth = mesh.faces.iter().filter(|f| f.normals.is_some()).count();
     let list = |s: &mut String, name: &str, items: &mut dyn Iterator<Item = String>, n: usize| {
         let _ = write!(s, "\n  {name} {{ {n}");

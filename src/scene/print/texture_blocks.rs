@@ -9,7 +9,7 @@ use glam::DMat4;
 use super::num;
 use super::textures::{finish, list_head, normal, pattern_text, pigment};
 use super::transform::modifiers;
-use crate::scene::desc::{PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc};
+use crate::desc::{PigmentDesc, PigmentPattern, TextureDesc, TexturePatternDesc};
 
 /// Layered textures that a pattern of textures holds: the scene language reads them there only
 /// by name (`texture { Name }`), so they are declared before the object that uses them.

@@ -6,7 +6,7 @@ use glam::{DMat4, DVec3};
 
 use super::transform::modifiers;
 use super::{color, num, vec};
-use crate::scene::desc::{FinishDesc, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern, Turbulence};
+use crate::desc::{FinishDesc, NormalDesc, NormalPattern, PigmentDesc, PigmentPattern, Turbulence};
 
 pub(super) fn pigment(s: &mut String, p: &PigmentDesc, object_inverse: &DMat4) {
     if let PigmentPattern::Layered(list) = &p.pattern {
@@ -96,8 +96,8 @@ fn albedo(set: bool) -> &'static str {
 }
 
 /// The inside of an `image_map { }` / `image_pattern { }` block.
-fn image_text(im: &crate::scene::desc::ImageMapDesc) -> String {
-    use crate::scene::desc::ImageMapping;
+fn image_text(im: &crate::desc::ImageMapDesc) -> String {
+    use crate::desc::ImageMapping;
     let map_type = match im.mapping {
         ImageMapping::Planar => 0,
         ImageMapping::Spherical => 1,
@@ -127,8 +127,8 @@ fn image_text(im: &crate::scene::desc::ImageMapDesc) -> String {
 }
 
 /// A fractal pattern's keywords.
-fn fractal_text(f: &crate::scene::desc::Fractal) -> String {
-    use crate::scene::desc::FractalKind as F;
+fn fractal_text(f: &crate::desc::Fractal) -> String {
+    use crate::desc::FractalKind as F;
     let c = |c: [f64; 2]| format!("<{}, {}>", num(c[0]), num(c[1]));
     let head = match f.kind {
         F::Mandel { exponent } => format!("mandel {} exponent {exponent}", f.iterations),
@@ -142,9 +142,9 @@ fn fractal_text(f: &crate::scene::desc::Fractal) -> String {
 /// A list pattern as the text before its list and the text after it. The list comes right
 /// after the keyword and its options (`brick_size`, `mortar`) after it, as POV-Ray reads them;
 /// the `object` pattern's list is inside its block, after the object.
-pub(super) fn list_head(pd: &crate::scene::desc::PatternDesc) -> (String, String) {
+pub(super) fn list_head(pd: &crate::desc::PatternDesc) -> (String, String) {
     let text = pattern_text(pd);
-    if let crate::scene::desc::PatternKind::Object(solid) = &pd.kind {
+    if let crate::desc::PatternKind::Object(solid) = &pd.kind {
         let written = object_text(solid);
         let rest = text.strip_prefix(&written).unwrap_or("");
         return (written.trim_end_matches('}').to_string(), format!("}}{rest}"));
@@ -155,7 +155,7 @@ pub(super) fn list_head(pd: &crate::scene::desc::PatternDesc) -> (String, String
 
 /// The `object` pattern's block without its list: `object { OBJECT }` (a union of the parts
 /// it was made of), each part's shape and transform; their textures do not matter to it.
-fn object_text(solid: &crate::scene::desc::SolidRef) -> String {
+fn object_text(solid: &crate::desc::SolidRef) -> String {
     let parts = solid.0.objects();
     let mut out = String::from("object { ");
     if parts.len() != 1 {
@@ -178,8 +178,8 @@ fn object_text(solid: &crate::scene::desc::SolidRef) -> String {
 }
 
 /// A pattern keyword with its parameters and value modifiers.
-pub(super) fn pattern_text(p: &crate::scene::desc::PatternDesc) -> String {
-    use crate::scene::desc::{PatternKind as K, Warp, WarpMap, Wave};
+pub(super) fn pattern_text(p: &crate::desc::PatternDesc) -> String {
+    use crate::desc::{PatternKind as K, Warp, WarpMap, Wave};
     let v = |d: glam::DVec3| format!("<{}, {}, {}>", num(d.x), num(d.y), num(d.z));
     let mut out = match &p.kind {
         K::Function(f) => format!("function {{ /* {} instructions */ }}", f.len()),

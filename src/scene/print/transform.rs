@@ -5,7 +5,7 @@ use std::fmt::Write;
 use glam::{DMat3, DMat4, DVec3};
 
 use super::vec;
-use crate::scene::desc::Transform;
+use crate::desc::Transform;
 
 /// `m` as ` rotate … scale … rotate … translate …` (empty for the identity).
 pub(super) fn modifiers(m: &DMat4) -> String {

@@ -6,7 +6,7 @@ use glam::DMat4;
 
 use super::textures::pigment;
 use super::{color, num, vec};
-use crate::scene::desc::{LightDesc, LightKind, SceneDesc};
+use crate::desc::{LightDesc, LightKind, SceneDesc};
 
 /// A light with every modifier it has (the kinds' defaults written out).
 pub(super) fn light(s: &mut String, l: &LightDesc) {

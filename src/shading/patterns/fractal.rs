@@ -4,8 +4,8 @@
 //! `scale 10000` need more than f32 keeps of the point), with no lane arithmetic: the orbits
 //! of neighbouring lanes stop at different iterations.
 
+use crate::desc::{Fractal, FractalKind};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{Fractal, FractalKind};
 
 /// |z|² beyond which an orbit has escaped (radius 2, as the Mandelbrot set is drawn).
 const BAILOUT_SQ: f64 = 4.0;

@@ -8,8 +8,8 @@
 
 use glam::{DVec3, Mat3, Vec3};
 
+use crate::desc::WarpMap;
 use crate::geometry::uv::box_uv;
-use crate::scene::desc::WarpMap;
 
 /// A render-ready mapping warp.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -16,9 +16,9 @@ pub mod turbulent;
 
 use glam::{Affine3A, Vec3};
 
+use crate::desc::{PatternDesc, PatternKind, Warp, Wave};
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::{PatternDesc, PatternKind, Warp, Wave};
-use crate::shading::noise::{warp_lanes, TurbulenceF32};
+use crate::noise::{warp_lanes, TurbulenceF32};
 use cells::Crackle;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -50,7 +50,7 @@ pub enum Kind32 {
     Quilted(f32, f32),
     Fractal(fractal::Fractal32),
     /// `density_file`: voxels looked up lane by lane.
-    Density(std::sync::Arc<density::DensityGrid>, u32),
+    Density(std::sync::Arc<crate::density_file::DensityGrid>, u32),
     /// `pigment_pattern`: the pigment's grey, in this pattern's space.
     PigmentPattern(Box<crate::shading::pigment::Pigment>),
     /// With the classic `turbulence` it builds in (`Pattern32::build_in_turbulence`).
@@ -63,7 +63,7 @@ pub enum Kind32 {
     /// `image_pattern` / `bump_map`: looked up lane by lane (`shading::image_map`).
     Image(std::sync::Arc<crate::shading::image_map::ImageLookup>),
     /// The `object` pattern: asked lane by lane.
-    Object(crate::scene::desc::SolidRef),
+    Object(crate::desc::SolidRef),
     /// `slope`: needs the surface's normal (`Pattern32::surface_value_lanes`).
     Slope(slope::Slope32),
 }
@@ -165,7 +165,7 @@ impl Pattern32 {
                     (f(&placed.space.matrix), f(&placed.space.inverse))
                 });
                 let warp = match placed.warp {
-                    Warp::Turbulence(t) => Warp32::Turbulence(TurbulenceF32::from_desc(&t)),
+                    Warp::Turbulence(t) => Warp32::Turbulence(TurbulenceF32::from(&t)),
                     Warp::Repeat { dir, offset, flip } => {
                         let axis = (0..3).find(|&a| dir[a] != 0.0)?;
                         Warp32::Repeat {
@@ -398,9 +398,9 @@ fn apply_warp<L: Lane>(w: &Warp32, p: V3<L>, max_octaves: Option<u32>) -> V3<L> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::desc::{PlacedWarp, Transform, Turbulence, WarpMap};
     use crate::function::{Binary, Node, Program};
     use crate::lanes::F8;
-    use crate::scene::desc::{PlacedWarp, Transform, Turbulence, WarpMap};
     use glam::DVec3;
 
     fn all_kinds() -> Vec<PatternKind> {
@@ -430,18 +430,15 @@ mod tests {
             PatternKind::Spherical,
             PatternKind::Planar,
             PatternKind::Quilted { c0: 1.0, c1: 1.0 },
-            PatternKind::Fractal(crate::scene::desc::Fractal::new(
-                crate::scene::desc::FractalKind::Mandel { exponent: 2 },
+            PatternKind::Fractal(crate::desc::Fractal::new(crate::desc::FractalKind::Mandel { exponent: 2 }, 25)),
+            PatternKind::Fractal(crate::desc::Fractal::new(
+                crate::desc::FractalKind::MagnetJulia { magnet: 2, c: [0.4, 0.2] },
                 25,
             )),
-            PatternKind::Fractal(crate::scene::desc::Fractal::new(
-                crate::scene::desc::FractalKind::MagnetJulia { magnet: 2, c: [0.4, 0.2] },
-                25,
-            )),
-            PatternKind::PigmentPattern(Box::new(crate::scene::desc::PigmentDesc {
-                pattern: crate::scene::desc::PigmentPattern::Checker(
-                    crate::scene::desc::Color::WHITE,
-                    crate::scene::desc::Color::rgb(0.2, 0.5, 0.1),
+            PatternKind::PigmentPattern(Box::new(crate::desc::PigmentDesc {
+                pattern: crate::desc::PigmentPattern::Checker(
+                    crate::desc::Color::WHITE,
+                    crate::desc::Color::rgb(0.2, 0.5, 0.1),
                 ),
                 ..Default::default()
             })),

@@ -15,8 +15,8 @@
 use glam::Vec3;
 
 use super::simple::frac;
+use crate::desc::Slope;
 use crate::lanes::{Lane, V3};
-use crate::scene::desc::Slope;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Slope32 {

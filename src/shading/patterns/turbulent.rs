@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use crate::lanes::{Lane, V3};
-use crate::shading::noise::{noise, noise_lanes, turbulence_lanes, TurbulenceF32};
+use crate::noise::{noise, noise_lanes, turbulence_lanes, TurbulenceF32};
 
 /// `bozo`, `spotted`, `bumps` as a pigment: noise, centred on 0.5.
 #[inline(always)]

@@ -1,7 +1,7 @@
 // Layered textures whose layers differ in finish: each layer is shaded with its own finish
 // (POV-Ray 3.7), not the bottom one's. A red diffuse layer under partly transparent layers
 // with specular, phong, reflection and ambient; a filtered layer; three layers; a glassy
-// bottom layer; layers on a plane. strahl's tests/reference.rs compares it with POV-Ray's render.
+// bottom layer; layers on a plane. strahl's tests/suite/reference.rs compares it with POV-Ray's render.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 2, -11> look_at <0, 0.3, 0> angle 50 }

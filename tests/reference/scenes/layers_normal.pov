@@ -3,7 +3,7 @@
 // bumped red layer under a flat blue one, the reverse with a highlight, two normals at once
 // with a reflection, a glass ball whose bottom layer alone is bumped, three layers with the
 // middle one bumped, and a floor whose top layer alone is. Exact patterns only (onion,
-// radial, gradient), so the whole image compares. tests/reference.rs compares it with
+// radial, gradient), so the whole image compares. tests/suite/reference.rs compares it with
 // POV-Ray's render.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }

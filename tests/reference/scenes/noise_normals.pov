@@ -1,6 +1,6 @@
 // Noise normals, one tile each, lit from the upper left, seen head-on in front of a plain wall:
 // bumps, dents, wrinkles and bumps with turbulence, at a scale that puts several features in a
-// 15×15-pixel window. Compared by region (tests/reference.rs `check_regions`).
+// 15×15-pixel window. Compared by region (tests/suite/reference.rs `check_regions`).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 

@@ -1,5 +1,5 @@
 // Noise pigments, one tile each, seen head-on with ambient light only (the pigment is what
-// shows) in front of a plain wall. Compared by region (tests/reference.rs `check_regions`):
+// shows) in front of a plain wall. Compared by region (tests/suite/reference.rs `check_regions`):
 // each tile's blurred colour and texture strength, the wall exactly. Scales put several
 // features in a 15×15-pixel window (a tile is about 150 pixels wide).
 #version 3.7;

@@ -1,7 +1,7 @@
 // Pattern normals under warps, one tile each, lit from the upper left, seen head-on. POV-Ray
 // 3.7 warps the point once and differentiates the unwarped pattern around it, so a turbulence
 // warp or a black hole leaves the stripes' tilt as it was and `repeat` keeps the first cell's.
-// Compared by region (tests/reference.rs `check_regions`).
+// Compared by region (tests/suite/reference.rs `check_regions`).
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 

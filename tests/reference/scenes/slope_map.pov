@@ -1,6 +1,6 @@
 // slope_map in normals: several maps (two-entry, three-entry, with a sharp edge, a step in
 // height, a map starting above 0), wave types and frequency, on planes and spheres, lit from
-// the side so the tilt shows. strahl's tests/reference.rs compares it with POV-Ray 3.7's render.
+// the side so the tilt shows. strahl's tests/suite/reference.rs compares it with POV-Ray 3.7's render.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 0, -12> look_at <0, 0, 0> angle 48 }

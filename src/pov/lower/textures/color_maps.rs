@@ -1,11 +1,11 @@
 //! Colour maps → sorted `ColorMapEntry` lists, and the maps POV-Ray gives patterns written
 //! without one.
 
+use crate::desc::{Color, ColorMapEntry, PatternKind};
 use crate::pov::ast::{ColorMap, ColorMapBody};
 use crate::pov::lower::Lowerer;
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
-use crate::scene::desc::{Color, ColorMapEntry, PatternKind};
 
 /// POV-Ray 3.7's map for `wood` without a `color_map`: light tan up to 0.6, then dark brown,
 /// with a hard edge. Measured by rendering `plane { z, 0 pigment { wood } }` with `ambient 1

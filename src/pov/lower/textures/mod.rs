@@ -10,12 +10,12 @@ mod normals;
 mod patterns;
 
 use super::Lowerer;
+use crate::desc::{
+    Color, ColorMapEntry, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, Transform, Turbulence, Warp,
+};
 use crate::pov::ast::{ColorItem, ColorKey, Expr, ExprKind, PatternMod, Pigment, PigmentItem, Turb, TurbKind};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::Value;
-use crate::scene::desc::{
-    Color, ColorMapEntry, PatternDesc, PatternKind, PigmentDesc, PigmentPattern, Transform, Turbulence, Warp,
-};
 pub(super) use color_maps::sorted_map;
 use color_maps::{default_list_colors, default_pattern_map, default_wood_map};
 

@@ -1,13 +1,13 @@
 //! Normal blocks → `NormalDesc`: bumps, patterns as normals, `normal_map` and `slope_map`.
 
 use super::TurbState;
+use crate::desc::{
+    NormalDesc, NormalPattern, PatternDesc, PatternKind, SlopeEntry, Transform, DEFAULT_NORMAL_ACCURACY,
+};
 use crate::pov::ast::{Normal, NormalItem, SlopeMapBody};
 use crate::pov::lower::Lowerer;
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
-use crate::scene::desc::{
-    NormalDesc, NormalPattern, PatternDesc, PatternKind, SlopeEntry, Transform, DEFAULT_NORMAL_ACCURACY,
-};
 
 /// POV-Ray's `bumps` amount when none is written.
 const DEFAULT_BUMPS: f64 = 0.5;

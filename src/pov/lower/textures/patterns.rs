@@ -4,11 +4,11 @@
 use glam::DVec3;
 
 use super::TurbState;
+use crate::desc::{Fractal, FractalKind, PatternDesc, PatternKind, PlacedWarp, Transform, Warp, WarpMap, Wave};
 use crate::pov::ast::{Expr, PatternAst, PatternMod, Stmt, WarpAst};
 use crate::pov::lower::Lowerer;
 use crate::pov::source::{Diag, PResult};
 use crate::pov::value::Value;
-use crate::scene::desc::{Fractal, FractalKind, PatternDesc, PatternKind, PlacedWarp, Transform, Warp, WarpMap, Wave};
 
 impl Lowerer<'_> {
     /// The pattern a keyword names, with its argument.
@@ -68,7 +68,7 @@ impl Lowerer<'_> {
                     .ok_or_else(|| Diag::new(e.span, format!("density_file \"{file}\" not found")))?;
                 let bytes = std::fs::read(&path)
                     .map_err(|err| Diag::new(e.span, format!("cannot read density_file \"{file}\": {err}")))?;
-                let grid = crate::shading::patterns::density::DensityGrid::from_df3(&bytes)
+                let grid = crate::density_file::DensityGrid::from_df3(&bytes)
                     .map_err(|m| Diag::new(e.span, format!("density_file \"{file}\" {m}")))?;
                 // The file as found, so that a printed scene reads it from anywhere.
                 let file = path.to_string_lossy().into_owned();
@@ -92,7 +92,7 @@ impl Lowerer<'_> {
 
     /// `slope`'s vectors and ranges; a zero direction or altitude, or an empty range, is an
     /// error at the vector or range.
-    fn slope(&mut self, pa: &PatternAst) -> PResult<crate::scene::desc::Slope> {
+    fn slope(&mut self, pa: &PatternAst) -> PResult<crate::desc::Slope> {
         let (Some(d), Some(sa)) = (&pa.arg, &pa.slope) else {
             return Err(Diag::new(pa.span, "slope needs a direction"));
         };
@@ -118,12 +118,12 @@ impl Lowerer<'_> {
             }
             None => None,
         };
-        Ok(crate::scene::desc::Slope { direction, point_at: sa.point_at, range: range(self, &sa.range)?, altitude })
+        Ok(crate::desc::Slope { direction, point_at: sa.point_at, range: range(self, &sa.range)?, altitude })
     }
 
     /// The solid of an `object` pattern: its object written out or declared, asked by
-    /// `scene::probe`.
-    fn pattern_object(&mut self, pa: &PatternAst) -> PResult<crate::scene::desc::SolidRef> {
+    /// `render::probe`.
+    fn pattern_object(&mut self, pa: &PatternAst) -> PResult<crate::desc::SolidRef> {
         let parts = match (&pa.object, &pa.arg) {
             (Some(o), _) => self.children(&[Stmt::Object((**o).clone())], "object", pa.span)?,
             (None, Some(e)) => match self.eval(e)? {
@@ -133,7 +133,7 @@ impl Lowerer<'_> {
             (None, None) => return Err(Diag::new(pa.span, "the `object` pattern needs an object")),
         };
         let objects: Vec<_> = parts.into_iter().map(|p| p.into_desc(&Default::default())).collect();
-        Ok(crate::scene::probe::solid(&objects))
+        Ok(crate::render::probe::solid(&objects))
     }
 
     /// `mandel N`, `julia C, N`, `magnet 1|2 mandel N`, `magnet 1|2 julia C, N`.

@@ -5,9 +5,9 @@
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
+use strahl::desc::{SceneDesc, ShapeDesc};
 use strahl::error::LocatedError;
 use strahl::pov::{load_scene_with_messages, IncludePath, Message, ParseOptions};
-use strahl::scene::desc::{SceneDesc, ShapeDesc};
 
 fn dir(test: &str) -> PathBuf {
     let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("language").join(test);

@@ -5,11 +5,11 @@
 use std::path::PathBuf;
 
 use strahl::camera::Camera;
+use strahl::desc::SceneDesc;
 use strahl::pov::{load_scene, load_scene_with_options, IncludePath, ParseOptions};
 use strahl::render::image::Image;
 use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::SceneDesc;
 use strahl::scene::generate::{generate, write_generated, write_pov, Kind};
 
 fn scratch(name: &str) -> PathBuf {

@@ -10,19 +10,19 @@ use std::path::PathBuf;
 use glam::{DMat4, DVec2, DVec3, Vec3};
 use proptest::prelude::*;
 use strahl::camera::Camera;
-use strahl::geometry::ray::Ray;
+use strahl::desc::{
+    BlobComponent, BlobShape, CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc,
+    NormalPattern, ObjectDesc, PatternDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef,
+    SplineKind, TextureDesc, Transform, Turbulence, Warp,
+};
 use strahl::headless::include_path;
 use strahl::pov::load_scene;
+use strahl::ray::Ray;
 use strahl::render::image::Image;
 use strahl::render::intersect::Hit;
 use strahl::render::stats::RenderStats;
 use strahl::render::{render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::{
-    BlobComponent, BlobShape, CameraDesc, Color, ColorMapEntry, FinishDesc, InteriorDesc, LightDesc, NormalDesc,
-    NormalPattern, ObjectDesc, PatternDesc, PigmentDesc, PigmentPattern, PolyForm, SceneDesc, ShapeDesc, SourceRef,
-    SplineKind, TextureDesc, Transform, Turbulence, Warp,
-};
 use strahl::scene::print::to_pov;
 
 fn root() -> PathBuf {
@@ -244,7 +244,7 @@ fn random_blob(r: &mut Rng) -> ShapeDesc {
 /// A mesh: a closed star-shaped octahedron (solid through a random `inside_vector`, its
 /// faces sometimes smooth), or an open soup of 2 to 12 triangles (not solid).
 fn random_mesh(r: &mut Rng) -> ShapeDesc {
-    use strahl::scene::desc::{MeshDesc, MeshFace};
+    use strahl::desc::{MeshDesc, MeshFace};
     let c = r.v(-3.0, 3.0);
     let mut mesh = MeshDesc::default();
     let inside_vector = if r.pick(3) > 0 {
@@ -890,7 +890,7 @@ fn csg_leaf(r: &mut Rng) -> ObjectDesc {
 
 /// A random CSG tree of depth up to `depth` over random solids.
 fn csg_tree(r: &mut Rng, depth: u32) -> ObjectDesc {
-    use strahl::scene::desc::CsgOp;
+    use strahl::desc::CsgOp;
     if depth == 0 || r.pick(3) == 0 {
         return csg_leaf(r);
     }
@@ -910,7 +910,7 @@ fn csg_scene(object: ObjectDesc) -> Scene {
 /// that every shape finds the root after a given one.
 #[test]
 fn inside_agrees_with_crossing_parity() {
-    use strahl::geometry::ray::MISS;
+    use strahl::ray::MISS;
     let r = &mut Rng(0x1A51DE);
     let (mut checked, mut inside_count) = (0, 0);
     for _ in 0..400 {
@@ -990,7 +990,7 @@ fn inside_agrees_with_crossing_parity() {
 /// one: a leaf's crossings; a node's surface children's crossings where the other children
 /// agree (a union: always; a merge: none contains the point; the rest: all contain it).
 fn csg_reference(scene: &Scene, target: strahl::scene::csg::CsgTarget, ray: &Ray) -> Vec<f32> {
-    use strahl::geometry::ray::MISS;
+    use strahl::ray::MISS;
     use strahl::scene::csg::{CsgRule, CsgTarget};
     match target {
         CsgTarget::Leaf(i) => {
@@ -1040,8 +1040,8 @@ fn csg_reference(scene: &Scene, target: strahl::scene::csg::CsgTarget, ray: &Ray
 /// ray's bits, and f64 a `t` within rounding of f32's.
 #[test]
 fn csg_surfaces_match_a_crossing_reference() {
-    use strahl::geometry::ray::MISS;
     use strahl::lanes::{Lane, F8};
+    use strahl::ray::MISS;
     use strahl::scene::csg::CsgTarget;
     let r = &mut Rng(0xC5C);
     let (mut compared, mut hits) = (0, 0);
@@ -1113,7 +1113,7 @@ fn csg_surfaces_match_a_crossing_reference() {
 
 /// A `bicubic_patch` with random control points around a 6-unit square and random steps, read
 /// through the parser (which tessellates it into a mesh).
-fn random_patch(r: &mut Rng, case: u64) -> strahl::scene::desc::MeshDesc {
+fn random_patch(r: &mut Rng, case: u64) -> strahl::desc::MeshDesc {
     let points: Vec<String> = (0..16)
         .map(|k| {
             let base = DVec3::new((k % 4) as f64 * 2.0 - 3.0, 0.0, (k / 4) as f64 * 2.0 - 3.0);
@@ -1140,10 +1140,10 @@ fn random_patch(r: &mut Rng, case: u64) -> strahl::scene::desc::MeshDesc {
 /// BVH, its object-space transform and the face it reports, against no accelerator at all).
 #[test]
 fn mesh_packets_single_rays_and_brute_force_agree() {
-    use strahl::geometry::ray::{RayLanes, MISS};
+    use strahl::desc::{MeshDesc, MeshFace};
     use strahl::lanes::{Lane, F8, V3};
+    use strahl::ray::{RayLanes, MISS};
     use strahl::render::intersect::HitShape;
-    use strahl::scene::desc::{MeshDesc, MeshFace};
     let r = &mut Rng(0x3E54);
     let (mut hits, mut rays, mut disagree) = (0, 0, 0);
     for case in 0..24 {

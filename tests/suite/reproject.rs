@@ -19,7 +19,7 @@ fn seed() -> (Scene, Camera) {
     (scene, Camera::from_desc(&desc.camera))
 }
 
-/// Tuning aid (`cargo test --release --test reproject -- --ignored --nocapture`): PSNR against
+/// Tuning aid (`cargo test --release --test suite reproject:: -- --ignored --nocapture`): PSNR against
 /// full renders and time per frame along the shipped paths, at 60 frames a second of path.
 #[test]
 #[ignore]

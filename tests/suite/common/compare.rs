@@ -1,5 +1,5 @@
-//! Comparing strahl's renders with POV-Ray 3.7's: the machinery `tests/reference.rs` (the
-//! project's own reference scenes, 640×480) and `tests/samples.rs` (POV-Ray's sample scenes,
+//! Comparing strahl's renders with POV-Ray 3.7's: the machinery `tests/suite/reference.rs` (the
+//! project's own reference scenes, 640×480) and `tests/suite/samples.rs` (POV-Ray's sample scenes,
 //! 320×240) share. A [`Suite`] names the image size, where the expected images lie and where
 //! failures write theirs; its comparisons return a [`Report`] (the figures, printed as lines,
 //! and what failed) so that a caller rendering many scenes at once can print them as a table.

@@ -141,7 +141,7 @@ pub enum PatternKind {
     Density {
         /// The file as found (for the printer).
         file: String,
-        grid: Arc<crate::shading::patterns::density::DensityGrid>,
+        grid: Arc<crate::density_file::DensityGrid>,
         interpolate: u32,
     },
     /// Raw ring value `frac(r)` (its default wave is the triangle).
@@ -172,7 +172,7 @@ pub struct Slope {
 }
 
 /// What the `object` pattern asks of its object: whether a point (in the pattern's space,
-/// which is the object's world) lies inside. `scene::probe` answers it with the renderer's
+/// which is the object's world) lies inside. `render::probe` answers it with the renderer's
 /// own kernels; the shading layer only asks.
 pub trait Solid: Send + Sync + std::fmt::Debug {
     fn contains(&self, p: glam::DVec3) -> bool;

@@ -4,12 +4,12 @@
 use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3};
+use strahl::desc::{BlobShape, PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
 use strahl::error::LocatedError;
 use strahl::pov::{
     load_scene, load_scene_with_messages, load_scene_with_options, load_scene_with_warnings, IncludePath, Message,
     ParseOptions,
 };
-use strahl::scene::desc::{BlobShape, PigmentPattern, SceneDesc, ShapeDesc, SplineKind};
 
 fn repo() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -73,9 +73,9 @@ fn seed_scene_loads() {
 
     let sphere = &s.objects[1];
     assert_eq!(sphere.shape, ShapeDesc::Sphere { center: DVec3::new(0.0, 2.0, 4.0), radius: 2.0 });
-    assert_eq!(sphere.texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0)));
+    assert_eq!(sphere.texture.pigment.pattern, PigmentPattern::Solid(strahl::desc::Color::rgb(1.0, 0.5, 0.0)));
     let n = sphere.texture.normal.as_ref().unwrap();
-    assert_eq!(n.pattern, strahl::scene::desc::NormalPattern::Bumps(0.4));
+    assert_eq!(n.pattern, strahl::desc::NormalPattern::Bumps(0.4));
     assert_eq!(n.transform.matrix, DMat4::from_scale(DVec3::splat(0.2)));
     assert_eq!(sphere.texture.finish.phong, 1.0);
     assert_eq!(sphere.source.line, 22);
@@ -160,7 +160,7 @@ fn expressions_colors_and_declares() {
     assert_eq!(s.global.max_trace_level, 7);
     assert!(close(s.global.ambient_light, DVec3::splat(0.1)));
     let o = &s.objects[0];
-    assert_eq!(o.texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::rgb(1.0, 0.5, 0.0)));
+    assert_eq!(o.texture.pigment.pattern, PigmentPattern::Solid(strahl::desc::Color::rgb(1.0, 0.5, 0.0)));
     assert_eq!(o.texture.finish.ambient, DVec3::splat(0.2));
     assert_eq!(o.texture.finish.reflection, DVec3::new(0.1, 0.2, 0.3));
     assert_eq!(o.interior.ior, 1.5);
@@ -601,11 +601,11 @@ fn declared_union_from_an_include() {
     assert_eq!(s.objects[0].source.file, d.join("pair.inc").display().to_string());
     assert_eq!(s.objects[0].source.line, 2);
     assert_eq!(s.objects[0].transform.matrix, DMat4::from_translation(DVec3::new(0.0, 5.0, 0.0)));
-    let red = strahl::scene::desc::Color::rgb(1.0, 0.0, 0.0);
+    let red = strahl::desc::Color::rgb(1.0, 0.0, 0.0);
     assert_eq!(s.objects[2].texture.pigment.pattern, PigmentPattern::Solid(red));
-    assert_eq!(s.objects[3].texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::WHITE));
+    assert_eq!(s.objects[3].texture.pigment.pattern, PigmentPattern::Solid(strahl::desc::Color::WHITE));
     // The bare sphere in the outer union has no texture anywhere: POV-Ray's default (black).
-    assert_eq!(s.objects[4].texture.pigment.pattern, PigmentPattern::Solid(strahl::scene::desc::Color::BLACK));
+    assert_eq!(s.objects[4].texture.pigment.pattern, PigmentPattern::Solid(strahl::desc::Color::BLACK));
     assert_eq!(s.objects[4].transform.matrix, DMat4::from_scale(DVec3::splat(2.0)));
 }
 
@@ -788,7 +788,7 @@ fn default_errors_are_located() {
 
 #[test]
 fn layered_textures_composite_also_after_a_pigment_or_on_a_declared_object() {
-    use strahl::scene::desc::PigmentPattern;
+    use strahl::desc::PigmentPattern;
     // `texture {A} texture {B}`: B over A (by B's filter and transmit), in objects, CSG,
     // declarations and `#default`.
     for (name, text) in [
@@ -856,7 +856,7 @@ fn interior_texture_follows_the_texture() {
 /// one normal and one plain finish stay a composited pigment.
 #[test]
 fn layers_keep_their_own_normals() {
-    use strahl::scene::desc::PigmentPattern;
+    use strahl::desc::PigmentPattern;
     let n = "normal { gradient x 0.5 }";
     let load = |name: &str, bottom: &str, top: &str| {
         let text = format!(
@@ -882,7 +882,7 @@ fn layers_keep_their_own_normals() {
 
 #[test]
 fn patterns_parse_and_unknown_ones_are_located_errors() {
-    use strahl::scene::desc::{NormalPattern, PatternKind, PigmentPattern, Wave};
+    use strahl::desc::{NormalPattern, PatternKind, PigmentPattern, Wave};
     let s = load_text(
         "patterns_ok",
         "sphere { 0, 1 pigment { gradient y triangle_wave frequency 2 color_map { [0 rgb 0] [1 rgb 1] } } }\n\
@@ -994,7 +994,7 @@ fn bad_cylinders_cones_discs_and_tori_are_located_errors() {
 
 #[test]
 fn csg_nodes_keep_their_structure_and_pass_textures_down() {
-    use strahl::scene::desc::CsgOp;
+    use strahl::desc::CsgOp;
     let s = load_text(
         "csg_tree",
         "#declare D = difference { box { -1, 1 } sphere { 0, 1.2 pigment { rgb x } } union { sphere { x, 0.1 } sphere { -x, 0.1 } } }
@@ -1009,7 +1009,7 @@ fn csg_nodes_keep_their_structure_and_pass_textures_down() {
     };
     assert_eq!(children.len(), 3, "the nested union stays one child");
     assert!(matches!(&children[2].shape, ShapeDesc::Csg { op: CsgOp::Union, children } if children.len() == 2));
-    let color = |o: &strahl::scene::desc::ObjectDesc| match &o.texture.pigment.pattern {
+    let color = |o: &strahl::desc::ObjectDesc| match &o.texture.pigment.pattern {
         PigmentPattern::Solid(c) => c.rgb,
         other => panic!("{other:?}"),
     };
@@ -1170,7 +1170,7 @@ fn text_loads_glyphs_from_the_include_path() {
     };
     // A, V and i have outlines; the space has none.
     assert_eq!((glyphs.len(), *thickness, string.as_str()), (3, 0.25, "AV i"));
-    let x_range = |g: &strahl::scene::desc::TextGlyph| {
+    let x_range = |g: &strahl::desc::TextGlyph| {
         g.quads.iter().flatten().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| (a.min(p.x), b.max(p.x)))
     };
     // The first glyph's ink starts at 0; the em is one unit (capitals about 0.66 high).
@@ -1315,7 +1315,7 @@ fn blobs_load_and_bad_ones_are_located_errors() {
 /// what POV-Ray refuses.
 #[test]
 fn julia_fractals_load_and_bad_ones_are_located_errors() {
-    use strahl::scene::desc::{ComplexFn, JuliaFunction};
+    use strahl::desc::{ComplexFn, JuliaFunction};
     let s = load_text("julia", "julia_fractal { <-0.083, 0, -0.83, -0.025> translate y precision 15 }").unwrap();
     let ShapeDesc::Julia { param, function, max_iteration, precision, slice } = &s.objects[0].shape else {
         panic!("{:?}", s.objects[0].shape)
@@ -1382,7 +1382,7 @@ fn lathes_load_and_bad_ones_are_located_errors() {
 
 // ---- mesh, mesh2, smooth_triangle, height_field ------------------------------------------
 
-fn mesh_of(s: &SceneDesc, i: usize) -> (&strahl::scene::desc::MeshDesc, Option<DVec3>) {
+fn mesh_of(s: &SceneDesc, i: usize) -> (&strahl::desc::MeshDesc, Option<DVec3>) {
     match &s.objects[i].shape {
         ShapeDesc::Mesh { mesh, inside_vector } => (mesh, *inside_vector),
         other => panic!("expected a mesh, found {}", other.keyword()),
@@ -1650,18 +1650,18 @@ fn isosurfaces_load_with_their_items() {
     .unwrap();
     let ShapeDesc::Isosurface { function, container, params } = &s.objects[0].shape else { panic!("isosurface") };
     assert_eq!(function.eval(&[1.0, 2.0, 3.0]), 13.0);
-    assert_eq!(*container, strahl::scene::desc::Container::Sphere { center: DVec3::Y, radius: 2.0 });
+    assert_eq!(*container, strahl::desc::Container::Sphere { center: DVec3::Y, radius: 2.0 });
     assert_eq!((params.threshold, params.accuracy, params.max_gradient, params.open), (0.5, 0.01, 4.0, true));
     let ShapeDesc::Isosurface { container, params, .. } = &s.objects[1].shape else { panic!("isosurface") };
-    assert_eq!(*container, strahl::scene::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
-    assert_eq!(*params, strahl::scene::desc::IsoParams::default());
+    assert_eq!(*container, strahl::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
+    assert_eq!(*params, strahl::desc::IsoParams::default());
 }
 
 // ---- lights and atmosphere ---------------------------------------------------------------
 
 #[test]
 fn light_kinds_and_modifiers() {
-    use strahl::scene::desc::LightKind;
+    use strahl::desc::LightKind;
     let s = load_text(
         "light_kinds",
         "light_source { <0, 5, 0> color rgb 1 spotlight point_at <0, 0, 1> radius 10 falloff 20 tightness 3 }\n\
@@ -1775,7 +1775,7 @@ fn error_lights_and_atmosphere() {
 
 #[test]
 fn camera_projections_parse() {
-    use strahl::camera::Projection;
+    use strahl::desc::Projection;
     let cam = |text: &str| load_text("camera_projection", text).unwrap_or_else(|e| panic!("{e}")).camera;
     assert_eq!(cam("camera { orthographic location -5*z }").lens.projection, Projection::Orthographic);
     assert_eq!(cam("camera { fisheye angle 180 }").lens.projection, Projection::Fisheye { angle: 180.0 });
@@ -1829,7 +1829,7 @@ fn camera_errors_are_located() {
 
 #[test]
 fn mesh_camera_reads_its_meshes() {
-    use strahl::camera::Projection;
+    use strahl::desc::Projection;
     let mesh = "#declare M = mesh { triangle { <0, 1, 0>, <1, 0, 0>, <0, 0, 0> uv_vectors <0, 1>, <1, 0>, <0, 0> } \
                 triangle { <0, 1, 0>, <1, 1, 0>, <1, 0, 0> } translate x }\n";
     let s = load_text(
@@ -1903,7 +1903,7 @@ fn camera_normal_is_read_without_warning_and_the_last_one_counts() {
     .unwrap();
     assert!(w.is_empty(), "{w:?}");
     let n = desc.camera_normal.expect("the camera's normal");
-    assert!(matches!(n.pattern, strahl::scene::desc::NormalPattern::Pattern(_, a) if a == 0.3), "{n:?}");
+    assert!(matches!(n.pattern, strahl::desc::NormalPattern::Pattern(_, a) if a == 0.3), "{n:?}");
     // A bad normal inside the camera is located like any other.
     let (line, col, m) = err("camera_normal_bad", "camera { normal { bumps 0.5 foo } }");
     assert_eq!((line, col), (1, 29), "{m}");
@@ -2115,7 +2115,7 @@ fn tiles_is_a_checker_of_textures_with_located_errors() {
 
 #[test]
 fn image_map_reads_its_modifiers_and_locates_bad_files() {
-    use strahl::scene::desc::{ImageMapping, NormalPattern, PatternKind};
+    use strahl::desc::{ImageMapping, NormalPattern, PatternKind};
     let d = dir("image_map");
     std::fs::write(d.join("i.ppm"), "P3 2 1 255 255 0 0 0 0 255").unwrap();
     let text = "#version 3.7;\nsphere { 0, 1 pigment { image_map { ppm \"i.ppm\" map_type 1 interpolate 2 once \
@@ -2190,7 +2190,7 @@ fn a_second_rgb_vector_starts_the_next_colour() {
 
 #[test]
 fn fractal_patterns_and_pigment_pattern_read_their_options() {
-    use strahl::scene::desc::{Fractal, FractalKind, NormalPattern, PatternKind};
+    use strahl::desc::{Fractal, FractalKind, NormalPattern, PatternKind};
     let s = load_text(
         "fractals",
         "plane { z, 0 pigment { julia <0.3, 0.4>, 30 exponent 3 interior 1, 200 exterior 6, 0.5 } }\n\
@@ -2226,7 +2226,7 @@ fn fractal_patterns_and_pigment_pattern_read_their_options() {
     match kind(3) {
         PatternKind::PigmentPattern(p) => assert_eq!(
             p.pattern,
-            PigmentPattern::Checker(strahl::scene::desc::Color::rgb(1.0, 0.0, 0.0), strahl::scene::desc::Color::WHITE)
+            PigmentPattern::Checker(strahl::desc::Color::rgb(1.0, 0.0, 0.0), strahl::desc::Color::WHITE)
         ),
         other => panic!("{other:?}"),
     }
@@ -2305,7 +2305,7 @@ fn colour_components_after_a_pigment_colour_change_it() {
 
 #[test]
 fn texture_patterns_keep_their_textures_whole_where_finishes_differ() {
-    use strahl::scene::desc::{PatternKind, PigmentPattern};
+    use strahl::desc::{PatternKind, PigmentPattern};
     let s = load_text(
         "texture_patterns_ok",
         "#declare O = sphere { 0, 1 }\n\
@@ -2342,7 +2342,7 @@ fn texture_patterns_keep_their_textures_whole_where_finishes_differ() {
 
 #[test]
 fn slope_map_is_read_sorted_and_declared_maps_are_named() {
-    use strahl::scene::desc::SlopeEntry;
+    use strahl::desc::SlopeEntry;
     let d = dir("slope_map");
     let text = "#declare S = slope_map { [1 <0,-1>] [0 <0,1>] [0.5 <1,1>] }\n\
                 plane { y, 0 normal { gradient x 1 slope_map { [0, <0, 1>] [0.5 <1, 1>] [0.5 <1, -1>] [1 <0, -1>] } } }\n\
@@ -2412,7 +2412,7 @@ fn layers_keep_their_finishes_only_where_they_shade_differently() {
 
 #[test]
 fn slope_pattern_is_read_and_its_bad_vectors_and_ranges_are_located() {
-    use strahl::scene::desc::{PatternKind, PigmentPattern, Slope};
+    use strahl::desc::{PatternKind, PigmentPattern, Slope};
     let s = load_text(
         "slope_ok",
         "sphere { 0, 1 pigment { slope { y, 0.5, 1 altitude <0, 2, 0>, -1, 1 } color_map { [0 rgb 0] [1 rgb 1] } } }\n\

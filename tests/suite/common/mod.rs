@@ -7,7 +7,7 @@
 pub mod compare;
 
 use glam::DMat4;
-use strahl::scene::desc::{CameraDesc, SceneDesc, Transform};
+use strahl::desc::{CameraDesc, SceneDesc, Transform};
 
 /// Applies the world transform `m` (after everything else) to camera, lights, objects and
 /// pattern transforms, so the scene looks the same from the moved camera.

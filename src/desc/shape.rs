@@ -1,6 +1,6 @@
 //! Shapes as written, each in its own object space.
 
-use super::{JuliaFunction, ObjectDesc, SplineKind, Transform};
+use super::{ObjectDesc, Transform};
 use glam::{DVec2, DVec3, DVec4};
 use std::sync::Arc;
 
@@ -319,5 +319,100 @@ impl ShapeDesc {
             ShapeDesc::Isosurface { .. } => "isosurface",
             ShapeDesc::Parametric { .. } => "parametric",
         }
+    }
+}
+
+/// Which algebra and function the iteration uses.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum JuliaFunction {
+    QuaternionSqr,
+    QuaternionCube,
+    Hypercomplex(ComplexFn),
+}
+
+/// The functions of hypercomplex numbers, each a complex function applied to both halves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ComplexFn {
+    Sqr,
+    Cube,
+    Exp,
+    Reciprocal,
+    Sin,
+    Asin,
+    Sinh,
+    Asinh,
+    Cos,
+    Acos,
+    Cosh,
+    Acosh,
+    Tan,
+    Atan,
+    Tanh,
+    Atanh,
+    Ln,
+    /// `h` to the complex power `x + y·i`.
+    Pwr(f64, f64),
+}
+
+/// The functions with a keyword of their own, and the keywords.
+const NAMED: [(ComplexFn, &str); 17] = [
+    (ComplexFn::Sqr, "sqr"),
+    (ComplexFn::Cube, "cube"),
+    (ComplexFn::Exp, "exp"),
+    (ComplexFn::Reciprocal, "reciprocal"),
+    (ComplexFn::Sin, "sin"),
+    (ComplexFn::Asin, "asin"),
+    (ComplexFn::Sinh, "sinh"),
+    (ComplexFn::Asinh, "asinh"),
+    (ComplexFn::Cos, "cos"),
+    (ComplexFn::Acos, "acos"),
+    (ComplexFn::Cosh, "cosh"),
+    (ComplexFn::Acosh, "acosh"),
+    (ComplexFn::Tan, "tan"),
+    (ComplexFn::Atan, "atan"),
+    (ComplexFn::Tanh, "tanh"),
+    (ComplexFn::Atanh, "atanh"),
+    (ComplexFn::Ln, "ln"),
+];
+
+impl ComplexFn {
+    /// The function named by POV-Ray's keyword (`pwr` takes its exponent separately).
+    pub fn from_keyword(word: &str) -> Option<ComplexFn> {
+        NAMED.iter().find(|n| n.1 == word).map(|n| n.0)
+    }
+
+    /// The keyword `from_keyword` reads, `None` for `pwr` (written with its exponent).
+    pub fn keyword(self) -> Option<&'static str> {
+        NAMED.iter().find(|n| n.0 == self).map(|n| n.1)
+    }
+}
+
+/// How points connect, as POV-Ray's spline keywords name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SplineKind {
+    Linear,
+    Quadratic,
+    Cubic,
+    Bezier,
+}
+
+impl SplineKind {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            SplineKind::Linear => "linear_spline",
+            SplineKind::Quadratic => "quadratic_spline",
+            SplineKind::Cubic => "cubic_spline",
+            SplineKind::Bezier => "bezier_spline",
+        }
+    }
+
+    pub fn from_keyword(word: &str) -> Option<SplineKind> {
+        Some(match word {
+            "linear_spline" => SplineKind::Linear,
+            "quadratic_spline" => SplineKind::Quadratic,
+            "cubic_spline" => SplineKind::Cubic,
+            "bezier_spline" => SplineKind::Bezier,
+            _ => return None,
+        })
     }
 }

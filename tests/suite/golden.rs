@@ -6,7 +6,7 @@
 //! libms and compilers may round f32 differently, which moves a few pixels by one step.
 //!
 //! Regenerate deliberately, after a change that is meant to alter pixels:
-//!     STRAHL_REGEN_GOLDEN=1 cargo test --release --test golden
+//!     STRAHL_REGEN_GOLDEN=1 cargo test --release --test suite golden::
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -88,7 +88,7 @@ fn read_sums() -> Vec<(String, String, String)> {
 
 fn regenerate(frames: &[Frame]) {
     std::fs::create_dir_all(golden_dir()).unwrap_or_else(|e| panic!("{e}"));
-    let mut sums = format!("# Golden frames for tests/golden.rs; regenerate with: {REGEN}\n");
+    let mut sums = format!("# Golden frames for tests/suite/golden.rs; regenerate with: {REGEN}\n");
     for f in frames {
         write_png(&golden_dir().join(&f.name), WIDTH, HEIGHT, &f.rgb).unwrap_or_else(|e| panic!("{e}"));
         let _ = writeln!(sums, "{}  {}  {}", sha256_hex(&f.rgb), f.name, this_target());

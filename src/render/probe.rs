@@ -6,11 +6,11 @@
 use glam::DVec3;
 
 use crate::accel::AccelKind;
+use crate::desc::{ObjectDesc, SceneDesc, Solid, SolidRef};
 use crate::geometry::Shape;
 use crate::lanes::Lane;
 use crate::render::stats::RenderStats;
 use crate::scene::build::Scene;
-use crate::scene::desc::{ObjectDesc, SceneDesc, Solid, SolidRef};
 use std::sync::Arc;
 
 fn scene_of(objects: &[ObjectDesc]) -> Scene {
@@ -33,7 +33,7 @@ pub fn trace(objects: &[ObjectDesc], start: DVec3, dir: DVec3) -> Option<(DVec3,
     }
     let scene = scene_of(objects);
     let frame = &scene.frame;
-    let ray = crate::geometry::ray::Ray::new(frame.point(start).as_vec3(), frame.vector(dir).normalize().as_vec3());
+    let ray = crate::ray::Ray::new(frame.point(start).as_vec3(), frame.vector(dir).normalize().as_vec3());
     let hit = scene.intersect(&ray, f32::INFINITY, &mut RenderStats::default())?;
     let hit = scene.refine(&ray, hit);
     let p = ray.at(hit.t);

@@ -13,7 +13,7 @@
 //! region by region (`check_psnr_by_region`) with that region's floor and reason. On failure
 //! the actual, expected and difference images go to `target/reference-failures/`.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 

@@ -2,10 +2,10 @@
 //! across thread counts and accelerators, on the command line and against POV-Ray; and the one
 //! formula per shape instantiated three ways (f32, f32×8, f64) agreeing with itself.
 //!
-//! Figures are printed (`cargo test --release --test precision -- --nocapture`); the bounds sit
+//! Figures are printed (`cargo test --release --test suite precision:: -- --nocapture`); the bounds sit
 //! below what was measured with a margin, and docs/precision.md records the measured values.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -14,17 +14,17 @@ use common::transform_scene;
 use glam::{DMat4, DVec3};
 use strahl::accel::packet::Ray8;
 use strahl::camera::Camera;
-use strahl::geometry::ray::{Ray, MISS};
+use strahl::desc::SceneDesc;
 use strahl::headless::metrics::{psnr, ssim};
 use strahl::headless::{include_path, output};
 use strahl::lanes::{Lane, F8};
 use strahl::pov::load_scene;
+use strahl::ray::{Ray, MISS};
 use strahl::render::image::Image;
 use strahl::render::precision::Precision;
 use strahl::render::stats::RenderStats;
 use strahl::render::{render, Quality, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::SceneDesc;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -80,7 +80,7 @@ fn f64_matches_f32_on_the_seed_scene() {
 /// ×1e-4 and ×1e5 copies of the extremes scene at one sample per pixel, and translations by 1e5
 /// and 1e6. Render space is in the camera's unit (`RenderFrame`), so each copy becomes the same
 /// f64 numbers as the original, up to f64 rounding of the conversion, and renders the same bytes
-/// (f32 likewise: tests/extremes.rs). Before that unit, f64 reached 51.98 dB on the scales where
+/// (f32 likewise: tests/suite/extremes.rs). Before that unit, f64 reached 51.98 dB on the scales where
 /// f32 got 37.8 dB: at one sample the checker at the horizon shows any rounding.
 #[test]
 fn f64_holds_extreme_scales_at_one_sample_per_pixel() {
@@ -294,7 +294,7 @@ fn load_src(name: &str, src: &str) -> SceneDesc {
 /// seeded random rays (one in eight along an axis) against every primitive of a soup of every
 /// bounded kind, near render space's origin and 1e3 from it. (Farther out f32 itself is the
 /// error, not the formula: at 1e6 its ulp of 0.06 makes 4% of hits on shapes of size 1 graze;
-/// renders are centred on the camera for that reason, see `tests/far.rs`.)
+/// renders are centred on the camera for that reason, see `tests/suite/far.rs`.)
 #[test]
 fn every_shape_agrees_with_itself_in_f32_packets_and_f64() {
     let soup = load_src("soup", &shape_soup(600));
@@ -409,7 +409,7 @@ fn cli_precision_flag() {
     assert!(!dir.join("bad.png").exists());
 }
 
-/// f64 against POV-Ray 3.7's renders in tests/reference/expected (as tests/reference.rs does
+/// f64 against POV-Ray 3.7's renders in tests/reference/expected (as tests/suite/reference.rs does
 /// for f32): the scenes without noise must still reach 35 dB, and f64 must not be further from
 /// POV-Ray than f32 by more than 1 dB on any of them.
 #[test]

@@ -1,7 +1,7 @@
 //! The fly camera's default speed on real scenes: what `strahl view` starts with, driven through
 //! the pure fly model (`strahl::fly`), so no window is needed.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 

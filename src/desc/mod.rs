@@ -6,9 +6,6 @@
 
 use glam::{DMat4, DVec3};
 
-pub use crate::geometry::julia::{ComplexFn, JuliaFunction};
-pub use crate::geometry::spline::SplineKind;
-
 mod atmosphere;
 mod camera;
 mod light;

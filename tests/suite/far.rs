@@ -4,7 +4,7 @@
 //! `sturm`), whose roots are found in f64 per lane: their twins test the root finding scaled by
 //! 1e-4 and 1e5 and moved up to 1e7.
 //!
-//! `tests/extremes.rs` moves a whole `SceneDesc` with one matrix; here the scene is *written*
+//! `tests/suite/extremes.rs` moves a whole `SceneDesc` with one matrix; here the scene is *written*
 //! far away, as a user would write it: box corners at x = 1e6, `translate -P rotate y*30
 //! translate P`, sphere centres, light positions and textures `translate P`. Each template in
 //! `tests/far/` is expanded into literal numbers for an offset P and a scale S and rendered at
@@ -18,7 +18,7 @@
 //!
 //! Aims: identical bytes where f64 holds the written scene exactly (S = 1 and integer offsets,
 //! whose sums with the templates' dyadic numbers are exact), and at least 45 dB elsewhere, up to
-//! 1e7. `cargo test --release --test far -- --nocapture` prints the table; failures leave the
+//! 1e7. `cargo test --release --test suite far:: -- --nocapture` prints the table; failures leave the
 //! actual, expected and 4× difference images in `target/far-failures/`.
 
 use std::path::{Path, PathBuf};

@@ -26,7 +26,7 @@ use crate::lanes::{Lane, V3};
 /// lets `pattern_space::pattern_from_render` drop whole periods from a far pattern origin.
 pub const LATTICE_PERIOD: f64 = 256.0;
 
-/// Turbulence of a pattern, render-ready.
+/// Turbulence of a pattern, render-ready (from a `desc::Turbulence`: `shading::pattern_space`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TurbulenceF32 {
     /// Displacement per axis (`turbulence <x,y,z>`), in pattern units.
@@ -36,12 +36,6 @@ pub struct TurbulenceF32 {
     pub omega: f32,
     /// Frequency multiplier per octave.
     pub lambda: f32,
-}
-
-impl TurbulenceF32 {
-    pub fn from_desc(t: &crate::scene::desc::Turbulence) -> TurbulenceF32 {
-        TurbulenceF32 { amount: t.amount.as_vec3(), octaves: t.octaves, omega: t.omega as f32, lambda: t.lambda as f32 }
-    }
 }
 
 /// Scales our raw gradient noise (std 0.2547 over 200k random points, see

@@ -19,13 +19,13 @@
 //!   and the floor (whole-image PSNR, the measured figure less about 1 dB) still catches a
 //!   regression.
 //!
-//! The log is a table of every scene's figures (`cargo test --release --test samples --
+//! The log is a table of every scene's figures (`cargo test --release --test suite samples:: --
 //! --nocapture`); failures write actual, expected and difference images to
 //! `target/samples-failures/`. Scenes that may write files (`#fopen` in the scene or a file beside
 //! it) render from a copy of their folder under `target/samples-work/`, since the installed
 //! folders may be read-only.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;

@@ -4,15 +4,16 @@
 //!
 //! Every render goes through the real renderer (`strahl::render::render`) at a small size and
 //! must produce no NaN or infinite sample (`RenderStats::bad_samples == 0`). Figures are printed
-//! (`cargo test --release --test extremes -- --nocapture`) so regressions show by how much.
+//! (`cargo test --release --test suite extremes:: -- --nocapture`) so regressions show by how much.
 
-mod common;
+use crate::common;
 
 use std::path::{Path, PathBuf};
 
 use common::transform_scene;
 use glam::{DMat4, DVec3};
 use strahl::camera::Camera;
+use strahl::desc::{CameraDesc, SceneDesc};
 use strahl::geometry::Shape;
 use strahl::headless::include_path;
 use strahl::headless::metrics::psnr;
@@ -21,7 +22,6 @@ use strahl::render::image::Image;
 use strahl::render::stats::RenderStats;
 use strahl::render::{primary_ray, render, RenderSettings};
 use strahl::scene::build::{AccelKind, Scene};
-use strahl::scene::desc::{CameraDesc, SceneDesc};
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -90,7 +90,7 @@ fn pixel(f: &[u8], w: u32, x: u32, y: u32) -> [u8; 3] {
 
 /// Scales and translations of the whole scene must not change the picture: render space is
 /// camera-relative and measured in the camera's own unit, both applied in f64
-/// (`scene::build::RenderFrame`), so a scaled or moved scene becomes the same f32 numbers.
+/// (`camera::frame::RenderFrame`), so a scaled or moved scene becomes the same f32 numbers.
 ///
 /// Asserted at one sample per pixel, where aliasing shows every difference: the checker floor
 /// meets the horizon in row 3, and there a change of one f32 rounding in a hit point picks
@@ -258,7 +258,7 @@ sphere { <0, 0, 5>, 1.5 pigment { color rgb 1 } finish { ambient 0.2 diffuse 0.8
     for k in -8i32..=8 {
         let x = f32::from_bits((1.5f32.to_bits() as i32 + k) as u32);
         for o in [glam::Vec3::new(x, 0.0, 0.0), glam::Vec3::new(0.0, -x, -1e4), glam::Vec3::new(x, 0.0, 4.9)] {
-            let r = strahl::geometry::ray::Ray::new(o, glam::Vec3::Z);
+            let r = strahl::ray::Ray::new(o, glam::Vec3::Z);
             if let Some(t) = s.intersect(&r, 0.0, f32::INFINITY) {
                 assert!(t.is_finite() && t > 0.0);
                 assert!(s.normal_at(r.at(t)).is_finite());
@@ -444,9 +444,8 @@ box { <-1000, -10, -1000>, <1000, 0, 1000> pigment { color rgbt <1, 1, 1, 1> } i
 fn ior_one_transmit_one_is_invisible() {
     let mut desc = load(&root().join("tests/extremes/scene.pov"));
     for o in &mut desc.objects {
-        if matches!(o.shape, strahl::scene::desc::ShapeDesc::Plane { .. }) {
-            o.texture.pigment.pattern =
-                strahl::scene::desc::PigmentPattern::Solid(strahl::scene::desc::Color::rgb(0.7, 0.7, 0.6));
+        if matches!(o.shape, strahl::desc::ShapeDesc::Plane { .. }) {
+            o.texture.pigment.pattern = strahl::desc::PigmentPattern::Solid(strahl::desc::Color::rgb(0.7, 0.7, 0.6));
         }
     }
     let ghost = load_src(

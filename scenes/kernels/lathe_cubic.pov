@@ -1,0 +1,6 @@
+// Kernel benchmark: lathe with cubic_spline (the vase of lathe_linear.pov; the first and last
+// points are control points).
+#version 3.7;
+#include "kernel_common.inc"
+KGrid(lathe { cubic_spline 8,
+  <0, -0.1>, <0, 0>, <0.45, 0>, <0.3, 0.4>, <0.45, 0.75>, <0.25, 0.95>, <0, 0.95>, <0, 1.05> })

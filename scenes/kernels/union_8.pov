@@ -1,0 +1,6 @@
+// Kernel benchmark: union of 8 children: 8 overlapping spheres, in each of the 64 cells (kernel_csg.inc).
+// (strahl flattens a union into its children in the BVH: the tests counted are the spheres'.)
+#version 3.7;
+#include "kernel_common.inc"
+#include "kernel_csg.inc"
+KGrid(union { KBalls(8) })

@@ -14,8 +14,8 @@
 //!
 //! This module is at the bottom of the house: it depends on nothing but glam.
 
-// Lane loops index by `i` on purpose: a plain `for i in 0..8` over fixed arrays is the shape
-// LLVM turns into one vector instruction. `V3::add`/`sub`/`mul` are lane-generic helpers, not the
+// Eight-lane operations are written out lane by lane (`each8!`), which LLVM's SLP vectoriser
+// turns into one vector instruction. `V3::add`/`sub`/`mul` are lane-generic helpers, not the
 // operator traits (which would need more bounds on `L` for no gain).
 #![allow(clippy::needless_range_loop, clippy::should_implement_trait)]
 
@@ -327,6 +327,26 @@ impl Lane for f64 {
     }
 }
 
+/// `[e(0), e(1), …, e(7)]` with `$i` bound to each index, written out: straight-line code. Every
+/// eight-lane operation is built from it, so that no loop is left for LLVM to rotate, unroll and
+/// vectorise in each of the thousands of places an operation is inlined (as loops, those passes
+/// took more than half of the library's optimisation time); the SLP vectoriser packs the eight
+/// lines into one instruction, as it did the unrolled loops. The elements run in index order.
+macro_rules! each8 {
+    (|$i:ident| $e:expr) => {
+        [
+            { let $i: usize = 0; $e },
+            { let $i: usize = 1; $e },
+            { let $i: usize = 2; $e },
+            { let $i: usize = 3; $e },
+            { let $i: usize = 4; $e },
+            { let $i: usize = 5; $e },
+            { let $i: usize = 6; $e },
+            { let $i: usize = 7; $e },
+        ]
+    };
+}
+
 /// Eight f32 lanes.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[repr(C, align(32))]
@@ -340,7 +360,8 @@ pub struct M8(pub [i32; 8]);
 impl M8 {
     #[inline(always)]
     pub fn any(self) -> bool {
-        self.0.iter().fold(0, |a, &b| a | b) != 0
+        let a = self.0;
+        (a[0] | a[1] | a[2] | a[3] | a[4] | a[5] | a[6] | a[7]) != 0
     }
     #[inline(always)]
     pub fn lane(self, i: usize) -> bool {
@@ -348,7 +369,7 @@ impl M8 {
     }
     #[inline(always)]
     pub fn from_fn(f: impl Fn(usize) -> bool) -> M8 {
-        M8(std::array::from_fn(|i| -(f(i) as i32)))
+        M8(each8!(|i| -(f(i) as i32)))
     }
 }
 
@@ -358,11 +379,7 @@ macro_rules! f8_binop {
             type Output = F8;
             #[inline(always)]
             fn $f(self, o: F8) -> F8 {
-                let mut r = [0.0; 8];
-                for i in 0..8 {
-                    r[i] = self.0[i] $op o.0[i];
-                }
-                F8(r)
+                F8(each8!(|i| self.0[i] $op o.0[i]))
             }
         }
     };
@@ -376,26 +393,18 @@ impl Neg for F8 {
     type Output = F8;
     #[inline(always)]
     fn neg(self) -> F8 {
-        F8(self.0.map(|v| -v))
+        F8(each8!(|i| -self.0[i]))
     }
 }
 
 impl F8 {
     #[inline(always)]
     fn zip(self, o: F8, f: impl Fn(f32, f32) -> f32) -> F8 {
-        let mut r = [0.0; 8];
-        for i in 0..8 {
-            r[i] = f(self.0[i], o.0[i]);
-        }
-        F8(r)
+        F8(each8!(|i| f(self.0[i], o.0[i])))
     }
     #[inline(always)]
     fn cmp(self, o: F8, f: impl Fn(f32, f32) -> bool) -> M8 {
-        let mut r = [0; 8];
-        for i in 0..8 {
-            r[i] = -(f(self.0[i], o.0[i]) as i32);
-        }
-        M8(r)
+        M8(each8!(|i| -(f(self.0[i], o.0[i]) as i32)))
     }
 }
 
@@ -407,7 +416,7 @@ impl Lane for F8 {
     }
     #[inline(always)]
     fn sqrt(self) -> F8 {
-        F8(self.0.map(f32::sqrt))
+        F8(each8!(|i| self.0[i].sqrt()))
     }
     #[inline(always)]
     fn min(self, o: F8) -> F8 {
@@ -427,47 +436,31 @@ impl Lane for F8 {
     }
     #[inline(always)]
     fn and(a: M8, b: M8) -> M8 {
-        let mut r = [0; 8];
-        for i in 0..8 {
-            r[i] = a.0[i] & b.0[i];
-        }
-        M8(r)
+        M8(each8!(|i| a.0[i] & b.0[i]))
     }
     #[inline(always)]
     fn or(a: M8, b: M8) -> M8 {
-        let mut r = [0; 8];
-        for i in 0..8 {
-            r[i] = a.0[i] | b.0[i];
-        }
-        M8(r)
+        M8(each8!(|i| a.0[i] | b.0[i]))
     }
     #[inline(always)]
     fn not(a: M8) -> M8 {
-        M8(a.0.map(|v| !v))
+        M8(each8!(|i| !a.0[i]))
     }
     #[inline(always)]
     fn xor(a: M8, b: M8) -> M8 {
-        let mut r = [0; 8];
-        for i in 0..8 {
-            r[i] = a.0[i] ^ b.0[i];
-        }
-        M8(r)
+        M8(each8!(|i| a.0[i] ^ b.0[i]))
     }
     #[inline(always)]
     fn select(m: M8, a: F8, b: F8) -> F8 {
-        let mut r = [0.0; 8];
-        for i in 0..8 {
-            r[i] = f32::from_bits((a.0[i].to_bits() & m.0[i] as u32) | (b.0[i].to_bits() & !m.0[i] as u32));
-        }
-        F8(r)
+        F8(each8!(|i| f32::from_bits((a.0[i].to_bits() & m.0[i] as u32) | (b.0[i].to_bits() & !m.0[i] as u32))))
     }
     #[inline(always)]
     fn abs(self) -> F8 {
-        F8(self.0.map(f32::abs))
+        F8(each8!(|i| self.0[i].abs()))
     }
     #[inline(always)]
     fn sign_or_one(self) -> F8 {
-        F8(self.0.map(<f32 as Lane>::sign_or_one))
+        F8(each8!(|i| <f32 as Lane>::sign_or_one(self.0[i])))
     }
     const WIDTH: usize = 8;
     #[inline(always)]
@@ -475,8 +468,8 @@ impl Lane for F8 {
         self.0[i]
     }
     #[inline(always)]
-    fn from_fn(f: impl FnMut(usize) -> f32) -> F8 {
-        F8(std::array::from_fn(f))
+    fn from_fn(mut f: impl FnMut(usize) -> f32) -> F8 {
+        F8(each8!(|i| f(i)))
     }
     #[inline(always)]
     fn get_f64(self, i: usize) -> f64 {
@@ -488,7 +481,7 @@ impl Lane for F8 {
     }
     #[inline(always)]
     fn from_fn_f64(mut f: impl FnMut(usize) -> f64) -> F8 {
-        F8(std::array::from_fn(|i| f(i) as f32))
+        F8(each8!(|i| f(i) as f32))
     }
     #[inline(always)]
     fn mask_lane(m: M8, i: usize) -> bool {
@@ -500,23 +493,19 @@ impl Lane for F8 {
     }
     #[inline(always)]
     fn mask_from_fn(mut f: impl FnMut(usize) -> bool) -> M8 {
-        M8(std::array::from_fn(|i| -(f(i) as i32)))
+        M8(each8!(|i| -(f(i) as i32)))
     }
     #[inline(always)]
     fn floor(self) -> F8 {
-        F8(self.0.map(f32::floor))
+        F8(each8!(|i| self.0[i].floor()))
     }
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> F8 {
-        F8(self.0.map(f))
+        F8(each8!(|i| f(self.0[i])))
     }
     #[inline(always)]
     fn times_unit(self, bits: &[u32; 8], k: u32) -> F8 {
-        let mut r = [0.0; 8];
-        for i in 0..8 {
-            r[i] = f32::from_bits(times_unit_bits(self.0[i].to_bits(), bits[i], k));
-        }
-        F8(r)
+        F8(each8!(|i| f32::from_bits(times_unit_bits(self.0[i].to_bits(), bits[i], k))))
     }
 }
 

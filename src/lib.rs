@@ -1,10 +1,11 @@
 //! strahl: a real-time CPU ray tracer for scenes written in POV-Ray's scene language.
 //!
-//! Data flows one way: `pov` parses text into `scene::desc`; `scene::build` turns that into
+//! Data flows one way: `pov` parses text into `desc`; `scene::build` turns that into
 //! render-ready data; `render` traces it with `geometry`, `accel` and `shading`; `headless` and
 //! `app` drive `render`. Underneath everything, `lanes` is the arithmetic (one f32, eight f32s
 //! or one f64) that shapes, bounds and shading formulas are written in once; `function` compiles
-//! the scene language's user-defined functions, which `pov` builds and `geometry` runs.
+//! the scene language's user-defined functions, which `pov` builds and `geometry` runs. The
+//! layers and the rule that keeps them from looping: docs/design/architecture.md.
 
 pub mod accel;
 pub mod app;

@@ -2,6 +2,8 @@
 //! uniform grid, and brute force as the ground truth. Unbounded planes are never in here.
 //!
 //! Every accelerator takes a closure that tests one primitive, so none of them knows shapes.
+//!
+//! Layer 3 of docs/design/architecture.md: uses `ray` and `lanes`; `geometry` (a mesh's own BVH), `scene` and `render` use it.
 
 pub mod aabb;
 pub mod bvh;

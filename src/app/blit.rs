@@ -2,7 +2,7 @@
 //!
 //! Bilinear: while the camera moves the view renders at a reduced scale, and bilinear
 //! reconstruction is closer to the full-resolution image than blocky nearest-neighbour pixels
-//! (measured along `seed.fly.path` at 1280×720: see the README). At scale 1 it is an exact copy,
+//! (measured along `seed.fly.path` at 1280×720: docs/perf/view-fly.md). At scale 1 it is an exact copy,
 //! so a converged view presents exactly the rendered pixels.
 
 /// A source index pair and the weight (0..=256) of the second, per destination column or row.

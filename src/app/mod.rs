@@ -3,6 +3,8 @@
 //! Window and gamepad events become an `InputState`; `fly::step` turns that into a camera; the
 //! render thread (`render_thread`) traces it with the headless renderer at an adaptive scale and
 //! sends frames back; `blit` and `hud` put them on screen. Nothing here traces a ray.
+//!
+//! Layer 9 of docs/design/architecture.md, the top: uses `headless`, `pov`, `fly`, `render` and below; nothing uses it.
 
 pub mod blit;
 pub mod font;

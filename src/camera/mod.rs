@@ -7,6 +7,8 @@
 //!
 //! Camera paths (keyframed flights for capture and bench) live in `path`; their file format in
 //! `path_file`; orbits around a scene's `look_at` are generated in `orbit`.
+//!
+//! Layer 3 of docs/design/architecture.md: uses `desc`; `scene`, `render`, `fly` and the front ends use it.
 
 pub mod frame;
 pub mod lens;

@@ -4,7 +4,9 @@
 //! `functions.inc` names (`internal`), and the splines a body may read (`spline`).
 //!
 //! The parser (`pov`) produces `Node`s and knows nothing of `Program`; shapes (`geometry`) only
-//! run `Program`s. This module depends on neither.
+//! run `Program`s. This module depends on neither, nor on `shading`.
+//!
+//! Layer 1 of docs/design/architecture.md: uses only `noise`; a pigment function reaches `shading` through the `Shade` trait.
 
 mod compile;
 pub mod internal;

@@ -5,6 +5,8 @@
 //! in f64 (`--precision f64` re-solving a hit), from the same formula; `normal` gives the
 //! geometric normal, computed afterwards, only for the winning hit. The lane arithmetic is
 //! `crate::lanes`; what every test shares (rays, `MISS`, root picking, offsets) is `ray`.
+//!
+//! Layer 4 of docs/design/architecture.md: uses `accel`, `desc`, `function`, `ray`; `shading`, `scene` and `render` use it.
 
 /// `Shape` for a shape solved lane by lane in f64 in its object space (`self.frame`), written
 /// once for julia_fractal, isosurface, sor, blob and parametric: `hit` is `self.solve(o, d,

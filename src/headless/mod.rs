@@ -1,5 +1,7 @@
 //! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, `survey`, `path orbit`, and the shared plumbing (loading,
 //! errors, thread pools, JSON, image metrics). Nothing here touches a window.
+//!
+//! Layer 9 of docs/design/architecture.md, the top: uses `pov`, `render` and below; only `app` and `main` use it.
 
 pub mod bench;
 pub mod capture;

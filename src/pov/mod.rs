@@ -1,7 +1,10 @@
 //! POV-Ray's scene language: lexer (tokens with spans) → parser (syntax tree) → lower (SceneDesc).
 //!
-//! This module knows only `scene::desc`: it never builds render data or a BVH. `load_scene` reads
+//! It produces a `desc::SceneDesc` and never builds render data or a BVH; the parse-time
+//! questions (`trace`, `inside`, `min_extent`) go to `render::probe`. `load_scene` reads
 //! files and follows `#include`; every problem comes back as one `LocatedError`.
+//!
+//! Layer 8 of docs/design/architecture.md: uses `render` (its probes) and below; `headless` and `app` use it.
 
 pub mod ast;
 pub mod lexer;

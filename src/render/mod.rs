@@ -3,6 +3,8 @@
 //! `render` is the one entry point for every front end (CLI, capture, bench, window). An image
 //! is a pure function of (scene, camera, settings): each pixel is computed independently and
 //! statistics are integer sums, so the result never depends on the thread count or tile order.
+//!
+//! Layer 7 of docs/design/architecture.md: uses `scene` and below; `pov` (probes) and the front ends use it.
 
 pub mod adaptive;
 pub mod csg;

@@ -1,5 +1,8 @@
-//! Scene data: `desc` (as written, f64) and `build` (render-ready, f32, relative to a render
-//! origin), with the fixtures, generators and printer that work on descriptions.
+//! The render-ready scene: `build` turns a `desc::SceneDesc` (as written, f64) into a `Scene`
+//! (f32, relative to a render origin), with the fixtures, generators and printer that work on
+//! descriptions.
+//!
+//! Layer 6 of docs/design/architecture.md: uses `accel`, `camera`, `desc`, `function`, `geometry`, `shading`; `render` and above use it.
 
 pub mod atmosphere;
 pub mod build;

@@ -2,8 +2,10 @@
 //! colour map) and normal perturbation (bumps).
 //!
 //! Everything here is f32 and evaluated per hit in render space (world minus the render origin);
-//! conversion from `scene::desc` happens once, in f64, in the `from_desc` constructors. Lighting
+//! conversion from `desc` happens once, in f64, in the `from_desc` constructors. Lighting
 //! and finishes are left to the renderer.
+//!
+//! Layer 5 of docs/design/architecture.md: uses `geometry`, `desc`, `function`, `noise`; `scene` and `render` use it.
 
 pub mod image_map;
 pub mod light;

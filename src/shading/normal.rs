@@ -199,6 +199,12 @@ fn normal_map<L: Lane>(
     n: V3<L>,
     q: PatternQuality,
 ) -> V3<L> {
+    // The entries' normals through one call each, not inlined four times over: each holds every
+    // pattern, and the copies made this one of the largest functions LLVM had to optimise.
+    #[inline(never)]
+    fn perturb_normal_lanes<L: Lane>(nrm: &NormalF32, p_render: V3<L>, n: V3<L>, q: PatternQuality) -> V3<L> {
+        super::normal::perturb_normal_lanes(nrm, p_render, n, q)
+    }
     let v = pat.value_lanes(p, q.max_octaves);
     let (Some(first), Some(last)) = (entries.first(), entries.last()) else { return n };
     let mut out = perturb_normal_lanes(&last.1, p_render, n, q);

@@ -1,7 +1,7 @@
 // interior_texture: the texture a ray sees where it meets a surface from inside (against its
 // outward normal): an open cylinder, a disc seen from its back, and a union whose
 // interior_texture goes to the children that have none, moved by a transform after it. No
-// noise: compared whole. (Not here, see the README: triangles, whose inner side POV-Ray takes
+// noise: compared whole. (Not here, see docs/language.md, interior_texture: triangles, whose inner side POV-Ray takes
 // the other way round; a sphere cut open by clipped_by, whose shell shadows its own inside
 // differently; a mirrored interior behind a clear outside.)
 #version 3.7;

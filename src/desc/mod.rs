@@ -3,6 +3,8 @@
 //! Nothing here knows about tokens, BVHs or rays. Every value is in POV-Ray's units and
 //! left-handed world space exactly as the scene file states it; transforms are kept as matrices so
 //! that `build` can fold them into render-ready f32 data relative to the camera.
+//!
+//! Layer 2 of docs/design/architecture.md: uses only `function`, `image_file` and `density_file`; every layer above reads it.
 
 use glam::{DMat4, DVec3};
 
@@ -118,6 +120,10 @@ pub struct ObjectDesc {
     /// The innermost `light_group` the object belongs to (an index into
     /// `SceneDesc::light_groups`), or `None`: lit by the scene's global lights only.
     pub light_group: Option<u32>,
+    /// `bounded_by { .. }`: the box of the bounding objects in this object's own space (so the
+    /// transforms written after it move it along), `[min, max]`. A hint for the renderer, which
+    /// skips the shape for rays that miss it; only unbounded shapes (polynomials) need it.
+    pub bounded_by: Option<[DVec3; 2]>,
     pub source: SourceRef,
 }
 /// A `light_group` (POV-Ray 3.4.4.2): its lights (indices into `SceneDesc::lights`) light only

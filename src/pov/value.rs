@@ -168,6 +168,7 @@ impl Part {
             inverse: false,
             hollow: false,
             light_group: None,
+            bounded_by: None,
             source,
         };
         Part { desc, textured: false, has_interior: false, children }

@@ -8,6 +8,9 @@
 //! `union` any. Rejected hits cost one more root search each, so a ray pays for the crossings
 //! it passes, not for the node's size.
 
+use glam::Vec3;
+
+use crate::accel::aabb::node_slabs;
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 use crate::scene::build::Scene;
@@ -24,6 +27,8 @@ impl Scene {
         let n = &self.csg[node as usize];
         let kids = &self.csg_children[n.children()];
         let miss = L::splat(MISS);
+        let (t_min, t_max) =
+            if n.rule == CsgRule::All { within_box(n.min, n.max, ray, t_min, t_max) } else { (t_min, t_max) };
         let mut best = t_max;
         let mut leaf = L::splat(0.0);
         let mut found = L::mask_from_fn(|_| false);
@@ -98,4 +103,16 @@ impl Scene {
             CsgTarget::Node(k) => self.hit_csg(k, ray, t_min, t_max),
         }
     }
+}
+
+/// `(t_min, t_max)` narrowed to where the ray is inside the box `min`..`max`, widened by a part
+/// in 10⁵ of the distance so that no crossing on the box's faces is lost to rounding. A point
+/// that every non-subtracted child of an `intersection` accepts lies in all their boxes, so the
+/// node's own box bounds the search, however often an unbounded child (a cubic, a plane)
+/// crosses the ray outside it.
+#[inline]
+fn within_box<L: Lane>(min: Vec3, max: Vec3, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+    let (near, far) = node_slabs(V3::splat(min), V3::splat(max), ray.o, ray.inv);
+    let pad = |t: L| t.abs() * L::splat(1e-5) + L::splat(1e-6);
+    (t_min.max(near - pad(near)), t_max.min(far + pad(far)))
 }

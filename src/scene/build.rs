@@ -291,6 +291,7 @@ impl Scene {
                 }
                 placed => {
                     let (kind, index) = self.store(placed);
+                    self.bound_by(kind, index, object);
                     let casts_shadow = !object.no_shadow;
                     self.prims.push(PrimRef { kind, casts_shadow, index, material, flip: object.inverse });
                 }
@@ -353,6 +354,7 @@ impl Scene {
                 }
                 placed => self.store(placed),
             };
+            self.bound_by(kind, index, object);
             let prim = PrimRef { kind, casts_shadow: !object.no_shadow, index, material, flip };
             let bounds = if kind == ShapeKind::Plane {
                 ChildBounds::of_plane(&self.half_spaces[index as usize], object.inverse)

@@ -35,6 +35,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transfo
         inverse: false,
         hollow: false,
         light_group: None,
+        bounded_by: None,
         source: SourceRef { file: "fixtures::seed_scene".into(), line: 0, col: 0 },
     }
 }

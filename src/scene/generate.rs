@@ -130,6 +130,7 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
         inverse: false,
         hollow: false,
         light_group: None,
+        bounded_by: None,
         source: SourceRef { file: "scene::generate".into(), line: index as u32, col: 0 },
     }
 }

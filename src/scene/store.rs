@@ -7,7 +7,7 @@ use glam::{DAffine3, DVec3, Vec3};
 
 use super::build::{PrimRef, Scene, ShapeKind};
 use crate::accel::aabb::Aabb;
-use crate::desc::MeshDesc;
+use crate::desc::{MeshDesc, ObjectDesc};
 use crate::geometry::affine_f32;
 use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
@@ -154,6 +154,30 @@ impl Scene {
                 unreachable!("planes and text are stored by the caller")
             }
         }
+    }
+
+    /// Narrows a polynomial surface's bounds (infinite in general) to its object's
+    /// `bounded_by` box, in render space: the accelerator then skips it for rays that miss
+    /// the box, as POV-Ray does. Other kinds' own bounds are tight already.
+    pub(super) fn bound_by(&mut self, kind: ShapeKind, index: u32, object: &ObjectDesc) {
+        let (Some([lo, hi]), ShapeKind::Poly) = (object.bounded_by, kind) else { return };
+        let world = object.transform.matrix;
+        let mut b = Aabb::EMPTY;
+        for i in 0..8 {
+            let corner = DVec3::new(
+                if i & 1 == 0 { lo.x } else { hi.x },
+                if i & 2 == 0 { lo.y } else { hi.y },
+                if i & 4 == 0 { lo.z } else { hi.z },
+            );
+            let p = self.frame.point(world.transform_point3(corner)).as_vec3();
+            b.grow(&Aabb::new(p, p));
+        }
+        let poly = &mut self.polys[index as usize];
+        // Rounded outwards by a part in a million of the box: the f32 corners must not cut
+        // the surface where the bound touches it.
+        let pad = (b.max - b.min).abs() * 1e-6 + Vec3::splat(f32::MIN_POSITIVE);
+        poly.min = poly.min.max(b.min - pad);
+        poly.max = poly.max.min(b.max + pad);
     }
 
     /// The bounded primitives' boxes (`prims[..unbounded.start]`), for the accelerator.

@@ -352,6 +352,7 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
                 inverse: false,
                 hollow: false,
                 light_group: None,
+                bounded_by: None,
                 source,
             }
         })
@@ -884,6 +885,7 @@ fn csg_leaf(r: &mut Rng) -> ObjectDesc {
         inverse: r.pick(6) == 0,
         hollow: false,
         light_group: None,
+        bounded_by: None,
         source: SourceRef::default(),
     }
 }

@@ -35,6 +35,7 @@ impl Lowerer<'_> {
                     inverse: false,
                     hollow: false,
                     light_group: None,
+                    bounded_by: None,
                     source: self.files.source_ref(o.span),
                 })],
                 csg: false,
@@ -136,9 +137,9 @@ impl Lowerer<'_> {
                     children.extend(clips);
                     *part = Part::node(CsgOp::Clip, children, part.desc.source.clone());
                 }
-                // A hint: the objects are checked, and change no picture.
+                // A hint: the shapes below skip rays that miss the bounding objects' box.
                 Modifier::BoundedBy(Clip::Objects(children, span)) => {
-                    self.children(children, "bounded_by", *span)?;
+                    self.bounded_by(std::slice::from_mut(part), children, *span)?;
                 }
                 Modifier::BoundedBy(Clip::Other(_)) => {}
                 _ if part.is_node() => {
@@ -335,6 +336,33 @@ impl Lowerer<'_> {
         Ok(())
     }
 
+    /// `bounded_by { children }` on `parts`: the world box of the bounding objects (asked of
+    /// `render::probe`, the renderer's own bounds), kept by every shape below in its own object
+    /// space, so that transforms written later move it with the shape. Unbounded bounding
+    /// objects bound nothing.
+    fn bounded_by(&mut self, parts: &mut [Part], children: &[Stmt], span: Span) -> PResult<()> {
+        let bound = self.children(children, "bounded_by", span)?;
+        let objects: Vec<ObjectDesc> = bound.into_iter().map(|p| p.into_desc(&TextureDesc::default())).collect();
+        let Some((lo, hi)) = crate::render::probe::bounds(&objects) else { return Ok(()) };
+        for part in parts {
+            part.for_each_leaf(&mut |leaf: &mut Part| {
+                let to_object = leaf.desc.transform.inverse;
+                let (mut a, mut b) = (glam::DVec3::INFINITY, glam::DVec3::NEG_INFINITY);
+                for i in 0..8 {
+                    let corner = glam::DVec3::new(
+                        if i & 1 == 0 { lo.x } else { hi.x },
+                        if i & 2 == 0 { lo.y } else { hi.y },
+                        if i & 4 == 0 { lo.z } else { hi.z },
+                    );
+                    let c = to_object.transform_point3(corner);
+                    (a, b) = (a.min(c), b.max(c));
+                }
+                leaf.desc.bounded_by = Some([a, b]);
+            });
+        }
+        Ok(())
+    }
+
     /// One modifier of a CSG object, for its `parts` (and the shapes below them).
     fn csg_modifier(&mut self, parts: &mut [Part], m: &Modifier, pending: &mut Inherited, word: &str) -> PResult<()> {
         let each = |parts: &mut [Part], f: &mut dyn FnMut(&mut Part)| {
@@ -413,9 +441,7 @@ impl Lowerer<'_> {
                 let hollow = self.hollow(on.as_ref())?;
                 each(parts, &mut |leaf| leaf.desc.hollow = hollow);
             }
-            Modifier::BoundedBy(Clip::Objects(children, span)) => {
-                self.children(children, "bounded_by", *span)?;
-            }
+            Modifier::BoundedBy(Clip::Objects(children, span)) => self.bounded_by(parts, children, *span)?,
             Modifier::BoundedBy(Clip::Other(_)) => {}
             Modifier::InsideVector(e) => {
                 return Err(Diag::new(e.span, format!("`inside_vector` is for mesh and mesh2, not {word}")))

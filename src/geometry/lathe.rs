@@ -10,7 +10,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 use super::cuboid::{frame_for, BoxFrame};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::spline::{closest_t, even_odd, Piece};
-use super::{affine_f32, transformed_bounds, Shape};
+use super::{affine_f32, misses_band, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::RayLanes;
 
@@ -69,6 +69,20 @@ impl Lathe {
             } else {
                 let (a, b) = ((p.lo.y - o.y) / d.y, (p.hi.y - o.y) / d.y);
                 if a.max(b) <= s_min || a.min(b) >= best {
+                    continue;
+                }
+                // The piece's radii lie between its control points' (convex hull).
+                let r_max = p.lo.x.abs().max(p.hi.x.abs());
+                let r_min = if p.lo.x > 0.0 {
+                    p.lo.x
+                } else if p.hi.x < 0.0 {
+                    -p.hi.x
+                } else {
+                    0.0
+                };
+                let (s0, s1) = (a.min(b).max(s_min), a.max(b).min(best));
+                if misses_band(dh2, o.x * d.x + o.z * d.z, o.x * o.x + o.z * o.z, s0, s1, r_min * r_min, r_max * r_max)
+                {
                     continue;
                 }
             }

@@ -13,7 +13,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, transformed_bounds};
+use super::{affine_f32, misses_band, transformed_bounds};
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
@@ -21,6 +21,10 @@ struct Segment {
     lo: f64,
     hi: f64,
     k: [f64; 4],
+    /// The smallest and largest `r²` over `lo..=hi` (`r2_range`): a ray outside that band
+    /// misses the segment (`misses_band`).
+    r2_min: f64,
+    r2_max: f64,
 }
 
 impl Segment {
@@ -86,7 +90,9 @@ fn segments(p: &[DVec2]) -> Vec<Segment> {
             let row = |y: f64| [y * y * y, y * y, y, 1.0];
             let slope = |y: f64| [3.0 * y * y, 2.0 * y, 1.0, 0.0];
             let m = [row(h(j)), row(h(j + 1)), slope(h(j)), slope(h(j + 1))];
-            Segment { lo: h(j), hi: h(j + 1), k: solve4(m, b) }
+            let mut seg = Segment { lo: h(j), hi: h(j + 1), k: solve4(m, b), r2_min: 0.0, r2_max: 0.0 };
+            (seg.r2_min, seg.r2_max) = r2_range(&seg);
+            seg
         })
         .collect()
 }
@@ -115,15 +121,15 @@ fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
     x
 }
 
-/// The largest `r²` a segment reaches: at an end or where its slope is zero.
-fn max_r2(s: &Segment) -> f64 {
-    let mut m = s.f(s.lo).max(s.f(s.hi));
+/// The smallest and largest `r²` a segment reaches: at an end or where its slope is zero.
+fn r2_range(s: &Segment) -> (f64, f64) {
+    let (mut lo, mut hi) = (s.f(s.lo).min(s.f(s.hi)), s.f(s.lo).max(s.f(s.hi)));
     let mut roots = [0.0; MAX_DEGREE];
     let n = roots_in(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
     for &y in &roots[..n] {
-        m = m.max(s.f(y));
+        (lo, hi) = (lo.min(s.f(y)), hi.max(s.f(y)));
     }
-    m
+    (lo, hi)
 }
 
 impl Sor {
@@ -131,7 +137,7 @@ impl Sor {
     /// `render_from_object`.
     pub fn new(render_from_object: DAffine3, points: &[DVec2], open: bool) -> Sor {
         let raw = segments(points);
-        let r = raw.iter().fold(0.0f64, |m, s| m.max(max_r2(s))).max(0.0).sqrt();
+        let r = raw.iter().fold(0.0f64, |m, s| m.max(s.r2_max)).max(0.0).sqrt();
         let (ylo, yhi) = (points[1].y, points[points.len() - 2].y);
         let cy = 0.5 * (ylo + yhi);
         let s = r.max(0.5 * (yhi - ylo));
@@ -175,6 +181,9 @@ impl Sor {
                 continue;
             };
             if lo >= hi || lo.is_nan() || hi.is_nan() {
+                continue;
+            }
+            if misses_band(dh2, odh, oh2, lo, hi, s.r2_min, s.r2_max) {
                 continue;
             }
             // f(o.y + t·d.y) − (|o_h|² + 2t·o_h·d_h + t²·|d_h|²), highest power first.

@@ -47,7 +47,14 @@ impl Torus {
 /// span wholly inside the hole's cylinder), then the quartic in closed form ([`ferrari`]),
 /// each root polished by Newton steps; where the closed form is ill-conditioned (a double root:
 /// a grazing ray) it answers `None` and the critical-point isolation `roots_in` decides.
-fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
+fn solve(
+    o: [f64; 3],
+    d: [f64; 3],
+    minor: f64,
+    t_min: f64,
+    t_max: f64,
+    round: impl Fn(f64) -> f64 + Copy,
+) -> Option<f64> {
     let (c, lo, hi, t_c, len) = setup(o, d, minor, t_min, t_max)?;
     let mut roots = [0.0; 4];
     let mut tol = 0.0;
@@ -117,7 +124,8 @@ fn setup(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option
     // The slab |y| ≤ minor, padded alike (the tube's top and bottom circles lie on it).
     let slab = minor * (1.0 + 1e-9) + 1e-12;
     if u[1] != 0.0 {
-        let (a, b) = ((-slab - p[1]) / u[1], (slab - p[1]) / u[1]);
+        let inv = 1.0 / u[1];
+        let (a, b) = ((-slab - p[1]) * inv, (slab - p[1]) * inv);
         lo = lo.max(a.min(b));
         hi = hi.min(a.max(b));
     } else if !(p[1].abs() <= slab) {
@@ -156,7 +164,7 @@ fn isolate(
     len: f64,
     t_min: f64,
     t_max: f64,
-    round: fn(f64) -> f64,
+    round: impl Fn(f64) -> f64,
 ) -> Option<f64> {
     // The first root whose `t` lies in the interval: a root at `t_min` itself (CSG looking
     // past a rejected crossing, with `t_min` that crossing rounded) may land on either side.

@@ -1,6 +1,9 @@
 //! POV-Ray's `torus { major, minor }`: the ring of radius `major` in the xz-plane around the
-//! y axis, swept by a circle of radius `minor`. A quartic surface, solved per lane in f64 by
-//! `roots` (this shape has no 8-wide arithmetic: packets run its f64 solve lane by lane).
+//! y axis, swept by a circle of radius `minor`. A quartic surface, solved per lane in f64 (this
+//! shape has no 8-wide arithmetic: packets run its f64 solve lane by lane, so packets and single
+//! rays agree bit for bit): cheap rejections, then Ferrari's closed form with Newton polish, and
+//! `roots`' critical-point isolation only where the closed form is ill-conditioned (issue 38:
+//! the isolation alone made this 2.4x slower on scenes/kernels/torus.pov).
 //!
 //! In object space the major radius is 1 (the frame's scale carries it), so the quartic's
 //! coefficients have the size of the torus. The ray is first moved to its point nearest the
@@ -39,7 +42,74 @@ impl Torus {
 /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the torus.
 /// `round` is the lane's rounding (`Lane::round_f64`): roots are compared with the interval as
 /// the lane will hold them.
-fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
+///
+/// Cheap rejections first (the sphere through the outer equator, the slab `|y| ≤ minor`, a
+/// span wholly inside the hole's cylinder), then the quartic in closed form ([`ferrari`]),
+/// each root polished by Newton steps; where the closed form is ill-conditioned (a double root:
+/// a grazing ray) it answers `None` and the critical-point isolation `roots_in` decides.
+fn solve(
+    o: [f64; 3],
+    d: [f64; 3],
+    minor: f64,
+    t_min: f64,
+    t_max: f64,
+    round: impl Fn(f64) -> f64 + Copy,
+) -> Option<f64> {
+    let (c, lo, hi, t_c, len) = setup(o, d, minor, t_min, t_max)?;
+    let mut roots = [0.0; 4];
+    let mut tol = 0.0;
+    let Some(n) = ferrari(&c, &mut roots, &mut tol) else {
+        return isolate(&c, lo, hi, t_c, len, t_min, t_max, round);
+    };
+    // Ascending (at most four): insertion sort; then each polished in turn up to the first in
+    // the interval, so that roots past the hit cost nothing.
+    for i in 1..n {
+        let mut j = i;
+        while j > 0 && roots[j - 1] > roots[j] {
+            roots.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+    for &x in &roots[..n] {
+        if x > hi + 1e-6 * (hi.abs() + 1.0) {
+            // Far past the span (a polish moves a root by much less): so is every later one.
+            return None;
+        }
+        let Some(s) = polish(&c, x, tol) else {
+            return isolate(&c, lo, hi, t_c, len, t_min, t_max, round);
+        };
+        if s >= lo && s <= hi {
+            let t = round(t_c + s / len);
+            if t > t_min && t < t_max {
+                return Some(t);
+            }
+        }
+    }
+    None
+}
+
+/// `x` after two Newton steps on the quartic `c`, or `None` where the last step is above `tol`:
+/// Newton converges slowly only near a double root (a grazing ray the closed form's thresholds
+/// let through), and there the isolation decides.
+#[inline(always)]
+fn polish(c: &[f64; 5], mut x: f64, tol: f64) -> Option<f64> {
+    let mut step = 0.0;
+    for _ in 0..2 {
+        let f = (((x + c[1]) * x + c[2]) * x + c[3]) * x + c[4];
+        let df = ((4.0 * x + 3.0 * c[1]) * x + 2.0 * c[2]) * x + c[3];
+        step = f / df;
+        if step.is_finite() {
+            x -= step;
+        }
+    }
+    (step.abs() <= tol).then_some(x)
+}
+
+/// The quartic in `s` (distance along the unit direction from the ray's point nearest the
+/// centre; `t = t_c + s / len`), monic, highest power first, and the span `[lo, hi]` of `s` that
+/// can hold a hit, or `None` where the ray certainly misses.
+#[inline(always)]
+fn setup(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option<([f64; 5], f64, f64, f64, f64)> {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
     let outer = 1.0 + minor;
@@ -47,25 +117,190 @@ fn solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64, round: fn
     if reach2.is_nan() || reach2 < 0.0 {
         return None;
     }
-    // s: distance along u from p; t = t_c + s / len.
     // Padded: the outer equator lies on this sphere, and a root there must not be cut off.
     let reach = reach2.sqrt() * (1.0 + 1e-9) + 1e-12;
-    let lo = (-reach).max((t_min - t_c) * len);
-    let hi = reach.min((t_max - t_c) * len);
+    let mut lo = (-reach).max((t_min - t_c) * len);
+    let mut hi = reach.min((t_max - t_c) * len);
+    // The slab |y| ≤ minor, padded alike (the tube's top and bottom circles lie on it).
+    let slab = minor * (1.0 + 1e-9) + 1e-12;
+    if u[1] != 0.0 {
+        let inv = 1.0 / u[1];
+        let (a, b) = ((-slab - p[1]) * inv, (slab - p[1]) * inv);
+        lo = lo.max(a.min(b));
+        hi = hi.min(a.max(b));
+    } else if !(p[1].abs() <= slab) {
+        return None;
+    }
     if lo.is_nan() || hi.is_nan() || lo >= hi {
         return None;
     }
-    let e = dot(p, p) + 1.0 - minor * minor;
-    let f = dot(p, u);
     let a2 = u[0] * u[0] + u[2] * u[2];
     let b2 = p[0] * u[0] + p[2] * u[2];
     let c2 = p[0] * p[0] + p[2] * p[2];
+    // The squared distance from the axis is convex in s: a span whose ends both lie inside the
+    // hole's cylinder (radius 1 − minor, padded) lies inside it throughout, and misses.
+    let hole = 1.0 - minor;
+    if hole > 0.0 {
+        let hole2 = hole * hole * (1.0 - 1e-9);
+        let rho2 = |s: f64| (a2 * s + 2.0 * b2) * s + c2;
+        if rho2(lo) < hole2 && rho2(hi) < hole2 {
+            return None;
+        }
+    }
+    let e = dot(p, p) + 1.0 - minor * minor;
+    let f = dot(p, u);
     let c = [1.0, 4.0 * f, 4.0 * f * f + 2.0 * e - 4.0 * a2, 4.0 * f * e - 8.0 * b2, e * e - 4.0 * c2];
+    Some((c, lo, hi, t_c, len))
+}
+
+/// The first root of `c` in `[lo, hi]` whose `t` lies in `(t_min, t_max)`, by the critical-point
+/// isolation: slow, and robust at double roots.
+#[allow(clippy::too_many_arguments)]
+fn isolate(
+    c: &[f64; 5],
+    lo: f64,
+    hi: f64,
+    t_c: f64,
+    len: f64,
+    t_min: f64,
+    t_max: f64,
+    round: impl Fn(f64) -> f64,
+) -> Option<f64> {
     // The first root whose `t` lies in the interval: a root at `t_min` itself (CSG looking
     // past a rejected crossing, with `t_min` that crossing rounded) may land on either side.
     let mut roots = [0.0; MAX_DEGREE];
-    let n = roots_in(&c, lo, hi, &mut roots);
+    let n = roots_in(c, lo, hi, &mut roots);
     roots[..n].iter().map(|s| round(t_c + s / len)).find(|&t| t > t_min && t < t_max)
+}
+
+/// Relative size below which a discriminant or the resolvent's root counts as zero: the closed
+/// form gives up there (a double or nearly double root) and [`isolate`] decides.
+const ILL: f64 = 1e-9;
+
+/// The real roots of the monic quartic `c` by Ferrari's method, unpolished, in no particular
+/// order, and in `tol` the size below which [`polish`]'s last step must fall; `None` where the
+/// closed form is ill-conditioned (near a double root, or with the resolvent's root near zero),
+/// which the caller must solve otherwise.
+fn ferrari(c: &[f64; 5], out: &mut [f64; 4], tol: &mut f64) -> Option<usize> {
+    // s = y − c₁/4: y⁴ + p·y² + q·y + r = 0.
+    let shift = 0.25 * c[1];
+    let s2 = shift * shift;
+    let p = c[2] - 6.0 * s2;
+    let q = c[3] - 2.0 * c[2] * shift + 8.0 * s2 * shift;
+    let r = c[4] - c[3] * shift + c[2] * s2 - 3.0 * s2 * s2;
+    // The size of y²: every quantity below of that dimension is measured against it.
+    let size = p.abs() + r.abs().sqrt() + rough_cbrt(q * q);
+    if !size.is_finite() || size == 0.0 {
+        return None;
+    }
+    let mut ys = [0.0; 4];
+    let mut n = 0;
+    if q.abs() <= 1e-12 * size * size.sqrt() {
+        // Biquadratic: y² = z with z² + p·z + r = 0.
+        let disc = p * p - 4.0 * r;
+        if disc.abs() <= ILL * size * size {
+            return None;
+        }
+        if disc > 0.0 {
+            let k = -0.5 * (p + disc.sqrt().copysign(p));
+            let zs = [k, if k != 0.0 { r / k } else { 0.0 }];
+            for z in zs {
+                if z.abs() <= ILL * size {
+                    return None;
+                }
+                if z > 0.0 {
+                    let y = z.sqrt();
+                    ys[n] = y;
+                    ys[n + 1] = -y;
+                    n += 2;
+                }
+            }
+        }
+    } else {
+        // (y² + p/2 + m)² = 2m·y² − q·y + (m² + m·p + p²/4 − r): a square when
+        // m³ + p·m² + (p²/4 − r)·m − q²/8 = 0; its largest root is positive.
+        let m = resolvent_root(p, 0.25 * p * p - r, -0.125 * q * q)?;
+        if !(m > 1e-6 * size) || !m.is_finite() {
+            return None;
+        }
+        let w = (2.0 * m).sqrt();
+        let half = 0.5 * p + m;
+        let skew = q / (2.0 * w);
+        for sign in [1.0, -1.0] {
+            // y² ∓ w·y + (p/2 + m ± q/(2w)) = 0.
+            let b = -sign * w;
+            let cc = half + sign * skew;
+            let disc = b * b - 4.0 * cc;
+            if disc.abs() <= ILL * size {
+                return None;
+            }
+            if disc > 0.0 {
+                let k = -0.5 * (b + disc.sqrt().copysign(b));
+                ys[n] = k;
+                ys[n + 1] = cc / k;
+                n += 2;
+            }
+        }
+    }
+    for (slot, y) in out.iter_mut().zip(&ys[..n]) {
+        *slot = y - shift;
+    }
+    *tol = 1e-10 * (size.sqrt() + shift.abs());
+    Some(n)
+}
+
+/// ∛x to within a few per cent (x finite, ≥ 0): the exponent divided by three in the bits.
+#[inline(always)]
+fn rough_cbrt(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() / 3 + 0x2a9f_7893_782d_a1ce)
+}
+
+/// ∛x to a few ulps: [`rough_cbrt`] and three Halley steps (each triples the digits); the
+/// library's `cbrt` is a software routine here that cost 14 % of the torus benchmark.
+#[inline(always)]
+fn cbrt(x: f64) -> f64 {
+    let a = x.abs();
+    if a == 0.0 || !a.is_finite() {
+        return x;
+    }
+    let mut y = rough_cbrt(a);
+    for _ in 0..3 {
+        let y3 = y * y * y;
+        y *= (y3 + 2.0 * a) / (2.0 * y3 + a);
+    }
+    y.copysign(x)
+}
+
+/// The largest real root of m³ + a·m² + b·m + c (Viète's form for three real roots, Cardano's
+/// for one), polished by a Newton step.
+#[inline]
+fn resolvent_root(a: f64, b: f64, c: f64) -> Option<f64> {
+    // m = y − a/3: y³ + p·y + q = 0.
+    const THIRD: f64 = 1.0 / 3.0;
+    let shift = a * THIRD;
+    let p = b - a * shift;
+    let q = c - b * shift + 2.0 * shift * shift * shift;
+    let p3 = p * THIRD;
+    let h = 0.25 * q * q + p3 * p3 * p3;
+    if h.is_nan() {
+        return None;
+    }
+    let mut m = if h <= 0.0 && p < 0.0 {
+        let k = 2.0 * (-p3).sqrt();
+        let theta = ((3.0 * q) / (p * k)).clamp(-1.0, 1.0).acos() * THIRD;
+        k * theta.cos() - shift
+    } else {
+        let s = h.max(0.0).sqrt();
+        let v = cbrt(-0.5 * q + s.copysign(-q));
+        (if v == 0.0 { 0.0 } else { v - p3 / v }) - shift
+    };
+    let g = ((m + a) * m + b) * m + c;
+    let dg = (3.0 * m + 2.0 * a) * m + b;
+    let step = g / dg;
+    if step.is_finite() {
+        m -= step;
+    }
+    Some(m)
 }
 
 impl Shape for Torus {
@@ -157,5 +392,291 @@ mod tests {
         for (i, r) in rays.iter().enumerate() {
             assert_eq!(wide.get(i).to_bits(), t.hit(&r.lanes(), 0.0, MISS).to_bits());
         }
+    }
+
+    /// The solver before the closed form (issue 38): critical-point isolation over the sphere's
+    /// span, no other rejection. The reference the new one is held to.
+    fn old_solve(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option<f64> {
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let crate::geometry::CentredRay { p, u, t_c, len } = crate::geometry::centred_ray(o, d)?;
+        let outer = 1.0 + minor;
+        let reach2 = outer * outer - dot(p, p);
+        if reach2.is_nan() || reach2 < 0.0 {
+            return None;
+        }
+        let reach = reach2.sqrt() * (1.0 + 1e-9) + 1e-12;
+        let lo = (-reach).max((t_min - t_c) * len);
+        let hi = reach.min((t_max - t_c) * len);
+        if lo.is_nan() || hi.is_nan() || lo >= hi {
+            return None;
+        }
+        let e = dot(p, p) + 1.0 - minor * minor;
+        let f = dot(p, u);
+        let a2 = u[0] * u[0] + u[2] * u[2];
+        let b2 = p[0] * u[0] + p[2] * u[2];
+        let c2 = p[0] * p[0] + p[2] * p[2];
+        let c = [1.0, 4.0 * f, 4.0 * f * f + 2.0 * e - 4.0 * a2, 4.0 * f * e - 8.0 * b2, e * e - 4.0 * c2];
+        let mut roots = [0.0; MAX_DEGREE];
+        let n = roots_in(&c, lo, hi, &mut roots);
+        roots[..n].iter().map(|s| t_c + s / len).find(|&t| t > t_min && t < t_max)
+    }
+
+    struct Rng(u64);
+    impl Rng {
+        fn next(&mut self) -> f64 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+        fn range(&mut self, a: f64, b: f64) -> f64 {
+            a + (b - a) * self.next()
+        }
+        fn unit(&mut self) -> [f64; 3] {
+            loop {
+                let v = [self.range(-1.0, 1.0), self.range(-1.0, 1.0), self.range(-1.0, 1.0)];
+                let l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+                if l2 > 1e-4 && l2 <= 1.0 {
+                    let l = l2.sqrt();
+                    return [v[0] / l, v[1] / l, v[2] / l];
+                }
+            }
+        }
+    }
+
+    /// The signed distance from the torus's surface (object space, major radius 1).
+    fn distance(x: [f64; 3], minor: f64) -> f64 {
+        let rho = (x[0] * x[0] + x[2] * x[2]).sqrt() - 1.0;
+        (rho * rho + x[1] * x[1]).sqrt() - minor
+    }
+
+    /// Seeded random rays of every kind the renderer sends: from far and near, from inside the
+    /// tube, aimed at points on and about the torus, along the axis, through the hole, grazing
+    /// the tube (aimed at a surface point along a tangent), horizontal ones (a biquadratic).
+    fn rays(seed: u64, count: usize) -> Vec<([f64; 3], [f64; 3], f64)> {
+        let mut rng = Rng(seed);
+        let mut out = Vec::new();
+        for case in 0..count {
+            let minor = [0.35, 0.1, 0.5, 0.01, 0.9][case % 5];
+            let dist = [3.0, 30.0, 1e3, 1.5][(case / 5) % 4];
+            let kind = (case / 20) % 6;
+            // A point on the surface.
+            let (phi, theta) = (rng.range(0.0, 6.3), rng.range(0.0, 6.3));
+            let n = [theta.cos() * phi.cos(), theta.sin(), theta.cos() * phi.sin()];
+            let on = [phi.cos() + minor * n[0], minor * n[1], phi.sin() + minor * n[2]];
+            let (o, d) = match kind {
+                0 => {
+                    // At a random point near the torus from a random place.
+                    let target = [rng.range(-1.5, 1.5), rng.range(-0.6, 0.6), rng.range(-1.5, 1.5)];
+                    let v = rng.unit();
+                    let o = [target[0] + dist * v[0], target[1] + dist * v[1], target[2] + dist * v[2]];
+                    (o, [target[0] - o[0], target[1] - o[1], target[2] - o[2]])
+                }
+                1 => {
+                    // Grazing: along a tangent at a surface point, nudged in or out a little.
+                    let v = rng.unit();
+                    let dot = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+                    let t = [v[0] - dot * n[0], v[1] - dot * n[1], v[2] - dot * n[2]];
+                    let nudge = minor * [0.0, 1e-3, -1e-3, 1e-7, -1e-7, 1e-12][case % 6];
+                    let at = [on[0] + nudge * n[0], on[1] + nudge * n[1], on[2] + nudge * n[2]];
+                    let o = [at[0] - dist * t[0], at[1] - dist * t[1], at[2] - dist * t[2]];
+                    (o, t)
+                }
+                2 => {
+                    // Along (or near) the axis, from above or below: through the hole.
+                    let x = [0.0, 1e-3, rng.range(-0.5, 0.5)][case % 3];
+                    let up = if case % 2 == 0 { 1.0 } else { -1.0 };
+                    ([x, up * dist, rng.range(-0.2, 0.2)], [rng.range(-1e-3, 1e-3), -up, 0.0])
+                }
+                3 => {
+                    // Horizontal rays across the ring, some through the hole.
+                    let y = rng.range(-1.2, 1.2) * minor;
+                    let a = rng.range(0.0, 6.3);
+                    let off = rng.range(-1.6, 1.6);
+                    let d = [a.cos(), 0.0, a.sin()];
+                    let o = [-dist * d[0] - off * d[2], y, -dist * d[2] + off * d[0]];
+                    (o, d)
+                }
+                4 => {
+                    // From inside the tube or the hole, any way.
+                    let k = rng.range(0.0, 0.99);
+                    let o = if case % 2 == 0 {
+                        [phi.cos() + k * minor * n[0], k * minor * n[1], phi.sin() + k * minor * n[2]]
+                    } else {
+                        [rng.range(-0.3, 0.3), rng.range(-0.5, 0.5), rng.range(-0.3, 0.3)]
+                    };
+                    (o, rng.unit())
+                }
+                _ => {
+                    // Straight at a surface point, direction not unit.
+                    let v = rng.unit();
+                    let o = [on[0] + dist * v[0], on[1] + dist * v[1], on[2] + dist * v[2]];
+                    let k = rng.range(0.1, 10.0);
+                    (o, [-v[0] * k, -v[1] * k, -v[2] * k])
+                }
+            };
+            out.push((o, d, minor));
+        }
+        out
+    }
+
+    /// The closed form finds what the isolation finds, on every kind of ray: the same hit or miss
+    /// and the same `t` to about 1e-9 of the ray's reach, except where the ray is tangent to the
+    /// surface (the hit point within 1e-6 of the tube's size of grazing it) and either answer
+    /// is right. Every hit found lies on the surface.
+    #[test]
+    fn closed_form_matches_isolation_on_random_rays() {
+        let (mut hits, mut grazing_disagree) = (0, 0);
+        for (i, &(o, d, minor)) in rays(0x9e37_79b9_7f4a_7c15, 60_000).iter().enumerate() {
+            let t_min = if i % 7 == 0 { 0.5 } else { 0.0 };
+            let new = solve(o, d, minor, t_min, f64::INFINITY, |v| v);
+            let old = old_solve(o, d, minor, t_min, f64::INFINITY);
+            let at = |t: f64| [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
+            let scale = (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]).sqrt() + 2.0;
+            let dl = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            if let Some(t) = new {
+                assert!(
+                    distance(at(t), minor).abs() < 1e-9 * scale + 1e-12,
+                    "ray {i} {o:?} {d:?} {minor} t_min {t_min}: {t} off the surface (old {old:?}, d {})",
+                    distance(at(t), minor)
+                );
+            }
+            match (new, old) {
+                (Some(a), Some(b)) => {
+                    hits += 1;
+                    if (a - b).abs() * dl > 1e-9 * scale {
+                        // Two different roots: only where the ray grazes the tube near the
+                        // first (a near-double root, either one right).
+                        let graze = |t: f64| {
+                            let x = at(t);
+                            let rho = (x[0] * x[0] + x[2] * x[2]).sqrt();
+                            let g = [x[0] - x[0] / rho, x[1], x[2] - x[2] / rho];
+                            let gl = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
+                            ((g[0] * d[0] + g[1] * d[1] + g[2] * d[2]) / (gl * dl)).abs()
+                        };
+                        assert!(graze(a.min(b)) < 1e-3, "ray {i} {o:?} {d:?} {minor}: new {a} old {b}");
+                        grazing_disagree += 1;
+                    }
+                }
+                (None, None) => {}
+                (a, b) => {
+                    // A hit only one finds: a tangent touch.
+                    let t = a.or(b).unwrap();
+                    let x = at(t);
+                    let rho = (x[0] * x[0] + x[2] * x[2]).sqrt();
+                    let g = [x[0] - x[0] / rho, x[1], x[2] - x[2] / rho];
+                    let gl = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
+                    let cos = ((g[0] * d[0] + g[1] * d[1] + g[2] * d[2]) / (gl * dl)).abs();
+                    assert!(cos < 1e-3, "ray {i} {o:?} {d:?} {minor}: new {a:?} old {b:?} cos {cos}");
+                    grazing_disagree += 1;
+                }
+            }
+        }
+        assert!(hits > 20_000, "{hits}");
+        assert!(grazing_disagree < 200, "{grazing_disagree} grazing rays disagree");
+    }
+
+    /// Against dense sampling of the signed distance along the ray: the first sign change
+    /// (a sure crossing) is where the solver's first hit is, or the solver's hit comes earlier
+    /// (a touch the sampling stepped over).
+    #[test]
+    fn first_hit_matches_dense_sampling() {
+        for (i, &(o, d, minor)) in rays(0x1234_5678_9abc_def1, 6_000).iter().enumerate() {
+            let dl = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            let u = [d[0] / dl, d[1] / dl, d[2] / dl];
+            let start = (o[0] * o[0] + o[1] * o[1] + o[2] * o[2]).sqrt() - 1.0 - minor;
+            let start = start.max(0.0);
+            let at = |s: f64| [o[0] + s * u[0], o[1] + s * u[1], o[2] + s * u[2]];
+            let hit = solve(o, u, minor, 0.0, f64::INFINITY, |v| v);
+            let steps = 20_000;
+            let span = 2.0 * (2.0 + 2.0 * minor);
+            let h = span / steps as f64;
+            let mut prev = distance(at(start.max(1e-9)), minor);
+            let mut crossing = None;
+            for k in 1..=steps {
+                let s = start + k as f64 * h;
+                let v = distance(at(s), minor);
+                if (v < 0.0) != (prev < 0.0) {
+                    crossing = Some(s);
+                    break;
+                }
+                prev = v;
+            }
+            match (hit, crossing) {
+                (Some(t), Some(s)) => assert!(t <= s + 1e-9 * start.max(1.0), "ray {i}: hit {t} after crossing {s}"),
+                (None, Some(s)) => panic!("ray {i} {o:?} {d:?} {minor}: missed a crossing at {s}"),
+                (Some(t), None) => {
+                    // Only a touch between two samples, or past the sampled span.
+                    assert!(distance(at(t), minor).abs() < 1e-7, "ray {i}: {t}")
+                }
+                (None, None) => {}
+            }
+        }
+    }
+
+    /// Exactly tangent rays (double roots): along the top of the tube, around the outer
+    /// equator, around the inner equator; the hit, where there is one, is at the touch.
+    #[test]
+    fn tangent_rays_touch_where_they_should() {
+        for &minor in &[0.35, 0.1, 0.5] {
+            // Over the top at y = minor, across the ring at x = 1: touches at z = 0.
+            let t = solve([1.0, minor, -5.0], [0.0, 0.0, 1.0], minor, 0.0, f64::INFINITY, |v| v);
+            assert!(t.is_none_or(|t| (t - 5.0).abs() < 1e-3), "{minor} {t:?}");
+            // Tangent to the outer equator: x = 1 + minor, in the plane y = 0.
+            let t = solve([1.0 + minor, 0.0, -5.0], [0.0, 0.0, 1.0], minor, 0.0, f64::INFINITY, |v| v);
+            assert!(t.is_none_or(|t| (t - 5.0).abs() < 1e-3), "{minor} {t:?}");
+            // Tangent to the inner equator from outside the ring: enters the tube first.
+            let t = solve([1.0 - minor, 0.0, -5.0], [0.0, 0.0, 1.0], minor, 0.0, f64::INFINITY, |v| v);
+            let first = 5.0 - ((1.0f64 + minor).powi(2) - (1.0 - minor) * (1.0 - minor)).sqrt();
+            assert!((t.unwrap() - first).abs() < 1e-9, "{minor} {t:?}");
+            // Just above the top: a miss; just below: a hit near the touch.
+            let above = solve([1.0, minor * (1.0 + 1e-6), -5.0], [0.0, 0.0, 1.0], minor, 0.0, f64::INFINITY, |v| v);
+            assert_eq!(above, None);
+            let below = solve([1.0, minor * (1.0 - 1e-6), -5.0], [0.0, 0.0, 1.0], minor, 0.0, f64::INFINITY, |v| v);
+            assert!(below.is_some_and(|t| (t - 5.0).abs() < 0.05), "{minor} {below:?}");
+        }
+    }
+
+    /// Eight-lane packets give the single-lane answers bit for bit, on random rays of every kind.
+    #[test]
+    fn packets_match_single_rays_bit_for_bit() {
+        let t = torus();
+        let all = rays(0x5151_2727_abcd_0001, 4_000);
+        let to_render = |v: [f64; 3]| Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32);
+        let frame = Affine3A::from_translation(Vec3::new(0.0, 0.0, 10.0)) * Affine3A::from_scale(Vec3::splat(2.0));
+        let mut hits = 0;
+        for chunk in all.chunks(8).filter(|c| c.len() == 8) {
+            let rays: [Ray; 8] = std::array::from_fn(|i| {
+                let (o, d, _) = chunk[i];
+                Ray::new(frame.transform_point3(to_render(o)), frame.transform_vector3(to_render(d)).normalize())
+            });
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| rays[i].origin),
+                d: V3::from_lanes(|i| rays[i].dir),
+                inv: V3::from_lanes(|i| rays[i].inv_dir),
+            };
+            let t_min = F8::from_fn_f64(|i| [0.0, 0.3][i % 2]);
+            let wide = t.hit(&packet, t_min, F8::splat(MISS));
+            for (i, r) in rays.iter().enumerate() {
+                let one = t.hit(&r.lanes(), t_min.get(i), MISS);
+                assert_eq!(wide.get(i).to_bits(), one.to_bits(), "lane {i}");
+                hits += (one != MISS) as usize;
+            }
+        }
+        assert!(hits > 1000, "{hits}");
+    }
+
+    #[test]
+    fn cube_root_is_accurate() {
+        let mut rng = Rng(77);
+        for _ in 0..100_000 {
+            let x = (rng.range(-1.0, 1.0)) * 10f64.powf(rng.range(-30.0, 30.0));
+            let y = cbrt(x);
+            assert!((y - x.cbrt()).abs() <= 4.0 * f64::EPSILON * x.cbrt().abs(), "{x}: {y} vs {}", x.cbrt());
+            let r = rough_cbrt(x.abs());
+            assert!((r / x.abs().cbrt() - 1.0).abs() < 0.05, "{x}: {r}");
+        }
+        assert_eq!(cbrt(0.0), 0.0);
+        assert_eq!(cbrt(-8.0), -2.0);
     }
 }

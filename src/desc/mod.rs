@@ -65,6 +65,21 @@ impl Transform {
     }
 }
 
+/// The box holding the box `[lo, hi]` mapped by `m` (its eight corners'), `[min, max]`.
+pub fn box_through(m: &DMat4, lo: DVec3, hi: DVec3) -> [DVec3; 2] {
+    let (mut a, mut b) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+    for i in 0..8 {
+        let corner = DVec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        let c = m.transform_point3(corner);
+        (a, b) = (a.min(c), b.max(c));
+    }
+    [a, b]
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GlobalSettings {
     /// `None` when the scene did not say; the effective value then depends on `#version`.

@@ -7,7 +7,7 @@ use glam::{DAffine3, DVec3, Vec3};
 
 use super::build::{PrimRef, Scene, ShapeKind};
 use crate::accel::aabb::Aabb;
-use crate::desc::{MeshDesc, ObjectDesc};
+use crate::desc::{box_through, MeshDesc, ObjectDesc};
 use crate::geometry::affine_f32;
 use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
@@ -161,17 +161,8 @@ impl Scene {
     /// the box, as POV-Ray does. Other kinds' own bounds are tight already.
     pub(super) fn bound_by(&mut self, kind: ShapeKind, index: u32, object: &ObjectDesc) {
         let (Some([lo, hi]), ShapeKind::Poly) = (object.bounded_by, kind) else { return };
-        let world = object.transform.matrix;
-        let mut b = Aabb::EMPTY;
-        for i in 0..8 {
-            let corner = DVec3::new(
-                if i & 1 == 0 { lo.x } else { hi.x },
-                if i & 2 == 0 { lo.y } else { hi.y },
-                if i & 4 == 0 { lo.z } else { hi.z },
-            );
-            let p = self.frame.point(world.transform_point3(corner)).as_vec3();
-            b.grow(&Aabb::new(p, p));
-        }
+        let [lo, hi] = box_through(&(self.frame.render_from_world() * object.transform.matrix), lo, hi);
+        let b = Aabb::new(lo.as_vec3(), hi.as_vec3());
         let poly = &mut self.polys[index as usize];
         // Rounded outwards by a part in a million of the box: the f32 corners must not cut
         // the surface where the bound touches it.

@@ -2439,3 +2439,29 @@ fn slope_pattern_is_read_and_its_bad_vectors_and_ranges_are_located() {
     assert_eq!((l, c), (1, 44), "{m}");
     assert!(m.contains("altitude"), "{m}");
 }
+
+// ---- bounded_by ---------------------------------------------------------------------------
+
+#[test]
+fn bounded_by_bounds_an_unbounded_surface_and_moves_with_it() {
+    use strahl::scene::build::{AccelKind, Scene};
+    // An infinite cylinder (x² + z² = 1) written as a quadric, bounded by a box, then moved: the
+    // box moves along, and the built scene's bounds are the moved box.
+    let text = |bound: &str| {
+        format!(
+            "camera {{ location <0, 2, -8> look_at 0 }}\n\
+             quadric {{ <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -1 {bound} pigment {{ rgb 1 }} scale 2 translate <10, 0, 0> }}"
+        )
+    };
+    let bounded = load_text("bounded_by", &text("bounded_by { box { <-1.5, -1, -1.5>, <1.5, 1, 1.5> } }")).unwrap();
+    let [lo, hi] = bounded.objects[0].bounded_by.expect("bounded_by kept");
+    assert!(close(lo, DVec3::new(-1.5, -1.0, -1.5)) && close(hi, DVec3::new(1.5, 1.0, 1.5)), "{lo} {hi}");
+    let scene = Scene::build(&bounded, bounded.camera.location, AccelKind::Bvh);
+    let (a, b) = scene.world_bounds().expect("the bounded quadric is in the accelerator");
+    let near = |p: DVec3, q: DVec3| (p - q).abs().max_element() < 1e-3 * (1.0 + q.abs().max_element());
+    assert!(near(a, DVec3::new(7.0, -2.0, -3.0)) && near(b, DVec3::new(13.0, 2.0, 3.0)), "{a} {b}");
+    // Without it the surface has no bounds: nothing bounded in the scene.
+    let free = load_text("bounded_by_none", &text("")).unwrap();
+    assert_eq!(free.objects[0].bounded_by, None);
+    assert_eq!(Scene::build(&free, free.camera.location, AccelKind::Bvh).world_bounds(), None);
+}

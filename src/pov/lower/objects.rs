@@ -346,18 +346,7 @@ impl Lowerer<'_> {
         let Some((lo, hi)) = crate::render::probe::bounds(&objects) else { return Ok(()) };
         for part in parts {
             part.for_each_leaf(&mut |leaf: &mut Part| {
-                let to_object = leaf.desc.transform.inverse;
-                let (mut a, mut b) = (glam::DVec3::INFINITY, glam::DVec3::NEG_INFINITY);
-                for i in 0..8 {
-                    let corner = glam::DVec3::new(
-                        if i & 1 == 0 { lo.x } else { hi.x },
-                        if i & 2 == 0 { lo.y } else { hi.y },
-                        if i & 4 == 0 { lo.z } else { hi.z },
-                    );
-                    let c = to_object.transform_point3(corner);
-                    (a, b) = (a.min(c), b.max(c));
-                }
-                leaf.desc.bounded_by = Some([a, b]);
+                leaf.desc.bounded_by = Some(crate::desc::box_through(&leaf.desc.transform.inverse, lo, hi));
             });
         }
         Ok(())

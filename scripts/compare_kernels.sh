@@ -56,10 +56,8 @@ fi
 dir=$(cd "$(dirname "$SCENES")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print v[int((NR + 1) / 2)]; else print "" }'; }
-# A number from a JSON file: the first `"key": value` (top level keys come first in strahl's JSON).
-json_num() { sed -n "s/.*\"$2\": *\([-0-9.eE+]*\).*/\1/p" "$1" | head -1; }
+# median, json_num, povray_ms
+source "$root/scripts/lib/compare.sh"
 
 # PSNR in dB of two PNG files' 8-bit RGB (standard library only: zlib and the PNG filters).
 cat >"$work/psnr.py" <<'EOF'
@@ -110,20 +108,6 @@ mse = sum((x - y) * (x - y) for x, y in zip(a, b)) / len(a)
 print("inf" if mse == 0 else f"{10 * math.log10(255 * 255 / mse):.1f}")
 EOF
 
-# POV-Ray's median trace time in ms of scene $1 (in $dir), or empty with the reason in $work/why.
-povray_ms() {
-    local file=$1 times=() log secs
-    for _ in $(seq "$REPEATS"); do
-        log=$(cd "$dir" && timeout "$TIMEOUT" povray +I"$file" +W640 +H480 -A -D -V -F +L"$POV_INCLUDE" 2>&1) || true
-        secs=$(echo "$log" | sed -n 's/.*Trace Time:.*(\s*\([0-9.]*\) seconds).*/\1/p' | head -1)
-        if [[ -z $secs ]]; then
-            echo "$log" | grep -m1 -i "error" | cut -c1-80 >"$work/why" || echo "no trace time" >"$work/why"
-            return
-        fi
-        times+=("$secs")
-    done
-    printf '%s\n' "${times[@]}" | median | awk '{ printf "%.1f", $1 * 1000 }'
-}
 
 # The statistics rows of `strahl render` as "name<TAB>tests", one a line.
 stat_rows() {
@@ -134,7 +118,7 @@ stat_rows() {
 # One row: "| kind | povray ms | strahl ms | ratio | tests/ray | ns/test | PSNR | counted | notes |".
 row() {
     local file=$1 kind=${1%.pov} pov ms ratio rays tests rows tpr nspt psnr="" note=""
-    pov=$(povray_ms "$file")
+    pov=$(povray_ms "$dir" "$file")
     [[ -n $pov ]] || note="POV-Ray: $(cat "$work/why")"
     ms=""
     if (cd "$dir" && timeout "$TIMEOUT" "$STRAHL" bench "$file" -W 640 -H 480 --frames "$FRAMES" --warmup 1 \

@@ -52,25 +52,8 @@ fi
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print v[int((NR + 1) / 2)]; else print "" }'; }
-# A number from a JSON file: the first `"key": value` (top level keys come first in strahl's JSON).
-json_num() { sed -n "s/.*\"$2\": *\([-0-9.eE+]*\).*/\1/p" "$1" | head -1; }
-
-# POV-Ray's median trace time in ms of scene $2 in folder $1, or empty with the reason in $work/why.
-povray_ms() {
-    local dir=$1 file=$2 times=() log secs
-    for _ in $(seq "$REPEATS"); do
-        log=$(cd "$dir" && timeout "$TIMEOUT" povray +I"$file" +W640 +H480 -A -D -V -F +L"$POV_INCLUDE" 2>&1) || true
-        secs=$(echo "$log" | sed -n 's/.*Trace Time:.*(\s*\([0-9.]*\) seconds).*/\1/p' | head -1)
-        if [[ -z $secs ]]; then
-            echo "$log" | grep -m1 -i "error" | cut -c1-80 >"$work/why" || echo "no trace time" >"$work/why"
-            return
-        fi
-        times+=("$secs")
-    done
-    printf '%s\n' "${times[@]}" | median | awk '{ printf "%.1f", $1 * 1000 }'
-}
+# median, json_num, povray_ms
+source "$root/scripts/lib/compare.sh"
 
 # One row: "| scene | povray ms | strahl ms | ratio | fps | scale | note |".
 row() {

@@ -140,8 +140,21 @@ impl Prism {
         if a == 0.0 && b == 0.0 {
             return (best < s_max).then_some(best);
         }
+        // A linear sweep's ray covers only this box of the section over the height slab: a piece
+        // whose control points' box it misses has no crossing there (infinite or NaN spans, a
+        // level ray's, compare false and skip nothing).
+        let footprint = (!self.conic).then(|| {
+            let (x0, x1, z0, z1) = (o.x + lo * d.x, o.x + hi * d.x, o.z + lo * d.z, o.z + hi * d.z);
+            let pad = 1e-9 * (x0.abs() + x1.abs() + z0.abs() + z1.abs());
+            (DVec2::new(x0.min(x1) - pad, z0.min(z1) - pad), DVec2::new(x0.max(x1) + pad, z0.max(z1) + pad))
+        });
         let mut roots = [0.0; MAX_DEGREE];
         for p in &self.pieces {
+            if let Some((f_lo, f_hi)) = footprint {
+                if f_lo.x > p.hi.x || f_hi.x < p.lo.x || f_lo.y > p.hi.y || f_hi.y < p.lo.y {
+                    continue;
+                }
+            }
             // The line misses the box of the control points: all four corners on one side.
             let f = |x: f64, y: f64| a * x + b * y + k;
             let corners = [f(p.lo.x, p.lo.y), f(p.hi.x, p.lo.y), f(p.lo.x, p.hi.y), f(p.hi.x, p.hi.y)];

@@ -60,6 +60,7 @@ pub mod plane;
 pub mod poly;
 pub mod polygon;
 pub mod prism;
+mod quartic;
 pub mod roots;
 pub mod sor;
 pub mod sphere;

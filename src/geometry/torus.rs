@@ -12,6 +12,7 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
+use super::quartic::{ferrari, polish};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
@@ -44,7 +45,7 @@ impl Torus {
 /// the lane will hold them.
 ///
 /// Cheap rejections first (the sphere through the outer equator, the slab `|y| ≤ minor`, a
-/// span wholly inside the hole's cylinder), then the quartic in closed form ([`ferrari`]),
+/// span wholly inside the hole's cylinder), then the quartic in closed form (`quartic::ferrari`),
 /// each root polished by Newton steps; where the closed form is ill-conditioned (a double root:
 /// a grazing ray) it answers `None` and the critical-point isolation `roots_in` decides.
 fn solve(
@@ -86,23 +87,6 @@ fn solve(
         }
     }
     None
-}
-
-/// `x` after two Newton steps on the quartic `c`, or `None` where the last step is above `tol`:
-/// Newton converges slowly only near a double root (a grazing ray the closed form's thresholds
-/// let through), and there the isolation decides.
-#[inline(always)]
-fn polish(c: &[f64; 5], mut x: f64, tol: f64) -> Option<f64> {
-    let mut step = 0.0;
-    for _ in 0..2 {
-        let f = (((x + c[1]) * x + c[2]) * x + c[3]) * x + c[4];
-        let df = ((4.0 * x + 3.0 * c[1]) * x + 2.0 * c[2]) * x + c[3];
-        step = f / df;
-        if step.is_finite() {
-            x -= step;
-        }
-    }
-    (step.abs() <= tol).then_some(x)
 }
 
 /// The quartic in `s` (distance along the unit direction from the ray's point nearest the
@@ -171,136 +155,6 @@ fn isolate(
     let mut roots = [0.0; MAX_DEGREE];
     let n = roots_in(c, lo, hi, &mut roots);
     roots[..n].iter().map(|s| round(t_c + s / len)).find(|&t| t > t_min && t < t_max)
-}
-
-/// Relative size below which a discriminant or the resolvent's root counts as zero: the closed
-/// form gives up there (a double or nearly double root) and [`isolate`] decides.
-const ILL: f64 = 1e-9;
-
-/// The real roots of the monic quartic `c` by Ferrari's method, unpolished, in no particular
-/// order, and in `tol` the size below which [`polish`]'s last step must fall; `None` where the
-/// closed form is ill-conditioned (near a double root, or with the resolvent's root near zero),
-/// which the caller must solve otherwise.
-fn ferrari(c: &[f64; 5], out: &mut [f64; 4], tol: &mut f64) -> Option<usize> {
-    // s = y − c₁/4: y⁴ + p·y² + q·y + r = 0.
-    let shift = 0.25 * c[1];
-    let s2 = shift * shift;
-    let p = c[2] - 6.0 * s2;
-    let q = c[3] - 2.0 * c[2] * shift + 8.0 * s2 * shift;
-    let r = c[4] - c[3] * shift + c[2] * s2 - 3.0 * s2 * s2;
-    // The size of y²: every quantity below of that dimension is measured against it.
-    let size = p.abs() + r.abs().sqrt() + rough_cbrt(q * q);
-    if !size.is_finite() || size == 0.0 {
-        return None;
-    }
-    let mut ys = [0.0; 4];
-    let mut n = 0;
-    if q.abs() <= 1e-12 * size * size.sqrt() {
-        // Biquadratic: y² = z with z² + p·z + r = 0.
-        let disc = p * p - 4.0 * r;
-        if disc.abs() <= ILL * size * size {
-            return None;
-        }
-        if disc > 0.0 {
-            let k = -0.5 * (p + disc.sqrt().copysign(p));
-            let zs = [k, if k != 0.0 { r / k } else { 0.0 }];
-            for z in zs {
-                if z.abs() <= ILL * size {
-                    return None;
-                }
-                if z > 0.0 {
-                    let y = z.sqrt();
-                    ys[n] = y;
-                    ys[n + 1] = -y;
-                    n += 2;
-                }
-            }
-        }
-    } else {
-        // (y² + p/2 + m)² = 2m·y² − q·y + (m² + m·p + p²/4 − r): a square when
-        // m³ + p·m² + (p²/4 − r)·m − q²/8 = 0; its largest root is positive.
-        let m = resolvent_root(p, 0.25 * p * p - r, -0.125 * q * q)?;
-        if !(m > 1e-6 * size) || !m.is_finite() {
-            return None;
-        }
-        let w = (2.0 * m).sqrt();
-        let half = 0.5 * p + m;
-        let skew = q / (2.0 * w);
-        for sign in [1.0, -1.0] {
-            // y² ∓ w·y + (p/2 + m ± q/(2w)) = 0.
-            let b = -sign * w;
-            let cc = half + sign * skew;
-            let disc = b * b - 4.0 * cc;
-            if disc.abs() <= ILL * size {
-                return None;
-            }
-            if disc > 0.0 {
-                let k = -0.5 * (b + disc.sqrt().copysign(b));
-                ys[n] = k;
-                ys[n + 1] = cc / k;
-                n += 2;
-            }
-        }
-    }
-    for (slot, y) in out.iter_mut().zip(&ys[..n]) {
-        *slot = y - shift;
-    }
-    *tol = 1e-10 * (size.sqrt() + shift.abs());
-    Some(n)
-}
-
-/// ∛x to within a few per cent (x finite, ≥ 0): the exponent divided by three in the bits.
-#[inline(always)]
-fn rough_cbrt(x: f64) -> f64 {
-    f64::from_bits(x.to_bits() / 3 + 0x2a9f_7893_782d_a1ce)
-}
-
-/// ∛x to a few ulps: [`rough_cbrt`] and three Halley steps (each triples the digits); the
-/// library's `cbrt` is a software routine here that cost 14 % of the torus benchmark.
-#[inline(always)]
-fn cbrt(x: f64) -> f64 {
-    let a = x.abs();
-    if a == 0.0 || !a.is_finite() {
-        return x;
-    }
-    let mut y = rough_cbrt(a);
-    for _ in 0..3 {
-        let y3 = y * y * y;
-        y *= (y3 + 2.0 * a) / (2.0 * y3 + a);
-    }
-    y.copysign(x)
-}
-
-/// The largest real root of m³ + a·m² + b·m + c (Viète's form for three real roots, Cardano's
-/// for one), polished by a Newton step.
-#[inline]
-fn resolvent_root(a: f64, b: f64, c: f64) -> Option<f64> {
-    // m = y − a/3: y³ + p·y + q = 0.
-    const THIRD: f64 = 1.0 / 3.0;
-    let shift = a * THIRD;
-    let p = b - a * shift;
-    let q = c - b * shift + 2.0 * shift * shift * shift;
-    let p3 = p * THIRD;
-    let h = 0.25 * q * q + p3 * p3 * p3;
-    if h.is_nan() {
-        return None;
-    }
-    let mut m = if h <= 0.0 && p < 0.0 {
-        let k = 2.0 * (-p3).sqrt();
-        let theta = ((3.0 * q) / (p * k)).clamp(-1.0, 1.0).acos() * THIRD;
-        k * theta.cos() - shift
-    } else {
-        let s = h.max(0.0).sqrt();
-        let v = cbrt(-0.5 * q + s.copysign(-q));
-        (if v == 0.0 { 0.0 } else { v - p3 / v }) - shift
-    };
-    let g = ((m + a) * m + b) * m + c;
-    let dg = (3.0 * m + 2.0 * a) * m + b;
-    let step = g / dg;
-    if step.is_finite() {
-        m -= step;
-    }
-    Some(m)
 }
 
 impl Shape for Torus {
@@ -664,19 +518,5 @@ mod tests {
             }
         }
         assert!(hits > 1000, "{hits}");
-    }
-
-    #[test]
-    fn cube_root_is_accurate() {
-        let mut rng = Rng(77);
-        for _ in 0..100_000 {
-            let x = (rng.range(-1.0, 1.0)) * 10f64.powf(rng.range(-30.0, 30.0));
-            let y = cbrt(x);
-            assert!((y - x.cbrt()).abs() <= 4.0 * f64::EPSILON * x.cbrt().abs(), "{x}: {y} vs {}", x.cbrt());
-            let r = rough_cbrt(x.abs());
-            assert!((r / x.abs().cbrt() - 1.0).abs() < 0.05, "{x}: {r}");
-        }
-        assert_eq!(cbrt(0.0), 0.0);
-        assert_eq!(cbrt(-8.0), -2.0);
     }
 }

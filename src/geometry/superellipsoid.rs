@@ -41,12 +41,14 @@ pub struct Superellipsoid {
     pub n: f64,
     pub min: Vec3,
     pub max: Vec3,
+    /// The convex solver's powers of `e` and `n`, worked out once, not per ray.
+    powers: Powers,
 }
 
 impl Superellipsoid {
     pub fn new(render_from_object: Affine3A, e: f64, n: f64) -> Superellipsoid {
         let (min, max) = transformed_bounds(&render_from_object, Vec3::splat(-1.0), Vec3::ONE);
-        Superellipsoid { frame: frame_for(render_from_object), e, n, min, max }
+        Superellipsoid { frame: frame_for(render_from_object), e, n, min, max, powers: Powers::new(e, n) }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -177,15 +179,15 @@ impl Superellipsoid {
     /// the slope is not negative proves a miss (a grazing ray, decided exactly). From inside,
     /// the same from `hi` backwards finds the exit.
     fn solve_convex(&self, o: [f64; 3], d: [f64; 3], lo: f64, hi: f64) -> Option<Option<f64>> {
-        let p = Powers::new(self.e, self.n);
+        let p = &self.powers;
         let at = |t: f64| [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
         let tol = NEWTON_TOL * (hi - lo);
-        let (n_lo, s_lo) = self.norm_slope(&p, at(lo), d);
+        let (n_lo, s_lo) = self.norm_slope(p, at(lo), d);
         let (mut t, mut n, mut s, sign, v, end) = if n_lo > 1.0 {
             (lo, n_lo, s_lo, 1.0, d, hi)
         } else {
             let back = [-d[0], -d[1], -d[2]];
-            let (n_hi, s_hi) = self.norm_slope(&p, at(hi), back);
+            let (n_hi, s_hi) = self.norm_slope(p, at(hi), back);
             if !(n_hi > 1.0) {
                 return Some(None);
             }
@@ -207,7 +209,7 @@ impl Superellipsoid {
             if step <= tol {
                 return Some(Some(t));
             }
-            (n, s) = self.norm_slope(&p, at(t), v);
+            (n, s) = self.norm_slope(p, at(t), v);
             if n <= 1.0 {
                 return Some(Some(t));
             }
@@ -269,7 +271,7 @@ const NEWTON_STEPS: usize = 100;
 const NEWTON_TOL: f64 = 1e-9;
 
 /// `v^k` for `v ≥ 0` and a constant `k`, with the exponents 1 and 2 as multiplications.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Debug)]
 struct Pow {
     k: f64,
     kind: u8,
@@ -313,6 +315,7 @@ impl Pow {
 }
 
 /// The powers of the convex solver.
+#[derive(Clone, Copy, Debug)]
 struct Powers {
     a: Pow,
     b: Pow,

@@ -25,7 +25,7 @@ use crate::render::trace::{Shadows, Surface, Tracer};
 use crate::scene::build::{Scene, ShapeKind};
 use crate::scene::material::Material;
 use crate::shading::normal::perturb_normal_lanes;
-use crate::shading::pattern::RgbftLanes;
+use crate::shading::pattern::{Rgbft, RgbftLanes};
 use crate::shading::pigment::eval_surface_pigment_lanes;
 
 /// Packet edge in pixels: 8×8 = 64 rays, eight rows of eight lanes.
@@ -59,18 +59,6 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: us
 #[target_feature(enable = "avx2")]
 unsafe fn trace_block_avx2(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
     trace_block_generic(tracer, rays, rows, lanes)
-}
-
-/// How a row of the block is shaded.
-#[derive(Clone, Copy)]
-enum RowShading<'a> {
-    /// No lane hit anything.
-    Background,
-    /// Every hit in the row has this material, which neither reflects nor transmits: shaded
-    /// eight lanes at a time, with this pigment colour.
-    Lanes(&'a Material, RgbftLanes<F8>),
-    /// Mixed materials or recursive ones: shaded lane by lane through `Tracer::shade_surface`.
-    Single,
 }
 
 /// The single ray of lane `i`.
@@ -206,57 +194,78 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // Surfaces first, so all shadow rays of the block can be traced together.
     let q = tracer.pattern_quality();
     let mut soa = SurfaceRows::default();
-    let mut shading = [RowShading::Background; 8];
+    // Per row: each lane's material where it is shaded eight lanes wide (`NO_HIT` for a miss
+    // or a lane shaded singly), the pigment colours of those lanes, and the single lanes'
+    // surfaces.
+    let mut materials = [[NO_HIT; 8]; 8];
+    let mut pigments = [RgbftLanes::splat(Rgbft::default()); 8];
     let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
     for r in 0..rows {
-        let hit = M8::from_fn(|i| i < lanes && ids[r][i] != NO_HIT);
-        if !hit.any() {
-            continue;
+        let shape_of = |i: usize| if i < lanes { hit_shape(ids[r][i], faces[r][i]) } else { None };
+        // Lanes whose material the local model below covers go eight wide, a group per material
+        // (OSPRay's `foreach_unique`); the rest (reflection, transparency, uv mapping, layers,
+        // interior textures) go through `Tracer::shade_surface` one by one.
+        let mut row_materials = [NO_HIT; 8];
+        for i in 0..8 {
+            if let Some(shape) = shape_of(i) {
+                row_materials[i] = scene.material_of(shape);
+            }
         }
-        let material_of = |i: usize| hit_shape(ids[r][i], faces[r][i]).map(|s| scene.material_of(s));
-        let first = (0..lanes).find_map(material_of);
-        let uniform = (0..lanes).all(|i| material_of(i).is_none() || material_of(i) == first);
-        let material = &scene.materials[first.unwrap_or(0) as usize];
-        if uniform
-            && !material.finish.reflects()
-            && !material.may_be_transparent()
-            && material.uv.is_none()
-            && material.blend.is_none()
-            && material.inside.is_none()
-        {
-            // `Tracer::surface`, eight lanes at a time; missed lanes sit at the ray origin.
+        let hit = M8::from_fn(|i| row_materials[i] != NO_HIT);
+        let mut in_lanes = M8::default();
+        for (m, group) in Groups::of(&row_materials, hit) {
+            if shades_in_lanes(&scene.materials[m as usize]) {
+                in_lanes = F8::or(in_lanes, group);
+            }
+        }
+        materials[r] = std::array::from_fn(|i| if in_lanes.lane(i) { row_materials[i] } else { NO_HIT });
+        if in_lanes.any() {
+            // `Tracer::surface`, eight lanes at a time; other lanes sit at the ray origin.
             let ray = &rays[r];
-            let p = ray.o.add(ray.d.scale(F8::select(hit, t[r], F8::splat(0.0))));
-            let first = (0..lanes).find(|&i| ids[r][i] != NO_HIT).unwrap_or(0);
-            let first_hit = (ids[r][first], faces[r][first]);
-            let geometric = match hit_shape(first_hit.0, first_hit.1) {
-                Some(shape) if (0..lanes).all(|i| (ids[r][i], faces[r][i]) == first_hit || ids[r][i] == NO_HIT) => {
-                    scene.normal_lanes(shape, p)
+            let p = ray.o.add(ray.d.scale(F8::select(in_lanes, t[r], F8::splat(0.0))));
+            // The geometric normal, one shape at a time (the same bits lane by lane or eight
+            // wide); a shape on one or two lanes is asked lane by lane, as some shapes solve
+            // their normals per lane in f64 whatever the width.
+            let mut geometric = V3::splat(Vec3::Y);
+            for (id, same_id) in Groups::of(&ids[r], in_lanes) {
+                for (face, group) in Groups::of(&faces[r], same_id) {
+                    let Some(shape) = hit_shape(id, face) else { continue };
+                    if group.0.iter().filter(|&&v| v != 0).count() > 2 {
+                        geometric = V3::select(group, scene.normal_lanes(shape, p), geometric);
+                    } else {
+                        for j in (0..8).filter(|&j| group.lane(j)) {
+                            let n = scene.normal_at(shape, p.lane(j));
+                            (geometric.x.0[j], geometric.y.0[j], geometric.z.0[j]) = (n.x, n.y, n.z);
+                        }
+                    }
                 }
-                _ => V3::from_lanes(|i| match hit_shape(ids[r][i], faces[r][i]) {
-                    Some(shape) if i < lanes => scene.normal_at(shape, p.lane(i)),
-                    _ => Vec3::Y,
-                }),
-            };
+            }
             let entering = geometric.dot(ray.d).lt(F8::splat(0.0));
             let facing = V3::select(entering, geometric, geometric.neg());
-            let normal = match &material.normal {
-                Some(n) => perturb_normal_lanes(n, p, facing, q),
-                None => facing,
-            };
+            let mut normal = facing;
+            let mut pigment = RgbftLanes::splat(Rgbft::default());
+            for (m, group) in Groups::of(&materials[r], in_lanes) {
+                let material = &scene.materials[m as usize];
+                if let Some(n) = &material.normal {
+                    normal = V3::select(group, perturb_normal_lanes(n, p, facing, q), normal);
+                }
+                let own = eval_surface_pigment_lanes(&material.pigment, p, geometric, q);
+                pigment = RgbftLanes::select(group, own, pigment);
+            }
             soa.p[r] = Soa3::from(p);
             soa.facing[r] = Soa3::from(facing);
             soa.normal[r] = Soa3::from(normal);
-            soa.valid[r] = hit;
-            shading[r] = RowShading::Lanes(material, eval_surface_pigment_lanes(&material.pigment, p, geometric, q));
-        } else {
-            for i in 0..lanes {
-                let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
-                let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
-                soa.set_lane(r, i, &s);
-                surfaces[r][i] = Some(s);
+            soa.valid[r] = in_lanes;
+            pigments[r] = pigment;
+        }
+        for i in 0..lanes {
+            if in_lanes.lane(i) {
+                continue;
             }
-            shading[r] = RowShading::Single;
+            let Some(shape) = shape_of(i) else { continue };
+            let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
+            soa.set_lane(r, i, &s);
+            surfaces[r][i] = Some(s);
         }
     }
 
@@ -292,53 +301,87 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     let lights = scene.lights.len();
     let mut colors = [[background; 8]; 8];
     for r in 0..rows {
-        match shading[r] {
-            RowShading::Background => {}
-            RowShading::Lanes(material, pigment) => {
-                // `Tracer::shade_surface` for a material without reflection or refraction.
-                let finish = &material.finish;
-                let hit = LocalHit {
-                    color: pigment.rgb,
-                    opacity: shade::opacity(pigment.filter, pigment.transmit),
-                    normal: soa.normal[r].v(),
-                    ray_dir: rays[r].d,
-                };
-                let reflected = shade::reflect(hit.ray_dir, hit.normal);
-                let mut color = shade::ambient(finish, scene.ambient_light, &hit);
-                for (l, light) in scene.lights.iter().enumerate() {
-                    if !material.lit_by(l) {
-                        continue;
-                    }
-                    let sample = LightSample {
-                        dir: light_dir[l][r],
-                        color: V3::splat(light.color * Vec3::ONE),
-                        on: light_on[l][r],
-                    };
-                    color = shade::add_light(finish, &hit, reflected, color, &sample);
+        let pigment = pigments[r];
+        let hit = LocalHit {
+            color: pigment.rgb,
+            opacity: shade::opacity(pigment.filter, pigment.transmit),
+            normal: soa.normal[r].v(),
+            ray_dir: rays[r].d,
+        };
+        let reflected = shade::reflect(hit.ray_dir, hit.normal);
+        // `Tracer::shade_surface` for a material without reflection or refraction, once per
+        // material of the row over all eight lanes, kept where the lanes have it.
+        let in_lanes = M8::from_fn(|i| materials[r][i] != NO_HIT);
+        for (m, group) in Groups::of(&materials[r], in_lanes) {
+            let material = &scene.materials[m as usize];
+            let finish = &material.finish;
+            let mut color = shade::ambient(finish, scene.ambient_light, &hit);
+            for (l, light) in scene.lights.iter().enumerate() {
+                if !material.lit_by(l) {
+                    continue;
                 }
-                for i in 0..lanes {
-                    if soa.valid[r].lane(i) {
-                        colors[r][i] = color.lane(i);
-                    }
-                }
+                let sample =
+                    LightSample { dir: light_dir[l][r], color: V3::splat(light.color * Vec3::ONE), on: light_on[l][r] };
+                color = shade::add_light(finish, &hit, reflected, color, &sample);
             }
-            RowShading::Single => {
-                for i in 0..lanes {
-                    let Some(s) = &surfaces[r][i] else { continue };
-                    let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
-                        if l < lights && light_on[l][r].lane(i) {
-                            light_dir[l][r].lane(i)
-                        } else {
-                            Vec3::ZERO
-                        }
-                    });
-                    colors[r][i] =
-                        tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+            for i in 0..lanes {
+                if group.lane(i) {
+                    colors[r][i] = color.lane(i);
                 }
             }
         }
+        for i in 0..lanes {
+            let Some(s) = &surfaces[r][i] else { continue };
+            let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
+                if l < lights && light_on[l][r].lane(i) {
+                    light_dir[l][r].lane(i)
+                } else {
+                    Vec3::ZERO
+                }
+            });
+            colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+        }
     }
     colors
+}
+
+/// Whether the packet's local model shades this material eight lanes wide: no reflection or
+/// transparency (recursive rays), no uv mapping, layers or interior texture.
+#[inline(always)]
+fn shades_in_lanes(material: &Material) -> bool {
+    !material.finish.reflects()
+        && !material.may_be_transparent()
+        && material.uv.is_none()
+        && material.blend.is_none()
+        && material.inside.is_none()
+}
+
+/// The distinct values of `values` among the lanes of `mask`, each with the lanes that hold it,
+/// in lane order of first appearance. An iterator, not a function taking a closure: closures
+/// are compiled out of line, without AVX2 (see `RowTest`).
+struct Groups<'a> {
+    values: &'a [u32; 8],
+    left: M8,
+}
+
+impl Groups<'_> {
+    #[inline(always)]
+    fn of(values: &[u32; 8], mask: M8) -> Groups<'_> {
+        Groups { values, left: mask }
+    }
+}
+
+impl Iterator for Groups<'_> {
+    type Item = (u32, M8);
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<(u32, M8)> {
+        let i = (0..8).find(|&i| self.left.lane(i))?;
+        let v = self.values[i];
+        let group = M8::from_fn(|j| self.left.lane(j) && self.values[j] == v);
+        self.left = F8::and(self.left, F8::not(group));
+        Some((v, group))
+    }
 }
 
 /// A block's hit points and normals in structure-of-arrays form, eight lanes per row.

@@ -502,13 +502,21 @@ fn focal_blur_matches_povray() {
 /// reference scene: the packet kernels are the single-ray kernels, eight lanes wide.
 #[test]
 fn packets_and_single_rays_give_identical_images() {
+    // Rows whose lanes hit several materials and shapes (an object's edge against the floor, a
+    // bump-mapped material beside a plain one) are shaded a material group at a time.
+    let mixed =
+        ["materials", "meshes", "csg", "bump_maps", "lathes", "noise_pigments", "normals_warped", "heightfields"];
     let mut scenes: Vec<PathBuf> = ["flat", "reflection", "refraction", "shadows", "legacy"]
         .iter()
+        .chain(&mixed)
         .chain(CAMERAS.iter().map(|(n, _)| n))
         .chain(&["cameras_focal_blur"])
         .map(|n| scene(n))
         .collect();
     scenes.push(root().join("scenes/seed.pov"));
+    for kernel in ["sphere", "mesh", "smooth_triangle", "union_8", "difference_8", "superellipsoid"] {
+        scenes.push(root().join(format!("scenes/kernels/{kernel}.pov")));
+    }
     for path in scenes {
         let desc = load_scene(&path, &include_path(&[])).unwrap_or_else(|e| panic!("{e}"));
         let scene = Scene::build(&desc, desc.camera.location, AccelKind::Bvh);

@@ -7,7 +7,9 @@
 //! by lane, as the torus does): the ray, moved to its point nearest the object origin and made
 //! unit, is substituted into the polynomial, which gives one polynomial in the distance along
 //! the ray, solved by `roots::smallest_root_by` with POV-Ray's solver (`Solver::Fast`) or
-//! `sturm` (`Solver::Sturm`).
+//! `sturm` (`Solver::Sturm`; a quartic tries the closed form of `quartic` first, and Sturm
+//! sequences settle what it declines). A quadric's polynomial along the ray comes from its
+//! terms as a matrix (`QuadricForm`), the others' from the general expansion.
 //!
 //! Such surfaces are in general unbounded: their bounds are infinite and `Scene` keeps them out
 //! of the accelerator, testing them for every ray as planes (see `scene::build`). A quadric
@@ -16,6 +18,7 @@
 use glam::{Affine3A, DMat3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
+use super::quartic::{first_root, Ill};
 use super::roots::{smallest_root_by, Solver, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
@@ -55,6 +58,47 @@ pub struct Poly {
     /// Render-space bounds, infinite for an unbounded surface.
     pub min: Vec3,
     pub max: Vec3,
+    /// For a quadric, its terms as a matrix, so a ray's quadratic takes a few products
+    /// instead of the general expansion (`along_ray`).
+    quadric: Option<QuadricForm>,
+}
+
+/// A quadric's terms as `f(q) = q·A·q + g·q + k`, `A` symmetric.
+#[derive(Clone, Copy, Debug)]
+struct QuadricForm {
+    a: [[f64; 3]; 3],
+    g: [f64; 3],
+    k: f64,
+}
+
+impl QuadricForm {
+    fn of(terms: &[(f64, [u8; 3])]) -> QuadricForm {
+        let mut q = QuadricForm { a: [[0.0; 3]; 3], g: [0.0; 3], k: 0.0 };
+        for &(c, e) in terms {
+            let axes: Vec<usize> = (0..3).flat_map(|axis| std::iter::repeat_n(axis, e[axis] as usize)).collect();
+            match axes[..] {
+                [] => q.k += c,
+                [i] => q.g[i] += c,
+                [i, j] if i == j => q.a[i][i] += c,
+                [i, j] => {
+                    q.a[i][j] += 0.5 * c;
+                    q.a[j][i] += 0.5 * c;
+                }
+                _ => unreachable!("a quadric's terms are of order 2 at most"),
+            }
+        }
+        q
+    }
+
+    /// The quadratic in `s` of the surface along `p + s·u`, lowest degree first (as
+    /// `Poly::along_ray`).
+    #[inline(always)]
+    fn along_ray(&self, p: [f64; 3], u: [f64; 3]) -> [f64; 3] {
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let times = |v: [f64; 3]| [dot(self.a[0], v), dot(self.a[1], v), dot(self.a[2], v)];
+        let (au, ap) = (times(u), times(p));
+        [dot(p, ap) + dot(self.g, p) + self.k, 2.0 * dot(p, au) + dot(self.g, u), dot(u, au)]
+    }
 }
 
 impl Poly {
@@ -73,7 +117,8 @@ impl Poly {
             Some((lo, hi)) => transformed_bounds(&render_from_object, lo.as_vec3(), hi.as_vec3()),
             None => (Vec3::splat(f32::NEG_INFINITY), Vec3::splat(f32::INFINITY)),
         };
-        Poly { frame: frame_for(render_from_object), order, solver, terms, min, max }
+        let quadric = (order == 2).then(|| QuadricForm::of(&terms));
+        Poly { frame: frame_for(render_from_object), order, solver, terms, min, max, quadric }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -157,6 +202,11 @@ impl Poly {
         // (6.9 kB) was a fifth of objects/csg/hfclip.pov's time, whose clipping cylinder is a
         // quadric. The arithmetic is the same at every size.
         let poly = match n {
+            _ if self.quadric.is_some() => {
+                let mut poly = [0.0; MAX_DEGREE + 1];
+                poly[..3].copy_from_slice(&self.quadric.as_ref().map_or([0.0; 3], |q| q.along_ray(p, u)));
+                poly
+            }
             0..=2 => self.along_ray::<3>(p, u),
             3..=4 => self.along_ray::<5>(p, u),
             5..=8 => self.along_ray::<9>(p, u),
@@ -175,7 +225,17 @@ impl Poly {
         let first = c[..=n].iter().position(|v| v.abs() > 1e-14 * scale).unwrap_or(n);
         let lo = (t_min - t_c) * len;
         let hi = (t_max - t_c) * len;
-        let s = smallest_root_by(self.solver, &c[first..=n], lo, hi)?;
+        let c = &c[first..=n];
+        // `sturm` asks for a solver that does not lose roots: the closed form serves where it is
+        // well-conditioned, and Sturm sequences decide near a double root, where it declines.
+        let closed = match (self.solver, c.len()) {
+            (Solver::Sturm, 5) => {
+                let monic = [1.0, c[1] / c[0], c[2] / c[0], c[3] / c[0], c[4] / c[0]];
+                first_root(&monic, lo, hi, |s| (s > lo && s < hi).then_some(s))
+            }
+            _ => Err(Ill),
+        };
+        let s = closed.unwrap_or_else(|Ill| smallest_root_by(self.solver, c, lo, hi))?;
         let t = t_c + s / len;
         (t > t_min && t < t_max).then_some(t)
     }

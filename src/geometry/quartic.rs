@@ -1,7 +1,8 @@
-//! Quartics in closed form, for the torus (`torus::solve`): Ferrari's method through the
-//! resolvent cubic, a Newton polish of each root, and a cube root that is not the library's
-//! software routine. Each gives up (`None`) where it is ill-conditioned, near a double root, so
-//! that the caller can fall back on `roots`' critical-point isolation.
+//! Quartics in closed form, for the torus (`torus::solve`) and quartic polynomials
+//! (`poly::Poly`): Ferrari's method through the resolvent cubic, a Newton polish of each root,
+//! and a cube root that is not the library's software routine. Each gives up where it is
+//! ill-conditioned, near a double root, so that the caller can fall back on `roots`'
+//! isolation.
 
 /// `x` after two Newton steps on the quartic `c`, or `None` where the last step is above `tol`:
 /// Newton converges slowly only near a double root (a grazing ray the closed form's thresholds
@@ -18,6 +19,47 @@ pub(super) fn polish(c: &[f64; 5], mut x: f64, tol: f64) -> Option<f64> {
         }
     }
     (step.abs() <= tol).then_some(x)
+}
+
+/// The closed form declined: the quartic is near a double root, and the caller must isolate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Ill;
+
+/// The first root of the monic quartic `c` in `[lo, hi]`, in ascending order, that `accept`
+/// takes (answering what it makes of the root): Ferrari's roots, each polished in turn up to
+/// that one, so roots past it cost nothing. `Err(Ill)` where the closed form or a polish is
+/// ill-conditioned.
+#[inline(always)]
+pub(super) fn first_root<T>(
+    c: &[f64; 5],
+    lo: f64,
+    hi: f64,
+    accept: impl Fn(f64) -> Option<T>,
+) -> Result<Option<T>, Ill> {
+    let mut roots = [0.0; 4];
+    let mut tol = 0.0;
+    let n = ferrari(c, &mut roots, &mut tol).ok_or(Ill)?;
+    // Ascending (at most four): insertion sort.
+    for i in 1..n {
+        let mut j = i;
+        while j > 0 && roots[j - 1] > roots[j] {
+            roots.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+    for &x in &roots[..n] {
+        if x > hi + 1e-6 * (hi.abs() + 1.0) {
+            // Far past the span (a polish moves a root by much less): so is every later one.
+            return Ok(None);
+        }
+        let s = polish(c, x, tol).ok_or(Ill)?;
+        if s >= lo && s <= hi {
+            if let Some(found) = accept(s) {
+                return Ok(Some(found));
+            }
+        }
+    }
+    Ok(None)
 }
 
 /// Relative size below which a discriminant or the resolvent's root counts as zero: the closed

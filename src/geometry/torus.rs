@@ -12,7 +12,7 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::quartic::{ferrari, polish};
+use super::quartic::{first_root, Ill};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
@@ -45,7 +45,7 @@ impl Torus {
 /// the lane will hold them.
 ///
 /// Cheap rejections first (the sphere through the outer equator, the slab `|y| ≤ minor`, a
-/// span wholly inside the hole's cylinder), then the quartic in closed form (`quartic::ferrari`),
+/// span wholly inside the hole's cylinder), then the quartic in closed form (`quartic::first_root`),
 /// each root polished by Newton steps; where the closed form is ill-conditioned (a double root:
 /// a grazing ray) it answers `None` and the critical-point isolation `roots_in` decides.
 fn solve(
@@ -57,36 +57,11 @@ fn solve(
     round: impl Fn(f64) -> f64 + Copy,
 ) -> Option<f64> {
     let (c, lo, hi, t_c, len) = setup(o, d, minor, t_min, t_max)?;
-    let mut roots = [0.0; 4];
-    let mut tol = 0.0;
-    let Some(n) = ferrari(&c, &mut roots, &mut tol) else {
-        return isolate(&c, lo, hi, t_c, len, t_min, t_max, round);
+    let accept = |s: f64| {
+        let t = round(t_c + s / len);
+        (t > t_min && t < t_max).then_some(t)
     };
-    // Ascending (at most four): insertion sort; then each polished in turn up to the first in
-    // the interval, so that roots past the hit cost nothing.
-    for i in 1..n {
-        let mut j = i;
-        while j > 0 && roots[j - 1] > roots[j] {
-            roots.swap(j - 1, j);
-            j -= 1;
-        }
-    }
-    for &x in &roots[..n] {
-        if x > hi + 1e-6 * (hi.abs() + 1.0) {
-            // Far past the span (a polish moves a root by much less): so is every later one.
-            return None;
-        }
-        let Some(s) = polish(&c, x, tol) else {
-            return isolate(&c, lo, hi, t_c, len, t_min, t_max, round);
-        };
-        if s >= lo && s <= hi {
-            let t = round(t_c + s / len);
-            if t > t_min && t < t_max {
-                return Some(t);
-            }
-        }
-    }
-    None
+    first_root(&c, lo, hi, accept).unwrap_or_else(|Ill| isolate(&c, lo, hi, t_c, len, t_min, t_max, round))
 }
 
 /// The quartic in `s` (distance along the unit direction from the ray's point nearest the

@@ -87,7 +87,9 @@ impl MeshData {
     }
 
     /// The nearest face hit by the object-space `ray` in `(t_min, t_max)`: its distance and
-    /// index. Ties go to the face found first, the same on every path.
+    /// index. Of faces hit at exactly the same distance (a ray through a shared edge) the lowest
+    /// index wins, whatever order the walk finds them in, so a packet's walk
+    /// (`nearest_faces_lanes`) names the same face.
     #[inline]
     pub fn nearest(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<(f32, u32)> {
         // Idle lanes of a packet (a point at infinity, an empty interval): the slab test reads
@@ -96,10 +98,13 @@ impl MeshData {
             return None;
         }
         let lanes = ray.lanes();
-        let mut best = None;
-        self.bvh.traverse(ray, t_max, |f, t_max| {
-            let t = self.triangles[f as usize].hit(&lanes, t_min, t_max);
-            (t != MISS && self.above_floor(ray, t)).then(|| {
+        let mut best: Option<(f32, u32)> = None;
+        self.bvh.traverse(ray, t_max, |f, limit| {
+            // Up to the best distance itself, for a tie with a lower index.
+            let reach = if best.is_some() { limit.next_up() } else { limit };
+            let t = self.triangles[f as usize].hit(&lanes, t_min, reach);
+            let wins = t != MISS && best.is_none_or(|(b, g)| t < b || f < g);
+            (wins && self.above_floor(ray, t)).then(|| {
                 best = Some((t, f));
                 t
             })
@@ -107,14 +112,16 @@ impl MeshData {
         best
     }
 
-    /// `nearest`'s distances for a packet of object-space rays, walking the BVH once with all
-    /// lanes: a node is entered when any active lane's slab test (the same `node_slabs` the
-    /// single-ray walk uses) wants it, and each leaf's triangles are tested eight lanes at a time
-    /// with the single-ray kernel (`Triangle::hit` over `L`). Every lane's result is the least
-    /// `t` over the faces it hits in `(t_min, t_max)`, whatever the visiting order, so it is the
-    /// single-ray walk's `t` bit for bit (tests/suite/properties.rs checks it on random meshes).
+    /// `nearest` for a packet of object-space rays: each lane's distance and face (`u32::MAX`
+    /// where it missed), walking the BVH once with all lanes: a node is entered when any active
+    /// lane's slab test (the same `node_slabs` the single-ray walk uses) wants it, and each
+    /// leaf's triangles are tested eight lanes at a time with the single-ray kernel
+    /// (`Triangle::hit` over `L`). Every lane's result is the least `t` over the faces it hits
+    /// in `(t_min, t_max)`, ties to the lowest index, whatever the visiting order, so it is the
+    /// single-ray walk's `t` and face bit for bit (tests/suite/properties.rs checks it on random
+    /// meshes).
     #[inline(always)]
-    pub fn nearest_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+    pub fn nearest_faces_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
         self.walk_lanes::<L, false>(ray, t_min, t_max)
     }
 
@@ -123,17 +130,19 @@ impl MeshData {
     /// every active lane has stopped, so a blocked ray does not search on for a nearer face.
     #[inline(always)]
     pub fn first_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        self.walk_lanes::<L, true>(ray, t_min, t_max)
+        self.walk_lanes::<L, true>(ray, t_min, t_max).0
     }
 
-    /// The walk behind `nearest_lanes` (`FIRST` false) and `first_lanes` (`FIRST` true).
+    /// The walk behind `nearest_faces_lanes` (`FIRST` false) and `first_lanes` (`FIRST` true), with
+    /// each lane's face (for `FIRST`, the one that stopped it).
     #[inline(always)]
-    fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+    fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
         // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
         let finite = |v: &V3<L>, i: usize| v.x.get(i).is_finite() && v.y.get(i).is_finite() && v.z.get(i).is_finite();
         let active = L::mask_from_fn(|i| t_min.get(i) < t_max.get(i) && finite(&ray.o, i) && finite(&ray.d, i));
+        let mut faces = [u32::MAX; 8];
         if self.bvh.nodes.is_empty() || !L::any(active) {
-            return L::splat(MISS);
+            return (L::splat(MISS), faces);
         }
         // Each lane's current limit: -inf for idle lanes, which no node or face accepts.
         let mut limit = L::select(active, t_max, L::splat(f32::NEG_INFINITY));
@@ -154,18 +163,28 @@ impl MeshData {
             if enters(n, limit) {
                 if n.is_leaf() {
                     for f in n.first..n.first + n.count {
-                        let t = self.triangles[f as usize].hit(ray, t_min, limit);
-                        let mut hit = t.lt(limit);
+                        // As `nearest`: up to a lane's best distance itself, where a face of
+                        // lower index wins a tie.
+                        let found = best.lt(L::splat(MISS));
+                        let reach = if FIRST { limit } else { L::select(found, limit.map(f32::next_up), limit) };
+                        let t = self.triangles[f as usize].hit(ray, t_min, reach);
+                        let lower = L::mask_from_fn(|i| f < faces[i]);
+                        let mut hit = L::and(t.lt(reach), L::or(t.lt(limit), lower));
                         if self.floor != f32::NEG_INFINITY {
                             let y = ray.o.y + t * ray.d.y;
                             hit = L::and(hit, L::splat(self.floor).le(y));
                         }
                         best = L::select(hit, t, best);
+                        for (i, face) in faces.iter_mut().enumerate().take(L::WIDTH) {
+                            if L::mask_lane(hit, i) {
+                                *face = f;
+                            }
+                        }
                         if FIRST {
                             // A lane that has hit is done: no node or face accepts -inf.
                             limit = L::select(hit, L::splat(f32::NEG_INFINITY), limit);
                             if !L::any(L::lt(L::splat(f32::NEG_INFINITY), limit)) {
-                                return best;
+                                return (best, faces);
                             }
                         } else {
                             limit = L::select(hit, t, limit);
@@ -183,7 +202,7 @@ impl MeshData {
                 }
             }
             if sp == 0 {
-                return best;
+                return (best, faces);
             }
             sp -= 1;
             node = stack[sp];
@@ -285,6 +304,25 @@ impl Mesh {
         self.data.nearest(&self.object_ray(&o, &d, 0), t_min, t_max)
     }
 
+    /// `Shape::hit` and each lane's face (`u32::MAX` where it missed): the face `hit_face`
+    /// finds again at that distance, so packets of primary rays need not search again.
+    #[inline(always)]
+    pub fn hit_faces<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        if L::WIDTH > 1 {
+            return self.data.nearest_faces_lanes(&RayLanes { o, d, inv: d.recip() }, t_min, t_max);
+        }
+        let mut faces = [u32::MAX; 8];
+        let t = L::from_fn(|i| {
+            let r = self.object_ray(&o, &d, i);
+            let (t, face) = self.data.nearest(&r, t_min.get(i), t_max.get(i)).unwrap_or((MISS, u32::MAX));
+            faces[i] = face;
+            t
+        });
+        (t, faces)
+    }
+
     /// For shadow rays: `Shape::hit`, but each lane's first hit found rather than its nearest.
     #[inline(never)]
     pub fn first_hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
@@ -338,21 +376,13 @@ impl Mesh {
 
 impl Shape for Mesh {
     /// Packets (`F8`) walk the mesh's BVH together, carried into object space as a packet
-    /// (`MeshData::nearest_lanes`); single rays (f32, and f64, whose lanes are traced in f32)
+    /// (`MeshData::nearest_faces_lanes`); single rays (f32, and f64, whose lanes are traced in f32)
     /// walk it alone (`MeshData::nearest`). Both give the same `t`.
     // Not inlined into `Scene::hit_prim`: the dispatch every shape shares stays small, so
     // scenes without this kind do not pay for its code.
     #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let o = ray.o.transform_point(&self.frame.object_from_render);
-        let d = ray.d.transform_vector(&self.frame.object_from_render);
-        if L::WIDTH > 1 {
-            return self.data.nearest_lanes(&RayLanes { o, d, inv: d.recip() }, t_min, t_max);
-        }
-        L::from_fn(|i| {
-            let r = self.object_ray(&o, &d, i);
-            self.data.nearest(&r, t_min.get(i), t_max.get(i)).map_or(MISS, |(t, _)| t)
-        })
+        self.hit_faces(ray, t_min, t_max).0
     }
 
     /// Without a face the normal is unknown: hits on meshes are resolved to faces

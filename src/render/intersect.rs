@@ -41,6 +41,18 @@ impl Scene {
         self.hit_prim_in(p, ray, L::splat(0.0), t_max)
     }
 
+    /// `hit_prim`, and where `p` is a mesh or height field each lane's face (`u32::MAX`
+    /// elsewhere): the face `resolve` would find, found in the same walk.
+    #[inline(always)]
+    pub fn hit_prim_faces<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> (L, [u32; 8]) {
+        match p.kind {
+            ShapeKind::Mesh | ShapeKind::HeightField => {
+                self.meshes[p.index as usize].hit_faces(ray, L::splat(0.0), t_max)
+            }
+            _ => (self.hit_prim(p, ray, t_max), [u32::MAX; 8]),
+        }
+    }
+
     /// For shadow rays: a hit on `p` below `t_max` where there is one, `MISS` elsewhere, not
     /// necessarily the nearest. Meshes stop at the first face found; every other kind answers
     /// `hit_prim`.

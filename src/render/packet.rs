@@ -135,13 +135,21 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
     let o = rays[0].o.lane(0);
     let shared = rays[..rows].iter().all(|r| (0..8).all(|i| r.o.lane(i) == o));
     let frustum = shared.then_some(&frustum);
-    intersect_rows(scene, &rays[..rows], &mut t[..rows], &mut ids[..rows], frustum, &mut tracer.stats);
+    intersect_rows(
+        scene,
+        &rays[..rows],
+        &mut t[..rows],
+        &mut ids[..rows],
+        &mut faces[..rows],
+        frustum,
+        &mut tracer.stats,
+    );
     if !scene.csg.is_empty() || !scene.meshes.is_empty() {
-        // Hits on CSG nodes become hits on their leaves, and hits on meshes hits on their
-        // faces, one ray at a time (`Scene::resolve`).
+        // Hits on CSG nodes become hits on their leaves, and hits on meshes inside them hits on
+        // their faces, one ray at a time (`Scene::resolve`); other mesh hits know their faces.
         for r in 0..rows {
             for i in 0..lanes {
-                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i], NO_HIT) {
+                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i], faces[r][i]) {
                     match scene.resolve(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).shape {
                         HitShape::Prim(leaf) => ids[r][i] = leaf,
                         HitShape::Face { prim, face } => (ids[r][i], faces[r][i]) = (prim, face),
@@ -512,15 +520,16 @@ fn intersect_rows(
     rows: &[Ray8],
     t: &mut [F8],
     ids: &mut [[u32; 8]],
+    faces: &mut [[u32; 8]],
     frustum: Option<&Frustum>,
     stats: &mut RenderStats,
 ) {
     #[cfg(target_arch = "x86_64")]
     if has_avx2() {
         // SAFETY: the CPU supports AVX2, checked just above.
-        return unsafe { intersect_rows_avx2(scene, rows, t, ids, frustum, stats) };
+        return unsafe { intersect_rows_avx2(scene, rows, t, ids, faces, frustum, stats) };
     }
-    intersect_rows_generic(scene, rows, t, ids, frustum, stats)
+    intersect_rows_generic(scene, rows, t, ids, faces, frustum, stats)
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -530,21 +539,24 @@ unsafe fn intersect_rows_avx2(
     rows: &[Ray8],
     t: &mut [F8],
     ids: &mut [[u32; 8]],
+    faces: &mut [[u32; 8]],
     frustum: Option<&Frustum>,
     stats: &mut RenderStats,
 ) {
-    intersect_rows_generic(scene, rows, t, ids, frustum, stats)
+    intersect_rows_generic(scene, rows, t, ids, faces, frustum, stats)
 }
 
-/// Records the lanes where `t_new` beats `t` as hits on `id`.
+/// Records the lanes where `t_new` beats `t` as hits on `id`, on face `face[i]` of a mesh
+/// (`NO_HIT` for other shapes).
 #[inline(always)]
-fn take_nearer(t: &mut F8, ids: &mut [u32; 8], t_new: F8, id: u32) -> u32 {
+fn take_nearer(t: &mut F8, ids: &mut [u32; 8], faces: &mut [u32; 8], t_new: F8, id: u32, face: &[u32; 8]) -> u32 {
     let nearer = t_new.lt(*t);
     *t = F8::select(nearer, t_new, *t);
     let mut count = 0;
     for i in 0..8 {
         if nearer.lane(i) {
             ids[i] = id;
+            faces[i] = face[i];
             count += 1;
         }
     }
@@ -557,18 +569,19 @@ fn intersect_rows_generic(
     rows: &[Ray8],
     t: &mut [F8],
     ids: &mut [[u32; 8]],
+    faces: &mut [[u32; 8]],
     frustum: Option<&Frustum>,
     stats: &mut RenderStats,
 ) {
     for (p, plane) in scene.planes.iter().enumerate() {
         for (r, ray) in rows.iter().enumerate() {
             let tp = plane.hit(ray, F8::splat(0.0), t[r]);
-            let hits = take_nearer(&mut t[r], &mut ids[r], tp, PLANE_ID + p as u32);
+            let hits = take_nearer(&mut t[r], &mut ids[r], &mut faces[r], tp, PLANE_ID + p as u32, &[NO_HIT; 8]);
             stats.tests[ShapeKind::Plane as usize] += 8;
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
         }
     }
-    let mut test = NearestRows { scene, rows, ids, stats: RenderStats::default() };
+    let mut test = NearestRows { scene, rows, ids, faces, stats: RenderStats::default() };
     // Unbounded primitives (`Scene::unbounded`), for every row, as planes.
     for prim in scene.unbounded.clone() {
         for r in 0..rows.len() {
@@ -583,20 +596,23 @@ fn intersect_rows_generic(
     *stats += test.stats;
 }
 
-/// The nearest-hit primitive test for packets: records which primitive each lane hit.
+/// The nearest-hit primitive test for packets: records which primitive each lane hit, and
+/// on a mesh which face.
 struct NearestRows<'a, 'r> {
     scene: &'a Scene,
     rows: &'r [Ray8],
     ids: &'r mut [[u32; 8]],
+    faces: &'r mut [[u32; 8]],
     stats: RenderStats,
 }
 
 impl RowTest for NearestRows<'_, '_> {
     #[inline(always)]
     fn test(&mut self, prim: u32, r: usize, t: &mut F8) {
-        let t_new = prim_row(self.scene, prim, &self.rows[r], *t);
-        let kind = self.scene.prims[prim as usize].kind;
-        let hits = take_nearer(t, &mut self.ids[r], t_new, prim);
+        let p = &self.scene.prims[prim as usize];
+        let (t_new, face) = self.scene.hit_prim_faces(p, &self.rows[r], *t);
+        let kind = p.kind;
+        let hits = take_nearer(t, &mut self.ids[r], &mut self.faces[r], t_new, prim, &face);
         self.stats.tests[kind as usize] += 8;
         self.stats.hits[kind as usize] += hits as u64;
     }
@@ -633,12 +649,6 @@ impl RowTest for BlockedRows<'_, '_> {
         self.stats.hits[p.kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
         self.block(r, t, hit);
     }
-}
-
-/// One primitive against a row of rays: hit distances below `t_max`, else `MISS`.
-#[inline(always)]
-fn prim_row(scene: &Scene, prim: u32, ray: &Ray8, t_max: F8) -> F8 {
-    scene.hit_prim(&scene.prims[prim as usize], ray, t_max)
 }
 
 /// Which lanes of each row are blocked before their `t_max` (`IntersectP` for packets).

@@ -34,25 +34,31 @@ fn slabs<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>) -> (L, L) {
     (near.x.max(near.y).max(near.z), far.x.min(far.y).min(far.z))
 }
 
-/// Ray/box: the slab test; the far side counts when the origin is inside.
-#[inline(always)]
-fn aabb<L: Lane>(min: V3<L>, max: V3<L>, o: V3<L>, inv: V3<L>, t_min: L, t_max: L) -> L {
-    let (near, far) = slabs(min, max, o, inv);
-    pick_root(near.le(far), near, far, t_min, t_max)
-}
-
-impl Shape for Cuboid {
+impl Cuboid {
+    /// Where the ray's line crosses the box: whether it does, and its entry and exit distances
+    /// (the slab test). `hit` picks from these, so a caller that keeps them (CSG) gets `hit`'s
+    /// bits for any interval without solving again.
     #[inline(always)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+    pub fn span<L: Lane>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
         let (lo, hi) = (V3::splat(self.min), V3::splat(self.max));
-        match &self.frame {
-            None => aabb(lo, hi, ray.o, ray.inv, t_min, t_max),
+        let (near, far) = match &self.frame {
+            None => slabs(lo, hi, ray.o, ray.inv),
             Some(f) => {
                 let o = ray.o.transform_point(&f.object_from_render);
                 let d = ray.d.transform_vector(&f.object_from_render);
-                aabb(lo, hi, o, d.recip(), t_min, t_max)
+                slabs(lo, hi, o, d.recip())
             }
-        }
+        };
+        (near.le(far), near, far)
+    }
+}
+
+impl Shape for Cuboid {
+    /// The slab test; the far side counts when the origin is inside.
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let (valid, near, far) = self.span(ray);
+        pick_root(valid, near, far, t_min, t_max)
     }
 
     /// Outward normal of the face nearest to `p` (a point on the surface, render space).

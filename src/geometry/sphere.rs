@@ -17,8 +17,9 @@ pub struct Sphere {
 /// The stable roots of `|o + t·d|² = r²` for `oc = o − centre` and `a = d·d`: the discriminant
 /// as `r² − |oc − (oc·d/a)d|²` and the roots as `c/q` and `q` with `q = −b − sign(b)·√(disc/a)`,
 /// so neither cancels catastrophically (for small or far spheres). `a = 1` for a unit `d`.
+/// Returns whether the line meets the sphere, and the near and far roots.
 #[inline(always)]
-fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L, t_min: L, t_max: L) -> L {
+fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L) -> (L::Mask, L, L) {
     let b = match a {
         Some(a) => oc.dot(d) / a,
         None => oc.dot(d),
@@ -37,15 +38,26 @@ fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L, t_min: L, t_m
     let safe_q = L::select(q_zero, L::splat(1.0), q);
     let t0 = L::select(q_zero, L::splat(0.0), c / safe_q);
     let t1 = L::select(q_zero, L::splat(0.0), q);
-    pick_root(valid, t0.min(t1), t0.max(t1), t_min, t_max)
+    (valid, t0.min(t1), t0.max(t1))
+}
+
+impl Sphere {
+    /// Where the ray's line crosses the sphere: whether it does, and the near and far roots.
+    /// `hit` picks from these, so a caller that keeps them (CSG) gets `hit`'s bits for any
+    /// interval without solving again.
+    #[inline(always)]
+    pub fn span<L: Lane>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
+        let r = L::splat(self.radius);
+        stable_roots(ray.o.sub(V3::splat(self.center)), ray.d, None, r * r)
+    }
 }
 
 impl Shape for Sphere {
     /// Nearest root in `(t_min, t_max)`: the near one from outside, the far one from inside.
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let r = L::splat(self.radius);
-        stable_roots(ray.o.sub(V3::splat(self.center)), ray.d, None, r * r, t_min, t_max)
+        let (valid, near, far) = self.span(ray);
+        pick_root(valid, near, far, t_min, t_max)
     }
 
     #[inline(always)]
@@ -136,6 +148,14 @@ impl Ellipsoid {
         let c: Vec3 = render_from_object.translation.into();
         Ellipsoid { frame: super::cuboid::frame_for(render_from_object), min: c - rows, max: c + rows }
     }
+
+    /// `Sphere::span` for the ellipsoid: the unit sphere's roots in object space.
+    #[inline(always)]
+    pub fn span<L: Lane>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        stable_roots(o, d, Some(d.dot(d)), L::splat(1.0))
+    }
 }
 
 impl Shape for Ellipsoid {
@@ -143,9 +163,8 @@ impl Shape for Ellipsoid {
     /// object-space direction is not renormalised.
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let o = ray.o.transform_point(&self.frame.object_from_render);
-        let d = ray.d.transform_vector(&self.frame.object_from_render);
-        stable_roots(o, d, Some(d.dot(d)), L::splat(1.0), t_min, t_max)
+        let (valid, near, far) = self.span(ray);
+        pick_root(valid, near, far, t_min, t_max)
     }
 
     #[inline(always)]

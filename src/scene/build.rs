@@ -47,7 +47,7 @@ use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::atmosphere::Atmosphere;
-use crate::scene::csg::{is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
+use crate::scene::csg::{has_span, is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
 pub use crate::scene::light::Light;
 use crate::scene::material::Material;
 use crate::scene::place::RenderShape;
@@ -341,14 +341,23 @@ impl Scene {
                     for index in self.store_glyphs(render_from_object, glyphs, thickness) {
                         let prim =
                             PrimRef { kind: ShapeKind::Prism, casts_shadow: !object.no_shadow, index, material, flip };
-                        surface.grow(&self.bounds_of(&prim));
+                        let b = self.bounds_of(&prim);
+                        surface.grow(&b);
                         leaves.push(prim);
                         let target = CsgTarget::Leaf(leaves.len() as u32 - 1);
-                        self.csg_children.push(CsgChild { target, inverse: false });
+                        self.csg_children.push(CsgChild::new(target, false, &ChildBounds::of_leaf(b, false)));
                     }
                     let count = self.csg_children.len() as u32 - first;
                     let (min, max) = (surface.min, surface.max);
-                    self.csg.push(CsgNode { rule: CsgRule::Union, first, count, surfaces: count, min, max });
+                    self.csg.push(CsgNode {
+                        rule: CsgRule::Union,
+                        first,
+                        count,
+                        surfaces: count,
+                        min,
+                        max,
+                        spans: false,
+                    });
                     let node = CsgTarget::Node(self.csg.len() as u32 - 1);
                     return (node, ChildBounds::of_leaf(surface, object.inverse));
                 }
@@ -356,11 +365,17 @@ impl Scene {
             };
             self.bound_by(kind, index, object);
             let prim = PrimRef { kind, casts_shadow: !object.no_shadow, index, material, flip };
-            let bounds = if kind == ShapeKind::Plane {
+            let mut bounds = if kind == ShapeKind::Plane {
                 ChildBounds::of_plane(&self.half_spaces[index as usize], object.inverse)
             } else {
                 ChildBounds::of_leaf(self.bounds_of(&prim), object.inverse)
             };
+            // Solids whose inside test may hold outside their box: a polynomial's (`bounded_by`
+            // narrows its box, not its inside; an inverted quadric), a blob's (a threshold of
+            // zero or less holds far from every component).
+            if matches!(kind, ShapeKind::Poly | ShapeKind::Blob) {
+                bounds.solid = EVERYWHERE;
+            }
             leaves.push(prim);
             return (CsgTarget::Leaf(leaves.len() as u32 - 1), bounds);
         };
@@ -371,28 +386,35 @@ impl Scene {
             let inverse = subtracts && i > 0;
             let (target, b) = self.add_csg_child(c, flip ^ inverse, leaves);
             let b = if inverse { ChildBounds { inside: EVERYWHERE, ..b } } else { b };
-            kids.push(CsgChild { target, inverse: inverse ^ c.inverse });
+            kids.push((target, inverse ^ c.inverse));
             bounds.push(b);
         }
         let surfaces = if all_surfaces { kids.len() } else { kids.len().min(1) };
         if rule == CsgRule::All {
             // A quadric's inside within what the other children allow (a cylinder cut by two
             // planes): chess2.pov's pieces, unbounded otherwise, are then bounded.
-            let within = ChildBounds::of_node(rule, &bounds, surfaces, false).inside;
-            for (b, kid) in bounds.iter_mut().zip(&kids) {
-                let CsgTarget::Leaf(l) = kid.target else { continue };
+            let node = ChildBounds::of_node(rule, &bounds, surfaces, false);
+            for (b, &(target, inverse)) in bounds.iter_mut().zip(&kids) {
+                let CsgTarget::Leaf(l) = target else { continue };
                 let prim = leaves[l as usize];
-                if kid.inverse || prim.kind != ShapeKind::Poly {
+                if inverse || prim.kind != ShapeKind::Poly {
                     continue;
                 }
-                if let Some((lo, hi)) = self.polys[prim.index as usize].inside_bounds_within(within.min, within.max) {
+                let poly = &self.polys[prim.index as usize];
+                if let Some((lo, hi)) = poly.inside_bounds_within(node.inside.min, node.inside.max) {
                     b.inside = Aabb::new(lo, hi);
+                }
+                // The same within what the other children's inside tests allow (`solid`): a
+                // point outside it fails this child's test or another's.
+                if let Some((lo, hi)) = poly.inside_bounds_within(node.solid.min, node.solid.max) {
+                    b.solid = Aabb::new(lo, hi);
                 }
             }
         }
         let b = ChildBounds::of_node(rule, &bounds, surfaces, object.inverse);
+        let spans = kids.iter().all(|(t, _)| matches!(t, CsgTarget::Leaf(l) if has_span(leaves[*l as usize].kind)));
         let first = self.csg_children.len() as u32;
-        self.csg_children.extend(kids);
+        self.csg_children.extend(kids.iter().zip(&bounds).map(|(&(t, inv), b)| CsgChild::new(t, inv, b)));
         self.csg.push(CsgNode {
             rule,
             first,
@@ -400,6 +422,7 @@ impl Scene {
             surfaces: surfaces as u32,
             min: b.surface.min,
             max: b.surface.max,
+            spans,
         });
         (CsgTarget::Node(self.csg.len() as u32 - 1), b)
     }

@@ -10,6 +10,7 @@ use glam::Vec3;
 
 use crate::accel::aabb::Aabb;
 use crate::desc::CsgOp;
+use crate::scene::build::ShapeKind;
 
 /// How a node's children combine.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,12 +36,21 @@ pub struct CsgNode {
     /// Render-space bounds of the node's surface (infinite where unbounded).
     pub min: Vec3,
     pub max: Vec3,
+    /// Every child is a leaf of a kind with a `span` (`has_span`): the queries may keep each
+    /// child's crossings instead of searching it again.
+    pub spans: bool,
 }
 
 impl CsgNode {
     pub fn children(&self) -> std::ops::Range<usize> {
         self.first as usize..(self.first + self.count) as usize
     }
+}
+
+/// Whether leaves of `kind` tell where the ray's line crosses them as one pair of roots
+/// (`span`), from which their `hit` picks: convex solids solved in closed form.
+pub fn has_span(kind: ShapeKind) -> bool {
+    matches!(kind, ShapeKind::Box | ShapeKind::Sphere | ShapeKind::Ellipsoid)
 }
 
 /// What a child is.
@@ -52,11 +62,36 @@ pub enum CsgTarget {
     Node(u32),
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CsgChild {
     pub target: CsgTarget,
     /// Inside and outside swap (`inverse`, or a subtracted child of `difference`).
     pub inverse: bool,
+    /// Where the child's surface can be, padded for rounding (`padded`): a ray that misses it
+    /// crosses no surface of the child.
+    pub surface: Aabb,
+    /// Where the child's solid (before `inverse`) can be, padded: a point outside it is
+    /// outside the solid, so inside the child exactly when the child is inverted.
+    pub solid: Aabb,
+}
+
+impl CsgChild {
+    pub fn new(target: CsgTarget, inverse: bool, bounds: &ChildBounds) -> CsgChild {
+        CsgChild { target, inverse, surface: padded(&bounds.surface), solid: padded(&bounds.solid) }
+    }
+}
+
+/// `b` widened by a part in 10⁵ of its size and of its distance from the origin (and 10⁻⁶),
+/// so that a point the shape's own test may round onto its surface is never outside it.
+pub fn padded(b: &Aabb) -> Aabb {
+    if b.is_empty() {
+        return *b;
+    }
+    let scale = b.min.abs().max(b.max.abs()).max(b.max - b.min);
+    let pad = scale * 1e-5 + Vec3::splat(1e-6);
+    // Infinite sides stay infinite (∞ + ∞); a finite side moves out by its pad.
+    let pad = Vec3::select(pad.is_finite_mask(), pad, Vec3::ZERO);
+    Aabb { min: b.min - pad, max: b.max + pad }
 }
 
 impl CsgOp {
@@ -81,13 +116,15 @@ pub const EVERYWHERE: Aabb = Aabb { min: Vec3::splat(f32::NEG_INFINITY), max: Ve
 pub struct ChildBounds {
     pub surface: Aabb,
     pub inside: Aabb,
+    /// `inside` before the child's own inversion: where its solid can be.
+    pub solid: Aabb,
 }
 
 impl ChildBounds {
     /// A solid primitive's (its inside is within its surface's box); an inverted child's inside
     /// is everywhere.
     pub fn of_leaf(surface: Aabb, inverse: bool) -> ChildBounds {
-        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { surface } }
+        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { surface }, solid: surface }
     }
 
     /// A plane's: its surface is unbounded, and so is its inside unless the plane is
@@ -95,19 +132,19 @@ impl ChildBounds {
     /// bounds an intersection with it.
     pub fn of_plane(plane: &crate::geometry::plane::Plane, inverse: bool) -> ChildBounds {
         let (n, d) = (plane.normal, plane.distance);
-        let mut inside = EVERYWHERE;
+        let mut solid = EVERYWHERE;
         let axes: Vec<usize> = (0..3).filter(|&k| n[k] != 0.0).collect();
-        if let (&[k], false) = (axes.as_slice(), inverse) {
+        if let &[k] = axes.as_slice() {
             // n_k · p_k < d, padded for rounding.
             let edge = d / n[k];
             let edge = edge + edge.abs().max(1.0) * 1e-5 * n[k].signum();
             if n[k] > 0.0 {
-                inside.max[k] = edge;
+                solid.max[k] = edge;
             } else {
-                inside.min[k] = edge;
+                solid.min[k] = edge;
             }
         }
-        ChildBounds { surface: EVERYWHERE, inside }
+        ChildBounds { surface: EVERYWHERE, inside: if inverse { EVERYWHERE } else { solid }, solid }
     }
 
     /// A node over children with these bounds (`surfaces` of them surfaces), under `rule`.
@@ -116,19 +153,29 @@ impl ChildBounds {
         for c in &children[..surfaces] {
             surface.grow(&c.surface);
         }
-        let inside = match rule {
+        // `inside` bounds where the node's surface may show; `solid` where its inside test
+        // may hold, from each child's box as its own test sees it (`held`).
+        let held = |c: &ChildBounds| {
+            let mut b = c.inside;
+            b.grow(&c.solid);
+            b
+        };
+        let (inside, solid) = match rule {
             CsgRule::Union | CsgRule::Merge => {
-                let mut b = Aabb::EMPTY;
-                children.iter().for_each(|c| b.grow(&c.inside));
-                b
+                let (mut b, mut s) = (Aabb::EMPTY, Aabb::EMPTY);
+                children.iter().for_each(|c| {
+                    b.grow(&c.inside);
+                    s.grow(&held(c));
+                });
+                (b, s)
             }
             CsgRule::All => {
                 let b = children.iter().fold(EVERYWHERE, |b, c| intersect(&b, &c.inside));
                 surface = intersect(&surface, &b);
-                b
+                (b, children.iter().fold(EVERYWHERE, |s, c| intersect(&s, &held(c))))
             }
         };
-        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { inside } }
+        ChildBounds { surface, inside: if inverse { EVERYWHERE } else { inside }, solid }
     }
 }
 

@@ -1113,6 +1113,97 @@ fn csg_surfaces_match_a_crossing_reference() {
     assert!(compared > 3000 && hits > 250, "{compared} rays compared, {hits} hits");
 }
 
+/// `intersection`, `difference` and `clipped_by` of many boxes, spheres and ellipsoids (the
+/// children whose crossings the node keeps, `csg::has_span`; 70 of them are more than it keeps)
+/// against a reference from each child's crossings and the children's own inside tests: the
+/// same nearest hit and the same leaf, and packets the single ray's bits.
+#[test]
+fn csg_of_convex_solids_matches_the_inside_test_reference() {
+    use strahl::desc::CsgOp;
+    use strahl::lanes::{Lane, F8};
+    use strahl::ray::MISS;
+    use strahl::scene::csg::{CsgRule, CsgTarget};
+    let r = &mut Rng(0x5BA4);
+    let (mut compared, mut hits, mut spans) = (0, 0, 0);
+    for case in 0..120 {
+        let count = [2, 3, 8, 40, 70][case % 5];
+        let children = (0..count)
+            .map(|_| {
+                let shape = match r.pick(3) {
+                    0 => ShapeDesc::Sphere { center: r.v(-0.5, 0.5), radius: r.f(0.8, 1.6) },
+                    1 => ShapeDesc::Box { corner1: r.v(-1.5, -0.5), corner2: r.v(0.5, 1.5) },
+                    // An ellipsoid: a sphere under a non-uniform scale.
+                    _ => ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.0 },
+                };
+                let transform = match &shape {
+                    ShapeDesc::Sphere { radius, .. } if *radius == 1.0 => {
+                        xf(DMat4::from_rotation_y(r.f(-3.2, 3.2)) * DMat4::from_scale(r.v(0.8, 1.8)))
+                    }
+                    _ if r.pick(2) == 0 => xf(DMat4::from_rotation_x(r.f(-3.2, 3.2))),
+                    _ => Transform::default(),
+                };
+                ObjectDesc { shape, transform, inverse: r.pick(10) == 0, ..csg_leaf(r) }
+            })
+            .collect();
+        let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip][r.pick(3) as usize];
+        let scene = csg_scene(ObjectDesc { shape: ShapeDesc::Csg { op, children }, inverse: false, ..csg_leaf(r) });
+        let Some(&node) = scene.prims.first() else { continue };
+        let n = scene.csg[node.index as usize];
+        assert_eq!(n.rule, CsgRule::All);
+        spans += n.spans as usize;
+        let kids = &scene.csg_children[n.children()];
+        for _ in 0..60 {
+            // From afar towards the middle, so that most rays meet the node.
+            let origin = r.unit().as_vec3() * 8.0;
+            let ray = Ray::new(origin, (r.v(-1.0, 1.0).as_vec3() - origin).normalize());
+            let (t, leaf) = scene.hit_csg(node.index, &ray.lanes(), 0.0, f32::INFINITY);
+            let mut rays = [Ray::new(r.unit().as_vec3() * 8.0, -r.unit().as_vec3()); 8];
+            rays[5] = ray;
+            let packet = strahl::accel::packet::Ray8::from_fn(|i| (rays[i].origin, rays[i].dir, rays[i].inv_dir));
+            let (t8, leaf8) = scene.hit_csg(node.index, &packet, F8::splat(0.0), F8::splat(MISS));
+            assert_eq!((t8.0[5].to_bits(), leaf8.0[5].to_bits()), (t.to_bits(), leaf.to_bits()), "lane against ray");
+            // Reference: each surface child's crossings, kept where every other child's own
+            // inside test agrees; the nearest wins, the first child's on a tie.
+            let mut all = Vec::new();
+            let mut expected: Option<(f32, u32)> = None;
+            for (i, c) in kids.iter().enumerate() {
+                let CsgTarget::Leaf(l) = c.target else { panic!("leaves only") };
+                let mut from = 0.0f32;
+                loop {
+                    let x = scene.hit_prim_in(&scene.prims[l as usize], &ray.lanes(), from, MISS);
+                    if x == MISS {
+                        break;
+                    }
+                    all.push(x);
+                    from = x;
+                    let p = strahl::lanes::V3::from_vec3(ray.at(x));
+                    let kept = kids.iter().enumerate().filter(|&(j, _)| j != i).all(|(_, o)| {
+                        let CsgTarget::Leaf(m) = o.target else { unreachable!() };
+                        scene.inside_prim(&scene.prims[m as usize], p) != o.inverse
+                    });
+                    if kept && i < n.surfaces as usize && expected.is_none_or(|(e, _)| x < e) {
+                        expected = Some((x, l));
+                    }
+                }
+            }
+            all.sort_by(f32::total_cmp);
+            // Two crossings within rounding of each other (an edge) decide by rounding.
+            if all.windows(2).any(|w| w[1] - w[0] < 1e-3) {
+                continue;
+            }
+            match expected {
+                Some((e, l)) => {
+                    assert_eq!((t, leaf as u32), (e, l), "case {case}: ray {ray:?}");
+                    hits += 1;
+                }
+                None => assert_eq!(t, MISS, "case {case}: ray {ray:?}"),
+            }
+            compared += 1;
+        }
+    }
+    assert!(spans > 80 && compared > 3000 && hits > 1000, "{spans} nodes with spans, {compared} rays, {hits} hits");
+}
+
 /// A `bicubic_patch` with random control points around a 6-unit square and random steps, read
 /// through the parser (which tessellates it into a mesh).
 fn random_patch(r: &mut Rng, case: u64) -> strahl::desc::MeshDesc {

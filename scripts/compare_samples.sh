@@ -19,7 +19,9 @@
 # Environment: SCENES (list file; tests/samples/scenes.txt), ROOT (/usr/share/povray-3.7/scenes),
 # REPEATS (1), FRAMES (5), ORBIT_SECONDS (5), VIEW (1; 0 skips the window), TIMEOUT (per
 # command, seconds; 600), NOTE (a line for the machine's state), STRAHL (the binary; target/release/strahl if built, else
-# target/quick/strahl), OUT (docs/perf/samples-DATE.md), ONLY (a grep pattern of scenes to run).
+# target/quick/strahl), OUT (docs/perf/samples-DATE.md), ONLY (a grep pattern of scenes to run),
+# BASE (a second strahl binary, e.g. the previous commit's: each scene is timed with it just
+# before STRAHL, and the table gets its columns and a before/after summary).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -39,6 +41,9 @@ if [[ -z ${STRAHL:-} ]]; then
     if [[ -x target/release/strahl ]]; then STRAHL=$root/target/release/strahl; else STRAHL=$root/target/quick/strahl; fi
 fi
 [[ $STRAHL == /* ]] || STRAHL=$root/$STRAHL
+BASE=${BASE:-}
+[[ -z $BASE || $BASE == /* ]] || BASE=$root/$BASE
+[[ -z $BASE || -x $BASE ]] || { echo "compare_samples.sh: no binary at BASE=$BASE" >&2; exit 1; }
 
 if ! command -v povray >/dev/null 2>&1; then
     echo "compare_samples.sh: povray not found on PATH; nothing to compare with." >&2
@@ -55,9 +60,10 @@ trap 'rm -rf "$work"' EXIT
 # median, json_num, povray_ms
 source "$root/scripts/lib/compare.sh"
 
-# One row: "| scene | povray ms | strahl ms | ratio | fps | scale | note |".
+# One row: "| scene | povray ms | strahl ms | ratio | fps | scale | note |", with BASE
+# "| scene | povray ms | base ms | base ratio | strahl ms | ratio | fps | scale | note |".
 row() {
-    local scene=$1 dir file pov ms ratio fps scale note=""
+    local scene=$1 dir file pov ms ratio fps scale note="" base_cols=""
     dir=$work/scene
     rm -rf "$dir"
     mkdir -p "$dir"
@@ -65,14 +71,15 @@ row() {
     file=$(basename "$scene")
     pov=$(povray_ms "$dir" "$file")
     [[ -n $pov ]] || note="POV-Ray: $(cat "$work/why")"
-    ms=""
-    if (cd "$dir" && timeout "$TIMEOUT" "$STRAHL" bench "$file" -W 640 -H 480 --frames "$FRAMES" --warmup 1 \
-        --json "$work/bench.json" >/dev/null 2>"$work/bench.err"); then
-        ms=$(json_num "$work/bench.json" median_ms | awk '{ printf "%.1f", $1 }')
-    else
-        note="${note:+$note; }strahl: $(grep -m1 error "$work/bench.err" | cut -c1-80)"
+    if [[ -n $BASE ]]; then
+        local base_ms
+        base_ms=$(strahl_ms "$BASE" "$dir" "$file" 1)
+        [[ -n $base_ms ]] || note="${note:+$note; }base: $(cat "$work/why_strahl")"
+        base_cols=" $base_ms | $(ratio_of "$pov" "$base_ms") |"
     fi
-    ratio=$(awk -v a="$pov" -v b="$ms" 'BEGIN { if (a != "" && b != "" && b > 0) printf "%.1f", a / b; else printf "" }')
+    ms=$(strahl_ms "$STRAHL" "$dir" "$file" 1)
+    [[ -n $ms ]] || note="${note:+$note; }strahl: $(cat "$work/why_strahl")"
+    ratio=$(ratio_of "$pov" "$ms")
     fps=""
     scale=""
     if [[ $VIEW == 1 && -n $ms ]]; then
@@ -89,7 +96,7 @@ row() {
             note="${note:+$note; }view: $(grep -m1 -i error "$work/orbit.err" "$work/view.err" | cut -c1-80)"
         fi
     fi
-    echo "| $2 | $pov | $ms | $ratio | $fps | $scale | $note |"
+    echo "| $2 | $pov |$base_cols $ms | $ratio | $fps | $scale | $note |"
 }
 
 commit=$(git rev-parse --short HEAD)
@@ -106,11 +113,21 @@ while read -r scene; do
     row "$ROOT/$scene" "$scene" >>"$rows"
 done <"$SCENES"
 
-ratios=$(awk -F'|' '$5 ~ /[0-9]/ { print $5 }' "$rows" | median)
-fpss=$(awk -F'|' '$6 ~ /[0-9]/ { print $6 }' "$rows" | median)
-below=$(awk -F'|' '$5 ~ /[0-9]/ && $5 + 0 < 10 { n++ } END { print n + 0 }' "$rows")
-measured=$(awk -F'|' '$5 ~ /[0-9]/ { n++ } END { print n + 0 }' "$rows")
-seed_ratio=$(echo "$seed_row" | awk -F'|' '{ gsub(/ /, "", $5); print $5 }')
+# The ratio's column (awk field): after the base's two columns when BASE is set.
+rc=5
+[[ -z $BASE ]] || rc=7
+ratios=$(awk -F'|' -v c=$rc '$c ~ /[0-9]/ { print $c }' "$rows" | median)
+fpss=$(awk -F'|' -v c=$((rc + 1)) '$c ~ /[0-9]/ { print $c }' "$rows" | median)
+below=$(awk -F'|' -v c=$rc '$c ~ /[0-9]/ && $c + 0 < 10 { n++ } END { print n + 0 }' "$rows")
+measured=$(awk -F'|' -v c=$rc '$c ~ /[0-9]/ { n++ } END { print n + 0 }' "$rows")
+seed_ratio=$(echo "$seed_row" | awk -F'|' -v c=$rc '{ gsub(/ /, "", $c); print $c }')
+# The worst scene (lowest ratio) of a ratio column, as "ratio× scene".
+worst() { awk -F'|' -v c="$1" '$c ~ /[0-9]/ { gsub(/ /, "", $2); print $c + 0, $2 }' "$rows" | sort -g | head -1 | awk '{ print $1 "× " $2 }'; }
+before=""
+if [[ -n $BASE ]]; then
+    base_median=$(awk -F'|' '$5 ~ /[0-9]/ { print $5 }' "$rows" | median)
+    before="Before (BASE): median ${base_median:-n/a}×, worst $(worst 5); after: median ${ratios:-n/a}×, worst $(worst 7). "
+fi
 
 tmp_out=$OUT.tmp.$$
 {
@@ -122,10 +139,17 @@ tmp_out=$OUT.tmp.$$
     echo "- ratio: POV-Ray ms / strahl ms (higher is faster); window: \`strahl path orbit --seconds $ORBIT_SECONDS\` then \`xvfb-run strahl view --path --report\` at 640x480, target 60 fps: fps = 1000 / median frame interval, scale = mean adaptive render scale"
     echo "- generated by \`scripts/compare_samples.sh\`"
     echo
-    echo "**Median ratio: ${ratios:-n/a}× over $measured scenes ($below below 10×); seed scene: ${seed_ratio:-n/a}× in the same run. Median window fps: ${fpss:-n/a}.**"
+    [[ -z $BASE ]] || echo "- base: binary $BASE, timed just before strahl on each scene, in the same run"
     echo
-    echo "| scene | POV-Ray ms | strahl ms | ratio | window fps | scale | notes |"
-    echo "|---|---:|---:|---:|---:|---:|---|"
+    echo "**${before}Median ratio: ${ratios:-n/a}× over $measured scenes ($below below 10×); seed scene: ${seed_ratio:-n/a}× in the same run. Median window fps: ${fpss:-n/a}.**"
+    echo
+    if [[ -n $BASE ]]; then
+        echo "| scene | POV-Ray ms | base ms | base ratio | strahl ms | ratio | window fps | scale | notes |"
+        echo "|---|---:|---:|---:|---:|---:|---:|---:|---|"
+    else
+        echo "| scene | POV-Ray ms | strahl ms | ratio | window fps | scale | notes |"
+        echo "|---|---:|---:|---:|---:|---:|---|"
+    fi
     echo "$seed_row"
     cat "$rows"
 } >"$tmp_out"

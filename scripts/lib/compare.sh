@@ -21,3 +21,21 @@ povray_ms() {
     done
     printf '%s\n' "${times[@]}" | median | awk '{ printf "%.1f", $1 * 1000 }'
 }
+
+# strahl's median frame in ms (bench at 640x480, FRAMES frames after one warm-up, all cores) of
+# scene $3 in folder $2 with binary $1, printed with $4 decimals; empty with the first error line
+# in $work/why_strahl.
+strahl_ms() {
+    local bin=$1 dir=$2 file=$3 digits=$4
+    if (cd "$dir" && timeout "$TIMEOUT" "$bin" bench "$file" -W 640 -H 480 --frames "$FRAMES" --warmup 1 \
+        --json "$work/bench.json" >/dev/null 2>"$work/bench.err"); then
+        json_num "$work/bench.json" median_ms | awk -v d="$digits" '{ printf "%.*f", d, $1 }'
+    else
+        grep -m1 error "$work/bench.err" | cut -c1-80 >"$work/why_strahl" || echo "failed" >"$work/why_strahl"
+    fi
+}
+
+# POV-Ray ms / strahl ms, or empty where either is missing.
+ratio_of() {
+    awk -v a="$1" -v b="$2" 'BEGIN { if (a != "" && b != "" && b > 0) printf (a / b >= 1 ? "%.1f" : "%.2g"), a / b }'
+}

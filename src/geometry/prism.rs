@@ -16,8 +16,9 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+use super::bernstein::roots_between;
 use super::cuboid::{frame_for, BoxFrame};
-use super::roots::{roots_in, MAX_DEGREE};
+use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
@@ -162,7 +163,7 @@ impl Prism {
                 continue;
             }
             let (c, n) = p.combine(a, b, k);
-            let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+            let m = roots_between(&c[..n], 0.0, 1.0, &mut roots);
             for &t in &roots[..m] {
                 let w = p.at(t);
                 let s = if self.conic {

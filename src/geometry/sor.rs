@@ -11,9 +11,10 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+use super::bernstein::roots_between;
 use super::cuboid::{frame_for, BoxFrame};
-use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, misses_band, transformed_bounds};
+use super::roots::MAX_DEGREE;
+use super::{affine_f32, transformed_bounds, RadialRay};
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
@@ -22,7 +23,7 @@ struct Segment {
     hi: f64,
     k: [f64; 4],
     /// The smallest and largest `r²` over `lo..=hi` (`r2_range`): a ray outside that band
-    /// misses the segment (`misses_band`).
+    /// misses the segment (`RadialRay::misses`).
     r2_min: f64,
     r2_max: f64,
 }
@@ -125,7 +126,7 @@ fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
 fn r2_range(s: &Segment) -> (f64, f64) {
     let (mut lo, mut hi) = (s.f(s.lo).min(s.f(s.hi)), s.f(s.lo).max(s.f(s.hi)));
     let mut roots = [0.0; MAX_DEGREE];
-    let n = roots_in(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
+    let n = roots_between(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
     for &y in &roots[..n] {
         (lo, hi) = (lo.min(s.f(y)), hi.max(s.f(y)));
     }
@@ -167,23 +168,34 @@ impl Sor {
 
     fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
         let mut best = t_max;
-        let (dh2, odh, oh2) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z, o.x * o.x + o.z * o.z);
+        let band = RadialRay::new(o, d);
+        let (dh2, odh, oh2) = (band.dh2, band.odh, band.oh2);
         let mut roots = [0.0; MAX_DEGREE];
         for s in &self.segments {
-            // The span of t where the ray is within the segment's heights.
+            // The span of t where the ray is within the segment's heights and its widest radius
+            // (a root lies in both). The cubic is solved on all of it, not on the part inside
+            // (t_min, best): its roots then do not depend on t_min, so a root just below an f32
+            // t_min comes out at the same bits again and is passed over when `hit_lanes_f64`
+            // asks past it.
             let (lo, hi) = if d.y != 0.0 {
                 let (a, b) = ((s.lo - o.y) / d.y, (s.hi - o.y) / d.y);
-                (a.min(b).max(t_min), a.max(b).min(best))
+                (a.min(b), a.max(b))
             } else if o.y >= s.lo && o.y <= s.hi {
-                // Level: a circle; the cubic drops to a quadratic with finite roots.
-                (t_min, best)
+                // Level: a circle; the cubic drops to a quadratic.
+                (f64::NEG_INFINITY, f64::INFINITY)
             } else {
                 continue;
             };
-            if lo >= hi || lo.is_nan() || hi.is_nan() {
+            let (lo, hi) = match band.within(s.r2_max) {
+                Some((a, b)) => (lo.max(a), hi.min(b)),
+                None if dh2 > 0.0 => continue,
+                None => (lo, hi),
+            };
+            let (near, far) = (lo.max(t_min), hi.min(best));
+            if near >= far || near.is_nan() || far.is_nan() {
                 continue;
             }
-            if misses_band(dh2, odh, oh2, lo, hi, s.r2_min, s.r2_max) {
+            if band.misses(near, far, s.r2_min, s.r2_max) {
                 continue;
             }
             // f(o.y + t·d.y) − (|o_h|² + 2t·o_h·d_h + t²·|d_h|²), highest power first.
@@ -195,8 +207,7 @@ impl Sor {
                 3.0 * a * y * y * v + 2.0 * b * y * v + c * v - 2.0 * odh,
                 s.f(y) - oh2,
             ];
-            let (lo, hi) = (lo.max(-1e30), hi.min(1e30));
-            let n = roots_in(&poly, lo, hi, &mut roots);
+            let n = roots_between(&poly, lo, hi, &mut roots);
             if let Some(&t) = roots[..n].iter().find(|&&t| t > t_min && t < best) {
                 best = t;
             }

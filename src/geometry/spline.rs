@@ -16,7 +16,8 @@
 
 use glam::DVec2;
 
-use super::roots::{roots_in, MAX_DEGREE};
+use super::bernstein::roots_between;
+use super::roots::MAX_DEGREE;
 use crate::desc::SplineKind;
 
 /// One piece: `(u(t), v(t)) = Σ c[k] tᵏ` for `t ∈ [0, 1]` (lowest power first), with the box
@@ -220,7 +221,7 @@ pub fn even_odd(pieces: &[Piece], q: DVec2) -> bool {
         }
         let (c, n) = p.combine(0.0, 1.0, -q.y);
         let mut roots = [0.0; MAX_DEGREE];
-        let k = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+        let k = roots_between(&c[..n], 0.0, 1.0, &mut roots);
         for &t in &roots[..k] {
             // Half-open in t, so a joint is counted once.
             if t < 1.0 && p.at(t).x > q.x {
@@ -249,7 +250,7 @@ pub fn closest_t(p: &Piece, w: DVec2) -> f64 {
         *slot = prod[n - 1 - i];
     }
     let mut roots = [0.0; MAX_DEGREE];
-    let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+    let m = roots_between(&c[..n], 0.0, 1.0, &mut roots);
     let dist = |t: f64| (p.at(t) - w).length_squared();
     let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
     for &t in &roots[..m] {

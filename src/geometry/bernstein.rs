@@ -146,8 +146,13 @@ fn polish(c: &[f64], x0: f64, x1: f64, neg_at_x0: bool, guess: f64) -> f64 {
         }
         let newton = x - f / df;
         let (l, h) = (a.min(b), a.max(b));
+        // A step this small has converged (checked before the bracket: the last step may
+        // round onto the end just moved to `x`, which is no reason to bisect).
+        if (newton - x).abs() <= tol {
+            return newton.clamp(l, h);
+        }
         let next = if newton > l && newton < h { newton } else { 0.5 * (a + b) };
-        if (next - x).abs() <= tol || h - l <= 4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE) {
+        if h - l <= 4.0 * f64::EPSILON * x.abs().max(f64::MIN_POSITIVE) {
             return next;
         }
         x = next;

@@ -1,7 +1,7 @@
 //! POV-Ray's `lathe` (3.4.6.x Lathe): a 2-D spline (`spline` pieces in (r, y)) revolved around
 //! the y axis. Per piece the ray meets the surface where `x² + z² = r(t)²` at height `y(t)`:
 //! with `s = (y(t) − o.y) / d.y` that is one polynomial in `t` of degree up to 6, solved in f64
-//! per lane by `roots` (no 8-wide arithmetic, as the torus). A ray level with the axis
+//! per lane by `bernstein` (no 8-wide arithmetic, as the torus). A ray level with the axis
 //! (`d.y ≈ 0`) meets it where `y(t) = o.y` instead, then the circle there. Inside is even-odd of
 //! (√(x² + z²), y) against the outline, as POV-Ray's parity test; `sturm` changes nothing.
 

@@ -6,7 +6,7 @@
 //! close the bottom (`h(1)`) and top (`h(n−2)`).
 //!
 //! A ray meets segment `j` where `x² + z² = f(y)` with `y` linear in `t`: a cubic in `t`, solved in
-//! f64 per lane by `roots` on the span of `t` where `y` is inside the segment (no 8-wide
+//! f64 per lane by `bernstein` on the span of `t` where `y` is inside the segment (no 8-wide
 //! arithmetic, as the lathe). Inside is `x² + z² < f(y)` between the caps.
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};

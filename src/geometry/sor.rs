@@ -333,4 +333,25 @@ mod tests {
             assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
         }
     }
+
+    /// A root just below an f32 `t_min` is passed over, not found again: the ray that found
+    /// this (the properties suite's parity check) crossed the side twice, and the second
+    /// crossing was lost when the cubic was solved on a span clipped at `t_min`.
+    #[test]
+    fn a_second_crossing_is_found_past_an_f32_first() {
+        let p = DVec2::new;
+        let pts = [
+            p(0.6092406580498548, 0.36722826771676187),
+            p(0.5236125276990701, 1.0314067733496426),
+            p(0.3374684011520171, 1.877900326962941),
+            p(0.8143611679399275, 2.2396609072425733),
+            p(0.14509398261708456, 2.628643845131188),
+            p(0.40668786188385647, 3.6201295264573488),
+        ];
+        let s = Sor::new(DAffine3::IDENTITY, &pts, false);
+        let ray = Ray::new(Vec3::new(0.5935939, 1.3923433, 0.5213788), Vec3::new(-0.17421165, 0.86560327, -0.4694479));
+        let first = s.intersect(&ray, 0.0, f32::INFINITY).expect("first");
+        let second = s.intersect(&ray, first, f32::INFINITY).expect("second");
+        assert!((first - 0.6926736).abs() < 1e-5 && (second - 1.3005267).abs() < 1e-5, "{first} {second}");
+    }
 }

@@ -46,6 +46,7 @@ macro_rules! shape_solved_in_f64 {
     };
 }
 
+pub mod bernstein;
 pub mod blob;
 pub mod cone;
 pub mod cuboid;
@@ -176,21 +177,57 @@ pub fn centred_ray(o: [f64; 3], d: [f64; 3]) -> Option<CentredRay> {
     Some(CentredRay { p, u, t_c, len })
 }
 
-/// Whether a ray keeps clear of a surface of revolution's band for `t` in `[lo, hi]`: its squared
-/// distance from the y axis, `dh2·t² + 2·odh·t + oh2` (`dh2 = d.x² + d.z²`, `odh = o.x·d.x +
-/// o.z·d.z`, `oh2 = o.x² + o.z²`), stays above `r2_max` or below `r2_min` there. The radius of
-/// every point of a lathe piece or sor segment lies in its band, so such a ray cannot meet it and
-/// its polynomial need not be solved: POV-Ray's per-segment bounding cylinders, as an exact
-/// test. Padded by a part in 10⁹, so rounding never skips a crossing.
-pub fn misses_band(dh2: f64, odh: f64, oh2: f64, lo: f64, hi: f64, r2_min: f64, r2_max: f64) -> bool {
-    let q = |t: f64| (dh2 * t + 2.0 * odh) * t + oh2;
-    let (q_lo, q_hi) = (q(lo), q(hi));
-    let q_max = q_lo.max(q_hi);
-    // The parabola's lowest point, where it falls inside the span.
-    let q_min = if dh2 > 0.0 && -odh / dh2 > lo && -odh / dh2 < hi { q(-odh / dh2) } else { q_lo.min(q_hi) };
-    let pad = 1e-9 * (q_max.abs() + r2_max.abs()) + 1e-300;
-    // NaN or infinite spans compare false: never skipped.
-    q_min > r2_max + pad || q_max < r2_min - pad
+/// A ray's squared distance from the y axis, `dh2·t² + 2·odh·t + oh2` (`dh2 = d.x² + d.z²`,
+/// `odh = o.x·d.x + o.z·d.z`, `oh2 = o.x² + o.z²`), formed once per ray for the bands of a
+/// surface of revolution's pieces.
+#[derive(Clone, Copy, Debug)]
+pub struct RadialRay {
+    pub dh2: f64,
+    pub odh: f64,
+    pub oh2: f64,
+    /// Where the distance is least, `−odh / dh2` (NaN for a ray along the axis).
+    near: f64,
+}
+
+impl RadialRay {
+    #[inline]
+    pub fn new(o: glam::DVec3, d: glam::DVec3) -> RadialRay {
+        let (dh2, odh) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z);
+        RadialRay { dh2, odh, oh2: o.x * o.x + o.z * o.z, near: -odh / dh2 }
+    }
+
+    /// The span of `t` where the ray's squared distance from the axis is at most `r2`,
+    /// both widened by a part in 10⁹ (so a root on its edge stays inside, as `misses` keeps
+    /// it); `None` if the ray keeps farther away or runs along the axis.
+    #[inline]
+    pub fn within(&self, r2: f64) -> Option<(f64, f64)> {
+        let r2 = r2 + 1e-9 * (r2.abs() + self.oh2);
+        let disc = self.odh * self.odh - self.dh2 * (self.oh2 - r2);
+        if !(disc >= 0.0 && self.dh2 > 0.0) {
+            return None;
+        }
+        let q = -(self.odh + disc.sqrt().copysign(self.odh));
+        let (a, b) = if q == 0.0 { (0.0, 0.0) } else { (q / self.dh2, (self.oh2 - r2) / q) };
+        let pad = 1e-9 * (a.abs() + b.abs()) + 1e-9 * (r2.abs() / self.dh2).sqrt();
+        Some((a.min(b) - pad, a.max(b) + pad))
+    }
+
+    /// Whether the ray keeps clear of the band `r2_min ..= r2_max` for `t` in `[lo, hi]`: its
+    /// squared distance stays above `r2_max` or below `r2_min` there. The radius of every point
+    /// of a lathe piece or sor segment lies in its band, so such a ray cannot meet it and its
+    /// polynomial need not be solved: POV-Ray's per-segment bounding cylinders, as an exact
+    /// test. Padded by a part in 10⁹, so rounding never skips a crossing.
+    #[inline]
+    pub fn misses(&self, lo: f64, hi: f64, r2_min: f64, r2_max: f64) -> bool {
+        let q = |t: f64| (self.dh2 * t + 2.0 * self.odh) * t + self.oh2;
+        let (q_lo, q_hi) = (q(lo), q(hi));
+        let q_max = q_lo.max(q_hi);
+        // The parabola's lowest point, where it falls inside the span.
+        let q_min = if self.dh2 > 0.0 && self.near > lo && self.near < hi { q(self.near) } else { q_lo.min(q_hi) };
+        let pad = 1e-9 * (q_max.abs() + r2_max.abs()) + 1e-300;
+        // NaN or infinite spans compare false: never skipped.
+        q_min > r2_max + pad || q_max < r2_min - pad
+    }
 }
 
 pub fn affine_f32(a: &glam::DAffine3) -> glam::Affine3A {

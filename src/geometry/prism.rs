@@ -5,10 +5,10 @@
 //! inside at `h1` and `h2`, left off when `open`. TrueType glyphs (`text`) are prisms too.
 //!
 //! A side is solved per piece: its points satisfy one polynomial in the piece's parameter `t`
-//! (degree 1 to 3), solved by `roots` in f64 per lane, as the torus is (no 8-wide arithmetic).
-//! Pieces are skipped without solving when the ray's line (in the plane of the curve) misses
-//! the box of their control points, which holds the piece. `sturm` changes nothing: the roots
-//! are isolated robustly already (`roots`).
+//! (degree 1 to 3), solved by `bernstein` in f64 per lane, as the torus is (no 8-wide arithmetic).
+//! Pieces are skipped without solving when the ray's footprint misses the box of their control
+//! points, or its line (in the plane of the curve) passes them all on one side: they hold the
+//! piece. `sturm` changes nothing: the roots are isolated robustly already (`bernstein`).
 //!
 //! Object space is the prism as written, moved to its centre and scaled to unit size in f64
 //! (only scaled for `conic_sweep`, whose apex is the origin), so a prism written at 1e6 or
@@ -16,8 +16,9 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
-use super::roots::{roots_in, MAX_DEGREE};
+use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
@@ -155,14 +156,19 @@ impl Prism {
                     continue;
                 }
             }
-            // The line misses the box of the control points: all four corners on one side.
-            let f = |x: f64, y: f64| a * x + b * y + k;
-            let corners = [f(p.lo.x, p.lo.y), f(p.hi.x, p.lo.y), f(p.lo.x, p.hi.y), f(p.hi.x, p.hi.y)];
-            if corners.iter().all(|&c| c > 0.0) || corners.iter().all(|&c| c < 0.0) {
+            // The line misses the piece's control points (all on one side): it misses the piece
+            // (convex hull). These are the Bernstein coefficients of the piece's polynomial.
+            let hull = p.combine_bernstein(a, b, k);
+            let hull = &hull[..=p.degree];
+            if hull.iter().all(|&c| c > 0.0) || hull.iter().all(|&c| c < 0.0) {
                 continue;
             }
             let (c, n) = p.combine(a, b, k);
-            let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+            let m = if n >= 4 {
+                roots_unit(&c[..n], p.combine_bernstein(a, b, k), &mut roots)
+            } else {
+                roots_between(&c[..n], 0.0, 1.0, &mut roots)
+            };
             for &t in &roots[..m] {
                 let w = p.at(t);
                 let s = if self.conic {

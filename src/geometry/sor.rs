@@ -6,14 +6,15 @@
 //! close the bottom (`h(1)`) and top (`h(n−2)`).
 //!
 //! A ray meets segment `j` where `x² + z² = f(y)` with `y` linear in `t`: a cubic in `t`, solved in
-//! f64 per lane by `roots` on the span of `t` where `y` is inside the segment (no 8-wide
+//! f64 per lane by `bernstein` on the span of `t` where `y` is inside the segment (no 8-wide
 //! arithmetic, as the lathe). Inside is `x² + z² < f(y)` between the caps.
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+use super::bernstein::roots_between;
 use super::cuboid::{frame_for, BoxFrame};
-use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, misses_band, transformed_bounds};
+use super::roots::MAX_DEGREE;
+use super::{affine_f32, transformed_bounds, RadialRay};
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
@@ -22,7 +23,7 @@ struct Segment {
     hi: f64,
     k: [f64; 4],
     /// The smallest and largest `r²` over `lo..=hi` (`r2_range`): a ray outside that band
-    /// misses the segment (`misses_band`).
+    /// misses the segment (`RadialRay::misses`).
     r2_min: f64,
     r2_max: f64,
 }
@@ -125,7 +126,7 @@ fn solve4(mut m: [[f64; 4]; 4], mut b: [f64; 4]) -> [f64; 4] {
 fn r2_range(s: &Segment) -> (f64, f64) {
     let (mut lo, mut hi) = (s.f(s.lo).min(s.f(s.hi)), s.f(s.lo).max(s.f(s.hi)));
     let mut roots = [0.0; MAX_DEGREE];
-    let n = roots_in(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
+    let n = roots_between(&[3.0 * s.k[0], 2.0 * s.k[1], s.k[2]], s.lo, s.hi, &mut roots);
     for &y in &roots[..n] {
         (lo, hi) = (lo.min(s.f(y)), hi.max(s.f(y)));
     }
@@ -167,23 +168,34 @@ impl Sor {
 
     fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
         let mut best = t_max;
-        let (dh2, odh, oh2) = (d.x * d.x + d.z * d.z, o.x * d.x + o.z * d.z, o.x * o.x + o.z * o.z);
+        let band = RadialRay::new(o, d);
+        let (dh2, odh, oh2) = (band.dh2, band.odh, band.oh2);
         let mut roots = [0.0; MAX_DEGREE];
         for s in &self.segments {
-            // The span of t where the ray is within the segment's heights.
+            // The span of t where the ray is within the segment's heights and its widest radius
+            // (a root lies in both). The cubic is solved on all of it, not on the part inside
+            // (t_min, best): its roots then do not depend on t_min, so a root just below an f32
+            // t_min comes out at the same bits again and is passed over when `hit_lanes_f64`
+            // asks past it.
             let (lo, hi) = if d.y != 0.0 {
                 let (a, b) = ((s.lo - o.y) / d.y, (s.hi - o.y) / d.y);
-                (a.min(b).max(t_min), a.max(b).min(best))
+                (a.min(b), a.max(b))
             } else if o.y >= s.lo && o.y <= s.hi {
-                // Level: a circle; the cubic drops to a quadratic with finite roots.
-                (t_min, best)
+                // Level: a circle; the cubic drops to a quadratic.
+                (f64::NEG_INFINITY, f64::INFINITY)
             } else {
                 continue;
             };
-            if lo >= hi || lo.is_nan() || hi.is_nan() {
+            let (lo, hi) = match band.within(s.r2_max) {
+                Some((a, b)) => (lo.max(a), hi.min(b)),
+                None if dh2 > 0.0 => continue,
+                None => (lo, hi),
+            };
+            let (near, far) = (lo.max(t_min), hi.min(best));
+            if near >= far || near.is_nan() || far.is_nan() {
                 continue;
             }
-            if misses_band(dh2, odh, oh2, lo, hi, s.r2_min, s.r2_max) {
+            if band.misses(near, far, s.r2_min, s.r2_max) {
                 continue;
             }
             // f(o.y + t·d.y) − (|o_h|² + 2t·o_h·d_h + t²·|d_h|²), highest power first.
@@ -195,8 +207,7 @@ impl Sor {
                 3.0 * a * y * y * v + 2.0 * b * y * v + c * v - 2.0 * odh,
                 s.f(y) - oh2,
             ];
-            let (lo, hi) = (lo.max(-1e30), hi.min(1e30));
-            let n = roots_in(&poly, lo, hi, &mut roots);
+            let n = roots_between(&poly, lo, hi, &mut roots);
             if let Some(&t) = roots[..n].iter().find(|&&t| t > t_min && t < best) {
                 best = t;
             }
@@ -321,5 +332,26 @@ mod tests {
             let want = 4.0 * s as f32;
             assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
         }
+    }
+
+    /// A root just below an f32 `t_min` is passed over, not found again: the ray that found
+    /// this (the properties suite's parity check) crossed the side twice, and the second
+    /// crossing was lost when the cubic was solved on a span clipped at `t_min`.
+    #[test]
+    fn a_second_crossing_is_found_past_an_f32_first() {
+        let p = DVec2::new;
+        let pts = [
+            p(0.6092406580498548, 0.36722826771676187),
+            p(0.5236125276990701, 1.0314067733496426),
+            p(0.3374684011520171, 1.877900326962941),
+            p(0.8143611679399275, 2.2396609072425733),
+            p(0.14509398261708456, 2.628643845131188),
+            p(0.40668786188385647, 3.6201295264573488),
+        ];
+        let s = Sor::new(DAffine3::IDENTITY, &pts, false);
+        let ray = Ray::new(Vec3::new(0.5935939, 1.3923433, 0.5213788), Vec3::new(-0.17421165, 0.86560327, -0.4694479));
+        let first = s.intersect(&ray, 0.0, f32::INFINITY).expect("first");
+        let second = s.intersect(&ray, first, f32::INFINITY).expect("second");
+        assert!((first - 0.6926736).abs() < 1e-5 && (second - 1.3005267).abs() < 1e-5, "{first} {second}");
     }
 }

@@ -16,7 +16,8 @@
 
 use glam::DVec2;
 
-use super::roots::{roots_in, MAX_DEGREE};
+use super::bernstein::{roots_between, MAX as MAX_B};
+use super::roots::MAX_DEGREE;
 use crate::desc::SplineKind;
 
 /// One piece: `(u(t), v(t)) = Σ c[k] tᵏ` for `t ∈ [0, 1]` (lowest power first), with the box
@@ -27,6 +28,10 @@ pub struct Piece {
     pub v: [f64; 4],
     /// Highest power with a nonzero coefficient as built (1 for lines, 2, 3).
     pub degree: usize,
+    /// The Bézier control points (`degree + 1` of them): the piece's Bernstein coefficients on
+    /// `[0, 1]`, so `a·u + b·v + k` there has the coefficients `a·cu[i] + b·cv[i] + k`.
+    pub cu: [f64; 4],
+    pub cv: [f64; 4],
     pub lo: DVec2,
     pub hi: DVec2,
 }
@@ -58,10 +63,25 @@ impl Piece {
         Piece::cubic_bezier([a, a + ta / 3.0, b - tb / 3.0, b])
     }
 
+    /// The piece of power coefficients `c` and control points `hull` (`degree + 1`).
     fn from_power(c: [DVec2; 4], degree: usize, hull: &[DVec2]) -> Piece {
         let lo = hull.iter().fold(DVec2::splat(f64::INFINITY), |m, p| m.min(*p));
         let hi = hull.iter().fold(DVec2::splat(f64::NEG_INFINITY), |m, p| m.max(*p));
-        Piece { u: c.map(|p| p.x), v: c.map(|p| p.y), degree, lo, hi }
+        let (mut cu, mut cv) = ([0.0; 4], [0.0; 4]);
+        for (i, p) in hull.iter().enumerate() {
+            (cu[i], cv[i]) = (p.x, p.y);
+        }
+        Piece { u: c.map(|p| p.x), v: c.map(|p| p.y), degree, cu, cv, lo, hi }
+    }
+
+    /// The Bernstein coefficients on `[0, 1]` of `a·u(t) + b·v(t) + k` (`degree + 1` of them).
+    #[inline]
+    pub fn combine_bernstein(&self, a: f64, b: f64, k: f64) -> [f64; MAX_B + 1] {
+        let mut out = [0.0; MAX_B + 1];
+        for i in 0..=self.degree {
+            out[i] = a * self.cu[i] + b * self.cv[i] + k;
+        }
+        out
     }
 
     pub fn at(&self, t: f64) -> DVec2 {
@@ -74,7 +94,7 @@ impl Piece {
         DVec2::new(h(&self.u), h(&self.v))
     }
 
-    /// `a·u(t) + b·v(t) + k`, highest power first (for `geometry::roots`), trimmed to the
+    /// `a·u(t) + b·v(t) + k`, highest power first (for `geometry::bernstein`), trimmed to the
     /// piece's degree.
     pub fn combine(&self, a: f64, b: f64, k: f64) -> ([f64; 4], usize) {
         let mut c = [0.0; 4];
@@ -91,10 +111,8 @@ impl Piece {
         let p = |k: usize| DVec2::new(self.u[k], self.v[k]);
         let lin = |q: DVec2| f(q) - o;
         let c = [f(p(0)), lin(p(1)), lin(p(2)), lin(p(3))];
-        let corners = [self.lo, self.hi, DVec2::new(self.lo.x, self.hi.y), DVec2::new(self.hi.x, self.lo.y)];
-        let mut piece = Piece::from_power(c, self.degree, &corners.map(f));
-        piece.degree = self.degree;
-        piece
+        let hull: Vec<DVec2> = (0..=self.degree).map(|i| f(DVec2::new(self.cu[i], self.cv[i]))).collect();
+        Piece::from_power(c, self.degree, &hull)
     }
 }
 
@@ -220,7 +238,7 @@ pub fn even_odd(pieces: &[Piece], q: DVec2) -> bool {
         }
         let (c, n) = p.combine(0.0, 1.0, -q.y);
         let mut roots = [0.0; MAX_DEGREE];
-        let k = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+        let k = roots_between(&c[..n], 0.0, 1.0, &mut roots);
         for &t in &roots[..k] {
             // Half-open in t, so a joint is counted once.
             if t < 1.0 && p.at(t).x > q.x {
@@ -249,7 +267,7 @@ pub fn closest_t(p: &Piece, w: DVec2) -> f64 {
         *slot = prod[n - 1 - i];
     }
     let mut roots = [0.0; MAX_DEGREE];
-    let m = roots_in(&c[..n], 0.0, 1.0, &mut roots);
+    let m = roots_between(&c[..n], 0.0, 1.0, &mut roots);
     let dist = |t: f64| (p.at(t) - w).length_squared();
     let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
     for &t in &roots[..m] {

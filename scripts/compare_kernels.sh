@@ -125,15 +125,7 @@ row() {
     local file=$1 kind=${1%.pov} pov ms ratio rays tests rows tpr nspt psnr="" note="" base_cols=""
     pov=$(povray_ms "$dir" "$file")
     [[ -n $pov ]] || note="POV-Ray: $(cat "$work/why")"
-    if [[ -n $BASE ]]; then
-        local base_ms
-        base_ms=$(strahl_ms "$BASE" "$dir" "$file" 2)
-        [[ -n $base_ms ]] || note="${note:+$note; }base bench: $(cat "$work/why_strahl")"
-        base_cols=" $base_ms | $(ratio_of "$pov" "$base_ms") |"
-    fi
-    ms=$(strahl_ms "$STRAHL" "$dir" "$file" 2)
-    [[ -n $ms ]] || note="${note:+$note; }strahl bench: $(cat "$work/why_strahl")"
-    ratio=$(ratio_of "$pov" "$ms")
+    time_both "$dir" "$file" "$pov" 2
     tpr=""
     nspt=""
     rows=$(sed -n 's|^// *stats: *||p' "$dir/$file" | head -1)

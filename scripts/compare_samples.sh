@@ -71,15 +71,7 @@ row() {
     file=$(basename "$scene")
     pov=$(povray_ms "$dir" "$file")
     [[ -n $pov ]] || note="POV-Ray: $(cat "$work/why")"
-    if [[ -n $BASE ]]; then
-        local base_ms
-        base_ms=$(strahl_ms "$BASE" "$dir" "$file" 1)
-        [[ -n $base_ms ]] || note="${note:+$note; }base: $(cat "$work/why_strahl")"
-        base_cols=" $base_ms | $(ratio_of "$pov" "$base_ms") |"
-    fi
-    ms=$(strahl_ms "$STRAHL" "$dir" "$file" 1)
-    [[ -n $ms ]] || note="${note:+$note; }strahl: $(cat "$work/why_strahl")"
-    ratio=$(ratio_of "$pov" "$ms")
+    time_both "$dir" "$file" "$pov" 1
     fps=""
     scale=""
     if [[ $VIEW == 1 && -n $ms ]]; then

@@ -39,3 +39,19 @@ strahl_ms() {
 ratio_of() {
     awk -v a="$1" -v b="$2" 'BEGIN { if (a != "" && b != "" && b > 0) printf (a / b >= 1 ? "%.1f" : "%.2g"), a / b }'
 }
+
+# Times scene $2 in folder $1 with BASE (when set) and then STRAHL, against POV-Ray's $3 ms,
+# with $4 decimals: sets `ms`, `ratio` and `base_cols` (" base ms | base ratio |", or empty
+# without BASE), and adds failures to `note`.
+time_both() {
+    local dir=$1 file=$2 pov=$3 digits=$4 base_ms
+    base_cols=""
+    if [[ -n ${BASE:-} ]]; then
+        base_ms=$(strahl_ms "$BASE" "$dir" "$file" "$digits")
+        [[ -n $base_ms ]] || note="${note:+$note; }base: $(cat "$work/why_strahl")"
+        base_cols=" $base_ms | $(ratio_of "$pov" "$base_ms") |"
+    fi
+    ms=$(strahl_ms "$STRAHL" "$dir" "$file" "$digits")
+    [[ -n $ms ]] || note="${note:+$note; }strahl: $(cat "$work/why_strahl")"
+    ratio=$(ratio_of "$pov" "$ms")
+}

@@ -14,6 +14,7 @@ use std::sync::Arc;
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
+use super::height_field::HeightGrid;
 use super::triangle::Triangle;
 use super::{transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
@@ -42,6 +43,8 @@ pub struct MeshData {
     /// Hits below this object-space height are not hits (`height_field`'s `water_level`);
     /// -inf for meshes.
     floor: f32,
+    /// A height field's grid: its inside test, in place of counting crossings.
+    grid: Option<HeightGrid>,
 }
 
 impl MeshData {
@@ -71,12 +74,18 @@ impl MeshData {
         // Faces are stored in leaf order: leaf ranges now index `triangles` directly.
         let source_face = std::mem::replace(&mut bvh.prim_order, (0..triangles.len() as u32).collect());
         let (min, max) = if triangles.is_empty() { (Vec3::ZERO, Vec3::ZERO) } else { (all.min, all.max) };
-        MeshData { triangles, smooth_of, smooth, bvh, min, max, source_face, floor: f32::NEG_INFINITY }
+        MeshData { triangles, smooth_of, smooth, bvh, min, max, source_face, floor: f32::NEG_INFINITY, grid: None }
     }
 
     /// Hits below object-space height `floor` are left out (`water_level`).
     pub fn with_floor(mut self, floor: f32) -> MeshData {
         self.floor = floor;
+        self
+    }
+
+    /// The mesh of a height field: `grid` answers which points lie inside (below the surface).
+    pub fn with_grid(mut self, grid: HeightGrid) -> MeshData {
+        self.grid = Some(grid);
         self
     }
 
@@ -393,10 +402,14 @@ impl Shape for Mesh {
     }
 
     /// POV-Ray's `inside_vector` test: odd crossings along it are inside; no vector, not solid.
+    /// A height field asks its grid (below the surface), the same answer without the walk.
     #[inline(always)]
     fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        let Some(v) = self.inside_vector else { return L::mask_from_fn(|_| false) };
         let q = p.transform_point(&self.frame.object_from_render);
+        if let Some(grid) = &self.data.grid {
+            return L::mask_from_fn(|i| grid.below_surface(Vec3::new(q.x.get(i), q.y.get(i), q.z.get(i))));
+        }
+        let Some(v) = self.inside_vector else { return L::mask_from_fn(|_| false) };
         L::mask_from_fn(|i| {
             let origin = Vec3::new(q.x.get(i), q.y.get(i), q.z.get(i));
             self.data.crossings(&Ray { origin, dir: v, inv_dir: v.recip() }) % 2 == 1

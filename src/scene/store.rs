@@ -13,7 +13,7 @@ use crate::geometry::blob::Blob;
 use crate::geometry::cone::Cone;
 use crate::geometry::cuboid::{frame_for, Cuboid};
 use crate::geometry::disc::Disc;
-use crate::geometry::height_field;
+use crate::geometry::height_field::{self, HeightGrid};
 use crate::geometry::isosurface::Isosurface;
 use crate::geometry::julia::Julia;
 use crate::geometry::lathe::Lathe;
@@ -142,10 +142,13 @@ impl Scene {
                     let water = water_level as f32;
                     let faces =
                         height_field::faces(field.width as usize, field.height as usize, &field.heights, smooth, water);
-                    let data = MeshData::new(faces);
+                    let floor = if water_level > 0.0 { water } else { f32::NEG_INFINITY };
+                    let grid = HeightGrid::new(field.width as usize, field.height as usize, &field.heights, floor);
+                    let data = MeshData::new(faces).with_grid(grid);
                     Arc::new(if water_level > 0.0 { data.with_floor(water) } else { data })
                 });
-                // Solid below its surface, as POV-Ray's: odd crossings going up.
+                // Solid below its surface, as POV-Ray's: odd crossings going up (the grid
+                // answers it).
                 let data = data.clone();
                 self.meshes.push(Mesh::new(data, affine_f32(&render_from_object), Some(Vec3::Y)));
                 (ShapeKind::HeightField, at(self.meshes.len()))

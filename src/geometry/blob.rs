@@ -289,9 +289,8 @@ fn span_roots(k: &[f64; 5], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> us
                     m += 1;
                 }
             }
-            let (fa, fb) = (eval(k, lo), eval(k, hi));
-            let brackets = fa * fb < 0.0;
-            if polished && (m > 0 || !brackets) {
+            // Only a strict change of sign (not a NaN) brackets a root the closed form missed.
+            if polished && (m > 0 || !(eval(k, lo) * eval(k, hi) < 0.0)) {
                 return m;
             }
         }
@@ -349,6 +348,16 @@ impl Blob {
             active.clear();
             for f in &self.fields {
                 f.pieces(p0, dir, pieces);
+            }
+            // Nowhere along the ray can the field reach the threshold if the pieces' most over
+            // their spans together cannot (a part in 10⁹ to spare for rounding).
+            let most: f64 = pieces
+                .iter()
+                .filter(|p| p.strength > 0.0 && p.hi > u_min && p.lo < u_max)
+                .map(|p| p.most(p.lo.max(u_min), p.hi.min(u_max)))
+                .sum();
+            if !(most >= self.threshold * (1.0 - 1e-9)) {
+                return None;
             }
             for (i, p) in pieces.iter().enumerate() {
                 if p.hi > u_min && p.lo < u_max {

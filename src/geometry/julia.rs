@@ -343,7 +343,9 @@ impl Julia {
             return None;
         }
         let dt = self.step / a.sqrt();
-        let start = self.inside_object(o + lo * d);
+        let p = o + lo * d;
+        // A start in an empty cell is outside; most rays enter the ball so.
+        let start = !self.cells.as_ref().is_some_and(|c| c.empty(p)) && self.inside_object(p);
         let mut t0 = lo;
         loop {
             let t1 = (t0 + dt).min(hi);

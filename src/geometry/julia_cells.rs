@@ -12,7 +12,7 @@ use std::sync::{Arc, Mutex};
 use glam::DVec3;
 
 /// Cells along each axis of the cube.
-const FINE: usize = 48;
+const FINE: usize = 64;
 
 /// Fine cells along each axis of a coarse one: a coarse cell proven empty marks its
 /// `RATIO³` fine cells without asking for each.

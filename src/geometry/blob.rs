@@ -6,7 +6,9 @@
 //! Along a ray, `d²` is a quadratic in `t` wherever the ray is within one piece of a component
 //! (a sphere, a cylinder's middle, one of its ends), so the field is a quartic there. The
 //! pieces' spans along the ray are swept in order; between consecutive span ends the active
-//! pieces' quartics add up to one, whose first root above the threshold is found in f64 by
+//! pieces' quartics add up to one, whose first root above the threshold is found in f64:
+//! spans where the pieces' most cannot reach the threshold are skipped, the others solved in
+//! closed form (`quartic::ferrari`, polished) where that is well-conditioned, else by
 //! `roots::roots_in` (with a bisection where the ends' signs differ and the critical-point
 //! search returns nothing, so a crossing is never lost to rounding). The field and its
 //! derivative are zero at every piece's edge, so the sum is continuous across span ends. No
@@ -20,6 +22,7 @@ use std::cell::RefCell;
 use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
+use super::quartic::{ferrari, polish};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::{affine_f32, transformed_bounds};
 
@@ -67,6 +70,26 @@ struct Piece {
     hi: f64,
     k: [f64; 5],
     strength: f64,
+    /// The squared distance over `r²` along the ray, `q(u) = q[0]·u² + q[1]·u + q[2]`: the
+    /// field is `strength · (1 − q)²`.
+    q: [f64; 3],
+}
+
+impl Piece {
+    /// The most this piece adds to the field for `u` in `[lo, hi]` (within its span): where
+    /// `q` is least.
+    fn most(&self, lo: f64, hi: f64) -> f64 {
+        let q = |u: f64| (self.q[0] * u + self.q[1]) * u + self.q[2];
+        let mut least = q(lo).min(q(hi));
+        if self.q[0] > 0.0 {
+            let vertex = -0.5 * self.q[1] / self.q[0];
+            if vertex > lo && vertex < hi {
+                least = least.min(q(vertex));
+            }
+        }
+        let g = 1.0 - least.clamp(0.0, 1.0);
+        self.strength * g * g
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -128,12 +151,14 @@ impl Field {
         Field { component_from_unit, base, axis, length, r2: radius * radius, strength: c.strength }
     }
 
-    /// The field's quartic for `|w + u·v|² / r²` (a squared distance along the ray).
-    fn quartic(&self, a: f64, b: f64, c: f64) -> [f64; 5] {
-        // s·(1 − (a·u² + b·u + c))², expanded.
-        let (a, b, c) = (a / self.r2, b / self.r2, 1.0 - c / self.r2);
+    /// The piece over `[lo, hi]` whose squared distance is `a·u² + b·u + c`: its quartic
+    /// `strength · (1 − (a·u² + b·u + c) / r²)²`, expanded.
+    fn piece(&self, lo: f64, hi: f64, a: f64, b: f64, c: f64) -> Piece {
+        let q = [a / self.r2, b / self.r2, c / self.r2];
+        let (a, b, c) = (q[0], q[1], 1.0 - q[2]);
         let s = self.strength;
-        [s * a * a, s * 2.0 * a * b, s * (b * b - 2.0 * a * c), s * -2.0 * b * c, s * c * c]
+        let k = [s * a * a, s * 2.0 * a * b, s * (b * b - 2.0 * a * c), s * -2.0 * b * c, s * c * c];
+        Piece { lo, hi, k, strength: s, q }
     }
 
     /// The pieces of this component along `p0 + u·dir` (unit space), into `out`.
@@ -145,7 +170,7 @@ impl Field {
             if let Some((lo, hi)) = below_zero(a, b, c - self.r2) {
                 let (lo, hi) = (lo.max(span.0), hi.min(span.1));
                 if lo < hi {
-                    out.push(Piece { lo, hi, k: self.quartic(a, b, c), strength: self.strength });
+                    out.push(self.piece(lo, hi, a, b, c));
                 }
             }
         };
@@ -180,7 +205,7 @@ impl Field {
         if let Some((lo, hi)) = below_zero(a, b, c - self.r2) {
             let (lo, hi) = (lo.max(along.0), hi.min(along.1));
             if lo < hi {
-                out.push(Piece { lo, hi, k: self.quartic(a, b, c), strength: self.strength });
+                out.push(self.piece(lo, hi, a, b, c));
             }
         }
     }
@@ -235,6 +260,44 @@ fn roots_above(k: &[f64; 5], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> u
     1
 }
 
+/// The roots of `k` in `(lo, hi]`, ascending: Ferrari's closed form with each root polished
+/// (`quartic`), as the torus solves, where that is well-conditioned and the span is finite;
+/// else, and where the ends' signs differ yet the closed form finds no root there, by
+/// `roots_above`. Roots within a part in 10⁹ outside the span count as in it, so that one on
+/// the end two spans share is not lost to rounding in both.
+fn span_roots(k: &[f64; 5], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+    if k[0] != 0.0 && lo.is_finite() && hi.is_finite() {
+        let c = [1.0, k[1] / k[0], k[2] / k[0], k[3] / k[0], k[4] / k[0]];
+        let (mut r, mut tol) = ([0.0; 4], 0.0);
+        if let Some(n) = ferrari(&c, &mut r, &mut tol) {
+            r[..n].sort_unstable_by(f64::total_cmp);
+            let eps = 1e-9 * (lo.abs() + hi.abs() + 1.0);
+            let mut m = 0;
+            let mut polished = true;
+            for &x in &r[..n] {
+                // Far outside the span (a polish moves a root by much less): not wanted.
+                let far = 1e-6 * (lo.abs() + hi.abs() + 1.0);
+                if x < lo - far || x > hi + far {
+                    continue;
+                }
+                let Some(x) = polish(&c, x, tol) else {
+                    polished = false;
+                    break;
+                };
+                if x > lo - eps && x <= hi + eps {
+                    out[m] = x;
+                    m += 1;
+                }
+            }
+            // Only a strict change of sign (not a NaN) brackets a root the closed form missed.
+            if polished && (m > 0 || !(eval(k, lo) * eval(k, hi) < 0.0)) {
+                return m;
+            }
+        }
+    }
+    roots_above(k, lo, hi, out)
+}
+
 impl Blob {
     /// `components` (blob space) with their sum at `threshold` as the surface, under
     /// `render_from_object`. A blob without a positive component is empty.
@@ -286,6 +349,16 @@ impl Blob {
             for f in &self.fields {
                 f.pieces(p0, dir, pieces);
             }
+            // Nowhere along the ray can the field reach the threshold if the pieces' most over
+            // their spans together cannot (a part in 10⁹ to spare for rounding).
+            let most: f64 = pieces
+                .iter()
+                .filter(|p| p.strength > 0.0 && p.hi > u_min && p.lo < u_max)
+                .map(|p| p.most(p.lo.max(u_min), p.hi.min(u_max)))
+                .sum();
+            if !(most >= self.threshold * (1.0 - 1e-9)) {
+                return None;
+            }
             for (i, p) in pieces.iter().enumerate() {
                 if p.hi > u_min && p.lo < u_max {
                     ends.push((p.lo.max(u_min), 2 * i as u32));
@@ -303,9 +376,15 @@ impl Blob {
                     active.swap_remove(at);
                 }
                 let Some(&(next, _)) = ends.get(w + 1) else { break };
-                // The field cannot reach the threshold where the active strengths cannot.
-                let reach: f64 = active.iter().map(|&p| pieces[p as usize].strength.max(0.0)).sum();
-                if next.is_nan() || next <= u || reach < self.threshold {
+                // The field cannot reach the threshold where the active pieces' most cannot
+                // (with a part in 10⁹ to spare for rounding): on blob_sphere.pov most spans.
+                let reach: f64 = active
+                    .iter()
+                    .map(|&p| &pieces[p as usize])
+                    .filter(|p| p.strength > 0.0)
+                    .map(|p| p.most(u, next))
+                    .sum();
+                if next.is_nan() || next <= u || !(reach >= self.threshold * (1.0 - 1e-9)) {
                     continue;
                 }
                 let mut k = [0.0; 5];
@@ -318,7 +397,7 @@ impl Blob {
                 // Back in t, a root just above u_min may round onto t_min: take the first
                 // that does not, so searching on from a crossing finds the next one.
                 let mut roots = [0.0; MAX_DEGREE];
-                let n = roots_above(&k, u.max(u_min), next, &mut roots);
+                let n = span_roots(&k, u.max(u_min), next, &mut roots);
                 if let Some(t) = roots[..n].iter().map(|r| (r + s0) / len).find(|&t| t > t_min && t < t_max) {
                     return Some(t);
                 }

@@ -6,8 +6,8 @@
 //! same sign cannot hold a root when `|g(a)| + |g(b)| > max_gradient · length` (the function
 //! cannot change faster than `max_gradient` per unit of distance, the promise the scene
 //! makes), and is skipped; any other is halved, nearer half first, down to `accuracy`. A
-//! crossing found is then refined by bisection well below `accuracy`, so shading and shadow
-//! rays start on the surface. The normal is the function's gradient by central differences.
+//! crossing found is then narrowed by secant steps until the lane's rounding of it is decided,
+//! so shading and shadow rays start on the surface. The normal is the function's gradient by central differences.
 
 use glam::{DAffine3, DVec3, Vec3};
 
@@ -23,8 +23,9 @@ const MAX_EVALUATIONS: usize = 4096;
 /// Entries of the search's interval stack.
 const STACK: usize = 80;
 
-/// Bisection steps after a crossing is bracketed to `accuracy`: 2⁻¹² of it.
-const REFINE_STEPS: usize = 12;
+/// Most steps of `refine`: its secant steps shrink a bracket to the lane's rounding in a few
+/// (the bound only stops a function that is not continuous there).
+const REFINE_STEPS: usize = 64;
 
 #[derive(Clone, Debug)]
 pub struct Isosurface {
@@ -129,7 +130,7 @@ impl Isosurface {
     }
 
     /// The nearest surface point on `o + t·d` with `t` in `(t_min, t_max)`.
-    pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+    pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
         let (enter, exit) = self.container.span(o, d)?;
         let len = d.length();
         if len == 0.0 || !(len.is_finite()) {
@@ -150,7 +151,7 @@ impl Isosurface {
         // From the ray's own start, a crossing closer than this is the surface it left.
         let skip = if enter > t_min { a } else { a + 0.5 * step };
         let gb = g(b);
-        if let Some(t) = self.first_crossing(&g, (a, ga), (b, gb), len, step, skip) {
+        if let Some(t) = self.first_crossing(&g, (a, ga), (b, gb), len, step, skip, round) {
             return Some(t);
         }
         // Leaving the container from inside the function: its wall again.
@@ -166,6 +167,7 @@ impl Isosurface {
         len: f64,
         step: f64,
         skip: f64,
+        round: fn(f64) -> f64,
     ) -> Option<f64> {
         let lipschitz = self.params.max_gradient * len;
         // Nearer halves on top; each split adds one entry, so the stack is as deep as the
@@ -185,7 +187,7 @@ impl Isosurface {
             }
             if b - a <= step {
                 if crosses {
-                    let t = refine(g, (a, ga), (b, gb));
+                    let t = refine(g, (a, ga), (b, gb), round);
                     if t > skip {
                         return Some(t);
                     }
@@ -195,7 +197,7 @@ impl Isosurface {
             if evaluations >= MAX_EVALUATIONS || n + 2 > STACK {
                 // Out of budget: answer a bracketed crossing coarsely, else give up.
                 if crosses {
-                    return Some(refine(g, (a, ga), (b, gb)));
+                    return Some(refine(g, (a, ga), (b, gb), round));
                 }
                 continue;
             }
@@ -226,22 +228,49 @@ impl Isosurface {
     }
 }
 
-/// Bisection of a bracketed crossing, then the secant through the last bracket.
-fn refine(g: &impl Fn(f64) -> f64, (mut a, mut ga): (f64, f64), (mut b, mut gb): (f64, f64)) -> f64 {
+/// A bracketed crossing, narrowed until the lane's rounding of the bracket's ends agrees (to
+/// adjacent f64 numbers for f64 lanes), then the secant through the bracket: the rounded answer
+/// is the root's, whichever point of the bracket it is. The bracket is cut at the secant
+/// (Illinois' variant: an end kept twice has its value halved), not at its middle.
+fn refine(
+    g: &impl Fn(f64) -> f64,
+    (mut a, mut ga): (f64, f64),
+    (mut b, mut gb): (f64, f64),
+    round: fn(f64) -> f64,
+) -> f64 {
+    // Which end the last cut replaced: -1 a, 1 b.
+    let mut last = 0;
     for _ in 0..REFINE_STEPS {
         let m = 0.5 * (a + b);
-        let gm = g(m);
-        if (gm < 0.0) == (ga < 0.0) {
-            (a, ga) = (m, gm);
+        if round(a) == round(b) || m <= a || m >= b {
+            break;
+        }
+        let w = b - a;
+        // NaN fails the test: then halve.
+        let mut x = (a + w * (ga / (ga - gb))).clamp(a + w / 64.0, b - w / 64.0);
+        if !(x > a && x < b) {
+            x = m;
+        }
+        let gx = g(x);
+        if (gx < 0.0) == (ga < 0.0) {
+            (a, ga) = (x, gx);
+            if last == -1 {
+                gb *= 0.5;
+            }
+            last = -1;
         } else {
-            (b, gb) = (m, gm);
+            (b, gb) = (x, gx);
+            if last == 1 {
+                ga *= 0.5;
+            }
+            last = 1;
         }
     }
     let t = if ga != gb { a + (b - a) * ga / (ga - gb) } else { 0.5 * (a + b) };
     t.clamp(a, b)
 }
 
-shape_solved_in_f64!(Isosurface, normal: normal_object, inside: inside_object);
+shape_solved_in_f64!(Isosurface, normal: normal_object, inside: inside_object, solve: rounded);
 
 #[cfg(test)]
 mod tests {

@@ -9,19 +9,26 @@
 //! `(a − d) + (b + c)·i` and `(a + d) + (b − c)·i`, on which every function acts one by one.
 //!
 //! A ray is marched through the bounding ball in steps of `1 / precision` (object units), each
-//! sample iterated, and the step where inside and outside swap is bisected to f64 rounding.
+//! sample iterated (but for those in cells proven empty, `julia_cells`), and the step where
+//! inside and outside swap is bisected until the lane's rounding of the crossing is decided.
 //! Thin parts shorter than a step can be missed, which is what POV-Ray's `precision` trades.
 //! The normal is the gradient of `|h(k)|²` at the iteration `k` where the point just outside
 //! escapes, by central differences. Lanes are solved one by one in f64.
 
 use glam::{DAffine3, DVec3, DVec4, Vec3};
 
+use std::sync::Arc;
+
 use super::cuboid::{frame_for, BoxFrame};
+use super::julia_cells::EmptyCells;
 use super::{affine_f32, transformed_bounds};
 use crate::desc::{ComplexFn, JuliaFunction};
 
 /// The escape radius POV-Ray documents, squared.
 const BAILOUT2: f64 = 16.0;
+
+/// Most orbit steps `Julia::probe` follows; a longer orbit gets no reach.
+const ORBIT: usize = 64;
 
 /// A complex number, just what the hypercomplex functions need.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -137,6 +144,10 @@ pub struct Julia {
     radius: f64,
     /// The slice: `w = slice_w.w − slice_w.xyz·(x, y, z)`.
     slice_w: DVec4,
+    /// How far `lift` moves `h` per unit `p` moves, at most: `|(1, −slice_w.xyz)|`.
+    lift_gain: f64,
+    /// Where the march need not iterate (quaternions only: `probe` has no bound otherwise).
+    cells: Option<Arc<EmptyCells>>,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -191,17 +202,30 @@ impl Julia {
         let r = radius as f32;
         let (min, max) = transformed_bounds(&xf, Vec3::splat(-r), Vec3::splat(r));
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
-        Julia {
+        let mut julia = Julia {
             frame: frame_for(xf),
             param,
             function,
             max_iteration: max_iteration.max(1),
             step: 1.0 / precision.max(1.0),
             slice_w,
+            lift_gain: (1.0 + slice_w.truncate().length_squared()).sqrt(),
+            cells: None,
             radius,
             min: min - pad,
             max: max + pad,
+        };
+        let tag = match function {
+            JuliaFunction::QuaternionSqr => Some(1),
+            JuliaFunction::QuaternionCube => Some(2),
+            JuliaFunction::Hypercomplex(_) => None,
+        };
+        if let Some(tag) = tag {
+            let (p, s) = (param.to_array().map(f64::to_bits), slice_w.to_array().map(f64::to_bits));
+            let key = [tag, p[0], p[1], p[2], p[3], julia.max_iteration as u64, s[0], s[1], s[2], s[3]];
+            julia.cells = Some(EmptyCells::shared(key, radius, |q| julia.probe(q)));
         }
+        julia
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -225,25 +249,100 @@ impl Julia {
 
     /// The iteration at which the orbit of `p` escapes, `None` if it stays (inside).
     fn escape(&self, p: DVec3) -> Option<u32> {
-        let mut h = self.lift(p);
-        if h.length_squared() > BAILOUT2 {
-            return Some(0);
-        }
+        self.escape_all([p])[0]
+    }
+
+    /// `escape` of several points, their orbits iterated side by side: one orbit is a chain
+    /// of dependent multiplications that leaves most of the processor idle, so two or three
+    /// take little longer than one (julia_fractal.pov's frame took half as long when the
+    /// march and the bisection went two and three samples at a time).
+    fn escape_all<const N: usize>(&self, ps: [DVec3; N]) -> [Option<u32>; N] {
+        let mut h = ps.map(|p| self.lift(p));
+        let mut at = h.map(|h| (h.length_squared() > BAILOUT2).then_some(0));
         for k in 1..=self.steps() {
-            h = step(self.function, h) + self.param;
-            // NaN (a function's pole) counts as escaped.
-            if h.length_squared().is_nan() || h.length_squared() > BAILOUT2 {
-                return Some(k);
+            if at.iter().all(Option::is_some) {
+                break;
+            }
+            for (h, at) in h.iter_mut().zip(at.iter_mut()) {
+                *h = step(self.function, *h) + self.param;
+                let n2 = h.length_squared();
+                // NaN (a function's pole) counts as escaped.
+                if at.is_none() && (n2.is_nan() || n2 > BAILOUT2) {
+                    *at = Some(k);
+                }
             }
         }
-        None
+        at
     }
 
     fn inside_object(&self, p: DVec3) -> bool {
         self.escape(p).is_none()
     }
 
-    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+    /// A distance (object units) within which every point around `p` is outside, 0 where none
+    /// is known (`p` inside, hypercomplex numbers, or an orbit longer than `ORBIT` steps).
+    ///
+    /// Quaternions are a normed algebra, so for `f(h) = hⁿ` (n = 2, 3) orbits `a(j)` and
+    /// `b(j)` that are `e(j)` apart part by at most `e(j+1) ≤ (|a(j)| + e(j))ⁿ − |a(j)|ⁿ`
+    /// (`a² − b² = a·(a − b) + (a − b)·b`, and likewise for cubes). A point whose orbit stays
+    /// within `|a(j)| − 4` of `p`'s at a step `j ≤ steps` where `p`'s is past the escape
+    /// radius has escaped too. That bound run backwards from every such `j` (the orbit is
+    /// followed past its escape: far from the object the later, larger radii reach further)
+    /// says how far `h(0)`, and so the point, may move: a guarantee, not an estimate.
+    fn probe(&self, p: DVec3) -> f64 {
+        let power = match self.function {
+            JuliaFunction::QuaternionSqr => 2,
+            JuliaFunction::QuaternionCube => 3,
+            JuliaFunction::Hypercomplex(_) => return 0.0,
+        };
+        let steps = self.steps() as usize;
+        let mut r = [0.0f64; ORBIT];
+        let mut h = self.lift(p);
+        let (mut escaped, mut last) = (None, 0);
+        for (j, rj) in r.iter_mut().enumerate() {
+            if j > 0 {
+                h = step(self.function, h) + self.param;
+            }
+            let n2 = h.length_squared();
+            if escaped.is_none() && n2 > BAILOUT2 {
+                escaped = Some(j);
+            }
+            *rj = n2.sqrt();
+            last = j;
+            // Past a radius of 1e30 each further step only halves the reach (and cubes
+            // would overflow).
+            if j == steps || (escaped.is_some() && n2 > 1e60) {
+                break;
+            }
+        }
+        let Some(k) = escaped else { return 0.0 };
+        // How far the orbit at step j may move: the most over every escaped step from j on.
+        let mut m = 0.0f64;
+        for j in (0..=last).rev() {
+            let rj = r[j];
+            if m > 0.0 {
+                // The inverse of e ↦ (r + e)ⁿ − rⁿ, in a form that does not cancel.
+                m = if power == 2 {
+                    m / ((rj * rj + m).sqrt() + rj)
+                } else {
+                    let a = (rj * rj * rj + m).cbrt();
+                    m / (a * a + a * rj + rj * rj)
+                };
+            }
+            if j >= k {
+                m = m.max(rj - BAILOUT2.sqrt());
+            }
+        }
+        // A tenth off, for the rounding of the orbits compared.
+        let reach = 0.9 * m / self.lift_gain;
+        if reach.is_finite() {
+            reach
+        } else {
+            0.0
+        }
+    }
+
+    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
         // The span of t within the bounding ball.
         let (a, b, c) = (d.dot(d), o.dot(d), o.dot(o) - self.radius * self.radius);
         let disc = b * b - a * c;
@@ -256,30 +355,77 @@ impl Julia {
             return None;
         }
         let dt = self.step / a.sqrt();
-        let start = self.inside_object(o + lo * d);
+        let p = o + lo * d;
+        // A start in an empty cell is outside; most rays enter the ball so.
+        let start = !self.cells.as_ref().is_some_and(|c| c.empty(p)) && self.inside_object(p);
         let mut t0 = lo;
         loop {
-            let t1 = (t0 + dt).min(hi);
-            if self.inside_object(o + t1 * d) != start {
-                // Bisect the crossing down to rounding.
-                let (mut a, mut b) = (t0, t1);
-                for _ in 0..64 {
-                    let m = 0.5 * (a + b);
-                    if m <= a || m >= b {
-                        break;
-                    }
-                    if self.inside_object(o + m * d) == start {
-                        a = m;
-                    } else {
-                        b = m;
-                    }
+            // The next two samples (and the ones before them) whose side is not known:
+            // marching through the outside, a sample in an empty cell is known outside.
+            let (mut pending, mut n, mut end) = ([(0.0, 0.0); 2], 0, false);
+            while n < 2 && !end {
+                let t1 = (t0 + dt).min(hi);
+                if start || !self.cells.as_ref().is_some_and(|c| c.empty(o + t1 * d)) {
+                    pending[n] = (t0, t1);
+                    n += 1;
                 }
+                (t0, end) = (t1, t1 >= hi);
+            }
+            let sides = match n {
+                0 => [start; 2],
+                1 => [self.inside_object(o + pending[0].1 * d), start],
+                _ => self.inside_all([o + pending[0].1 * d, o + pending[1].1 * d]),
+            };
+            if let Some(i) = sides.iter().position(|&s| s != start) {
+                let b = self.crossing(o, d, start, pending[i].0, pending[i].1, round);
                 return (b > t_min && b < t_max).then_some(b);
             }
-            if t1 >= hi {
+            if end {
                 return None;
             }
-            t0 = t1;
+        }
+    }
+
+    /// `inside_object` of several points at once (`escape_all`).
+    fn inside_all<const N: usize>(&self, ps: [DVec3; N]) -> [bool; N] {
+        self.escape_all(ps).map(|e| e.is_none())
+    }
+
+    /// The crossing in `[a, b]`, where `o + a·d` is inside as `start` says and `o + b·d` is
+    /// not, bisected until the lane's rounding of the bracket's ends agrees (to adjacent f64
+    /// numbers for f64 lanes): every answer inside it rounds alike, so stopping there gives
+    /// the f32 lanes the answer of bisecting on to f64 rounding, some 29 halvings sooner (f32
+    /// carries 29 bits fewer). Secant steps on the size of the last orbit step took fewer
+    /// still (julia_fractal.pov's frame a quarter shorter), but where a march step holds
+    /// several crossings they may land on another than bisection does: the image changed.
+    ///
+    /// Two halvings are taken per round: the middle and both middles of its halves are
+    /// iterated side by side (`inside_all`), and the second halving uses the one of those that
+    /// the first leaves in the bracket, so the steps and the answer are the plain bisection's.
+    fn crossing(&self, o: DVec3, d: DVec3, start: bool, mut a: f64, mut b: f64, round: fn(f64) -> f64) -> f64 {
+        loop {
+            let m = 0.5 * (a + b);
+            if round(a) == round(b) || m <= a || m >= b {
+                return b;
+            }
+            let (l, r) = (0.5 * (a + m), 0.5 * (m + b));
+            let [at_m, at_l, at_r] = self.inside_all([o + m * d, o + l * d, o + r * d]);
+            let (second, at_second) = if at_m == start {
+                a = m;
+                (r, at_r)
+            } else {
+                b = m;
+                (l, at_l)
+            };
+            // The second halving, as the loop would take it: its middle is `second`.
+            if round(a) == round(b) || second <= a || second >= b {
+                return b;
+            }
+            if at_second == start {
+                a = second;
+            } else {
+                b = second;
+            }
         }
     }
 
@@ -287,24 +433,22 @@ impl Julia {
         // The surface near p is |h(k)|² = bailout for the k where the outside escapes; step
         // out along the rough gradient until a point escapes, then take |h(k)|²'s gradient.
         let e = 1e-6 * (1.0 + p.length());
-        let k = [p, p + DVec3::splat(e), p - DVec3::splat(e)]
-            .iter()
-            .filter_map(|&q| self.escape(q))
+        let k = self
+            .escape_all([p, p + DVec3::splat(e), p - DVec3::splat(e)])
+            .into_iter()
+            .flatten()
             .max()
             .unwrap_or(self.steps())
             .max(1);
-        let f = |q: DVec3| {
-            let mut h = self.lift(q);
-            for _ in 0..k {
-                h = step(self.function, h) + self.param;
+        // |h(k)|² at p ± e along each axis, the six orbits side by side.
+        let mut h = [DVec3::X, -DVec3::X, DVec3::Y, -DVec3::Y, DVec3::Z, -DVec3::Z].map(|a| self.lift(p + a * e));
+        for _ in 0..k {
+            for h in h.iter_mut() {
+                *h = step(self.function, *h) + self.param;
             }
-            h.length_squared()
-        };
-        let g = DVec3::new(
-            f(p + DVec3::X * e) - f(p - DVec3::X * e),
-            f(p + DVec3::Y * e) - f(p - DVec3::Y * e),
-            f(p + DVec3::Z * e) - f(p - DVec3::Z * e),
-        );
+        }
+        let f = h.map(|h| h.length_squared());
+        let g = DVec3::new(f[0] - f[1], f[2] - f[3], f[4] - f[5]);
         if g.is_finite() && g != DVec3::ZERO {
             g
         } else {
@@ -313,7 +457,7 @@ impl Julia {
     }
 }
 
-shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object);
+shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object, solve: rounded);
 
 #[cfg(test)]
 mod tests {
@@ -373,6 +517,106 @@ mod tests {
         let z = C(1.5, 0.4);
         let w = z.apply(ComplexFn::Acosh).apply(ComplexFn::Cosh);
         assert!((w.0 - z.0).abs() < 1e-12 && (w.1 - z.1).abs() < 1e-12);
+    }
+
+    /// The march with every sample iterated and the crossing bisected to f64 rounding: what
+    /// `solve` did before it skipped empty cells and stopped at the lane's rounding, the
+    /// reference it must agree with.
+    fn bisected(j: &Julia, o: DVec3, d: DVec3) -> Option<f64> {
+        let (a, b, c) = (d.dot(d), o.dot(d), o.dot(o) - j.radius * j.radius);
+        let disc = b * b - a * c;
+        // From t = 0, as `solve` is asked below.
+        let (lo, hi) = (((-b - disc.sqrt()) / a).max(0.0), (-b + disc.sqrt()) / a);
+        if !(disc > 0.0) {
+            return None;
+        }
+        let (dt, start) = (j.step / a.sqrt(), j.inside_object(o + lo * d));
+        let mut t0 = lo;
+        loop {
+            let t1 = (t0 + dt).min(hi);
+            if j.inside_object(o + t1 * d) != start {
+                let (mut a, mut b) = (t0, t1);
+                loop {
+                    let m = 0.5 * (a + b);
+                    if m <= a || m >= b {
+                        return Some(b);
+                    }
+                    if j.inside_object(o + m * d) == start {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+            }
+            if t1 >= hi {
+                return None;
+            }
+            t0 = t1;
+        }
+    }
+
+    /// Seeded random rays through julias of both algebras: the march over empty cells, bisected
+    /// to the lane's rounding, rounds to the f32 that bisecting to f64 rounding does, and for
+    /// f64 lanes gives its answer.
+    #[test]
+    fn crossings_round_as_bisection_does() {
+        let param = q(-0.083, 0.0, -0.83, -0.025);
+        let mut seed = 11u64;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let to_f32: fn(f64) -> f64 = |v| v as f32 as f64;
+        let exact: fn(f64) -> f64 = |v| v;
+        for f in
+            [JuliaFunction::QuaternionSqr, JuliaFunction::QuaternionCube, JuliaFunction::Hypercomplex(ComplexFn::Sqr)]
+        {
+            let j = Julia::new(DAffine3::IDENTITY, param, f, 8, 15.0, (DVec4::W, 0.0));
+            let mut hits = 0;
+            for _ in 0..300 {
+                let o = DVec3::new(rnd(), rnd(), rnd()).normalize() * 3.0;
+                let d = DVec3::new(rnd(), rnd(), rnd()) * 0.8 - o;
+                let want = bisected(&j, o, d);
+                let got = j.solve(o, d, 0.0, 100.0, to_f32);
+                assert_eq!(got.map(to_f32), want.map(to_f32), "{f:?} from {o} along {d}");
+                assert_eq!(j.solve(o, d, 0.0, 100.0, exact), want, "{f:?} from {o} along {d}");
+                hits += want.is_some() as usize;
+            }
+            assert!(hits > 50, "{f:?}: {hits}");
+        }
+    }
+
+    /// Seeded random points in the cells marked empty are outside, for both quaternion
+    /// functions (hypercomplex ones get no cells), and the cells mark some space empty.
+    #[test]
+    fn empty_cells_hold_no_inside_point() {
+        let mut seed = 5u64;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for f in [JuliaFunction::QuaternionSqr, JuliaFunction::QuaternionCube] {
+            let j = Julia::new(DAffine3::IDENTITY, q(-0.083, 0.0, -0.83, -0.025), f, 8, 15.0, (DVec4::W, 0.0));
+            let cells = j.cells.clone().expect("quaternions get cells");
+            let mut empty = 0;
+            for _ in 0..100_000 {
+                let p = DVec3::new(rnd(), rnd(), rnd()) * j.radius;
+                if cells.empty(p) {
+                    empty += 1;
+                    assert!(!j.inside_object(p), "{f:?}: {p} is inside an empty cell");
+                }
+            }
+            assert!(empty > 20_000, "{f:?}: {empty}");
+        }
+        let h = Julia::new(
+            DAffine3::IDENTITY,
+            q(0.2, 0.1, 0.59, -0.2),
+            JuliaFunction::Hypercomplex(ComplexFn::Sqr),
+            7,
+            15.0,
+            (DVec4::W, 0.0),
+        );
+        assert!(h.cells.is_none());
     }
 
     #[test]

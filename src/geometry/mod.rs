@@ -12,17 +12,25 @@
 /// once for julia_fractal, isosurface, sor, blob and parametric: `hit` is `self.solve(o, d,
 /// t_min, t_max)` through `hit_lanes_f64`, `normal` the named object-space normal through
 /// `normal_lanes_f64`, and `inside` the named object-space test through `inside_lanes_f64`
-/// (`inside: none` for a shell with no inside). `hit` is not inlined into `Scene::hit_prim`:
+/// (`inside: none` for a shell with no inside). With `solve: rounded`, `solve` takes a fifth
+/// argument, the lane's rounding (`Lane::round_f64`), so that a search may stop once its answer
+/// is decided to the lane's precision. `hit` is not inlined into `Scene::hit_prim`:
 /// the dispatch every shape shares stays small, so scenes without these kinds do not pay for
 /// their code.
 macro_rules! shape_solved_in_f64 {
     ($ty:ty, normal: $normal:ident, inside: none) => {
-        shape_solved_in_f64!(@impl $ty, $normal, |_this: &$ty, _q: glam::DVec3| false);
+        shape_solved_in_f64!(@impl $ty, $normal, |_this: &$ty, _q: glam::DVec3| false,
+            |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, _round: fn(f64) -> f64| this.solve(o, d, lo, hi));
     };
     ($ty:ty, normal: $normal:ident, inside: $inside:ident) => {
-        shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q));
+        shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q),
+            |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, _round: fn(f64) -> f64| this.solve(o, d, lo, hi));
     };
-    (@impl $ty:ty, $normal:ident, $inside:expr) => {
+    ($ty:ty, normal: $normal:ident, inside: $inside:ident, solve: rounded) => {
+        shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q),
+            |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, round: fn(f64) -> f64| this.solve(o, d, lo, hi, round));
+    };
+    (@impl $ty:ty, $normal:ident, $inside:expr, $solve:expr) => {
         impl $crate::geometry::Shape for $ty {
             #[inline(never)]
             fn hit<L: $crate::lanes::Lane>(
@@ -31,7 +39,10 @@ macro_rules! shape_solved_in_f64 {
                 t_min: L,
                 t_max: L,
             ) -> L {
-                $crate::geometry::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+                let solve = $solve;
+                $crate::geometry::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| {
+                    solve(self, o, d, lo, hi, L::round_f64)
+                })
             }
 
             fn normal<L: $crate::lanes::Lane>(&self, p: $crate::lanes::V3<L>) -> $crate::lanes::V3<L> {
@@ -54,6 +65,7 @@ pub mod disc;
 pub mod height_field;
 pub mod isosurface;
 pub mod julia;
+mod julia_cells;
 pub mod lathe;
 pub mod mesh;
 pub mod parametric;

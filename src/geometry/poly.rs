@@ -22,7 +22,7 @@ use super::quartic::{first_root, Ill};
 use super::roots::{smallest_root_by, Solver, MAX_DEGREE};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
-use crate::ray::{RayLanes, MISS};
+use crate::ray::RayLanes;
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
 /// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
@@ -394,14 +394,13 @@ fn quadric_box(terms: &[(f64, [u8; 3])]) -> Option<(DVec3, DVec3)> {
 }
 
 impl Shape for Poly {
+    /// Through `hit_lanes_f64`, which steps past a root that rounds onto `t_min`: a CSG node
+    /// searching on from a crossing would otherwise be handed that crossing again, up to
+    /// `MAX_CROSSINGS` times (objects/csg/hfclip.pov's clipped `Cylinder_Y` did).
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let o = ray.o.transform_point(&self.frame.object_from_render);
-        let d = ray.d.transform_vector(&self.frame.object_from_render);
-        L::from_fn_f64(|i| {
-            let v = |v: V3<L>| [v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i)];
-            let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
-            self.solve(v(o), v(d), lo, hi).unwrap_or(MISS as f64)
+        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| {
+            self.solve(o.to_array(), d.to_array(), lo, hi)
         })
     }
 
@@ -428,6 +427,7 @@ impl Shape for Poly {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ray::MISS;
 
     #[test]
     fn a_quadric_inside_a_slab_gets_the_box_of_its_inside_there() {

@@ -580,10 +580,11 @@ fn within_box<L: Lane>(min: Vec3, max: Vec3, ray: &RayLanes<L>, t_min: L, t_max:
 mod tests {
     use std::cell::Cell;
 
-    use glam::{DVec3, Vec3};
+    use glam::{DMat4, DVec3, Vec3};
 
     use crate::accel::packet::Ray8;
     use crate::accel::AccelKind;
+    use crate::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform};
     use crate::lanes::{Lane, F8};
     use crate::ray::{Ray, MISS};
     use crate::scene::build::{Scene, ShapeKind};
@@ -605,60 +606,59 @@ mod tests {
         }
     }
 
-    /// A CSG of `count` boxes (some turned), spheres and ellipsoids around the origin, in POV
-    /// syntax: `op` is `intersection`, `difference` (its subtracted spheres far away, so no
-    /// ray near the node meets them) or `clip` (a sphere clipped by the rest).
-    fn node(r: &mut Rng, op: &str, count: usize) -> String {
-        let mut kids = String::new();
-        for k in 0..count {
-            let kid = match k % 3 {
-                0 => format!(
-                    "box {{ <{0}, {1}, {2}>, <{3}, {4}, {5}> rotate <{6}, {7}, {8}> }}",
-                    r.f(-1.2, -0.6),
-                    r.f(-1.2, -0.6),
-                    r.f(-1.2, -0.6),
-                    r.f(0.6, 1.2),
-                    r.f(0.6, 1.2),
-                    r.f(0.6, 1.2),
-                    // Every other box axis-aligned, some of them sharing faces.
-                    if k % 2 == 0 { 0.0 } else { r.f(0.0, 90.0) },
-                    if k % 2 == 0 { 0.0 } else { r.f(0.0, 90.0) },
-                    0.0,
-                ),
-                1 => format!(
-                    "sphere {{ <{}, {}, {}>, {} }}",
-                    r.f(-0.3, 0.3),
-                    r.f(-0.3, 0.3),
-                    r.f(-0.3, 0.3),
-                    r.f(1.0, 1.5)
-                ),
-                _ => format!(
-                    "sphere {{ 0, 1 scale <{}, {}, {}> rotate y * {} }}",
-                    r.f(0.9, 1.6),
-                    r.f(0.9, 1.6),
-                    r.f(0.9, 1.6),
-                    r.f(0.0, 90.0)
-                ),
-            };
-            kids.push_str(&kid);
-            kids.push('\n');
-        }
-        // Coincident faces: the same box twice.
-        kids.push_str("box { -0.7, 0.7 }\nbox { -0.7, 0.7 }\n");
-        match op {
-            "difference" => format!("difference {{ {kids} sphere {{ <30, 0, 0>, 1 }} sphere {{ <0, -30, 0>, 2 }} }}"),
-            "clip" => format!("sphere {{ 0, 1.1 clipped_by {{ {kids} }} }}"),
-            _ => format!("{op} {{ {kids} }}"),
+    fn object(shape: ShapeDesc, m: DMat4) -> ObjectDesc {
+        ObjectDesc {
+            shape,
+            transform: Transform { matrix: m, inverse: m.inverse() },
+            texture: TextureDesc::default(),
+            interior_texture: None,
+            interior: InteriorDesc::default(),
+            no_shadow: false,
+            inverse: false,
+            hollow: false,
+            light_group: None,
+            bounded_by: None,
+            source: SourceRef::default(),
         }
     }
 
-    fn scene(text: &str, case: usize) -> Scene {
-        let dir = std::env::temp_dir().join(format!("strahl-csg-direct-{}-{case}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join("node.pov");
-        std::fs::write(&path, text).unwrap();
-        let desc = crate::pov::load_scene(&path, &crate::pov::IncludePath::default()).unwrap();
-        let _ = std::fs::remove_dir_all(&dir);
+    /// A CSG of `count` boxes (every other one turned), spheres and ellipsoids around the
+    /// origin and a box written twice (coincident faces): `intersection`, `difference` (its
+    /// subtracted spheres far away, so no ray near the node meets them) or `clipped_by` (a
+    /// sphere clipped by the rest).
+    fn scene(r: &mut Rng, op: CsgOp, count: usize) -> Scene {
+        let d = |v: Vec3| v.as_dvec3();
+        let mut kids: Vec<ObjectDesc> = (0..count)
+            .map(|k| match k % 3 {
+                0 => {
+                    let turn = if k % 2 == 0 { 0.0 } else { r.f(0.0, 1.5) as f64 };
+                    let shape = ShapeDesc::Box { corner1: d(r.v(-1.2, -0.6)), corner2: d(r.v(0.6, 1.2)) };
+                    object(shape, DMat4::from_rotation_x(turn) * DMat4::from_rotation_y(turn * 0.7))
+                }
+                1 => {
+                    let shape = ShapeDesc::Sphere { center: d(r.v(-0.3, 0.3)), radius: r.f(1.0, 1.5) as f64 };
+                    object(shape, DMat4::IDENTITY)
+                }
+                _ => {
+                    let m = DMat4::from_rotation_y(r.f(0.0, 1.5) as f64) * DMat4::from_scale(d(r.v(0.9, 1.6)));
+                    object(ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.0 }, m)
+                }
+            })
+            .collect();
+        for _ in 0..2 {
+            let shape = ShapeDesc::Box { corner1: DVec3::splat(-0.7), corner2: DVec3::splat(0.7) };
+            kids.push(object(shape, DMat4::IDENTITY));
+        }
+        let far = |c: DVec3| object(ShapeDesc::Sphere { center: c, radius: 1.0 }, DMat4::IDENTITY);
+        match op {
+            CsgOp::Difference => kids.extend([far(DVec3::X * 30.0), far(DVec3::Y * -30.0)]),
+            CsgOp::Clip => {
+                kids.insert(0, object(ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.1 }, DMat4::IDENTITY))
+            }
+            _ => {}
+        }
+        let node = object(ShapeDesc::Csg { op, children: kids }, DMat4::IDENTITY);
+        let desc = SceneDesc { objects: vec![node], ..SceneDesc::default() };
         Scene::build(&desc, DVec3::ZERO, AccelKind::Bvh)
     }
 
@@ -671,11 +671,11 @@ mod tests {
         let before = DIRECT.with(Cell::get);
         let (mut rays, mut hits) = (0, 0);
         for case in 0..24 {
-            let op = ["intersection", "difference", "clip"][case % 3];
-            let scene = scene(&node(r, op, [2, 7, 64, 9][case % 3 + (case / 3) % 2]), case);
+            let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip][case % 3];
+            let scene = scene(r, op, [2, 7, 64, 9][case % 3 + (case / 3) % 2]);
             let prim = scene.prims.iter().find(|p| p.kind == ShapeKind::Csg).expect("a node");
             let n = &scene.csg[prim.index as usize];
-            assert!(n.spans, "{op}: leaves with spans only");
+            assert!(n.spans, "{op:?}: leaves with spans only");
             for k in 0..400 {
                 let origin = r.v(-1.0, 1.0).normalize() * r.f(2.0, 9.0);
                 let target = match k % 4 {
@@ -693,7 +693,7 @@ mod tests {
                 let (lo, hi) = if k % 7 == 0 { (r.f(0.0, 4.0), r.f(2.0, 9.0)) } else { (0.0, f32::INFINITY) };
                 let want = scene.hit_node(prim.index, &ray.lanes(), lo, hi, false);
                 let got = scene.hit_node(prim.index, &ray.lanes(), lo, hi, true);
-                assert_eq!((got.0.to_bits(), got.1.to_bits()), (want.0.to_bits(), want.1.to_bits()), "{op} {ray:?}");
+                assert_eq!((got.0.to_bits(), got.1.to_bits()), (want.0.to_bits(), want.1.to_bits()), "{op:?} {ray:?}");
                 let wide = scene.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, true);
                 let narrow = scene.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, false);
                 assert_eq!(

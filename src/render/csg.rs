@@ -33,10 +33,32 @@ impl Scene {
     /// The nearest surface of node `node` in `(t_min, t_max)` for each lane (`MISS` where
     /// none), and the leaf it belongs to (an index into `prims`, as a float: exact below 2^24).
     pub fn hit_csg<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        // Packets reach here through a call that is not inlined (nodes nest), so the 8-wide
+        // code would run in the caller's SSE; this copy runs it in 256-bit instructions. AVX2
+        // without FMA computes the same bits (as `render::packet`).
+        #[cfg(target_arch = "x86_64")]
+        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.hit_csg_avx2(node, ray, t_min, t_max) };
+        }
+        self.hit_node(node, ray, t_min, t_max, true)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn hit_csg_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        self.hit_node(node, ray, t_min, t_max, true)
+    }
+
+    /// `hit_csg`; `direct`: whether a node of kept children with spans may take its answer
+    /// from their latest entry and earliest exit (`hit_kept`) instead of the search (which
+    /// finds the same: the unit tests compare the two).
+    #[inline(always)]
+    fn hit_node<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L, direct: bool) -> (L, L) {
         let n = &self.csg[node as usize];
         let kids = &self.csg_children[n.children()];
         if n.rule == CsgRule::All {
-            return self.hit_all(n, kids, ray, t_min, t_max);
+            return self.hit_all(n, kids, ray, t_min, t_max, direct);
         }
         let miss = L::splat(MISS);
         let mut best = t_max;
@@ -76,7 +98,16 @@ impl Scene {
     /// surface box is missed has no crossing to search; a subtracted (inverted) child whose
     /// solid box is missed contains every point of the window, so no inside test asks it; a
     /// kept child whose box is missed contains none, so the node is missed.
-    fn hit_all<L: Lane>(&self, n: &CsgNode, kids: &[CsgChild], ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+    #[inline(always)]
+    fn hit_all<L: Lane>(
+        &self,
+        n: &CsgNode,
+        kids: &[CsgChild],
+        ray: &RayLanes<L>,
+        t_min: L,
+        t_max: L,
+        direct: bool,
+    ) -> (L, L) {
         let miss = L::splat(MISS);
         let (t_min, t_max) = within_box(n.min, n.max, ray, t_min, t_max);
         let mut crossed = Flags::all();
@@ -95,9 +126,9 @@ impl Scene {
         }
         let window = Window { t_min, t_max, crossed, asked };
         if n.spans && kids.len() <= 8 {
-            self.hit_spans::<L, 8>(n, kids, ray, &window)
+            self.hit_spans::<L, 8>(n, kids, ray, &window, direct)
         } else if n.spans && kids.len() <= SPANS {
-            self.hit_spans::<L, SPANS>(n, kids, ray, &window)
+            self.hit_spans::<L, SPANS>(n, kids, ray, &window, direct)
         } else {
             let search = |i: usize, from: L, best: L| self.hit_child(&kids[i], ray, from, best);
             let mut rejecters = Rejecters::default();
@@ -118,12 +149,14 @@ impl Scene {
     /// edge, coincident faces) asks the child's own test, whose rounding decides there. For
     /// the kept (not inverted) children that is one comparison with the latest entry and the
     /// earliest exit among them (leaving out the point's own child), however many they are.
+    #[inline(always)]
     fn hit_spans<L: Lane, const CAP: usize>(
         &self,
         n: &CsgNode,
         kids: &[CsgChild],
         ray: &RayLanes<L>,
         window: &Window<L>,
+        direct: bool,
     ) -> (L, L) {
         let (miss, none) = (L::splat(MISS), L::mask_from_fn(|_| false));
         let mut spans = [(none, miss, miss); CAP];
@@ -132,6 +165,7 @@ impl Scene {
         let mut missed = none;
         let mut subtracted = [0usize; CAP];
         let mut count = 0;
+        let mut inverse_crossed = false;
         for (j, c) in kids.iter().enumerate() {
             if !(window.crossed.get(j) || window.asked.get(j)) {
                 continue;
@@ -140,6 +174,7 @@ impl Scene {
             let (valid, near, far) = self.span_prim(&self.prims[l as usize], ray);
             spans[j] = (valid, near, far);
             if c.inverse {
+                inverse_crossed |= window.crossed.get(j);
                 if window.asked.get(j) {
                     subtracted[count] = j;
                     count += 1;
@@ -156,6 +191,17 @@ impl Scene {
             (pick_root(valid, near, far, from, best), L::splat(l as f32))
         };
         let scale = ray.o.x.abs().max(ray.o.y.abs()).max(ray.o.z.abs());
+        if direct && count == 0 && !inverse_crossed {
+            let leaf = |j: usize| match kids[j].target {
+                CsgTarget::Leaf(l) => l as f32,
+                CsgTarget::Node(_) => unreachable!(),
+            };
+            if let Some(hit) = hit_kept(&entries, &exits, missed, window, scale, n.surfaces as usize, leaf) {
+                #[cfg(test)]
+                tests::DIRECT.with(|d| d.set(d.get() + 1));
+                return hit;
+            }
+        }
         // Child `j`'s verdict on the point at `t`: its span's where that is clear, else its test.
         let ask = |j: usize, t: L, p: V3<L>, m: L| {
             let (valid, near, far) = spans[j];
@@ -205,6 +251,7 @@ impl Scene {
     /// whether the point `p` at `t` on child `i`'s surface is inside every other child, for
     /// the `lanes` that ask): each child's crossings in order, the first that every other child
     /// contains is its candidate, the nearest candidate wins (the first child's on a tie).
+    #[inline(always)]
     fn search_all<L: Lane>(
         &self,
         n: &CsgNode,
@@ -299,6 +346,75 @@ impl Scene {
             CsgTarget::Node(k) => self.hit_csg(k, ray, t_min, t_max),
         }
     }
+}
+
+/// `hit_spans`' answer for a node whose every child is kept (no subtracted child meets the
+/// window), straight from the latest entry `E` and earliest exit `X` among the children's spans
+/// (`second`: the runner-up, `holder`: whose), where every lane's answer is clear; `None` sends
+/// the packet to the search.
+///
+/// The search takes the nearest crossing of a surface child in the window that every other
+/// child contains; each verdict depends only on the child and the point, and `hit_spans` gives
+/// it from the spans where the point is more than the margin `m(t)` inside or outside them.
+/// A lane is clear when that decides its answer and every crossing before it:
+/// - some child missed: every crossing is outside it;
+/// - entry: `E`, on its holder `h` (a surface), inside the others, is the answer when every
+///   other entry lies before `E - m(E)` (outside `h`, as crossings before `E` can only be
+///   other children's entries: their exits lie after `E + m`);
+/// - exit: every entry at or before the window, `X` on its holder inside the others: no
+///   crossing comes before it;
+/// - miss: the window is empty; or ends before `E - m(t_max)`; or the spans are disjoint by
+///   `m(t_max)` (every point before `E - m` or after `X + m`); or every entry and `X` are
+///   behind the window and the next exit is after `X + m(t_max)`.
+///
+/// `m` grows with `t`, and every crossing in the window lies in `[0, t_max)`, so a bound at
+/// `E` or `t_max` holds for every crossing it covers: the same answer as the search, bit for bit.
+#[inline(always)]
+fn hit_kept<L: Lane>(
+    entries: &Extreme<L>,
+    exits: &Extreme<L>,
+    missed: L::Mask,
+    window: &Window<L>,
+    scale: L,
+    surfaces: usize,
+    leaf: impl Fn(usize) -> f32,
+) -> Option<(L, L)> {
+    let (t_min, t_max) = (window.t_min, window.t_max);
+    let margin = |t: L| (t.abs() + scale) * L::splat(SPAN_MARGIN);
+    let (e, h, e2) = (entries.best, entries.holder, entries.second);
+    let (x, g, x2) = (exits.best, exits.holder, exits.second);
+    let same = L::and(g.le(h), h.le(g));
+    // The search's verdict on a point at `t` from the latest entry and earliest exit among the
+    // other children (`hit_spans`' `inside`, the same expression): clearly inside all of them.
+    let inside = |t: L, last_in: L, first_out: L| {
+        let m = margin(t);
+        L::and(L::not(missed), L::and((last_in + m).lt(t), t.lt(first_out - m)))
+    };
+    let surface = |holder: L| holder.lt(L::splat(surfaces as f32));
+    let in_window = |t: L| L::and(t_min.lt(t), t.lt(t_max));
+    let entry =
+        L::and(L::and(surface(h), in_window(e)), L::and(inside(e, e2, L::select(same, x2, x)), e2.lt(e - margin(e))));
+    let exit = L::and(L::and(L::and(e.le(t_min), surface(g)), in_window(x)), inside(x, L::select(same, e2, e), x2));
+    let mw = margin(t_max);
+    let miss = L::or(
+        L::or(missed, t_max.le(t_min)),
+        L::or(L::or(t_max.le(e - mw), (x + mw).lt(e - mw)), L::and(L::and(e.le(t_min), x.le(t_min)), (x + mw).lt(x2))),
+    );
+    let clear = L::and(L::splat(0.0).le(t_min), L::or(L::or(entry, exit), miss));
+    if L::any(L::not(clear)) {
+        return None;
+    }
+    let t = L::select(entry, e, L::select(exit, x, L::splat(MISS)));
+    let holder = L::select(entry, h, L::select(exit, g, L::splat(-1.0)));
+    let leaf = L::from_fn(|k| {
+        let j = holder.get(k);
+        if j < 0.0 {
+            0.0
+        } else {
+            leaf(j as usize)
+        }
+    });
+    Some((t, leaf))
 }
 
 /// Whether a point is inside every child `asked` of `count` but `skip` (`inside(j)`; the
@@ -453,9 +569,149 @@ impl Default for Rejecters {
 /// that every non-subtracted child of an `intersection` accepts lies in all their boxes, so the
 /// node's own box bounds the search, however often an unbounded child (a cubic, a plane)
 /// crosses the ray outside it.
-#[inline]
+#[inline(always)]
 fn within_box<L: Lane>(min: Vec3, max: Vec3, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
     let (near, far) = node_slabs(V3::splat(min), V3::splat(max), ray.o, ray.inv);
     let pad = |t: L| t.abs() * L::splat(1e-5) + L::splat(1e-6);
     (t_min.max(near - pad(near)), t_max.min(far + pad(far)))
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell;
+
+    use glam::{DMat4, DVec3, Vec3};
+
+    use crate::accel::packet::Ray8;
+    use crate::accel::AccelKind;
+    use crate::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform};
+    use crate::lanes::{Lane, F8};
+    use crate::ray::{Ray, MISS};
+    use crate::scene::build::{Scene, ShapeKind};
+
+    thread_local! {
+        /// How many packets or rays `hit_kept` answered on this thread.
+        pub static DIRECT: Cell<usize> = const { Cell::new(0) };
+    }
+
+    struct Rng(u64);
+
+    impl Rng {
+        fn f(&mut self, lo: f32, hi: f32) -> f32 {
+            self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            lo + (hi - lo) * ((self.0 >> 40) as f32 / (1u64 << 24) as f32)
+        }
+        fn v(&mut self, lo: f32, hi: f32) -> Vec3 {
+            Vec3::new(self.f(lo, hi), self.f(lo, hi), self.f(lo, hi))
+        }
+    }
+
+    fn object(shape: ShapeDesc, m: DMat4) -> ObjectDesc {
+        ObjectDesc {
+            shape,
+            transform: Transform { matrix: m, inverse: m.inverse() },
+            texture: TextureDesc::default(),
+            interior_texture: None,
+            interior: InteriorDesc::default(),
+            no_shadow: false,
+            inverse: false,
+            hollow: false,
+            light_group: None,
+            bounded_by: None,
+            source: SourceRef::default(),
+        }
+    }
+
+    /// A CSG of `count` boxes (every other one turned), spheres and ellipsoids around the
+    /// origin and a box written twice (coincident faces): `intersection`, `difference` (its
+    /// subtracted spheres far away, so no ray near the node meets them) or `clipped_by` (a
+    /// sphere clipped by the rest).
+    fn scene(r: &mut Rng, op: CsgOp, count: usize) -> Scene {
+        let d = |v: Vec3| v.as_dvec3();
+        let mut kids: Vec<ObjectDesc> = (0..count)
+            .map(|k| match k % 3 {
+                0 => {
+                    let turn = if k % 2 == 0 { 0.0 } else { r.f(0.0, 1.5) as f64 };
+                    let shape = ShapeDesc::Box { corner1: d(r.v(-1.2, -0.6)), corner2: d(r.v(0.6, 1.2)) };
+                    object(shape, DMat4::from_rotation_x(turn) * DMat4::from_rotation_y(turn * 0.7))
+                }
+                1 => {
+                    let shape = ShapeDesc::Sphere { center: d(r.v(-0.3, 0.3)), radius: r.f(1.0, 1.5) as f64 };
+                    object(shape, DMat4::IDENTITY)
+                }
+                _ => {
+                    let m = DMat4::from_rotation_y(r.f(0.0, 1.5) as f64) * DMat4::from_scale(d(r.v(0.9, 1.6)));
+                    object(ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.0 }, m)
+                }
+            })
+            .collect();
+        for _ in 0..2 {
+            let shape = ShapeDesc::Box { corner1: DVec3::splat(-0.7), corner2: DVec3::splat(0.7) };
+            kids.push(object(shape, DMat4::IDENTITY));
+        }
+        let far = |c: DVec3| object(ShapeDesc::Sphere { center: c, radius: 1.0 }, DMat4::IDENTITY);
+        match op {
+            CsgOp::Difference => kids.extend([far(DVec3::X * 30.0), far(DVec3::Y * -30.0)]),
+            CsgOp::Clip => {
+                kids.insert(0, object(ShapeDesc::Sphere { center: DVec3::ZERO, radius: 1.1 }, DMat4::IDENTITY))
+            }
+            _ => {}
+        }
+        let node = object(ShapeDesc::Csg { op, children: kids }, DMat4::IDENTITY);
+        let desc = SceneDesc { objects: vec![node], ..SceneDesc::default() };
+        Scene::build(&desc, DVec3::ZERO, AccelKind::Bvh)
+    }
+
+    /// `hit_kept`'s answers against the search's, bit for bit (distance and leaf), for one f32
+    /// ray, eight lanes and f64: rays from afar, rays leaving the surface (shadow rays), rays
+    /// through edges and corners, coincident faces, windows that cut the node.
+    #[test]
+    fn the_direct_answer_is_the_searchs() {
+        let r = &mut Rng(0xC59);
+        let before = DIRECT.with(Cell::get);
+        let (mut rays, mut hits) = (0, 0);
+        for case in 0..24 {
+            let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip][case % 3];
+            let scene = scene(r, op, [2, 7, 64, 9][case % 3 + (case / 3) % 2]);
+            let prim = scene.prims.iter().find(|p| p.kind == ShapeKind::Csg).expect("a node");
+            let n = &scene.csg[prim.index as usize];
+            assert!(n.spans, "{op:?}: leaves with spans only");
+            for k in 0..400 {
+                let origin = r.v(-1.0, 1.0).normalize() * r.f(2.0, 9.0);
+                let target = match k % 4 {
+                    // Corners and edges of the shared box (grazing rays).
+                    0 => Vec3::new(0.7, 0.7, r.f(-0.7, 0.7)),
+                    1 => Vec3::splat(0.7) * Vec3::new(1.0, -1.0, 1.0),
+                    _ => r.v(-1.0, 1.0),
+                };
+                let mut ray = Ray::new(origin, (target - origin).normalize());
+                let (t, _) = scene.hit_node(prim.index, &ray.lanes(), 0.0, f32::INFINITY, false);
+                if k % 5 == 0 && t != MISS {
+                    // A shadow ray from the surface, out in a random direction.
+                    ray = Ray::new(ray.at(t), r.v(-1.0, 1.0).normalize());
+                }
+                let (lo, hi) = if k % 7 == 0 { (r.f(0.0, 4.0), r.f(2.0, 9.0)) } else { (0.0, f32::INFINITY) };
+                let want = scene.hit_node(prim.index, &ray.lanes(), lo, hi, false);
+                let got = scene.hit_node(prim.index, &ray.lanes(), lo, hi, true);
+                assert_eq!((got.0.to_bits(), got.1.to_bits()), (want.0.to_bits(), want.1.to_bits()), "{op:?} {ray:?}");
+                let wide = scene.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, true);
+                let narrow = scene.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, false);
+                assert_eq!(
+                    (wide.0.to_bits(), wide.1.to_bits()),
+                    (narrow.0.to_bits(), narrow.1.to_bits()),
+                    "f64 {ray:?}"
+                );
+                let packet = Ray8::from_fn(|i| {
+                    let o = if i == 3 { ray.origin } else { ray.origin + Vec3::splat(i as f32 * 0.01) };
+                    (o, ray.dir, ray.inv_dir)
+                });
+                let (t8, leaf8) = scene.hit_csg(prim.index, &packet, F8::splat(lo), F8::splat(hi));
+                assert_eq!((t8.0[3].to_bits(), leaf8.0[3].to_bits()), (want.0.to_bits(), want.1.to_bits()), "lane");
+                rays += 1;
+                hits += (want.0 != MISS) as usize;
+            }
+        }
+        let direct = DIRECT.with(Cell::get) - before;
+        assert!(rays > 9000 && hits > 1000 && direct > 3000, "{rays} rays, {hits} hits, {direct} answered directly");
+    }
 }

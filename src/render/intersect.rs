@@ -41,15 +41,27 @@ impl Scene {
         self.hit_prim_in(p, ray, L::splat(0.0), t_max)
     }
 
-    /// `hit_prim`, and where `p` is a mesh or height field each lane's face (`u32::MAX`
-    /// elsewhere): the face `resolve` would find, found in the same walk.
+    /// `hit_prim`, with what `resolve` would make of each lane's hit, found in the same search:
+    /// per lane the CSG leaf where `p` is a CSG node, and the face where it is a mesh or height
+    /// field (`u32::MAX` elsewhere). A leaf that is itself a mesh still needs `resolve` for its
+    /// face.
     #[inline(always)]
-    pub fn hit_prim_faces<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> (L, [u32; 8]) {
+    pub fn hit_prim_resolved<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> (L, [u32; 8], [u32; 8]) {
+        let none = [u32::MAX; 8];
         match p.kind {
             ShapeKind::Mesh | ShapeKind::HeightField => {
-                self.meshes[p.index as usize].hit_faces(ray, L::splat(0.0), t_max)
+                let (t, faces) = self.meshes[p.index as usize].hit_faces(ray, L::splat(0.0), t_max);
+                (t, none, faces)
             }
-            _ => (self.hit_prim(p, ray, t_max), [u32::MAX; 8]),
+            ShapeKind::Csg => {
+                let (t, leaf) = self.hit_csg(p.index, ray, L::splat(0.0), t_max);
+                let leaves =
+                    std::array::from_fn(
+                        |i| if i < L::WIDTH && t.get(i) != MISS { leaf.get(i) as u32 } else { u32::MAX },
+                    );
+                (t, leaves, none)
+            }
+            _ => (self.hit_prim(p, ray, t_max), none, none),
         }
     }
 

@@ -145,8 +145,8 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
         &mut tracer.stats,
     );
     if !scene.csg.is_empty() || !scene.meshes.is_empty() {
-        // Hits on CSG nodes become hits on their leaves, and hits on meshes inside them hits on
-        // their faces, one ray at a time (`Scene::resolve`); other mesh hits know their faces.
+        // The packet's search named each CSG hit's leaf and each mesh hit's face; a leaf that is
+        // a mesh learns its face here, one ray at a time (`Scene::resolve`).
         for r in 0..rows {
             for i in 0..lanes {
                 if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i], faces[r][i]) {
@@ -546,16 +546,24 @@ unsafe fn intersect_rows_avx2(
     intersect_rows_generic(scene, rows, t, ids, faces, frustum, stats)
 }
 
-/// Records the lanes where `t_new` beats `t` as hits on `id`, on face `face[i]` of a mesh
-/// (`NO_HIT` for other shapes).
+/// Records the lanes where `t_new` beats `t` as hits on `id`, or on CSG leaf `leaf[i]` where
+/// that is not `NO_HIT`, on face `face[i]` of a mesh (`NO_HIT` for other shapes).
 #[inline(always)]
-fn take_nearer(t: &mut F8, ids: &mut [u32; 8], faces: &mut [u32; 8], t_new: F8, id: u32, face: &[u32; 8]) -> u32 {
+fn take_nearer(
+    t: &mut F8,
+    ids: &mut [u32; 8],
+    faces: &mut [u32; 8],
+    t_new: F8,
+    id: u32,
+    leaf: &[u32; 8],
+    face: &[u32; 8],
+) -> u32 {
     let nearer = t_new.lt(*t);
     *t = F8::select(nearer, t_new, *t);
     let mut count = 0;
     for i in 0..8 {
         if nearer.lane(i) {
-            ids[i] = id;
+            ids[i] = if leaf[i] != NO_HIT { leaf[i] } else { id };
             faces[i] = face[i];
             count += 1;
         }
@@ -576,7 +584,8 @@ fn intersect_rows_generic(
     for (p, plane) in scene.planes.iter().enumerate() {
         for (r, ray) in rows.iter().enumerate() {
             let tp = plane.hit(ray, F8::splat(0.0), t[r]);
-            let hits = take_nearer(&mut t[r], &mut ids[r], &mut faces[r], tp, PLANE_ID + p as u32, &[NO_HIT; 8]);
+            let none = [NO_HIT; 8];
+            let hits = take_nearer(&mut t[r], &mut ids[r], &mut faces[r], tp, PLANE_ID + p as u32, &none, &none);
             stats.tests[ShapeKind::Plane as usize] += 8;
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
         }
@@ -610,9 +619,9 @@ impl RowTest for NearestRows<'_, '_> {
     #[inline(always)]
     fn test(&mut self, prim: u32, r: usize, t: &mut F8) {
         let p = &self.scene.prims[prim as usize];
-        let (t_new, face) = self.scene.hit_prim_faces(p, &self.rows[r], *t);
+        let (t_new, leaf, face) = self.scene.hit_prim_resolved(p, &self.rows[r], *t);
         let kind = p.kind;
-        let hits = take_nearer(t, &mut self.ids[r], &mut self.faces[r], t_new, prim, &face);
+        let hits = take_nearer(t, &mut self.ids[r], &mut self.faces[r], t_new, prim, &leaf, &face);
         self.stats.tests[kind as usize] += 8;
         self.stats.hits[kind as usize] += hits as u64;
     }

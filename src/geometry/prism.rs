@@ -338,6 +338,76 @@ mod tests {
         assert!(inside(&c, Vec3::new(1.4, 1.5, 0.0)) && !inside(&c, Vec3::new(1.6, 1.5, 0.0)));
     }
 
+    /// Seeded random rays (some starting inside, some level) at a star with a curved hole, closed
+    /// and conic: the nearest hit is the least of the caps (each by even-odd over all pieces) and
+    /// the sides (the open prism's), as the entering-cap-first order must keep; eight-lane
+    /// packets give the single rays' bits.
+    #[test]
+    fn caps_and_sides_against_brute_force_and_packets() {
+        use crate::geometry::spline::even_odd;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rand = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let q = |x: f64, z: f64| DVec2::new(x, z);
+        let star = [q(0.45, 0.0), q(0.12, 0.12), q(0.0, 0.45), q(-0.12, 0.12), q(-0.45, 0.0), q(-0.12, -0.12)];
+        let mut pts: Vec<DVec2> = star.into();
+        pts.extend([q(0.0, -0.45), q(0.12, -0.12), q(0.45, 0.0)]);
+        let mut pieces = closed_pieces(SplineKind::Linear, &pts).expect("star").0;
+        let hole = [q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0), q(0.0, -0.05), q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0)];
+        pieces.extend(closed_pieces(SplineKind::Cubic, &hole).expect("hole").0);
+        let mut caps_hit = 0;
+        for conic in [false, true] {
+            let (h1, h2) = if conic { (0.5, 1.5) } else { (0.0, 0.6) };
+            let closed = Prism::new(DAffine3::IDENTITY, &pieces, h1, h2, conic, false);
+            let open = Prism::new(DAffine3::IDENTITY, &pieces, h1, h2, conic, true);
+            let mut rays = Vec::new();
+            for i in 0..4000 {
+                // Render space is the prism as written.
+                let y = h1 + (h2 - h1) * rand();
+                let reach = if conic { 0.5 * y } else { 0.5 };
+                let target = DVec3::new((rand() * 2.0 - 1.0) * reach, y, (rand() * 2.0 - 1.0) * reach);
+                let o = DVec3::new(rand() * 4.0 - 2.0, rand() * 4.0 - 1.0, rand() * 4.0 - 2.0);
+                let o = if i % 5 == 0 { target } else { o };
+                let mut d = (target - o + 0.1 * DVec3::new(rand(), rand(), rand())).normalize();
+                if i % 17 == 0 {
+                    d.y = 0.0;
+                }
+                let ray = Ray::new(o.as_vec3(), d.as_vec3());
+                rays.push(ray);
+                let f = &closed.frame.object_from_render;
+                let (o, d) = (f.transform_point3(ray.origin).as_dvec3(), f.transform_vector3(ray.dir).as_dvec3());
+                let s_min = if i % 3 == 0 { 1e-4 } else { 0.0 };
+                let mut want = open.solve(o, d, s_min, f64::INFINITY).unwrap_or(f64::INFINITY);
+                for h in [closed.h1, closed.h2] {
+                    let s = (h - o.y) / d.y;
+                    let w = o + s * d;
+                    if s > s_min && s < want && even_odd(&closed.pieces, closed.section(DVec3::new(w.x, h, w.z))) {
+                        want = s;
+                        caps_hit += 1;
+                    }
+                }
+                let want = want.is_finite().then_some(want).map(f64::to_bits);
+                assert_eq!(closed.solve(o, d, s_min, f64::INFINITY).map(f64::to_bits), want, "{o} {d}");
+            }
+            for chunk in rays.chunks_exact(8) {
+                let packet = RayLanes::<F8> {
+                    o: V3::from_lanes(|i| chunk[i].origin),
+                    d: V3::from_lanes(|i| chunk[i].dir),
+                    inv: V3::from_lanes(|i| chunk[i].inv_dir),
+                };
+                let wide = closed.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+                for (i, r) in chunk.iter().enumerate() {
+                    assert_eq!(wide.get(i).to_bits(), closed.hit(&r.lanes(), 0.0, MISS).to_bits());
+                }
+            }
+        }
+        assert!(caps_hit > 500, "the rays reach the caps: {caps_hit}");
+    }
+
     #[test]
     fn grazing_scaled_moved_and_packets() {
         // Grazing the wall z = -1 along it: either no hit or one on the wall's line.

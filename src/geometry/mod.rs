@@ -57,6 +57,7 @@ macro_rules! shape_solved_in_f64 {
     };
 }
 
+pub mod bands;
 pub mod bernstein;
 pub mod blob;
 pub mod cone;

@@ -16,10 +16,11 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+use super::bands::Bands;
 use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
 use super::roots::MAX_DEGREE;
-use super::spline::{closest_t, even_odd, Piece};
+use super::spline::{closest_t, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::RayLanes;
@@ -28,6 +29,8 @@ use crate::ray::RayLanes;
 pub struct Prism {
     pub frame: BoxFrame,
     pieces: Vec<Piece>,
+    /// The pieces by height, for the even-odd test of caps and `inside`.
+    bands: Bands,
     /// Heights in object space, `h1 < h2`.
     h1: f64,
     h2: f64,
@@ -76,7 +79,17 @@ impl Prism {
         let (min, max) = transformed_bounds(&xf, blo.as_vec3(), bhi.as_vec3());
         // Widened by a few f32 ulps: the box's corners were rounded.
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
-        Prism { frame: frame_for(xf), pieces, h1, h2, conic, open, min: min - pad, max: max + pad }
+        Prism {
+            frame: frame_for(xf),
+            bands: Bands::new(&pieces),
+            pieces,
+            h1,
+            h2,
+            conic,
+            open,
+            min: min - pad,
+            max: max + pad,
+        }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -93,7 +106,7 @@ impl Prism {
     }
 
     fn inside_2d(&self, q: DVec2) -> bool {
-        even_odd(&self.pieces, q)
+        self.bands.inside(&self.pieces, q)
     }
 
     fn inside_point(&self, q: DVec3) -> bool {
@@ -106,30 +119,37 @@ impl Prism {
     /// The nearest `s` in `(s_min, s_max)` where `o + s·d` (object space) meets the prism.
     fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
         let mut best = s_max;
-        // Caps: the inside at each end height.
-        if !self.open && d.y != 0.0 {
-            for h in [self.h1, self.h2] {
-                let s = (h - o.y) / d.y;
-                if s > s_min && s < best && !(self.conic && h == 0.0) {
-                    let q = o + s * d;
-                    let q = DVec3::new(q.x, h, q.z);
-                    if self.inside_2d(self.section(q)) {
-                        best = s;
-                    }
-                }
-            }
-        }
         // The span of s inside the height slab.
         let (mut lo, mut hi) = (s_min, best);
+        // The caps where the ray enters and leaves the slab: (s, height).
+        let (mut near, mut far) = (None, None);
         if d.y != 0.0 {
             let (a, b) = ((self.h1 - o.y) / d.y, (self.h2 - o.y) / d.y);
+            (near, far) = if a <= b {
+                (Some((a, self.h1)), Some((b, self.h2)))
+            } else {
+                (Some((b, self.h2)), Some((a, self.h1)))
+            };
             lo = lo.max(a.min(b));
             hi = hi.min(a.max(b));
         } else if !(o.y >= self.h1 && o.y <= self.h2) {
-            return (best < s_max).then_some(best);
+            return None;
         }
+        // A cap is the inside at its height. The entering one, when hit, is nearer than any side
+        // (those lie past it in the slab); the leaving one only counts when no side is nearer.
+        let cap = |(s, h): (f64, f64)| {
+            let hit = !self.open && s > s_min && s < s_max && !(self.conic && h == 0.0) && {
+                let q = o + s * d;
+                self.inside_2d(self.section(DVec3::new(q.x, h, q.z)))
+            };
+            hit.then_some(s)
+        };
+        if let Some(s) = near.and_then(cap) {
+            return Some(s);
+        }
+        let far_cap = || far.and_then(cap);
         if lo.is_nan() || hi.is_nan() || lo >= hi {
-            return (best < s_max).then_some(best);
+            return far_cap();
         }
         // The side: (a, b, k) with a·u + b·v + k = 0 on the ray's plane through the sweep axis
         // direction (linear: the vertical plane of the ray; conic: the plane of ray and apex).
@@ -139,7 +159,7 @@ impl Prism {
             (d.z, -d.x, o.z * d.x - o.x * d.z)
         };
         if a == 0.0 && b == 0.0 {
-            return (best < s_max).then_some(best);
+            return far_cap();
         }
         // A linear sweep's ray covers only this box of the section over the height slab: a piece
         // whose control points' box it misses has no crossing there (infinite or NaN spans, a
@@ -192,7 +212,11 @@ impl Prism {
                 }
             }
         }
-        (best < s_max).then_some(best)
+        if best < s_max {
+            Some(best)
+        } else {
+            far_cap()
+        }
     }
 
     /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
@@ -312,6 +336,76 @@ mod tests {
         assert!((n - Vec3::new(0.0, -1.0, -1.0).normalize()).length() < 1e-5, "{n}");
         assert!((hit(&c, Vec3::new(1.8, 5.0, 0.0), -Vec3::Y).expect("top cap reaches 2") - 3.0).abs() < 1e-5);
         assert!(inside(&c, Vec3::new(1.4, 1.5, 0.0)) && !inside(&c, Vec3::new(1.6, 1.5, 0.0)));
+    }
+
+    /// Seeded random rays (some starting inside, some level) at a star with a curved hole, closed
+    /// and conic: the nearest hit is the least of the caps (each by even-odd over all pieces) and
+    /// the sides (the open prism's), as the entering-cap-first order must keep; eight-lane
+    /// packets give the single rays' bits.
+    #[test]
+    fn caps_and_sides_against_brute_force_and_packets() {
+        use crate::geometry::spline::even_odd;
+        let mut seed = 0x2545_f491_4f6c_dd1du64;
+        let mut rand = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let q = |x: f64, z: f64| DVec2::new(x, z);
+        let star = [q(0.45, 0.0), q(0.12, 0.12), q(0.0, 0.45), q(-0.12, 0.12), q(-0.45, 0.0), q(-0.12, -0.12)];
+        let mut pts: Vec<DVec2> = star.into();
+        pts.extend([q(0.0, -0.45), q(0.12, -0.12), q(0.45, 0.0)]);
+        let mut pieces = closed_pieces(SplineKind::Linear, &pts).expect("star").0;
+        let hole = [q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0), q(0.0, -0.05), q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0)];
+        pieces.extend(closed_pieces(SplineKind::Cubic, &hole).expect("hole").0);
+        let mut caps_hit = 0;
+        for conic in [false, true] {
+            let (h1, h2) = if conic { (0.5, 1.5) } else { (0.0, 0.6) };
+            let closed = Prism::new(DAffine3::IDENTITY, &pieces, h1, h2, conic, false);
+            let open = Prism::new(DAffine3::IDENTITY, &pieces, h1, h2, conic, true);
+            let mut rays = Vec::new();
+            for i in 0..4000 {
+                // Render space is the prism as written.
+                let y = h1 + (h2 - h1) * rand();
+                let reach = if conic { 0.5 * y } else { 0.5 };
+                let target = DVec3::new((rand() * 2.0 - 1.0) * reach, y, (rand() * 2.0 - 1.0) * reach);
+                let o = DVec3::new(rand() * 4.0 - 2.0, rand() * 4.0 - 1.0, rand() * 4.0 - 2.0);
+                let o = if i % 5 == 0 { target } else { o };
+                let mut d = (target - o + 0.1 * DVec3::new(rand(), rand(), rand())).normalize();
+                if i % 17 == 0 {
+                    d.y = 0.0;
+                }
+                let ray = Ray::new(o.as_vec3(), d.as_vec3());
+                rays.push(ray);
+                let f = &closed.frame.object_from_render;
+                let (o, d) = (f.transform_point3(ray.origin).as_dvec3(), f.transform_vector3(ray.dir).as_dvec3());
+                let s_min = if i % 3 == 0 { 1e-4 } else { 0.0 };
+                let mut want = open.solve(o, d, s_min, f64::INFINITY).unwrap_or(f64::INFINITY);
+                for h in [closed.h1, closed.h2] {
+                    let s = (h - o.y) / d.y;
+                    let w = o + s * d;
+                    if s > s_min && s < want && even_odd(&closed.pieces, closed.section(DVec3::new(w.x, h, w.z))) {
+                        want = s;
+                        caps_hit += 1;
+                    }
+                }
+                let want = want.is_finite().then_some(want).map(f64::to_bits);
+                assert_eq!(closed.solve(o, d, s_min, f64::INFINITY).map(f64::to_bits), want, "{o} {d}");
+            }
+            for chunk in rays.chunks_exact(8) {
+                let packet = RayLanes::<F8> {
+                    o: V3::from_lanes(|i| chunk[i].origin),
+                    d: V3::from_lanes(|i| chunk[i].dir),
+                    inv: V3::from_lanes(|i| chunk[i].inv_dir),
+                };
+                let wide = closed.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+                for (i, r) in chunk.iter().enumerate() {
+                    assert_eq!(wide.get(i).to_bits(), closed.hit(&r.lanes(), 0.0, MISS).to_bits());
+                }
+            }
+        }
+        assert!(caps_hit > 500, "the rays reach the caps: {caps_hit}");
     }
 
     #[test]

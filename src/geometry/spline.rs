@@ -225,6 +225,12 @@ pub fn closed_pieces(kind: SplineKind, points: &[DVec2]) -> Result<(Vec<Piece>, 
 /// Even-odd: whether `q` lies inside the curves `pieces`, by the crossings of the ray from `q`
 /// towards +u (prism sections, lathe outlines).
 pub fn even_odd(pieces: &[Piece], q: DVec2) -> bool {
+    even_odd_of(pieces, q)
+}
+
+/// `even_odd` over any collection of the curves' pieces that holds every piece spanning `q`'s
+/// height (the others are passed over anyway; the parity does not depend on the order).
+pub fn even_odd_of<'a>(pieces: impl IntoIterator<Item = &'a Piece>, q: DVec2) -> bool {
     let mut inside = false;
     for p in pieces {
         if q.y < p.lo.y || q.y > p.hi.y || q.x > p.hi.x {

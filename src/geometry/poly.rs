@@ -223,21 +223,30 @@ impl Poly {
             *slot = v;
         }
         let first = c[..=n].iter().position(|v| v.abs() > 1e-14 * scale).unwrap_or(n);
-        let lo = (t_min - t_c) * len;
+        let mut lo = (t_min - t_c) * len;
         let hi = (t_max - t_c) * len;
         let c = &c[first..=n];
-        // `sturm` asks for a solver that does not lose roots: the closed form serves where it is
-        // well-conditioned, and Sturm sequences decide near a double root, where it declines.
-        let closed = match (self.solver, c.len()) {
-            (Solver::Sturm, 5) => {
-                let monic = [1.0, c[1] / c[0], c[2] / c[0], c[3] / c[0], c[4] / c[0]];
-                first_root(&monic, lo, hi, |s| (s > lo && s < hi).then_some(s))
+        // A root at `t_min` itself (CSG searching on from a crossing) may come back from the
+        // change to `s` and back just past it: then the next root is the one wanted.
+        for _ in 0..4 {
+            // `sturm` asks for a solver that does not lose roots: the closed form serves where
+            // it is well-conditioned, and Sturm sequences decide near a double root, where it
+            // declines.
+            let closed = match (self.solver, c.len()) {
+                (Solver::Sturm, 5) => {
+                    let monic = [1.0, c[1] / c[0], c[2] / c[0], c[3] / c[0], c[4] / c[0]];
+                    first_root(&monic, lo, hi, |s| (s > lo && s < hi).then_some(s))
+                }
+                _ => Err(Ill),
+            };
+            let s = closed.unwrap_or_else(|Ill| smallest_root_by(self.solver, c, lo, hi))?;
+            let t = t_c + s / len;
+            if t > t_min {
+                return (t < t_max).then_some(t);
             }
-            _ => Err(Ill),
-        };
-        let s = closed.unwrap_or_else(|Ill| smallest_root_by(self.solver, c, lo, hi))?;
-        let t = t_c + s / len;
-        (t > t_min && t < t_max).then_some(t)
+            lo = s;
+        }
+        None
     }
 }
 

@@ -299,6 +299,7 @@ impl Scene {
             ShapeKind::Box => self.boxes[i].span(ray),
             ShapeKind::Sphere => self.spheres[i].span(ray),
             ShapeKind::Ellipsoid => self.ellipsoids[i].span(ray),
+            ShapeKind::Plane => self.half_spaces[i].span(ray),
             _ => unreachable!("{:?} has no span", p.kind),
         }
     }

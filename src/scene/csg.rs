@@ -48,9 +48,10 @@ impl CsgNode {
 }
 
 /// Whether leaves of `kind` tell where the ray's line crosses them as one pair of roots
-/// (`span`), from which their `hit` picks: convex solids solved in closed form.
+/// (`span`), from which their `hit` picks: convex solids solved in closed form, and half-spaces
+/// (a plane's span is a half-line, or all or none of the line).
 pub fn has_span(kind: ShapeKind) -> bool {
-    matches!(kind, ShapeKind::Box | ShapeKind::Sphere | ShapeKind::Ellipsoid)
+    matches!(kind, ShapeKind::Box | ShapeKind::Sphere | ShapeKind::Ellipsoid | ShapeKind::Plane)
 }
 
 /// What a child is.

@@ -1,28 +1,18 @@
-//! CSG queries: a node's nearest surface and its inside test, for one ray (f32 or f64) or eight,
-//! from one generic formula (as `geometry::Shape`).
-//!
-//! A node's surface is found child by child: each surface child's hits are taken in order
-//! along the ray (`hit_prim_in` from the last one rejected), and the first whose point the
-//! other children accept is that child's candidate; the nearest candidate wins. An
-//! `intersection` accepts a point inside every other child, a `merge` one inside none, a
-//! `union` any. Rejected hits cost one more root search each, so a ray pays for the crossings
-//! it passes, not for the node's size.
+//! CSG nodes whose children all have a `span` (boxes, spheres, ellipsoids, planes: one pair of
+//! line crossings each): the crossings are found once per ray and answer both the search and
+//! the inside tests, and a node of kept children takes its answer from the latest entry and
+//! earliest exit (`hit_kept`). The same hits and leaves as the general search (the tests below
+//! compare them), in fewer shape tests.
 
-use glam::Vec3;
-
-use crate::accel::aabb::{node_slabs, Aabb};
+use super::Window;
 use crate::lanes::{Lane, V3};
 use crate::ray::{pick_root, RayLanes, MISS};
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
-use crate::scene::csg::{CsgChild, CsgNode, CsgRule, CsgTarget};
-
-/// The most surface crossings followed along one ray through one child; beyond, the child is
-/// missed. A child of closed shapes has a few; this bounds a pathological nesting.
-const MAX_CROSSINGS: usize = 256;
+use crate::scene::csg::{CsgChild, CsgNode, CsgTarget};
 
 /// The most children whose spans `hit_spans` keeps (on the stack); a larger node searches each
 /// child's shape instead.
-const SPANS: usize = 64;
+pub(super) const SPANS: usize = 64;
 
 /// How near (relative to `t` and the ray's origin) a point may lie to an end of a child's span
 /// before the child's own inside test decides: far above the few ulps the span and the test
@@ -30,116 +20,6 @@ const SPANS: usize = 64;
 const SPAN_MARGIN: f32 = 1e-4;
 
 impl Scene {
-    /// The nearest surface of node `node` in `(t_min, t_max)` for each lane (`MISS` where
-    /// none), and the leaf it belongs to (an index into `prims`, as a float: exact below 2^24).
-    pub fn hit_csg<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
-        // Packets reach here through a call that is not inlined (nodes nest), so the 8-wide
-        // code would run in the caller's SSE; this copy runs it in 256-bit instructions. AVX2
-        // without FMA computes the same bits (as `render::packet`).
-        #[cfg(target_arch = "x86_64")]
-        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2, checked just above.
-            return unsafe { self.hit_csg_avx2(node, ray, t_min, t_max) };
-        }
-        self.hit_node(node, ray, t_min, t_max, true)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn hit_csg_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
-        self.hit_node(node, ray, t_min, t_max, true)
-    }
-
-    /// `hit_csg`; `direct`: whether a node of kept children with spans may take its answer
-    /// from their latest entry and earliest exit (`hit_kept`) instead of the search (which
-    /// finds the same: the unit tests compare the two).
-    #[inline(always)]
-    fn hit_node<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L, direct: bool) -> (L, L) {
-        let n = &self.csg[node as usize];
-        let kids = &self.csg_children[n.children()];
-        if n.rule == CsgRule::All {
-            return self.hit_all(n, kids, ray, t_min, t_max, direct);
-        }
-        let miss = L::splat(MISS);
-        let mut best = t_max;
-        let mut leaf = L::splat(0.0);
-        let mut found = L::mask_from_fn(|_| false);
-        for (i, child) in kids[..n.surfaces as usize].iter().enumerate() {
-            let mut from = t_min;
-            for _ in 0..MAX_CROSSINGS {
-                let (t, l) = self.hit_child(child, ray, from, best);
-                let hit = t.lt(miss);
-                if !L::any(hit) {
-                    break;
-                }
-                let p = ray.o.add(ray.d.scale(t));
-                let keep = match n.rule {
-                    CsgRule::Union => hit,
-                    _ => L::and(hit, L::not(self.inside_others(kids, i, p, false))),
-                };
-                best = L::select(keep, t, best);
-                leaf = L::select(keep, l, leaf);
-                found = L::or(found, keep);
-                let again = L::and(hit, L::not(keep));
-                if !L::any(again) {
-                    break;
-                }
-                // Lanes done search the empty interval (best, best).
-                from = L::select(again, t, best);
-            }
-        }
-        (L::select(found, best, miss), leaf)
-    }
-
-    /// `hit_csg` for a node under `CsgRule::All`: the same search, cut short by the children's
-    /// boxes (exactly: a box the ray misses holds no crossing and no point of the ray).
-    ///
-    /// Before any shape is tried, each child's box is met with the ray's window: a child whose
-    /// surface box is missed has no crossing to search; a subtracted (inverted) child whose
-    /// solid box is missed contains every point of the window, so no inside test asks it; a
-    /// kept child whose box is missed contains none, so the node is missed.
-    #[inline(always)]
-    fn hit_all<L: Lane>(
-        &self,
-        n: &CsgNode,
-        kids: &[CsgChild],
-        ray: &RayLanes<L>,
-        t_min: L,
-        t_max: L,
-        direct: bool,
-    ) -> (L, L) {
-        let miss = L::splat(MISS);
-        let (t_min, t_max) = within_box(n.min, n.max, ray, t_min, t_max);
-        let mut crossed = Flags::all();
-        let mut asked = Flags::all();
-        for (j, c) in kids.iter().enumerate().take(Flags::CAPACITY) {
-            let meets_surface = meets(&c.surface, ray, t_min, t_max);
-            if !meets_surface {
-                crossed.clear(j);
-                if !c.inverse && c.solid == c.surface {
-                    return (miss, L::splat(0.0));
-                }
-            }
-            if c.inverse && !(if c.solid == c.surface { meets_surface } else { meets(&c.solid, ray, t_min, t_max) }) {
-                asked.clear(j);
-            }
-        }
-        let window = Window { t_min, t_max, crossed, asked };
-        if n.spans && kids.len() <= 8 {
-            self.hit_spans::<L, 8>(n, kids, ray, &window, direct)
-        } else if n.spans && kids.len() <= SPANS {
-            self.hit_spans::<L, SPANS>(n, kids, ray, &window, direct)
-        } else {
-            let search = |i: usize, from: L, best: L| self.hit_child(&kids[i], ray, from, best);
-            let mut rejecters = Rejecters::default();
-            let inside = |i: usize, _: L, p: V3<L>, _: L::Mask| {
-                let test = |j: usize| self.inside_child(&kids[j], p);
-                inside_all_but::<L>(kids.len(), i, test, &window.asked, &mut rejecters)
-            };
-            self.search_all(n, ray, &window, search, inside)
-        }
-    }
-
     /// `hit_all` for a node whose children all have a `span` (boxes, spheres, ellipsoids):
     /// each child's line crossings are found once, and every search of the node's loop picks
     /// from them as the child's `hit` would (`pick_root`, the same bits).
@@ -150,7 +30,7 @@ impl Scene {
     /// the kept (not inverted) children that is one comparison with the latest entry and the
     /// earliest exit among them (leaving out the point's own child), however many they are.
     #[inline(always)]
-    fn hit_spans<L: Lane, const CAP: usize>(
+    pub(super) fn hit_spans<L: Lane, const CAP: usize>(
         &self,
         n: &CsgNode,
         kids: &[CsgChild],
@@ -246,51 +126,6 @@ impl Scene {
         self.search_all(n, ray, window, search, inside)
     }
 
-    /// The search of `hit_csg` over an `All` node's surface children (`search(i, from, to)`:
-    /// child `i`'s nearest crossing in `(from, to)` and its leaf; `inside(i, t, p, lanes)`:
-    /// whether the point `p` at `t` on child `i`'s surface is inside every other child, for
-    /// the `lanes` that ask): each child's crossings in order, the first that every other child
-    /// contains is its candidate, the nearest candidate wins (the first child's on a tie).
-    #[inline(always)]
-    fn search_all<L: Lane>(
-        &self,
-        n: &CsgNode,
-        ray: &RayLanes<L>,
-        window: &Window<L>,
-        search: impl Fn(usize, L, L) -> (L, L),
-        mut inside: impl FnMut(usize, L, V3<L>, L::Mask) -> L::Mask,
-    ) -> (L, L) {
-        let miss = L::splat(MISS);
-        let mut best = window.t_max;
-        let mut leaf = L::splat(0.0);
-        let mut found = L::mask_from_fn(|_| false);
-        for i in 0..n.surfaces as usize {
-            if !window.crossed.get(i) {
-                continue;
-            }
-            let mut from = window.t_min;
-            for _ in 0..MAX_CROSSINGS {
-                let (t, l) = search(i, from, best);
-                let hit = t.lt(miss);
-                if !L::any(hit) {
-                    break;
-                }
-                let p = ray.o.add(ray.d.scale(t));
-                let keep = L::and(hit, inside(i, t, p, hit));
-                best = L::select(keep, t, best);
-                leaf = L::select(keep, l, leaf);
-                found = L::or(found, keep);
-                let again = L::and(hit, L::not(keep));
-                if !L::any(again) {
-                    break;
-                }
-                // Lanes done search the empty interval (best, best).
-                from = L::select(again, t, best);
-            }
-        }
-        (L::select(found, best, miss), leaf)
-    }
-
     /// A leaf's `span` (for the kinds `csg::has_span` names).
     #[inline(always)]
     fn span_prim<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>) -> (L::Mask, L, L) {
@@ -301,50 +136,6 @@ impl Scene {
             ShapeKind::Ellipsoid => self.ellipsoids[i].span(ray),
             ShapeKind::Plane => self.half_spaces[i].span(ray),
             _ => unreachable!("{:?} has no span", p.kind),
-        }
-    }
-
-    /// Which points lie inside node `node`.
-    pub fn inside_node<L: Lane>(&self, node: u32, p: V3<L>) -> L::Mask {
-        let n = &self.csg[node as usize];
-        let kids = &self.csg_children[n.children()];
-        match n.rule {
-            CsgRule::All => self.inside_others(kids, usize::MAX, p, true),
-            CsgRule::Union | CsgRule::Merge => self.inside_others(kids, usize::MAX, p, false),
-        }
-    }
-
-    /// `all`: whether `p` is inside every child but `skip`; else whether inside any of them.
-    fn inside_others<L: Lane>(&self, kids: &[CsgChild], skip: usize, p: V3<L>, all: bool) -> L::Mask {
-        let mut m = L::mask_from_fn(|_| all);
-        for (j, c) in kids.iter().enumerate() {
-            if j == skip {
-                continue;
-            }
-            let inside = self.inside_child(c, p);
-            m = if all { L::and(m, inside) } else { L::or(m, inside) };
-            // Outside for every lane: nothing more can change it.
-            if all && !L::any(m) {
-                break;
-            }
-        }
-        m
-    }
-
-    #[inline(always)]
-    fn inside_child<L: Lane>(&self, c: &CsgChild, p: V3<L>) -> L::Mask {
-        let inside = match c.target {
-            CsgTarget::Leaf(i) => self.inside_prim(&self.prims[i as usize], p),
-            CsgTarget::Node(k) => self.inside_node(k, p),
-        };
-        L::xor(inside, L::mask_from_fn(|_| c.inverse))
-    }
-
-    #[inline(always)]
-    fn hit_child<L: Lane>(&self, c: &CsgChild, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
-        match c.target {
-            CsgTarget::Leaf(i) => (self.hit_prim_in(&self.prims[i as usize], ray, t_min, t_max), L::splat(i as f32)),
-            CsgTarget::Node(k) => self.hit_csg(k, ray, t_min, t_max),
         }
     }
 }
@@ -418,76 +209,6 @@ fn hit_kept<L: Lane>(
     Some((t, leaf))
 }
 
-/// Whether a point is inside every child `asked` of `count` but `skip` (`inside(j)`; the
-/// children not asked contain it): the conjunction, in an order that ends it early where one
-/// child rejects every lane: the two children that last did (`rejecters`), then the rest.
-fn inside_all_but<L: Lane>(
-    count: usize,
-    skip: usize,
-    inside: impl Fn(usize) -> L::Mask,
-    asked: &Flags,
-    rejecters: &mut Rejecters,
-) -> L::Mask {
-    let mut m = L::mask_from_fn(|_| true);
-    let mut left = *asked;
-    let first = rejecters.0;
-    for (k, &j) in first.iter().enumerate() {
-        if j == skip || !left.get(j) || j >= count {
-            continue;
-        }
-        left.clear(j);
-        m = L::and(m, inside(j));
-        if !L::any(m) {
-            rejecters.0.swap(0, k);
-            return m;
-        }
-    }
-    let mut ask = |j: usize, m: &mut L::Mask, left: &mut Flags| {
-        if j == skip || !left.get(j) {
-            return false;
-        }
-        left.clear(j);
-        *m = L::and(*m, inside(j));
-        let rejected = !L::any(*m);
-        if rejected {
-            rejecters.0 = [j, first[0]];
-        }
-        rejected
-    };
-    for w in 0..count.min(Flags::CAPACITY).div_ceil(64) {
-        let mut bits = left.word(w, count);
-        while bits != 0 {
-            if ask(w * 64 + bits.trailing_zeros() as usize, &mut m, &mut left) {
-                return m;
-            }
-            bits &= bits - 1;
-        }
-    }
-    for j in Flags::CAPACITY..count {
-        if ask(j, &mut m, &mut left) {
-            return m;
-        }
-    }
-    m
-}
-
-/// Whether any lane's window `(t_min, t_max)` meets the box `b` (padded in `t` as
-/// `within_box`, so a crossing the box holds is never lost to rounding).
-#[inline(always)]
-fn meets<L: Lane>(b: &Aabb, ray: &RayLanes<L>, t_min: L, t_max: L) -> bool {
-    let (near, far) = within_box(b.min, b.max, ray, t_min, t_max);
-    L::any(near.le(far))
-}
-
-/// The ray's window through an `All` node and which children it needs: `crossed`, those whose
-/// crossings are searched; `asked`, those whose inside tests can reject a point.
-struct Window<L: Lane> {
-    t_min: L,
-    t_max: L,
-    crossed: Flags,
-    asked: Flags,
-}
-
 /// Per lane, the largest (or smallest, by `better`) of some children's values and which child
 /// holds it, and the runner-up: the extreme over all of them but any one child.
 struct Extreme<L: Lane> {
@@ -520,61 +241,6 @@ impl<L: Lane> Extreme<L> {
             L::select(L::splat(i as f32).lt(self.holder), self.best, self.second),
         )
     }
-}
-
-/// One flag per child of a node (the first `CAPACITY`; those beyond are always set).
-#[derive(Clone, Copy)]
-struct Flags([u64; Flags::WORDS]);
-
-impl Flags {
-    const WORDS: usize = 8;
-    const CAPACITY: usize = Flags::WORDS * 64;
-
-    fn all() -> Flags {
-        Flags([u64::MAX; Flags::WORDS])
-    }
-
-    fn clear(&mut self, j: usize) {
-        if j < Flags::CAPACITY {
-            self.0[j / 64] &= !(1 << (j % 64));
-        }
-    }
-
-    fn get(&self, j: usize) -> bool {
-        j >= Flags::CAPACITY || self.0[j / 64] & (1 << (j % 64)) != 0
-    }
-
-    /// Word `w` of the flags of `count` children (bits past `count` cleared).
-    #[inline(always)]
-    fn word(&self, w: usize, count: usize) -> u64 {
-        let bits = self.0[w];
-        if (w + 1) * 64 > count {
-            bits & (u64::MAX >> ((w + 1) * 64 - count))
-        } else {
-            bits
-        }
-    }
-}
-
-/// The two children that last rejected a point, asked first (`usize::MAX`: none yet).
-struct Rejecters([usize; 2]);
-
-impl Default for Rejecters {
-    fn default() -> Rejecters {
-        Rejecters([usize::MAX; 2])
-    }
-}
-
-/// `(t_min, t_max)` narrowed to where the ray is inside the box `min`..`max`, widened by a part
-/// in 10⁵ of the distance so that no crossing on the box's faces is lost to rounding. A point
-/// that every non-subtracted child of an `intersection` accepts lies in all their boxes, so the
-/// node's own box bounds the search, however often an unbounded child (a cubic, a plane)
-/// crosses the ray outside it.
-#[inline(always)]
-fn within_box<L: Lane>(min: Vec3, max: Vec3, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
-    let (near, far) = node_slabs(V3::splat(min), V3::splat(max), ray.o, ray.inv);
-    let pad = |t: L| t.abs() * L::splat(1e-5) + L::splat(1e-6);
-    (t_min.max(near - pad(near)), t_max.min(far + pad(far)))
 }
 
 #[cfg(test)]

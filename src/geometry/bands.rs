@@ -67,26 +67,16 @@ mod tests {
     use super::*;
     use crate::desc::SplineKind;
     use crate::geometry::spline::{closed_pieces, even_odd};
+    use crate::geometry::test_support::*;
 
     /// Over seeded random points, and points on the pieces' joints and end heights (where a
     /// band edge or a piece's span ends), the banded test answers as even-odd over all pieces.
     #[test]
     fn bands_answer_as_all_pieces() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rand = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(0x9e37_79b9_7f4a_7c15u64);
         let q = |x: f64, y: f64| DVec2::new(x, y);
         // A star with a hole of another kind, and a quadratic outline: many pieces, some level.
-        let star = [q(0.45, 0.0), q(0.12, 0.12), q(0.0, 0.45), q(-0.12, 0.12), q(-0.45, 0.0), q(-0.12, -0.12)];
-        let mut pts: Vec<DVec2> = star.into();
-        pts.extend([q(0.0, -0.45), q(0.12, -0.12), q(0.45, 0.0)]);
-        let mut pieces = closed_pieces(SplineKind::Linear, &pts).expect("star").0;
-        let hole = [q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0), q(0.0, -0.05), q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0)];
-        pieces.extend(closed_pieces(SplineKind::Cubic, &hole).expect("hole").0);
+        let pieces = star_with_hole();
         let quad = [q(1.0, 1.0), q(2.0, 1.0), q(2.0, 2.0), q(1.0, 2.0), q(1.0, 1.0), q(2.0, 1.0)];
         let quad = closed_pieces(SplineKind::Quadratic, &quad).expect("quadratic").0;
         for outline in [pieces, quad] {

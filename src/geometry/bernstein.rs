@@ -329,6 +329,7 @@ impl Span<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::test_support::*;
 
     /// Coefficients of `scale·∏ (x − r)`, highest power first.
     fn from_roots(roots: &[f64], scale: f64) -> Vec<f64> {
@@ -349,13 +350,7 @@ mod tests {
     /// roots with a sign change, at the same places.
     #[test]
     fn agrees_with_the_critical_points() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut rand = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(0x9e37_79b9_7f4a_7c15u64);
         let mut found = 0;
         for case in 0..20_000 {
             let degree = 1 + case % 7;

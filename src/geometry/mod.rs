@@ -84,6 +84,9 @@ pub mod torus;
 pub mod triangle;
 pub mod uv;
 
+#[cfg(test)]
+pub(crate) mod test_support;
+
 use glam::Vec3;
 
 use crate::lanes::{Lane, V3};

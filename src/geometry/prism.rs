@@ -291,6 +291,7 @@ mod tests {
     use super::*;
     use crate::desc::SplineKind;
     use crate::geometry::spline::closed_pieces;
+    use crate::geometry::test_support::*;
     use crate::lanes::F8;
     use crate::ray::Ray;
     use crate::ray::MISS;
@@ -345,20 +346,8 @@ mod tests {
     #[test]
     fn caps_and_sides_against_brute_force_and_packets() {
         use crate::geometry::spline::even_odd;
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut rand = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let q = |x: f64, z: f64| DVec2::new(x, z);
-        let star = [q(0.45, 0.0), q(0.12, 0.12), q(0.0, 0.45), q(-0.12, 0.12), q(-0.45, 0.0), q(-0.12, -0.12)];
-        let mut pts: Vec<DVec2> = star.into();
-        pts.extend([q(0.0, -0.45), q(0.12, -0.12), q(0.45, 0.0)]);
-        let mut pieces = closed_pieces(SplineKind::Linear, &pts).expect("star").0;
-        let hole = [q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0), q(0.0, -0.05), q(0.1, 0.0), q(0.0, 0.05), q(-0.1, 0.0)];
-        pieces.extend(closed_pieces(SplineKind::Cubic, &hole).expect("hole").0);
+        let mut rand = uniform(0x2545_f491_4f6c_dd1du64);
+        let pieces = star_with_hole();
         let mut caps_hit = 0;
         for conic in [false, true] {
             let (h1, h2) = if conic { (0.5, 1.5) } else { (0.0, 0.6) };

@@ -28,12 +28,11 @@ impl Ray8 {
     /// Eight single rays as one packet, lane `i` ray `i`, bit for bit.
     #[inline]
     pub fn from_rays(rays: &[Ray; 8]) -> Ray8 {
-        let v3 = |f: &dyn Fn(&Ray) -> Vec3| V3 {
-            x: F8::from_fn(|i| f(&rays[i]).x),
-            y: F8::from_fn(|i| f(&rays[i]).y),
-            z: F8::from_fn(|i| f(&rays[i]).z),
-        };
-        Ray8 { o: v3(&|r| r.origin), d: v3(&|r| r.dir), inv: v3(&|r| r.inv_dir) }
+        let mut packet = Ray8::ZERO;
+        for (i, r) in rays.iter().enumerate() {
+            packet.set_lane(i, r.origin, r.dir, r.inv_dir);
+        }
+        packet
     }
 
     #[inline]

@@ -254,12 +254,26 @@ pub fn hash_words(words: &[u64]) -> u64 {
     h
 }
 
-/// Four numbers in [0, 1) from one hash: lens (r², angle) and the jitter inside the pixel.
+/// Four numbers in [0, 1) for blur sample `sample` of a pixel's sub-sample: lens (r², angle)
+/// and the jitter inside the pixel.
+///
+/// The samples of one pixel are the four-dimensional R-sequence (Roberts 2018: `s·αₖ mod 1`,
+/// αₖ = φ₄^−k for φ₄ the root of x⁵ = x + 1) shifted by a hash of the pixel (Cranley–Patterson
+/// rotation). Every prefix of it covers the lens and the pixel evenly, so a pixel that stops
+/// early (`blur_samples`' adaptive stop, `render::blur`) has seen its whole blur disc, and the
+/// mean converges faster than with independent samples; neighbouring pixels stay decorrelated.
 pub fn blur_jitter(x: u32, y: u32, sx: u32, sy: u32, sample: u32) -> [f64; 4] {
-    let a = hash_words(&[x as u64, y as u64, ((sx as u64) << 32) | sy as u64, sample as u64]);
+    const ALPHA: [f64; 4] =
+        [0.856_674_883_854_502_9, 0.733_891_856_627_126, 0.628_706_721_037_808_7, 0.538_597_257_223_610_1];
+    let a = hash_words(&[x as u64, y as u64, ((sx as u64) << 32) | sy as u64]);
     let b = hash_words(&[a, 0x5EED]);
     let unit = |h: u64| (h >> 11) as f64 * (1.0 / (1u64 << 53) as f64);
-    [unit(a), unit(b), unit(a.rotate_left(29) ^ b), unit(b.rotate_left(17) ^ a.rotate_left(41))]
+    let shift = [unit(a), unit(b), unit(a.rotate_left(29) ^ b), unit(b.rotate_left(17) ^ a.rotate_left(41))];
+    std::array::from_fn(|k| {
+        let v = (shift[k] + sample as f64 * ALPHA[k]).fract();
+        // Below 1 whatever the rounding.
+        v.min(1.0 - f64::EPSILON / 2.0)
+    })
 }
 
 #[cfg(test)]
@@ -462,5 +476,25 @@ mod tests {
         assert_eq!(a, blur_jitter(10, 20, 1, 0, 5));
         assert_ne!(a, blur_jitter(10, 20, 1, 0, 6));
         assert!(a.iter().all(|v| (0.0..1.0).contains(v)));
+    }
+
+    /// A pixel's first 20 samples are spread over the lens more evenly than independent ones:
+    /// the counts in the four quarters of the unit square of (r², angle) stray from 5 by 3 at
+    /// most, and their mean squared deviation over 200 pixels is below 2 (independent samples:
+    /// 3.75, the binomial variance, with strays of 5 and more).
+    #[test]
+    fn blur_samples_are_spread_in_every_prefix() {
+        let mut squares = 0.0;
+        for pixel in 0..200u32 {
+            let mut quarters = [0i32; 4];
+            for s in 0..20 {
+                let j = blur_jitter(pixel, 7, 0, 0, s);
+                quarters[(j[0] * 2.0) as usize * 2 + (j[1] * 2.0) as usize] += 1;
+            }
+            assert!(quarters.iter().all(|&q| (q - 5).abs() <= 3), "pixel {pixel}: {quarters:?}");
+            squares += quarters.iter().map(|&q| ((q - 5) * (q - 5)) as f64).sum::<f64>() / 4.0;
+        }
+        let mean = squares / 200.0;
+        assert!(mean < 2.0, "mean squared deviation {mean}");
     }
 }

@@ -122,11 +122,11 @@ impl Projection {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FocalBlur {
     pub aperture: f64,
-    /// Parsed; strahl always traces `max_samples` (no adaptive stop).
+    /// The rays every pixel takes before the adaptive stop (`render::blur`) may end it.
     pub min_samples: u32,
     pub max_samples: u32,
     pub focal_point: DVec3,
-    /// Parsed, not modelled (POV-Ray's adaptive stop).
+    /// The adaptive stop's probability and colour tolerance (`render::blur`).
     pub confidence: f64,
     pub variance: f64,
 }

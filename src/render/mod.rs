@@ -7,6 +7,7 @@
 //! Layer 7 of docs/design/architecture.md: uses `scene` and below; `pov` (probes) and the front ends use it.
 
 pub mod adaptive;
+mod blur;
 pub mod csg;
 pub mod image;
 pub mod intersect;
@@ -33,6 +34,7 @@ use crate::desc::Projection;
 use crate::lanes::{Lane, F8, V3};
 use crate::ray::Ray;
 use crate::scene::build::Scene;
+use blur::BlurSum;
 use image::Image;
 pub(crate) use raygen::{PixelSample, RayGen};
 use stats::RenderStats;
@@ -427,9 +429,11 @@ fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [[Vec3
     }
 }
 
-/// Sub-sample (sx, sy) of a block through a lens, added to `sums`: per lane the mean of its
-/// blur rays, each built by `RayGen::lens_ray` as `render_pixel` builds it and added in the
-/// same order, so packets give single rays' bits.
+/// Sub-sample (sx, sy) of a block through a lens, added to `sums`: per pixel the mean of its
+/// blur rays, each built by `RayGen::lens_ray` as `render_pixel` builds it, added in the same
+/// order and stopped after the same sample, so packets give single rays' bits. Each round
+/// traces the next blur ray of the pixels still sampling, packed into full rows (Manta's
+/// recompaction), so pixels that stopped early cost nothing.
 fn render_block_lens(
     tracer: &mut Tracer,
     gen: &RayGen,
@@ -439,24 +443,52 @@ fn render_block_lens(
     sums: &mut [[Vec3; 8]; 8],
 ) {
     let Raster { w, h, aa, .. } = raster;
-    let n = gen.blur_samples;
-    let mut cell = [[Vec3::ZERO; 8]; 8];
-    for s in 0..n {
-        let rays: [Ray8; 8] = std::array::from_fn(|r| {
-            let y = raster.frame_pixel(0, b.y + (r as u32).min(b.h - 1)).1;
-            let samples: [PixelSample; 8] = std::array::from_fn(|i| {
-                let x = raster.frame_pixel(b.x + (i as u32).min(b.w - 1), 0).0;
-                PixelSample { x, y, sx, sy, w, h, aa }
-            });
-            // `packets()` admits only projections with a ray for every pixel.
-            let lane = gen.lens_rays8(&samples, s).map(|r| r.unwrap_or_else(|| Ray::new(gen.origin, gen.direction)));
-            Ray8::from_rays(&lane)
-        });
-        add_traced(tracer, &rays, b, &mut cell);
+    let gamma = tracer.scene.gamma;
+    let mut acc = [[BlurSum::default(); 8]; 8];
+    // The pixels still sampling, as (row, lane) in the block, in row order.
+    let mut live: Vec<(usize, usize)> =
+        (0..b.h as usize).flat_map(|r| (0..b.w as usize).map(move |i| (r, i))).collect();
+    for s in 0..gen.blur_samples {
+        if live.is_empty() {
+            break;
+        }
+        let sample = |&(r, i): &(usize, usize)| {
+            let (x, _) = raster.frame_pixel(b.x + i as u32, 0);
+            let (_, y) = raster.frame_pixel(0, b.y + r as u32);
+            PixelSample { x, y, sx, sy, w, h, aa }
+        };
+        // Full rows first, then the rest as one row of fewer lanes (lanes past it repeat its
+        // last pixel and are dropped), so the statistics count each traced ray once.
+        let full = live.len() / 8 * 8;
+        for (start, rows, lanes) in [(0, full / 8, 8), (full, 1, live.len() - full)] {
+            if rows == 0 || lanes == 0 {
+                continue;
+            }
+            // Rows past `rows` are never read.
+            let mut rays = [Ray8::ZERO; 8];
+            for (r, row) in rays[..rows].iter_mut().enumerate() {
+                let samples: [PixelSample; 8] =
+                    std::array::from_fn(|i| sample(&live[start + r * 8 + i.min(lanes - 1)]));
+                // `packets()` admits only projections with a ray for every pixel.
+                let lane =
+                    gen.lens_rays8(&samples, s).map(|r| r.unwrap_or_else(|| Ray::new(gen.origin, gen.direction)));
+                *row = Ray8::from_rays(&lane);
+            }
+            let colors = packet::trace_block(tracer, &rays, rows, lanes);
+            for r in 0..rows {
+                for i in 0..lanes {
+                    let (pr, pi) = live[start + r * 8 + i];
+                    acc[pr][pi].add(checked_sample(tracer, colors[r][i], gamma));
+                }
+            }
+        }
+        if let Some(stop) = gen.blur_stop {
+            live.retain(|&(r, i)| !acc[r][i].converged(&stop));
+        }
     }
     for r in 0..b.h as usize {
         for i in 0..b.w as usize {
-            sums[r][i] += if n > 1 { cell[r][i] / n as f32 } else { cell[r][i] };
+            sums[r][i] += acc[r][i].mean();
         }
     }
 }
@@ -515,32 +547,43 @@ fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, raster: Raste
 }
 
 /// One sample through a lens: the mean of its blur rays' clipped colours (black where the
-/// projection has no ray, as POV-Ray leaves it).
+/// projection has no ray, as POV-Ray leaves it), stopping early where `RayGen::blur_stop` says.
 fn lens_sample(tracer: &mut Tracer, gen: &RayGen, p: &PixelSample) -> Vec3 {
     let gamma = tracer.scene.gamma;
-    let n = gen.blur_samples;
-    let mut sum = Vec3::ZERO;
+    let mut acc = BlurSum::default();
     let mut traced = 0;
-    for s in 0..n {
-        let Some(ray) = gen.lens_ray(p, s) else { continue };
-        traced += 1;
-        let c = tracer.trace_within(&ray, gen.max_distance, RayKind::Primary);
-        if c.is_finite() {
-            sum += output_sample(c, gamma);
-        } else {
-            tracer.stats.bad_samples += 1;
+    for s in 0..gen.blur_samples {
+        let c = match gen.lens_ray(p, s) {
+            Some(ray) => {
+                traced += 1;
+                let c = tracer.trace_within(&ray, gen.max_distance, RayKind::Primary);
+                checked_sample(tracer, c, gamma)
+            }
+            None => Vec3::ZERO,
+        };
+        acc.add(c);
+        if gen.blur_stop.is_some_and(|stop| acc.converged(&stop)) {
+            break;
         }
     }
-    // A mesh camera's rays without a face leave the average (POV-Ray 3.4.2.2.3.2); other
-    // projections' missing rays count as black.
-    let n = match gen.lens.map(|l| l.projection) {
-        Some(Projection::Mesh { .. }) => traced.max(1),
-        _ => n,
-    };
-    if n > 1 {
-        sum / n as f32
+    match gen.lens.map(|l| l.projection) {
+        // A mesh camera's rays without a face leave the average (POV-Ray 3.4.2.2.3.2); other
+        // projections' missing rays count as black.
+        Some(Projection::Mesh { .. }) if traced > 1 => acc.sum() / traced as f32,
+        Some(Projection::Mesh { .. }) => acc.sum(),
+        _ => acc.mean(),
+    }
+}
+
+/// A traced colour as it enters a pixel's sum: `output_sample`, or black for a non-finite
+/// colour (counted in the statistics).
+#[inline]
+fn checked_sample(tracer: &mut Tracer, c: Vec3, gamma: f32) -> Vec3 {
+    if c.is_finite() {
+        output_sample(c, gamma)
     } else {
-        sum
+        tracer.stats.bad_samples += 1;
+        Vec3::ZERO
     }
 }
 

@@ -2,6 +2,7 @@
 
 use glam::{DVec3, Vec3};
 
+use super::blur::BlurStop;
 use super::reproject::Pinhole;
 use crate::camera::lens::{self, LensRays};
 use crate::camera::Camera;
@@ -33,6 +34,9 @@ pub(crate) struct RayGen<'a> {
     /// Blur rays averaged per sample (1 without focal blur), after the quality cap; a mesh
     /// camera's rays per pixel.
     pub(super) blur_samples: u32,
+    /// When a pixel's blur rays may stop short of `blur_samples` (focal blur's adaptive
+    /// sampling); `None`: all are taken.
+    pub(super) blur_stop: Option<BlurStop>,
     /// How far primary rays reach (render units): a mesh camera's `max_distance`, else ∞.
     pub(super) max_distance: f32,
     /// The camera's `normal` (its rays then go through `lens`), and the octave cap for it.
@@ -59,13 +63,20 @@ impl<'a> RayGen<'a> {
             Projection::Mesh { max_distance, .. } if max_distance > 0.0 => (max_distance * frame.per_unit) as f32,
             _ => f32::INFINITY,
         };
+        let blur_samples = camera.lens.blur_samples(quality.max_blur_samples);
+        // A mesh camera's rays are its faces', not samples of one blur: all are taken.
+        let blur_stop = match camera.lens.projection {
+            Projection::Mesh { .. } => None,
+            _ => camera.lens.blur.as_ref().and_then(|b| BlurStop::new(b, blur_samples)),
+        };
         RayGen {
             origin: frame.point(camera.location).as_vec3(),
             direction: frame.vector(camera.direction).as_vec3(),
             right: frame.vector(camera.right).as_vec3(),
             up: frame.vector(camera.up).as_vec3(),
             lens,
-            blur_samples: camera.lens.blur_samples(quality.max_blur_samples),
+            blur_samples,
+            blur_stop,
             max_distance,
             normal,
             max_octaves: quality.max_octaves,

@@ -371,6 +371,17 @@ impl M8 {
     pub fn from_fn(f: impl Fn(usize) -> bool) -> M8 {
         M8(each8!(|i| -(f(i) as i32)))
     }
+    /// How many lanes are set (a vector sum: set lanes are −1).
+    #[inline(always)]
+    pub fn count(self) -> u32 {
+        let a = self.0;
+        (-(a[0] + a[1] + a[2] + a[3] + a[4] + a[5] + a[6] + a[7])) as u32
+    }
+    /// The lanes of `values` equal to `v`, without a branch per lane.
+    #[inline(always)]
+    pub fn equal(values: &[u32; 8], v: u32) -> M8 {
+        M8(each8!(|i| -((values[i] == v) as i32)))
+    }
 }
 
 macro_rules! f8_binop {

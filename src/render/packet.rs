@@ -129,12 +129,13 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
     let mut ids = [[NO_HIT; 8]; 8];
     // The face of each lane's hit on a mesh (`NO_HIT` elsewhere).
     let mut faces = [[NO_HIT; 8]; 8];
-    let frustum = Frustum::new(rays[0].o.lane(0), &rays[..rows]);
     // The frustum bounds rays from one origin; orthographic, cylinder 3/4 and focal-blur
     // packets (each lane its own origin) walk the tree without it.
     let o = rays[0].o.lane(0);
-    let shared = rays[..rows].iter().all(|r| (0..8).all(|i| r.o.lane(i) == o));
-    let frustum = shared.then_some(&frustum);
+    let all = |v: F8, c: f32| M8::from_fn(|i| v.0[i] == c).count() == 8;
+    let shared = rays[..rows].iter().all(|r| all(r.o.x, o.x) && all(r.o.y, o.y) && all(r.o.z, o.z));
+    let frustum = shared.then(|| Frustum::new(o, &rays[..rows]));
+    let frustum = frustum.as_ref();
     intersect_rows(
         scene,
         &rays[..rows],
@@ -207,7 +208,10 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // surfaces.
     let mut materials = [[NO_HIT; 8]; 8];
     let mut pigments = [RgbftLanes::splat(Rgbft::default()); 8];
-    let mut surfaces: [[Option<Surface>; 8]; 8] = [[None; 8]; 8];
+    // (row, lane, surface) of the lanes shaded singly, in row and lane order; most blocks have
+    // none, and a `Vec` costs nothing until pushed to (a 64-entry array was set to `None` per
+    // block).
+    let mut surfaces: Vec<(usize, usize, Surface)> = Vec::new();
     for r in 0..rows {
         let shape_of = |i: usize| if i < lanes { hit_shape(ids[r][i], faces[r][i]) } else { None };
         // Lanes whose material the local model below covers go eight wide, a group per material
@@ -238,7 +242,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             for (id, same_id) in Groups::of(&ids[r], in_lanes) {
                 for (face, group) in Groups::of(&faces[r], same_id) {
                     let Some(shape) = hit_shape(id, face) else { continue };
-                    if group.0.iter().filter(|&&v| v != 0).count() > 2 {
+                    if group.count() > 2 {
                         geometric = V3::select(group, scene.normal_lanes(shape, p), geometric);
                     } else {
                         for j in (0..8).filter(|&j| group.lane(j)) {
@@ -273,7 +277,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             let Some(shape) = shape_of(i) else { continue };
             let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
             soa.set_lane(r, i, &s);
-            surfaces[r][i] = Some(s);
+            surfaces.push((r, i, s));
         }
     }
 
@@ -286,7 +290,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         let unshadowed = light.shadowless || !tracer.quality.shadows;
         shadow_setup(&soa, rows, light.position, unshadowed, &mut shadow);
         let active = shadow.active;
-        let count: u64 = active[..rows].iter().map(|m| m.0.iter().filter(|&&v| v != 0).count() as u64).sum();
+        let count: u64 = active[..rows].iter().map(|m| m.count() as u64).sum();
         let blocked = if count == 0 {
             [M8::default(); 8]
         } else {
@@ -338,17 +342,17 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 }
             }
         }
-        for i in 0..lanes {
-            let Some(s) = &surfaces[r][i] else { continue };
-            let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
-                if l < lights && light_on[l][r].lane(i) {
-                    light_dir[l][r].lane(i)
-                } else {
-                    Vec3::ZERO
-                }
-            });
-            colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
-        }
+    }
+    for (r, i, s) in &surfaces {
+        let (r, i) = (*r, *i);
+        let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
+            if l < lights && light_on[l][r].lane(i) {
+                light_dir[l][r].lane(i)
+            } else {
+                Vec3::ZERO
+            }
+        });
+        colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
     }
     colors
 }
@@ -386,7 +390,7 @@ impl Iterator for Groups<'_> {
     fn next(&mut self) -> Option<(u32, M8)> {
         let i = (0..8).find(|&i| self.left.lane(i))?;
         let v = self.values[i];
-        let group = M8::from_fn(|j| self.left.lane(j) && self.values[j] == v);
+        let group = F8::and(self.left, M8::equal(self.values, v));
         self.left = F8::and(self.left, F8::not(group));
         Some((v, group))
     }
@@ -560,15 +564,17 @@ fn take_nearer(
 ) -> u32 {
     let nearer = t_new.lt(*t);
     *t = F8::select(nearer, t_new, *t);
-    let mut count = 0;
-    for i in 0..8 {
-        if nearer.lane(i) {
-            ids[i] = if leaf[i] != NO_HIT { leaf[i] } else { id };
-            faces[i] = face[i];
-            count += 1;
-        }
+    if !nearer.any() {
+        return 0;
     }
-    count
+    // Branch-free per lane, so it vectorises.
+    for i in 0..8 {
+        let new_id = if leaf[i] != NO_HIT { leaf[i] } else { id };
+        let keep = (nearer.0[i] as u32) ^ u32::MAX;
+        ids[i] = (ids[i] & keep) | (new_id & !keep);
+        faces[i] = (faces[i] & keep) | (face[i] & !keep);
+    }
+    nearer.count()
 }
 
 #[inline(always)]
@@ -655,7 +661,7 @@ impl RowTest for BlockedRows<'_, '_> {
         let t_new = self.scene.blocks_prim(p, &self.rows[r], *t);
         let hit = F8::and(t_new.lt(F8::splat(MISS)), self.active[r]);
         self.stats.tests[p.kind as usize] += 8;
-        self.stats.hits[p.kind as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+        self.stats.hits[p.kind as usize] += hit.count() as u64;
         self.block(r, t, hit);
     }
 }
@@ -716,7 +722,7 @@ fn occluded_rows_generic(
             };
             let hit = F8::and(opposite, active[r]);
             test.stats.tests[ShapeKind::Plane as usize] += 8;
-            test.stats.hits[ShapeKind::Plane as usize] += hit.0.iter().filter(|&&v| v != 0).count() as u64;
+            test.stats.hits[ShapeKind::Plane as usize] += hit.count() as u64;
             test.block(r, &mut t_max[r], hit);
         }
     }

@@ -86,6 +86,11 @@ pub fn add_light<L: Lane>(
     let LocalHit { color: c, opacity, normal, ray_dir } = *hit;
     let zero = L::splat(0.0);
     let (l, on) = (light.dir, light.on);
+    // Each term is computed only where some lane takes it: a lane's bits are the same either
+    // way (the select keeps `color` where it does not), and shadowed rows skip the powers.
+    if !L::any(on) {
+        return color;
+    }
     if finish.diffuse > 0.0 {
         let d = finish.brilliance.pow_lanes(normal.dot(l));
         let term = light.color.mul(c).scale(L::splat(finish.diffuse) * d * opacity);
@@ -93,16 +98,22 @@ pub fn add_light<L: Lane>(
     }
     if finish.phong > 0.0 {
         let r_dot_l = reflected.dot(l);
-        let term =
-            highlight(finish, light.color, c).scale(L::splat(finish.phong) * finish.phong_size.pow_lanes(r_dot_l));
-        color = V3::select(L::and(on, zero.lt(r_dot_l)), color.add(term), color);
+        let lit = L::and(on, zero.lt(r_dot_l));
+        if L::any(lit) {
+            let term =
+                highlight(finish, light.color, c).scale(L::splat(finish.phong) * finish.phong_size.pow_lanes(r_dot_l));
+            color = V3::select(lit, color.add(term), color);
+        }
     }
     if finish.specular > 0.0 {
         let h = l.sub(ray_dir).normalize_or(V3::splat(Vec3::ZERO));
         let n_dot_h = normal.dot(h);
-        let term = highlight(finish, light.color, c)
-            .scale(L::splat(finish.specular) * finish.specular_exponent.pow_lanes(n_dot_h));
-        color = V3::select(L::and(on, zero.lt(n_dot_h)), color.add(term), color);
+        let lit = L::and(on, zero.lt(n_dot_h));
+        if L::any(lit) {
+            let term = highlight(finish, light.color, c)
+                .scale(L::splat(finish.specular) * finish.specular_exponent.pow_lanes(n_dot_h));
+            color = V3::select(lit, color.add(term), color);
+        }
     }
     color
 }

@@ -156,12 +156,13 @@ impl MeshData {
         // Each lane's current limit: -inf for idle lanes, which no node or face accepts.
         let mut limit = L::select(active, t_max, L::splat(f32::NEG_INFINITY));
         let mut best = L::splat(MISS);
-        let zero = L::splat(0.0);
-        let enters = |n: &BvhNode, limit: L| {
+        // A function, not a closure: closures are compiled out of line, without AVX2.
+        #[inline(always)]
+        fn enters<L: Lane>(n: &BvhNode, ray: &RayLanes<L>, limit: L, active: L::Mask) -> bool {
             let (lo, hi) = (V3::splat(Vec3::from_array(n.min)), V3::splat(Vec3::from_array(n.max)));
             let (near, far) = node_slabs(lo, hi, ray.o, ray.inv);
-            L::any(L::and(L::and(near.le(far), zero.le(far)), L::and(near.le(limit), active)))
-        };
+            L::any(L::and(L::and(near.le(far), L::splat(0.0).le(far)), L::and(near.le(limit), active)))
+        }
         let first_active = (0..L::WIDTH).find(|&i| L::mask_lane(active, i)).unwrap_or(0);
         let dir = Vec3::new(ray.d.x.get(first_active), ray.d.y.get(first_active), ray.d.z.get(first_active));
         let mut stack = [0u32; 64];
@@ -169,7 +170,7 @@ impl MeshData {
         let mut node = 0u32;
         loop {
             let n = &self.bvh.nodes[node as usize];
-            if enters(n, limit) {
+            if enters(n, ray, limit, active) {
                 if n.is_leaf() {
                     for f in n.first..n.first + n.count {
                         // As `nearest`: up to a lane's best distance itself, where a face of
@@ -332,9 +333,34 @@ impl Mesh {
         (t, faces)
     }
 
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn hit_faces_avx2<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
+        self.hit_faces(ray, t_min, t_max)
+    }
+
     /// For shadow rays: `Shape::hit`, but each lane's first hit found rather than its nearest.
     #[inline(never)]
     pub fn first_hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        // Not inlined into the packet walk (see `Shape::hit` below), so the eight-lane code
+        // would run in the caller's SSE; this copy runs it in 256-bit instructions. AVX2
+        // without FMA computes the same bits (as `render::packet`).
+        #[cfg(target_arch = "x86_64")]
+        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.first_hit_avx2(ray, t_min, t_max) };
+        }
+        self.first_hit_here(ray, t_min, t_max)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn first_hit_avx2<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.first_hit_here(ray, t_min, t_max)
+    }
+
+    #[inline(always)]
+    fn first_hit_here<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
         if L::WIDTH > 1 {
@@ -391,6 +417,12 @@ impl Shape for Mesh {
     // scenes without this kind do not pay for its code.
     #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        // In 256-bit instructions where the CPU has them, as `first_hit`.
+        #[cfg(target_arch = "x86_64")]
+        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.hit_faces_avx2(ray, t_min, t_max).0 };
+        }
         self.hit_faces(ray, t_min, t_max).0
     }
 

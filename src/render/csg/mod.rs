@@ -57,12 +57,7 @@ impl Scene {
         }
         // A union keeps every crossing; a merge one inside no other child.
         let window = Window { t_min, t_max, crossed: Flags::all(), asked: Flags::all() };
-        let search = |i: usize, from: L, best: L| self.hit_child(&kids[i], ray, from, best);
-        let inside = |i: usize, _: L, p: V3<L>, hit: L::Mask| match n.rule {
-            CsgRule::Union => hit,
-            _ => L::not(self.inside_others(kids, i, p, false)),
-        };
-        self.search_all(n, ray, &window, search, inside)
+        self.search_all(n, ray, &window, &mut AnyChildren { scene: self, rule: n.rule, kids, ray })
     }
 
     /// `hit_csg` for a node under `CsgRule::All`: the same search, cut short by the children's
@@ -104,29 +99,21 @@ impl Scene {
         } else if n.spans && kids.len() <= SPANS {
             self.hit_spans::<L, SPANS>(n, kids, ray, &window, direct)
         } else {
-            let search = |i: usize, from: L, best: L| self.hit_child(&kids[i], ray, from, best);
-            let mut rejecters = Rejecters::default();
-            let inside = |i: usize, _: L, p: V3<L>, _: L::Mask| {
-                let test = |j: usize| self.inside_child(&kids[j], p);
-                inside_all_but::<L>(kids.len(), i, test, &window.asked, &mut rejecters)
-            };
-            self.search_all(n, ray, &window, search, inside)
+            let mut all = AllChildren { scene: self, kids, ray, asked: &window.asked, rejecters: Rejecters::default() };
+            self.search_all(n, ray, &window, &mut all)
         }
     }
 
-    /// The search of `hit_csg` over a node's surface children (`search(i, from, to)`:
-    /// child `i`'s nearest crossing in `(from, to)` and its leaf; `inside(i, t, p, lanes)`:
-    /// whether the point `p` at `t` on child `i`'s surface is inside every other child, for
-    /// the `lanes` that ask): each child's crossings in order, the first that every other child
-    /// contains is its candidate, the nearest candidate wins (the first child's on a tie).
+    /// The search of `hit_csg` over a node's surface children (`Children`): each child's
+    /// crossings in order, the first that the other children accept is its candidate, the
+    /// nearest candidate wins (the first child's on a tie).
     #[inline(always)]
     fn search_all<L: Lane>(
         &self,
         n: &CsgNode,
         ray: &RayLanes<L>,
         window: &Window<L>,
-        search: impl Fn(usize, L, L) -> (L, L),
-        mut inside: impl FnMut(usize, L, V3<L>, L::Mask) -> L::Mask,
+        children: &mut impl Children<L>,
     ) -> (L, L) {
         let miss = L::splat(MISS);
         let mut best = window.t_max;
@@ -138,13 +125,13 @@ impl Scene {
             }
             let mut from = window.t_min;
             for _ in 0..MAX_CROSSINGS {
-                let (t, l) = search(i, from, best);
+                let (t, l) = children.search(i, from, best);
                 let hit = t.lt(miss);
                 if !L::any(hit) {
                     break;
                 }
                 let p = ray.o.add(ray.d.scale(t));
-                let keep = L::and(hit, inside(i, t, p, hit));
+                let keep = L::and(hit, children.inside(i, t, p, hit));
                 best = L::select(keep, t, best);
                 leaf = L::select(keep, l, leaf);
                 found = L::or(found, keep);
@@ -201,6 +188,66 @@ impl Scene {
             CsgTarget::Leaf(i) => (self.hit_prim_in(&self.prims[i as usize], ray, t_min, t_max), L::splat(i as f32)),
             CsgTarget::Node(k) => self.hit_csg(k, ray, t_min, t_max),
         }
+    }
+}
+
+/// What `Scene::search_all` asks of a node's children. A trait, not closures: its
+/// `#[inline(always)]` methods are inlined into the search, and from there into `hit_csg_avx2`,
+/// where the eight-lane code compiles to 256-bit instructions (closures were compiled out of
+/// line, without AVX2, as `accel::packet::RowTest` notes).
+trait Children<L: Lane> {
+    /// Child `i`'s nearest crossing in `(from, best)` and its leaf (as a float).
+    fn search(&mut self, i: usize, from: L, best: L) -> (L, L);
+    /// Whether the point `p` at `t` on child `i`'s surface is accepted by the other children,
+    /// for the lanes of `hit` (the others do not matter).
+    fn inside(&mut self, i: usize, t: L, p: V3<L>, hit: L::Mask) -> L::Mask;
+}
+
+/// A union's or a merge's children: a union keeps every crossing, a merge one inside no other
+/// child.
+struct AnyChildren<'a, L: Lane> {
+    scene: &'a Scene,
+    rule: CsgRule,
+    kids: &'a [CsgChild],
+    ray: &'a RayLanes<L>,
+}
+
+impl<L: Lane> Children<L> for AnyChildren<'_, L> {
+    #[inline(always)]
+    fn search(&mut self, i: usize, from: L, best: L) -> (L, L) {
+        self.scene.hit_child(&self.kids[i], self.ray, from, best)
+    }
+
+    #[inline(always)]
+    fn inside(&mut self, i: usize, _: L, p: V3<L>, hit: L::Mask) -> L::Mask {
+        match self.rule {
+            CsgRule::Union => hit,
+            _ => L::not(self.scene.inside_others(self.kids, i, p, false)),
+        }
+    }
+}
+
+/// An intersection's (or difference's) children, searched shape by shape: a crossing is kept
+/// where every other child asked contains it.
+struct AllChildren<'a, L: Lane> {
+    scene: &'a Scene,
+    kids: &'a [CsgChild],
+    ray: &'a RayLanes<L>,
+    asked: &'a Flags,
+    rejecters: Rejecters,
+}
+
+impl<L: Lane> Children<L> for AllChildren<'_, L> {
+    #[inline(always)]
+    fn search(&mut self, i: usize, from: L, best: L) -> (L, L) {
+        self.scene.hit_child(&self.kids[i], self.ray, from, best)
+    }
+
+    #[inline(always)]
+    fn inside(&mut self, i: usize, _: L, p: V3<L>, _: L::Mask) -> L::Mask {
+        let (scene, kids) = (self.scene, self.kids);
+        let test = |j: usize| scene.inside_child(&kids[j], p);
+        inside_all_but::<L>(kids.len(), i, test, self.asked, &mut self.rejecters)
     }
 }
 

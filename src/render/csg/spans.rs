@@ -4,7 +4,7 @@
 //! earliest exit (`hit_kept`). The same hits and leaves as the general search (the tests below
 //! compare them), in fewer shape tests.
 
-use super::Window;
+use super::{Children, Window};
 use crate::lanes::{Lane, V3};
 use crate::ray::{pick_root, RayLanes, MISS};
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
@@ -55,7 +55,9 @@ impl Scene {
             spans[j] = (valid, near, far);
             if c.inverse {
                 inverse_crossed |= window.crossed.get(j);
-                if window.asked.get(j) {
+                // A child no lane's line meets holds none of its points: every lane is outside
+                // it, so inside its inverse, and asking it changes nothing (`ask` answers so).
+                if window.asked.get(j) && L::any(valid) {
                     subtracted[count] = j;
                     count += 1;
                 }
@@ -65,11 +67,6 @@ impl Scene {
                 exits.add(j, valid, far, |a, b| b.lt(a));
             }
         }
-        let search = |i: usize, from: L, best: L| {
-            let (valid, near, far) = spans[i];
-            let CsgTarget::Leaf(l) = kids[i].target else { unreachable!() };
-            (pick_root(valid, near, far, from, best), L::splat(l as f32))
-        };
         let scale = ray.o.x.abs().max(ray.o.y.abs()).max(ray.o.z.abs());
         if direct && count == 0 && !inverse_crossed {
             let leaf = |j: usize| match kids[j].target {
@@ -82,48 +79,17 @@ impl Scene {
                 return hit;
             }
         }
-        // Child `j`'s verdict on the point at `t`: its span's where that is clear, else its test.
-        let ask = |j: usize, t: L, p: V3<L>, m: L| {
-            let (valid, near, far) = spans[j];
-            let within = L::and(valid, L::and((near + m).lt(t), t.lt(far - m)));
-            let beyond = L::or(L::not(valid), L::or(t.lt(near - m), (far + m).lt(t)));
-            let inverse = L::mask_from_fn(|_| kids[j].inverse);
-            let near_end = L::not(L::or(within, beyond));
-            if L::any(near_end) {
-                let tested = self.inside_child(&kids[j], p);
-                L::or(L::and(near_end, tested), L::and(L::not(near_end), L::xor(within, inverse)))
-            } else {
-                L::xor(within, inverse)
-            }
+        let mut children = SpanChildren {
+            scene: self,
+            kids,
+            spans: &spans,
+            entries: &entries,
+            exits: &exits,
+            missed,
+            subtracted: &subtracted[..count],
+            scale,
         };
-        let inside = |i: usize, t: L, p: V3<L>, hit: L::Mask| {
-            let m = (t.abs() + scale) * L::splat(SPAN_MARGIN);
-            let (last_in, first_out) = (entries.without(i), exits.without(i));
-            let within = L::and(L::not(missed), L::and((last_in + m).lt(t), t.lt(first_out - m)));
-            let beyond = L::or(missed, L::or(t.lt(last_in - m), (first_out + m).lt(t)));
-            let mut all = if L::any(L::and(hit, L::not(L::or(within, beyond)))) {
-                // Near an end of some kept child's span: each kept child answers on its own.
-                let mut all = hit;
-                for (j, c) in kids.iter().enumerate() {
-                    if j != i && !c.inverse && L::any(all) {
-                        all = L::and(all, ask(j, t, p, m));
-                    }
-                }
-                all
-            } else {
-                L::and(hit, within)
-            };
-            for &j in &subtracted[..count] {
-                if !L::any(all) {
-                    break;
-                }
-                if j != i {
-                    all = L::and(all, ask(j, t, p, m));
-                }
-            }
-            all
-        };
-        self.search_all(n, ray, window, search, inside)
+        self.search_all(n, ray, window, &mut children)
     }
 
     /// A leaf's `span` (for the kinds `csg::has_span` names).
@@ -137,6 +103,87 @@ impl Scene {
             ShapeKind::Plane => self.half_spaces[i].span(ray),
             _ => unreachable!("{:?} has no span", p.kind),
         }
+    }
+}
+
+/// The children of a node with spans, as `Scene::search_all` asks them: crossings picked from
+/// the spans (`pick_root`, the bits of the child's own `hit`), and inside tests answered by the
+/// spans wherever they are clear.
+///
+/// The spans answer the inside tests: a point of the ray well within a child's span is inside
+/// it, one well outside is outside; only one within `SPAN_MARGIN` of an end (an edge,
+/// coincident faces) asks the child's own test, whose rounding decides there. For the kept
+/// (not inverted) children that is one comparison with the latest entry and the earliest exit
+/// among them (leaving out the point's own child), however many they are.
+struct SpanChildren<'a, L: Lane> {
+    scene: &'a Scene,
+    kids: &'a [CsgChild],
+    /// Per child: the lanes whose line meets it, and where it enters and leaves.
+    spans: &'a [(L::Mask, L, L)],
+    entries: &'a Extreme<L>,
+    exits: &'a Extreme<L>,
+    /// Lanes that miss some kept child's span.
+    missed: L::Mask,
+    /// The subtracted children some lane's line meets.
+    subtracted: &'a [usize],
+    /// The ray origin's largest coordinate, for the margin.
+    scale: L,
+}
+
+impl<L: Lane> SpanChildren<'_, L> {
+    /// Child `j`'s verdict on the point `p` at `t`: its span's where that is clear (`m` from
+    /// either end), else its own test.
+    #[inline(always)]
+    fn ask(&self, j: usize, t: L, p: V3<L>, m: L) -> L::Mask {
+        let (valid, near, far) = self.spans[j];
+        let within = L::and(valid, L::and((near + m).lt(t), t.lt(far - m)));
+        let beyond = L::or(L::not(valid), L::or(t.lt(near - m), (far + m).lt(t)));
+        let inverse = L::mask_from_fn(|_| self.kids[j].inverse);
+        let near_end = L::not(L::or(within, beyond));
+        if L::any(near_end) {
+            let tested = self.scene.inside_child(&self.kids[j], p);
+            L::or(L::and(near_end, tested), L::and(L::not(near_end), L::xor(within, inverse)))
+        } else {
+            L::xor(within, inverse)
+        }
+    }
+}
+
+impl<L: Lane> Children<L> for SpanChildren<'_, L> {
+    #[inline(always)]
+    fn search(&mut self, i: usize, from: L, best: L) -> (L, L) {
+        let (valid, near, far) = self.spans[i];
+        let CsgTarget::Leaf(l) = self.kids[i].target else { unreachable!("a node with spans has leaves only") };
+        (pick_root(valid, near, far, from, best), L::splat(l as f32))
+    }
+
+    #[inline(always)]
+    fn inside(&mut self, i: usize, t: L, p: V3<L>, hit: L::Mask) -> L::Mask {
+        let m = (t.abs() + self.scale) * L::splat(SPAN_MARGIN);
+        let (last_in, first_out) = (self.entries.without(i), self.exits.without(i));
+        let within = L::and(L::not(self.missed), L::and((last_in + m).lt(t), t.lt(first_out - m)));
+        let beyond = L::or(self.missed, L::or(t.lt(last_in - m), (first_out + m).lt(t)));
+        let mut all = if L::any(L::and(hit, L::not(L::or(within, beyond)))) {
+            // Near an end of some kept child's span: each kept child answers on its own.
+            let mut all = hit;
+            for (j, c) in self.kids.iter().enumerate() {
+                if j != i && !c.inverse && L::any(all) {
+                    all = L::and(all, self.ask(j, t, p, m));
+                }
+            }
+            all
+        } else {
+            L::and(hit, within)
+        };
+        for &j in self.subtracted {
+            if !L::any(all) {
+                break;
+            }
+            if j != i {
+                all = L::and(all, self.ask(j, t, p, m));
+            }
+        }
+        all
     }
 }
 

@@ -554,7 +554,7 @@ mod tests {
         }
         let c = from_roots(&[2.0, -2.0, 1.9, -1.9, 1.95, 2.05]);
         let bound = root_bound(&c);
-        assert!(bound >= 2.05 && bound < 5.0 * 2.05, "{bound}");
+        assert!((2.05..5.0 * 2.05).contains(&bound), "{bound}");
         assert_eq!(root_bound(&[1.0, 0.0, 0.0]), 0.0);
         assert!(root_bound(&[1.0, f64::NAN, 1.0]).is_nan());
     }

@@ -74,6 +74,7 @@ pub mod plane;
 pub mod poly;
 pub mod polygon;
 pub mod prism;
+mod quadric;
 mod quartic;
 pub mod roots;
 pub mod sor;
@@ -83,6 +84,7 @@ pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;
 pub mod uv;
+mod wide;
 
 #[cfg(test)]
 pub(crate) mod test_support;

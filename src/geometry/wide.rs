@@ -1,0 +1,184 @@
+//! `W<N>`: `N` f64 lanes, for the polynomial shapes whose closed forms need f64 (a quadric seen
+//! from far away, a torus) but should not pay for one lane at a time: `N = 8` for a packet,
+//! which LLVM packs into 256-bit f64 instructions inside the AVX2 packet kernels, `N = 1` for a
+//! single ray. Every operation works lane by lane in index order with plain IEEE arithmetic (no
+//! contraction), so a lane of `W<8>` and a `W<1>` of the same inputs give the same bits: packets
+//! and single rays agree by construction, as with `crate::lanes`.
+//!
+//! `lanes_f64` carries a ray's object-space origin and direction from any `Lane` into `W`,
+//! and `to_lane` the answers back.
+
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use crate::lanes::{Lane, V3};
+
+/// `N` f64 lanes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct W<const N: usize>(pub [f64; N]);
+
+/// Lane masks (one bool per lane).
+pub type Mask<const N: usize> = [bool; N];
+
+macro_rules! w_binop {
+    ($tr:ident, $f:ident, $op:tt) => {
+        impl<const N: usize> $tr for W<N> {
+            type Output = W<N>;
+            #[inline(always)]
+            fn $f(self, o: W<N>) -> W<N> {
+                W(std::array::from_fn(|i| self.0[i] $op o.0[i]))
+            }
+        }
+    };
+}
+w_binop!(Add, add, +);
+w_binop!(Sub, sub, -);
+w_binop!(Mul, mul, *);
+w_binop!(Div, div, /);
+
+impl<const N: usize> Neg for W<N> {
+    type Output = W<N>;
+    #[inline(always)]
+    fn neg(self) -> W<N> {
+        self.map(|v| -v)
+    }
+}
+
+impl<const N: usize> W<N> {
+    #[inline(always)]
+    pub fn splat(v: f64) -> W<N> {
+        W([v; N])
+    }
+    #[inline(always)]
+    pub fn map(self, f: impl Fn(f64) -> f64) -> W<N> {
+        W(std::array::from_fn(|i| f(self.0[i])))
+    }
+    #[inline(always)]
+    pub fn zip(self, o: W<N>, f: impl Fn(f64, f64) -> f64) -> W<N> {
+        W(std::array::from_fn(|i| f(self.0[i], o.0[i])))
+    }
+    #[inline(always)]
+    pub fn sqrt(self) -> W<N> {
+        self.map(f64::sqrt)
+    }
+    #[inline(always)]
+    pub fn abs(self) -> W<N> {
+        self.map(f64::abs)
+    }
+    /// `|self|` with `sign`'s sign bit.
+    #[inline(always)]
+    pub fn copysign(self, sign: W<N>) -> W<N> {
+        self.zip(sign, f64::copysign)
+    }
+    /// The larger of each pair; `o` where either is NaN (as `maxpd` answers).
+    #[inline(always)]
+    pub fn max(self, o: W<N>) -> W<N> {
+        self.zip(o, |a, b| if a > b { a } else { b })
+    }
+    /// The smaller of each pair; `o` where either is NaN (as `minpd` answers).
+    #[inline(always)]
+    pub fn min(self, o: W<N>) -> W<N> {
+        self.zip(o, |a, b| if a < b { a } else { b })
+    }
+    #[inline(always)]
+    pub fn lt(self, o: W<N>) -> Mask<N> {
+        std::array::from_fn(|i| self.0[i] < o.0[i])
+    }
+    #[inline(always)]
+    pub fn le(self, o: W<N>) -> Mask<N> {
+        std::array::from_fn(|i| self.0[i] <= o.0[i])
+    }
+    /// `a` where `m`, else `b`.
+    #[inline(always)]
+    pub fn select(m: Mask<N>, a: W<N>, b: W<N>) -> W<N> {
+        W(std::array::from_fn(|i| if m[i] { a.0[i] } else { b.0[i] }))
+    }
+}
+
+/// Lane-wise `a && b`.
+#[inline(always)]
+pub fn and<const N: usize>(a: Mask<N>, b: Mask<N>) -> Mask<N> {
+    std::array::from_fn(|i| a[i] & b[i])
+}
+
+/// Lane-wise `!m`.
+#[inline(always)]
+pub fn not<const N: usize>(m: Mask<N>) -> Mask<N> {
+    m.map(|b| !b)
+}
+
+/// A shape solved in f64 lanes in its object space: `solve` answers each lane's nearest hit of
+/// `o + t·d` in `(t_min, t_max)`, `+inf` for none, as the lane type will hold it (`round`).
+pub trait WideSolve {
+    fn solve<const N: usize>(
+        &self,
+        o: WV<N>,
+        d: WV<N>,
+        t_min: W<N>,
+        t_max: W<N>,
+        round: impl Fn(f64) -> f64 + Copy,
+    ) -> W<N>;
+}
+
+/// `Shape::hit` of a `WideSolve` shape in `frame`: the ray moved to object space in the lane
+/// type (as every framed shape does), then solved eight lanes at once for a packet, one for a
+/// single ray.
+#[inline(always)]
+pub fn hit_wide<L: Lane, S: WideSolve>(
+    shape: &S,
+    frame: &super::cuboid::BoxFrame,
+    ray: &crate::ray::RayLanes<L>,
+    t_min: L,
+    t_max: L,
+) -> L {
+    let o = ray.o.transform_point(&frame.object_from_render);
+    let d = ray.d.transform_vector(&frame.object_from_render);
+    if L::WIDTH == 8 {
+        let t = shape.solve::<8>(lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max), L::round_f64);
+        to_lane(t)
+    } else {
+        let t = shape.solve::<1>(lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max), L::round_f64);
+        to_lane(t)
+    }
+}
+
+/// A vector of f64 lanes.
+#[derive(Clone, Copy, Debug)]
+pub struct WV<const N: usize> {
+    pub x: W<N>,
+    pub y: W<N>,
+    pub z: W<N>,
+}
+
+impl<const N: usize> WV<N> {
+    #[inline(always)]
+    pub fn dot(self, o: WV<N>) -> W<N> {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+    #[inline(always)]
+    pub fn scale(self, s: W<N>) -> WV<N> {
+        WV { x: self.x * s, y: self.y * s, z: self.z * s }
+    }
+    #[inline(always)]
+    pub fn add(self, o: WV<N>) -> WV<N> {
+        WV { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+    }
+}
+
+/// The first `N` lanes of `v` (`N ≤ L::WIDTH`), widened exactly to f64.
+#[inline(always)]
+pub fn lanes_f64<L: Lane, const N: usize>(v: V3<L>) -> WV<N> {
+    let w = |l: L| W(std::array::from_fn(|i| l.get_f64(i)));
+    WV { x: w(v.x), y: w(v.y), z: w(v.z) }
+}
+
+/// The first `N` lanes of a scalar lane value, widened to f64.
+#[inline(always)]
+pub fn lane_f64<L: Lane, const N: usize>(v: L) -> W<N> {
+    W(std::array::from_fn(|i| v.get_f64(i)))
+}
+
+/// `w` as the lane type `L` (`N == L::WIDTH`), each lane rounded as `L` holds it.
+#[inline(always)]
+pub fn to_lane<L: Lane, const N: usize>(w: W<N>) -> L {
+    L::from_fn_f64(|i| w.0[i.min(N - 1)])
+}

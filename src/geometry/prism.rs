@@ -182,6 +182,10 @@ impl Prism {
             let pad = 1e-9 * (x0.abs() + x1.abs() + z0.abs() + z1.abs());
             (DVec2::new(x0.min(x1) - pad, z0.min(z1) - pad), DVec2::new(x0.max(x1) + pad, z0.max(z1) + pad))
         });
+        // A linear sweep's crossing with a piece lies between its control points' projections
+        // on the ray's direction in the section (convex hull), scaled by `dd`: a piece wholly
+        // before `lo` or past the nearest crossing so far needs no solve.
+        let dd = d.x * d.x + d.z * d.z;
         let mut roots = [0.0; MAX_DEGREE];
         for p in &self.pieces {
             if let Some((f_lo, f_hi)) = footprint {
@@ -196,11 +200,36 @@ impl Prism {
             if hull.iter().all(|&c| c > 0.0) || hull.iter().all(|&c| c < 0.0) {
                 continue;
             }
-            let (c, n) = p.combine(a, b, k);
-            let m = if n >= 4 {
-                roots_unit(&c[..n], p.combine_bernstein(a, b, k), &mut roots)
-            } else {
-                roots_between(&c[..n], 0.0, 1.0, &mut roots)
+            if !self.conic {
+                let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+                for i in 0..=p.degree {
+                    let (du, dv) = (p.cu[i] - o.x, p.cv[i] - o.z);
+                    let q = du * d.x + dv * d.z;
+                    (q_lo, q_hi) = (q_lo.min(q), q_hi.max(q));
+                    size = size.max(du.abs() * d.x.abs() + dv.abs() * d.z.abs());
+                }
+                // Padded far above the rounding of `q` and of the root's point.
+                let pad = 1e-9 * size;
+                if q_hi + pad < lo * dd || q_lo - pad > hi * dd {
+                    continue;
+                }
+            }
+            let m = match p.degree {
+                // A line: where its end values' interpolation is zero (no root for a piece on
+                // the line itself, 0/0).
+                1 => {
+                    let t = hull[0] / (hull[0] - hull[1]);
+                    roots[0] = t;
+                    (t >= 0.0 && t <= 1.0) as usize
+                }
+                2 => {
+                    let (c, n) = p.combine(a, b, k);
+                    roots_between(&c[..n], 0.0, 1.0, &mut roots)
+                }
+                _ => {
+                    let (c, n) = p.combine(a, b, k);
+                    roots_unit(&c[..n], p.combine_bernstein(a, b, k), &mut roots)
+                }
             };
             for &t in &roots[..m] {
                 let w = p.at(t);
@@ -214,7 +243,7 @@ impl Prism {
                         nz / dz
                     }
                 } else {
-                    ((w.x - o.x) * d.x + (w.y - o.z) * d.z) / (d.x * d.x + d.z * d.z)
+                    ((w.x - o.x) * d.x + (w.y - o.z) * d.z) / dd
                 };
                 if s > lo && s < hi {
                     let y = o.y + s * d.y;

@@ -19,6 +19,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 use super::bands::Bands;
 use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
+use super::halley::{single_change, single_root};
 use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, Piece};
 use super::{affine_f32, transformed_bounds, Shape};
@@ -30,6 +31,9 @@ use crate::ray::{RayLanes, MISS};
 pub struct Prism {
     pub frame: BoxFrame,
     pieces: Vec<Piece>,
+    /// The pieces cut where they turn in u or v (`Piece::monotone_parts`), each with the box of
+    /// its ends: what the sides are solved on, as fewer rays reach those boxes and hulls.
+    arcs: Vec<Piece>,
     /// The pieces by height, for the even-odd test of caps and `inside`.
     bands: Bands,
     /// Heights in object space, `h1 < h2`.
@@ -89,6 +93,7 @@ impl Prism {
         Prism {
             frame: frame_for(xf),
             bands: Bands::new(&pieces),
+            arcs: pieces.iter().flat_map(Piece::monotone_parts).collect(),
             pieces,
             h1,
             h2,
@@ -131,9 +136,8 @@ impl Prism {
         if !(s_min < s_max) {
             return None;
         }
-        let mut best = s_max;
         // The span of s inside the height slab.
-        let (mut lo, mut hi) = (s_min, best);
+        let (mut lo, mut hi) = (s_min, s_max);
         // The caps where the ray enters and leaves the slab: (s, height).
         let (mut near, mut far) = (None, None);
         if d.y != 0.0 {
@@ -184,10 +188,13 @@ impl Prism {
         });
         // A linear sweep's crossing with a piece lies between its control points' projections
         // on the ray's direction in the section (convex hull), scaled by `dd`: a piece wholly
-        // before `lo` or past the nearest crossing so far needs no solve.
+        // before `lo` needs no solve, and the pieces are solved nearest first, until the next
+        // starts past the nearest crossing found.
         let dd = d.x * d.x + d.z * d.z;
-        let mut roots = [0.0; MAX_DEGREE];
-        for p in &self.pieces {
+        let slab_hi = hi;
+        let mut queue = [(0.0, 0u32); 16];
+        let mut queued = 0;
+        for (i, p) in self.arcs.iter().enumerate() {
             if let Some((f_lo, f_hi)) = footprint {
                 if f_lo.x > p.hi.x || f_hi.x < p.lo.x || f_lo.y > p.hi.y || f_hi.y < p.lo.y {
                     continue;
@@ -200,64 +207,95 @@ impl Prism {
             if hull.iter().all(|&c| c > 0.0) || hull.iter().all(|&c| c < 0.0) {
                 continue;
             }
-            if !self.conic {
-                let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
-                for i in 0..=p.degree {
-                    let (du, dv) = (p.cu[i] - o.x, p.cv[i] - o.z);
-                    let q = du * d.x + dv * d.z;
-                    (q_lo, q_hi) = (q_lo.min(q), q_hi.max(q));
-                    size = size.max(du.abs() * d.x.abs() + dv.abs() * d.z.abs());
-                }
-                // Padded far above the rounding of `q` and of the root's point.
-                let pad = 1e-9 * size;
-                if q_hi + pad < lo * dd || q_lo - pad > hi * dd {
-                    continue;
-                }
+            if self.conic {
+                self.cross(p, o, d, (a, b, k), dd, lo, &mut hi);
+                continue;
             }
-            let m = match p.degree {
-                // A line: where its end values' interpolation is zero (no root for a piece on
-                // the line itself, 0/0).
-                1 => {
-                    let t = hull[0] / (hull[0] - hull[1]);
-                    roots[0] = t;
-                    (t >= 0.0 && t <= 1.0) as usize
-                }
-                2 => {
-                    let (c, n) = p.combine(a, b, k);
-                    roots_between(&c[..n], 0.0, 1.0, &mut roots)
-                }
-                _ => {
-                    let (c, n) = p.combine(a, b, k);
-                    roots_unit(&c[..n], p.combine_bernstein(a, b, k), &mut roots)
-                }
-            };
-            for &t in &roots[..m] {
-                let w = p.at(t);
-                let s = if self.conic {
-                    // o + s·d = y·(u, 1, v) for the y it reaches: s from the better-conditioned axis.
-                    let (nx, dx) = (w.x * o.y - o.x, d.x - w.x * d.y);
-                    let (nz, dz) = (w.y * o.y - o.z, d.z - w.y * d.y);
-                    if dx.abs() >= dz.abs() {
-                        nx / dx
-                    } else {
-                        nz / dz
-                    }
-                } else {
-                    ((w.x - o.x) * d.x + (w.y - o.z) * d.z) / dd
-                };
-                if s > lo && s < hi {
-                    let y = o.y + s * d.y;
-                    if y >= self.h1 && y <= self.h2 {
-                        hi = s;
-                        best = s;
-                    }
-                }
+            let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
+            for i in 0..=p.degree {
+                let (du, dv) = (p.cu[i] - o.x, p.cv[i] - o.z);
+                let q = du * d.x + dv * d.z;
+                (q_lo, q_hi) = (q_lo.min(q), q_hi.max(q));
+                size = size.max(du.abs() * d.x.abs() + dv.abs() * d.z.abs());
+            }
+            // Padded far above the rounding of `q` and of the root's point.
+            let pad = 1e-9 * size;
+            if q_hi + pad < lo * dd || q_lo - pad > hi * dd {
+                continue;
+            }
+            if queued == queue.len() {
+                self.cross(p, o, d, (a, b, k), dd, lo, &mut hi);
+            } else {
+                queue[queued] = (q_lo - pad, i as u32);
+                queued += 1;
             }
         }
-        if best < s_max {
-            Some(best)
+        let queue = &mut queue[..queued];
+        queue.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
+        for &(start, i) in queue.iter() {
+            if start > hi * dd {
+                break;
+            }
+            self.cross(&self.arcs[i as usize], o, d, (a, b, k), dd, lo, &mut hi);
+        }
+        if hi < slab_hi {
+            Some(hi)
         } else {
             far_cap()
+        }
+    }
+
+    /// Lowers `hi` to the nearest crossing in `(lo, hi)` of the side over piece `p` by the ray
+    /// `o + s·d`, whose plane through the sweep axis is `a·u + b·v + k = 0` in the section
+    /// (`dd = d.x² + d.z²`, for a linear sweep).
+    #[allow(clippy::too_many_arguments)]
+    fn cross(&self, p: &Piece, o: DVec3, d: DVec3, (a, b, k): (f64, f64, f64), dd: f64, lo: f64, hi: &mut f64) {
+        let hull = p.combine_bernstein(a, b, k);
+        let mut roots = [0.0; MAX_DEGREE];
+        let m = match p.degree {
+            // A line: where its end values' interpolation is zero (no root for a piece on the
+            // line itself, 0/0).
+            1 => {
+                let t = hull[0] / (hull[0] - hull[1]);
+                roots[0] = t;
+                (t >= 0.0 && t <= 1.0) as usize
+            }
+            2 => {
+                let (c, n) = p.combine(a, b, k);
+                roots_between(&c[..n], 0.0, 1.0, &mut roots)
+            }
+            // A cubic whose hull crosses the line once: its one root, by Halley's steps.
+            _ => {
+                let (c, n) = p.combine(a, b, k);
+                match single_change(&hull[..n]) {
+                    Some(i) => {
+                        roots[0] = single_root(&c[..n], &hull[..n], i);
+                        1
+                    }
+                    None => roots_unit(&c[..n], hull, &mut roots),
+                }
+            }
+        };
+        for &t in &roots[..m] {
+            let w = p.at(t);
+            let s = if self.conic {
+                // o + s·d = y·(u, 1, v) for the y it reaches: s from the better-conditioned axis.
+                let (nx, dx) = (w.x * o.y - o.x, d.x - w.x * d.y);
+                let (nz, dz) = (w.y * o.y - o.z, d.z - w.y * d.y);
+                if dx.abs() >= dz.abs() {
+                    nx / dx
+                } else {
+                    nz / dz
+                }
+            } else {
+                ((w.x - o.x) * d.x + (w.y - o.z) * d.z) / dd
+            };
+            if s > lo && s < *hi {
+                let y = o.y + s * d.y;
+                if y >= self.h1 && y <= self.h2 {
+                    *hi = s;
+                }
+            }
         }
     }
 

@@ -133,7 +133,7 @@ impl Prism {
     /// The nearest `s` in `(s_min, s_max)` where `o + s·d` (object space) meets the prism.
     fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
         // An empty interval (a lane `hit` dropped) has nothing in it.
-        if !(s_min < s_max) {
+        if s_min.is_nan() || s_max.is_nan() || s_min >= s_max {
             return None;
         }
         // The span of s inside the height slab.
@@ -258,7 +258,7 @@ impl Prism {
             1 => {
                 let t = hull[0] / (hull[0] - hull[1]);
                 roots[0] = t;
-                (t >= 0.0 && t <= 1.0) as usize
+                (0.0..=1.0).contains(&t) as usize
             }
             2 => {
                 let (c, n) = p.combine(a, b, k);

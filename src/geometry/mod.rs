@@ -63,6 +63,7 @@ pub mod blob;
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
+mod halley;
 pub mod height_field;
 pub mod isosurface;
 pub mod julia;

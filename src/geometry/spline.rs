@@ -105,6 +105,65 @@ impl Piece {
         (c, self.degree + 1)
     }
 
+    /// The piece's control points (`degree + 1` of them).
+    fn control(&self) -> [DVec2; 4] {
+        std::array::from_fn(|i| DVec2::new(self.cu[i], self.cv[i]))
+    }
+
+    /// The part of the piece for `t ∈ [t0, t1]` (`0 ≤ t0 < t1 ≤ 1`), reparametrised to `[0, 1]`:
+    /// its control points by de Casteljau (split at `t1`, then the left part at `t0 / t1`).
+    pub fn part(&self, t0: f64, t1: f64) -> Piece {
+        let n = self.degree;
+        let split = |p: [DVec2; 4], t: f64| {
+            let (mut left, mut right, mut w) = ([DVec2::ZERO; 4], [DVec2::ZERO; 4], p);
+            left[0] = w[0];
+            right[n] = w[n];
+            for k in 1..=n {
+                for i in 0..=n - k {
+                    w[i] = w[i].lerp(w[i + 1], t);
+                }
+                left[k] = w[0];
+                right[n - k] = w[n - k];
+            }
+            (left, right)
+        };
+        let p = if t1 < 1.0 { split(self.control(), t1).0 } else { self.control() };
+        let p = if t0 > 0.0 { split(p, t0 / t1).1 } else { p };
+        match n {
+            1 => Piece::line(p[0], p[1]),
+            2 => Piece::quadratic_bezier(p[0], p[1], p[2]),
+            _ => Piece::cubic_bezier(p),
+        }
+    }
+
+    /// The piece cut where `u` or `v` turns (the roots of `u'` and `v'` inside `(0, 1)`), so that
+    /// each part runs one way in both: the box of its ends holds it, far tighter than its
+    /// control points' box where the piece bulges. Each part's `lo` and `hi` are that box,
+    /// widened by 10⁻⁹ of the piece's size (a turning point found to rounding overshoots its
+    /// part's end by the square of that error).
+    pub fn monotone_parts(&self) -> Vec<Piece> {
+        let mut cuts = vec![0.0, 1.0];
+        for c in [&self.u, &self.v] {
+            // u'(t) = c1 + 2 c2 t + 3 c3 t², highest power first.
+            let d = [3.0 * c[3], 2.0 * c[2], c[1]];
+            let mut roots = [0.0; MAX_DEGREE];
+            let m = roots_between(&d[3 - self.degree..], 0.0, 1.0, &mut roots);
+            cuts.extend(roots[..m].iter().filter(|&&t| t > 1e-9 && t < 1.0 - 1e-9));
+        }
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup_by(|a, b| *a - *b < 1e-9);
+        let pad = 1e-9 * (self.hi - self.lo).max_element().max(self.lo.abs().max(self.hi.abs()).max_element());
+        cuts.windows(2)
+            .map(|w| {
+                let mut part = if cuts.len() == 2 { *self } else { self.part(w[0], w[1]) };
+                let (a, b) = (part.at(0.0), part.at(1.0));
+                part.lo = part.lo.max(a.min(b) - pad);
+                part.hi = part.hi.min(a.max(b) + pad);
+                part
+            })
+            .collect()
+    }
+
     /// The same piece with every point mapped by `f` (affine maps only).
     pub fn map(&self, f: impl Fn(DVec2) -> DVec2) -> Piece {
         let o = f(DVec2::ZERO);

@@ -1,0 +1,150 @@
+//! The one root in `[0, 1]` of a polynomial whose Bernstein coefficients there change sign
+//! once (the common case of a ray crossing one cubic piece of a prism's outline): Halley steps
+//! from the control polygon's crossing, kept inside the shrinking bracket.
+//!
+//! `bernstein::roots_unit` answers this case too, with Newton steps until one moves `t` by less
+//! than 10⁻¹³ (four or five evaluations on the kernel scenes: a third of prism_bezier's time).
+//! Halley's step converges cubically: the root lies within `K·step³` of the step's end, with
+//! `K = p''²/(4p'²) − p'''/(6p')`, so the search stops once that bound is below 10⁻¹⁵: two or
+//! three evaluations, each of `p` and its first three derivatives together.
+
+/// `p(x)`, `p'(x)`, `p''(x)` and `p'''(x)` for coefficients highest degree first (Horner).
+#[inline]
+fn eval3(c: &[f64], x: f64) -> (f64, f64, f64, f64) {
+    let (mut f, mut df, mut ddf, mut dddf) = (0.0, 0.0, 0.0, 0.0);
+    for &k in c {
+        dddf = dddf * x + 3.0 * ddf;
+        ddf = ddf * x + 2.0 * df;
+        df = df * x + f;
+        f = f * x + k;
+    }
+    (f, df, ddf, dddf)
+}
+
+/// Where the Bernstein coefficients `b` change sign once, with nonzero ends and no zero between
+/// them; `None` for any other sign pattern (no change, several, or a zero), which the caller
+/// solves the general way.
+#[inline]
+pub fn single_change(b: &[f64]) -> Option<usize> {
+    let mut at = None;
+    for i in 0..b.len() - 1 {
+        if b[i] == 0.0 || b[i + 1] == 0.0 || b[i].is_nan() || b[i + 1].is_nan() {
+            return None;
+        }
+        if (b[i] < 0.0) != (b[i + 1] < 0.0) {
+            if at.is_some() {
+                return None;
+            }
+            at = Some(i);
+        }
+    }
+    at
+}
+
+/// The root in `(0, 1)` of `c` (highest power first) whose Bernstein coefficients on `[0, 1]`
+/// are `b` (as many), where `single_change(b)` is `Some(i)`: `p` then has exactly one root
+/// there, with `b[0]`'s sign at 0 and `b[n]`'s at 1 (the coefficients' ends are the
+/// polynomial's end values).
+pub fn single_root(c: &[f64], b: &[f64], i: usize) -> f64 {
+    let n = b.len() - 1;
+    // The control polygon crosses zero between its points i and i + 1, near the root.
+    let mut x = (i as f64 + b[i] / (b[i] - b[i + 1])) / n as f64;
+    let neg_at_0 = b[0] < 0.0;
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    for _ in 0..100 {
+        let (f, df, ddf, dddf) = eval3(c, x);
+        if f == 0.0 {
+            return x;
+        }
+        // `lo` keeps the sign at 0, `hi` the sign at 1.
+        if (f < 0.0) == neg_at_0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let step = 2.0 * f * df / (2.0 * df * df - f * ddf);
+        let next = x - step;
+        let (l, h) = (lo.min(hi), lo.max(hi));
+        // Cubic convergence: the root is within about K·step³ of `next`.
+        let k = (ddf * ddf / (4.0 * df * df)).abs() + (dddf / (6.0 * df)).abs();
+        if k * step.abs().powi(3) <= 1e-15 {
+            return next.clamp(l, h);
+        }
+        x = if next > l && next < h { next } else { 0.5 * (lo + hi) };
+        if h - l <= 4.0 * f64::EPSILON {
+            return x;
+        }
+    }
+    x
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::bernstein::{roots_between, roots_unit, to_bernstein, MAX};
+    use crate::geometry::roots::MAX_DEGREE;
+    use crate::geometry::test_support::uniform;
+
+    /// Seeded random cubics and quadratics (roots spread over [0, 1], some 10⁻⁶ from an end or
+    /// from a second root outside, coefficients scaled by 10⁻⁸ to 10⁸) whose Bernstein
+    /// coefficients change sign once: the root agrees with `roots_unit`'s to 10⁻¹² (or to the
+    /// root's condition near a double root).
+    #[test]
+    fn one_sign_change_gives_roots_units_root() {
+        let mut rand = uniform(0x6a09_e667_f3bc_c908u64);
+        let mut tested = 0;
+        for case in 0..20_000 {
+            let n = 2 + case % 2;
+            // Roots: one in [0, 1], others anywhere near; sometimes squeezed to an end.
+            let mut r: Vec<f64> = (0..n).map(|_| rand() * 3.0 - 1.0).collect();
+            r[0] = match case % 5 {
+                0 => 1e-6 * rand(),
+                1 => 1.0 - 1e-6 * rand(),
+                _ => rand(),
+            };
+            if case % 7 == 0 {
+                r[1] = r[0] + if rand() < 0.5 { 1e-6 } else { -1e-6 } * (1.0 + rand());
+            }
+            let scale = 10f64.powf(rand() * 16.0 - 8.0) * if rand() < 0.5 { -1.0 } else { 1.0 };
+            // Power coefficients, lowest first, from the roots.
+            let mut low = vec![scale];
+            for &root in &r {
+                let mut next = vec![0.0; low.len() + 1];
+                for (j, &a) in low.iter().enumerate() {
+                    next[j] -= root * a;
+                    next[j + 1] += a;
+                }
+                low = next;
+            }
+            let b = to_bernstein(&low);
+            let b = &b[..=n];
+            let Some(i) = single_change(b) else { continue };
+            let c: Vec<f64> = low.iter().rev().copied().collect();
+            let mut roots = [0.0; MAX_DEGREE];
+            let m = if n == 3 {
+                let mut bb = [0.0; MAX + 1];
+                bb[..=n].copy_from_slice(b);
+                roots_unit(&c, bb, &mut roots)
+            } else {
+                roots_between(&c, 0.0, 1.0, &mut roots)
+            };
+            assert_eq!(m, 1, "{c:?}: {:?}", &roots[..m]);
+            let t = single_root(&c, b, i);
+            // To 10⁻¹², or to what rounding the coefficients moves a root near a double one.
+            let (_, slope, _, _) = eval3(&c, roots[0]);
+            let tol = 1e-12 + 8.0 * f64::EPSILON * c.iter().map(|k| k.abs()).sum::<f64>() / slope.abs();
+            assert!((t - roots[0]).abs() <= tol, "{c:?}: {t} against {}", roots[0]);
+            tested += 1;
+        }
+        assert!(tested > 5000, "{tested}");
+    }
+
+    #[test]
+    fn other_sign_patterns_are_left_to_the_general_solve() {
+        assert_eq!(single_change(&[1.0, -1.0, 1.0, -1.0]), None);
+        assert_eq!(single_change(&[1.0, 2.0, 3.0]), None);
+        assert_eq!(single_change(&[1.0, 0.0, -1.0]), None);
+        assert_eq!(single_change(&[0.0, 1.0, -1.0]), None);
+        assert_eq!(single_change(&[1.0, 2.0, -1.0, -3.0]), Some(1));
+    }
+}

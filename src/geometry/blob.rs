@@ -643,7 +643,7 @@ mod reach_tests {
                 let (lo, hi) = (b.min.as_dvec3(), b.max.as_dvec3());
                 let centre = 0.5 * (lo + hi);
                 let size = (hi - lo).max_element();
-                let mut point = |rnd: &mut dyn FnMut() -> f64| lo + (hi - lo) * DVec3::new(rnd(), rnd(), rnd());
+                let point = |rnd: &mut dyn FnMut() -> f64| lo + (hi - lo) * DVec3::new(rnd(), rnd(), rnd());
                 let mut rays: Vec<(Vec3, Vec3, f32)> = Vec::new();
                 for _ in 0..64 {
                     let from = centre + (point(&mut rnd) - centre).normalize() * 3.0 * size;

@@ -60,6 +60,7 @@ macro_rules! shape_solved_in_f64 {
 pub mod bands;
 pub mod bernstein;
 pub mod blob;
+mod blob_reach;
 pub mod cone;
 pub mod cuboid;
 pub mod disc;

@@ -75,6 +75,7 @@ pub mod poly;
 pub mod polygon;
 pub mod prism;
 mod quartic;
+pub mod revolved;
 pub mod roots;
 pub mod sor;
 pub mod sphere;

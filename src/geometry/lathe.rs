@@ -7,7 +7,7 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::{roots_between, roots_unit, to_bernstein, MAX as MAX_B};
+use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
 use super::revolved::{hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
@@ -187,7 +187,7 @@ impl Lathe {
                     for (k, slot) in b[..len].iter_mut().enumerate() {
                         *slot = k_y2 * sq.y2_b[k] + k_y * sq.y_b[k] - k_r2 * sq.r2_b[k] + k_1;
                     }
-                    roots_unit(&c[..len], b, &mut roots)
+                    roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
                 };
                 for &t in &roots[..m] {
                     hits[n] = (p.at(t).y - o.y) / d.y;

@@ -11,7 +11,7 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::roots_between;
+use super::bernstein::{roots_between, roots_between_to, FOR_F32};
 use super::cuboid::{frame_for, BoxFrame};
 use super::revolved::{hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
@@ -226,7 +226,7 @@ impl Sor {
                 3.0 * a * y * y * v + 2.0 * b * y * v + c * v - 2.0 * odh,
                 s.f(y) - oh2,
             ];
-            let n = roots_between(&poly, lo, hi, &mut roots);
+            let n = roots_between_to(&poly, lo, hi, FOR_F32, &mut roots);
             if let Some(&t) = roots[..n].iter().find(|&&t| t > t_min && t < best) {
                 best = t;
             }

@@ -9,7 +9,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
-use super::revolved::{hit_lanes, Band, LaneCandidates};
+use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
@@ -131,10 +131,11 @@ impl Lathe {
         let (ax, az) = (o.x * d.y - o.y * d.x, o.z * d.y - o.y * d.z);
         let (k_y2, k_y, k_1, k_r2) = (dh2, 2.0 * (ax * d.x + az * d.z), ax * ax + az * az, d.y * d.y);
         let mut roots = [0.0; MAX_DEGREE];
-        for (k, (p, sq)) in self.pieces.iter().zip(&self.squares).enumerate() {
+        for k in along(self.pieces.len(), d.y) {
             if !may.may_meet(k) {
                 continue;
             }
+            let (p, sq) = (&self.pieces[k], &self.squares[k]);
             // The piece's height slab along the ray.
             if level {
                 if o.y < p.lo.y || o.y > p.hi.y {

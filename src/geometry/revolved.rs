@@ -86,6 +86,16 @@ impl LaneCandidates<'_> {
     }
 }
 
+/// The order a ray whose direction climbs by `d_y` meets `n` pieces listed from the bottom up
+/// (a sor's segments; a lathe's usually): downwards from the top for a falling ray, so the
+/// first hit found sets the bound that lets the later pieces be passed over unsolved. Either
+/// order finds the same nearest root.
+#[inline(always)]
+pub fn along(n: usize, d_y: f64) -> impl Iterator<Item = usize> {
+    let down = d_y < 0.0;
+    (0..n).map(move |i| if down { n - 1 - i } else { i })
+}
+
 /// Per lane, the pieces (`bands`) the ray `o + t·d` (object space) may meet for `t` in
 /// `(t_min, t_max)`, and the lanes that may meet any (`None` if none may): `whole` first, the
 /// band of all of them, then each piece's for the lanes `whole` keeps.

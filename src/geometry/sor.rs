@@ -13,7 +13,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::bernstein::{roots_between, roots_between_to, FOR_F32};
 use super::cuboid::{frame_for, BoxFrame};
-use super::revolved::{hit_lanes, Band, LaneCandidates};
+use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::{affine_f32, inside_lanes_f64, normal_lanes_f64, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
@@ -187,10 +187,11 @@ impl Sor {
         let band = RadialRay::new(o, d);
         let (dh2, odh, oh2) = (band.dh2, band.odh, band.oh2);
         let mut roots = [0.0; MAX_DEGREE];
-        for (k, s) in self.segments.iter().enumerate() {
+        for k in along(self.segments.len(), d.y) {
             if !may.may_meet(k) {
                 continue;
             }
+            let s = &self.segments[k];
             // The span of t where the ray is within the segment's heights and its widest radius
             // (a root lies in both). The cubic is solved on all of it, not on the part inside
             // (t_min, best): its roots then do not depend on t_min, so a root just below an f32

@@ -128,11 +128,11 @@ fn eval_with_derivative(c: &[f64], x: f64) -> (f64, f64) {
 
 /// The root of `c` between `x0` and `x1`, where its sign changes (negative at `x0` if
 /// `neg_at_x0`): Newton steps from `guess`, kept inside the shrinking bracket (bisection where a
-/// step would leave it), until a step moves `x` by less than 10⁻¹³ of the bracket's scale (a
+/// step would leave it), until a step moves `x` by less than `rel` of the bracket's scale (a
 /// simple root is then good to about its square) or the bracket closes.
-fn polish(c: &[f64], x0: f64, x1: f64, neg_at_x0: bool, guess: f64) -> f64 {
+fn polish(c: &[f64], x0: f64, x1: f64, neg_at_x0: bool, guess: f64, rel: f64) -> f64 {
     let (mut a, mut b) = (x0, x1);
-    let tol = 1e-13 * (x0.abs().max(x1.abs()) + (x1 - x0).abs());
+    let tol = rel * (x0.abs().max(x1.abs()) + (x1 - x0).abs());
     let mut x = if guess > x0.min(x1) && guess < x0.max(x1) { guess } else { 0.5 * (x0 + x1) };
     for _ in 0..100 {
         let (f, df) = eval_with_derivative(c, x);
@@ -160,9 +160,26 @@ fn polish(c: &[f64], x0: f64, x1: f64, neg_at_x0: bool, guess: f64) -> f64 {
     x
 }
 
+/// How closely `roots_between` and `roots_unit` pin a root: `polish` stops once a Newton step
+/// is below this part of the bracket's scale.
+const PRECISE: f64 = 1e-13;
+
+/// The looser stop of `roots_between_to` and `roots_unit_to` for a shape whose roots end as f32
+/// hits (`lathe`, `sor`): a simple root is then good to about 10⁻¹⁶ of its scale (the square of
+/// the last step), one near a double root (where Newton only halves its error) to 10⁻⁸, below
+/// an f32 ulp; it saves the last Newton step, which only confirms the one before (a sixth of
+/// the sor kernel's time).
+pub const FOR_F32: f64 = 1e-8;
+
 /// All roots of `c` (highest degree first) in `[lo, hi]` (finite), ascending, into `out`;
 /// returns how many. A root at an end counts where `c` is exactly zero there.
 pub fn roots_between(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+    roots_between_to(c, lo, hi, PRECISE, out)
+}
+
+/// `roots_between`, each root polished until a Newton step is below `rel` of its bracket's
+/// scale (`FOR_F32`) where subdivision isolates it (degree 3 to `MAX`).
+pub fn roots_between_to(c: &[f64], lo: f64, hi: f64, rel: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
     let first = c.iter().position(|&k| k != 0.0).unwrap_or(c.len());
     let c = &c[first..];
     let n = c.len().saturating_sub(1);
@@ -208,7 +225,7 @@ pub fn roots_between(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -
         }
     }
     let b = to_bernstein(&a[..=n]);
-    isolate_all(c, b, lo, hi, out)
+    isolate_all(c, b, lo, hi, rel, out)
 }
 
 /// The Bernstein coefficients on `[0, 1]` of `Σ a[j]·u^j` (lowest power first, degree ≤ 7):
@@ -232,10 +249,15 @@ pub fn to_bernstein(a: &[f64]) -> [f64; MAX + 1] {
 /// as `to_bernstein` gives them), ascending; returns how many. For shapes that form both
 /// bases from per-piece tables, without a change of basis per ray.
 pub fn roots_unit(c: &[f64], b: [f64; MAX + 1], out: &mut [f64; MAX_DEGREE]) -> usize {
-    isolate_all(c, b, 0.0, 1.0, out)
+    isolate_all(c, b, 0.0, 1.0, PRECISE, out)
 }
 
-fn isolate_all(c: &[f64], mut b: [f64; MAX + 1], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+/// `roots_unit` polished to `rel` (`roots_between_to`).
+pub fn roots_unit_to(c: &[f64], b: [f64; MAX + 1], rel: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
+    isolate_all(c, b, 0.0, 1.0, rel, out)
+}
+
+fn isolate_all(c: &[f64], mut b: [f64; MAX + 1], lo: f64, hi: f64, rel: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
     let n = c.len() - 1;
     // The ends are the polynomial's values there, evaluated as `roots` evaluates them, so the
     // signs at a piece's joints agree with the critical points' answer.
@@ -254,7 +276,7 @@ fn isolate_all(c: &[f64], mut b: [f64; MAX + 1], lo: f64, hi: f64, out: &mut [f6
     if f_lo == 0.0 {
         found.push(lo);
     }
-    let span = Span { c, n, lo, hi, w: hi - lo };
+    let span = Span { c, n, lo, hi, w: hi - lo, rel };
     span.isolate(&mut found, 0.0, 1.0, 0, &b);
     found.count
 }
@@ -276,13 +298,15 @@ impl Found<'_> {
     }
 }
 
-/// The polynomial being solved: `c` (degree `n`) on `[lo, hi]`, `w = hi − lo`.
+/// The polynomial being solved: `c` (degree `n`) on `[lo, hi]`, `w = hi − lo`, its roots
+/// polished to `rel` (`polish`).
 struct Span<'a> {
     c: &'a [f64],
     n: usize,
     lo: f64,
     hi: f64,
     w: f64,
+    rel: f64,
 }
 
 impl Span<'_> {
@@ -309,7 +333,7 @@ impl Span<'_> {
             let (p, q) = (b[k], b[i + 1]);
             let u = (k as f64 + (i + 1 - k) as f64 * p / (p - q)) / n as f64;
             let guess = self.at(u0 + (u1 - u0) * u);
-            found.push(polish(c, self.at(u0), self.at(u1), b0 < 0.0, guess));
+            found.push(polish(c, self.at(u0), self.at(u1), b0 < 0.0, guess, self.rel));
         } else if changes >= 1 && depth < MAX_DEPTH {
             let (left, right) = halve(b, n);
             let m = 0.5 * (u0 + u1);
@@ -318,7 +342,7 @@ impl Span<'_> {
             return;
         } else if changes >= 1 && (b0 < 0.0) != (bn < 0.0) && b0 != 0.0 && bn != 0.0 {
             let (x0, x1) = (self.at(u0), self.at(u1));
-            found.push(polish(c, x0, x1, b0 < 0.0, 0.5 * (x0 + x1)));
+            found.push(polish(c, x0, x1, b0 < 0.0, 0.5 * (x0 + x1), self.rel));
         }
         if bn == 0.0 {
             found.push(self.at(u1));
@@ -378,6 +402,15 @@ mod tests {
                 assert!((x - r).abs() <= bound, "case {case}: {x} vs {r} (bound {bound}): {roots:?}");
             }
             assert!(b[..nb].windows(2).all(|w| w[0] < w[1]), "ascending: {:?}", &b[..nb]);
+            // Polished to f32's needs (`FOR_F32`): the same roots, each within 10⁻⁸ of its
+            // bracket's scale of the precise one (well below an f32 ulp of it).
+            let mut f = [0.0; MAX_DEGREE];
+            let nf = roots_between_to(&c, lo, hi, FOR_F32, &mut f);
+            assert_eq!(nf, nb, "case {case}: {:?} vs {:?}", &f[..nf], &b[..nb]);
+            for (&x, &y) in f[..nf].iter().zip(&b[..nb]) {
+                let bound = 1e-8 * (lo.abs().max(hi.abs()) + (hi - lo)) + 1e3 * f64::EPSILON * x.abs();
+                assert!((x - y).abs() <= bound, "case {case}: {x} vs {y} (bound {bound})");
+            }
             found += nb;
         }
         assert!(found > 10_000, "{found}");

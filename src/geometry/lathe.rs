@@ -7,8 +7,9 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::{roots_between, roots_unit, to_bernstein, MAX as MAX_B};
+use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
+use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
@@ -22,6 +23,10 @@ pub struct Lathe {
     pieces: Vec<Piece>,
     /// Per piece, what every ray's polynomial is made of (`Squares`).
     squares: Vec<Squares>,
+    /// Per piece, its heights and radii, for the eight-lane cull (`revolved`).
+    bands: Vec<Band>,
+    /// The band of all of `bands`.
+    whole: Band,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -92,20 +97,31 @@ impl Lathe {
         let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
         let local = DAffine3::from_translation(DVec3::new(0.0, cy, 0.0)) * DAffine3::from_scale(DVec3::splat(s));
         let pieces: Vec<Piece> = pieces.iter().map(|p| p.map(|q| DVec2::new(q.x / s, (q.y - cy) / s))).collect();
-        let squares = pieces.iter().map(Squares::of).collect();
+        let squares: Vec<Squares> = pieces.iter().map(Squares::of).collect();
+        let bands: Vec<Band> =
+            pieces.iter().zip(&squares).map(|(p, q)| Band::new(p.lo.y, p.hi.y, q.r2_min, q.r2_max)).collect();
         let xf = render_from_object * local;
         let xf = affine_f32(&xf);
         let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
         let (min, max) = transformed_bounds(&xf, Vec3::new(-r, -h, -r), Vec3::new(r, h, r));
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
-        Lathe { frame: frame_for(xf), pieces, squares, min: min - pad, max: max + pad }
+        Lathe {
+            frame: frame_for(xf),
+            pieces,
+            squares,
+            whole: Band::around(&bands),
+            bands,
+            min: min - pad,
+            max: max + pad,
+        }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
         (self.min, self.max)
     }
 
-    fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
+    /// The nearest crossing in `(s_min, s_max)` with the pieces `may` holds (`revolved`).
+    fn solve(&self, may: LaneCandidates, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
         let mut best = s_max;
         let dh2 = d.x * d.x + d.z * d.z;
         let level = d.y.abs() <= 1e-9 * dh2.sqrt();
@@ -115,7 +131,11 @@ impl Lathe {
         let (ax, az) = (o.x * d.y - o.y * d.x, o.z * d.y - o.y * d.z);
         let (k_y2, k_y, k_1, k_r2) = (dh2, 2.0 * (ax * d.x + az * d.z), ax * ax + az * az, d.y * d.y);
         let mut roots = [0.0; MAX_DEGREE];
-        for (p, sq) in self.pieces.iter().zip(&self.squares) {
+        for k in along(self.pieces.len(), d.y) {
+            if !may.may_meet(k) {
+                continue;
+            }
+            let (p, sq) = (&self.pieces[k], &self.squares[k]);
             // The piece's height slab along the ray.
             if level {
                 if o.y < p.lo.y || o.y > p.hi.y {
@@ -168,7 +188,7 @@ impl Lathe {
                     for (k, slot) in b[..len].iter_mut().enumerate() {
                         *slot = k_y2 * sq.y2_b[k] + k_y * sq.y_b[k] - k_r2 * sq.r2_b[k] + k_1;
                     }
-                    roots_unit(&c[..len], b, &mut roots)
+                    roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
                 };
                 for &t in &roots[..m] {
                     hits[n] = (p.at(t).y - o.y) / d.y;
@@ -218,7 +238,9 @@ impl Lathe {
 impl Shape for Lathe {
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+        hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
+            self.solve(m, o, d, lo, hi)
+        })
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

@@ -78,6 +78,7 @@ pub mod polygon;
 pub mod prism;
 mod quadric;
 mod quartic;
+pub mod revolved;
 pub mod roots;
 pub mod sor;
 pub mod sphere;

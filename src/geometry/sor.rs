@@ -11,10 +11,13 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::roots_between;
+use super::bernstein::{roots_between, roots_between_to, FOR_F32};
 use super::cuboid::{frame_for, BoxFrame};
+use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
-use super::{affine_f32, transformed_bounds, RadialRay};
+use super::{affine_f32, inside_lanes_f64, normal_lanes_f64, transformed_bounds, RadialRay, Shape};
+use crate::lanes::{Lane, V3};
+use crate::ray::RayLanes;
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
@@ -43,6 +46,11 @@ pub struct Sor {
     pub frame: BoxFrame,
     /// Ascending in height, scaled to unit size.
     segments: Vec<Segment>,
+    /// Per segment, then the bottom and top caps, heights and radii for the eight-lane cull
+    /// (`revolved`).
+    bands: Vec<Band>,
+    /// The band of all of `bands`.
+    whole: Band,
     open: bool,
     pub min: Vec3,
     pub max: Vec3,
@@ -151,7 +159,13 @@ impl Sor {
         let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
         let (min, max) = transformed_bounds(&xf, Vec3::new(-r, -h, -r), Vec3::new(r, h, r));
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
-        Sor { frame: frame_for(xf), segments, open, min: min - pad, max: max + pad }
+        let mut bands: Vec<Band> = segments.iter().map(|s| Band::new(s.lo, s.hi, s.r2_min, s.r2_max)).collect();
+        if !open {
+            let (b, t) = (&segments[0], &segments[segments.len() - 1]);
+            bands.push(Band::new(b.lo, b.lo, 0.0, b.f(b.lo)));
+            bands.push(Band::new(t.hi, t.hi, 0.0, t.f(t.hi)));
+        }
+        Sor { frame: frame_for(xf), segments, whole: Band::around(&bands), bands, open, min: min - pad, max: max + pad }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -166,12 +180,18 @@ impl Sor {
         &self.segments[self.segments.len() - 1]
     }
 
-    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+    /// The nearest crossing in `(t_min, t_max)` with the segments and caps `may` holds
+    /// (`revolved`).
+    fn solve(&self, may: LaneCandidates, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
         let mut best = t_max;
         let band = RadialRay::new(o, d);
         let (dh2, odh, oh2) = (band.dh2, band.odh, band.oh2);
         let mut roots = [0.0; MAX_DEGREE];
-        for s in &self.segments {
+        for k in along(self.segments.len(), d.y) {
+            if !may.may_meet(k) {
+                continue;
+            }
+            let s = &self.segments[k];
             // The span of t where the ray is within the segment's heights and its widest radius
             // (a root lies in both). The cubic is solved on all of it, not on the part inside
             // (t_min, best): its roots then do not depend on t_min, so a root just below an f32
@@ -207,15 +227,20 @@ impl Sor {
                 3.0 * a * y * y * v + 2.0 * b * y * v + c * v - 2.0 * odh,
                 s.f(y) - oh2,
             ];
-            let n = roots_between(&poly, lo, hi, &mut roots);
+            let n = roots_between_to(&poly, lo, hi, FOR_F32, &mut roots);
             if let Some(&t) = roots[..n].iter().find(|&&t| t > t_min && t < best) {
                 best = t;
             }
         }
         if !self.open && d.y != 0.0 {
-            for (h, r2) in
-                [(self.bottom().lo, self.bottom().f(self.bottom().lo)), (self.top().hi, self.top().f(self.top().hi))]
-            {
+            let n = self.segments.len();
+            for (k, h, r2) in [
+                (n, self.bottom().lo, self.bottom().f(self.bottom().lo)),
+                (n + 1, self.top().hi, self.top().f(self.top().hi)),
+            ] {
+                if !may.may_meet(k) {
+                    continue;
+                }
                 let t = (h - o.y) / d.y;
                 if t > t_min && t < best {
                     let p = o + t * d;
@@ -258,13 +283,26 @@ impl Sor {
     }
 }
 
-shape_solved_in_f64!(Sor, normal: normal_object, inside: inside_object);
+impl Shape for Sor {
+    #[inline(never)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
+            self.solve(m, o, d, lo, hi)
+        })
+    }
+
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
+    }
+}
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::Shape;
-    use crate::lanes::V3;
     use crate::ray::Ray;
 
     /// Radius 1 from height 0 to 2 with straight ends: a cylinder (slopes 0 everywhere).

@@ -128,12 +128,26 @@ pub fn hit_lanes_f64<L: Lane>(
 ) -> L {
     let o = ray.o.transform_point(&frame.object_from_render);
     let d = ray.d.transform_vector(&frame.object_from_render);
+    solve_lanes_f64(o, d, t_min, t_max, |_, o, d, lo, hi| solve(o, d, lo, hi))
+}
+
+/// `hit_lanes_f64` for a ray already in object space (`o + t·d`), where `solve` also learns
+/// which lane it answers (`solve(lane, o, d, t_min, t_max)`): for shapes that first rule lanes
+/// out eight at a time (`revolved`).
+#[inline(always)]
+pub fn solve_lanes_f64<L: Lane>(
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+    solve: impl Fn(usize, glam::DVec3, glam::DVec3, f64, f64) -> Option<f64>,
+) -> L {
     L::from_fn_f64(|i| {
         let v = |v: V3<L>| glam::DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
         let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
         let mut from = lo;
         for _ in 0..4 {
-            let Some(t) = solve(v(o), v(d), from, hi) else { break };
+            let Some(t) = solve(i, v(o), v(d), from, hi) else { break };
             if L::round_f64(t) > lo {
                 return L::round_f64(t).min(hi);
             }

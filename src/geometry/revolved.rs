@@ -244,22 +244,9 @@ pub fn hit_lanes<L: Lane>(
     let Some((c, any)) = candidates(whole, bands, o, d, t_min, t_max) else {
         return L::splat(MISS);
     };
-    L::from_fn_f64(|i| {
-        if any >> i & 1 == 0 {
-            return MISS as f64;
-        }
-        let may = LaneCandidates { of: &c, lane: i };
-        let v = |v: V3<L>| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
-        let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
-        let mut from = lo;
-        for _ in 0..4 {
-            let Some(t) = solve(may, v(o), v(d), from, hi) else { break };
-            if L::round_f64(t) > lo {
-                return L::round_f64(t).min(hi);
-            }
-            from = t;
-        }
-        MISS as f64
+    // A lane no piece can hold misses at once (no solve: `None` is a miss).
+    super::solve_lanes_f64(o, d, t_min, t_max, |i, o, d, lo, hi| {
+        (any >> i & 1 != 0).then(|| solve(LaneCandidates { of: &c, lane: i }, o, d, lo, hi)).flatten()
     })
 }
 

@@ -355,20 +355,6 @@ mod tests {
     use super::*;
     use crate::geometry::test_support::*;
 
-    /// Coefficients of `scale·∏ (x − r)`, highest power first.
-    fn from_roots(roots: &[f64], scale: f64) -> Vec<f64> {
-        let mut c = vec![scale];
-        for &r in roots {
-            let mut next = vec![0.0; c.len() + 1];
-            for (i, &k) in c.iter().enumerate() {
-                next[i] += k;
-                next[i + 1] -= k * r;
-            }
-            c = next;
-        }
-        c
-    }
-
     /// Agrees with the critical points (`roots_in`) over seeded random polynomials of degree 1
     /// to 7 with simple, clustered and double roots, on random intervals: the same count of
     /// roots with a sign change, at the same places.

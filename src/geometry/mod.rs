@@ -60,7 +60,6 @@ macro_rules! shape_solved_in_f64 {
 pub mod bands;
 pub mod bernstein;
 pub mod blob;
-mod blob_reach;
 pub mod cone;
 pub mod cuboid;
 pub mod disc;
@@ -83,6 +82,7 @@ pub mod roots;
 pub mod sor;
 pub mod sphere;
 pub mod spline;
+mod sturm;
 pub mod superellipsoid;
 pub mod torus;
 pub mod triangle;

@@ -1,6 +1,6 @@
 //! Real roots of polynomials in an interval, in f64, for the shapes whose surfaces are
 //! polynomials of degree above one (torus, quadric, cubic, quartic, poly, blob; `sor`, `lathe`
-//! and `prism` later). Three solvers, one module:
+//! and `prism` later). Three solvers, one entry point (`smallest_root_by`):
 //!
 //! - **Critical points** (`roots_in`, `smallest_root`; the torus, blobs, and polys of degree
 //!   above four without `sturm`): the roots of the derivative (found the same way, recursively)
@@ -14,14 +14,14 @@
 //!   lost, and a quartic whose coefficients span many orders of magnitude loses its small roots
 //!   to cancellation in the resolvent: specks along silhouettes, exactly POV-Ray's failure mode
 //!   that its `sturm` keyword exists for.
-//! - **Sturm sequences** (`Solver::Sturm`, POV-Ray's `sturm`): the number of distinct real roots
-//!   in an interval is the difference of sign changes of the Sturm chain at its ends, so the
-//!   interval is bisected until each piece holds one root, which is then polished inside its
-//!   bracket. It counts double roots too, so grazing hits are kept; it costs a chain of `degree`
-//!   polynomials per ray and a few dozen chain evaluations per root.
+//! - **Sturm sequences** (`Solver::Sturm`, POV-Ray's `sturm`; in `sturm`): bisection by counts
+//!   of roots until each piece holds one. It counts double roots too, so grazing hits are kept;
+//!   it costs a chain of `degree` polynomials per ray and a few dozen chain evaluations per root.
 //!
 //! The tests at the bottom pit the three against each other at the extremes (double roots,
 //! roots 1e-6 apart, coefficient ratios of 1e12).
+
+use super::sturm::sturm_roots;
 
 /// Highest degree handled (POV-Ray's `poly` takes orders 2 to 15 here).
 pub const MAX_DEGREE: usize = 16;
@@ -91,7 +91,7 @@ pub fn root_bound(c: &[f64]) -> f64 {
 
 /// `p(x)` for coefficients highest degree first (Horner).
 #[inline]
-fn eval(c: &[f64], x: f64) -> f64 {
+pub(super) fn eval(c: &[f64], x: f64) -> f64 {
     c.iter().fold(0.0, |acc, &k| acc * x + k)
 }
 
@@ -225,7 +225,7 @@ fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
 }
 
 /// The root of `c` in `[a, b]`, where `c` is monotonic, if its sign changes or it touches zero.
-fn monotonic_root(c: &[f64], a: f64, b: f64) -> Option<f64> {
+pub(super) fn monotonic_root(c: &[f64], a: f64, b: f64) -> Option<f64> {
     let (fa, fb) = (eval(c, a), eval(c, b));
     if fa == 0.0 {
         return Some(a);
@@ -384,146 +384,10 @@ fn quartic(a: f64, b: f64, c: f64, d: f64, out: &mut [f64]) -> usize {
     n
 }
 
-/// The Sturm chain of `c` (highest degree first): `p₀ = p`, `p₁ = p'`, `pₖ₊₁ = −(pₖ₋₁ mod pₖ)`,
-/// each stored highest degree first in a row of `MAX_DEGREE + 1`; returns the rows and their
-/// degrees.
-fn sturm_chain(c: &[f64]) -> ([[f64; MAX_DEGREE + 1]; MAX_DEGREE + 1], [usize; MAX_DEGREE + 1], usize) {
-    let mut rows = [[0.0; MAX_DEGREE + 1]; MAX_DEGREE + 1];
-    let mut degrees = [0; MAX_DEGREE + 1];
-    let degree = c.len() - 1;
-    // Normalised to a leading coefficient of ±1 so the zero test below is relative.
-    let lead = c[0].abs();
-    for (i, &k) in c.iter().enumerate() {
-        rows[0][i] = k / lead;
-    }
-    degrees[0] = degree;
-    let (head, tail) = rows.split_at_mut(1);
-    for (i, (d, &k)) in tail[0].iter_mut().zip(&head[0][..degree]).enumerate() {
-        *d = k * (degree - i) as f64;
-    }
-    degrees[1] = degree - 1;
-    let mut count = 2;
-    while degrees[count - 1] > 0 {
-        let (u, du) = (rows[count - 2], degrees[count - 2]);
-        let (v, dv) = (rows[count - 1], degrees[count - 1]);
-        // Remainder of u / v.
-        let mut rem = u;
-        for i in 0..=(du - dv) {
-            let f = rem[i] / v[0];
-            for j in 0..=dv {
-                rem[i + j] -= f * v[j];
-            }
-        }
-        let r = &rem[du - dv + 1..=du];
-        let scale = u[..=du].iter().fold(0.0f64, |m, k| m.max(k.abs()));
-        let first = r.iter().position(|k| k.abs() > 1e-12 * scale);
-        let Some(first) = first else { break };
-        let r = &r[first..];
-        let lead = r[0].abs();
-        for (j, &k) in r.iter().enumerate() {
-            rows[count][j] = -k / lead;
-        }
-        degrees[count] = r.len() - 1;
-        count += 1;
-    }
-    (rows, degrees, count)
-}
-
-/// Sign changes of the chain at `x`, zeros skipped.
-fn sign_changes(rows: &[[f64; MAX_DEGREE + 1]], degrees: &[usize], x: f64) -> u32 {
-    let mut changes = 0;
-    let mut last = 0.0;
-    for (row, &d) in rows.iter().zip(degrees) {
-        let v = eval(&row[..=d], x);
-        if v != 0.0 {
-            if last != 0.0 && (v < 0.0) != (last < 0.0) {
-                changes += 1;
-            }
-            last = v;
-        }
-    }
-    changes
-}
-
-/// Distinct real roots of `c` in `(lo, hi]` by Sturm sequences, ascending; returns how many.
-/// Infinite ends are replaced by Cauchy's bound on the roots.
-pub fn sturm_roots(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
-    let first = c.iter().position(|&k| k != 0.0).unwrap_or(c.len());
-    let c = &c[first..];
-    if c.len() < 2 {
-        return 0;
-    }
-    let bound = 1.0 + c[1..].iter().fold(0.0f64, |m, k| m.max((k / c[0]).abs()));
-    let (lo, hi) = (lo.max(-bound), hi.min(bound));
-    if lo.is_nan() || hi.is_nan() || lo >= hi {
-        return 0;
-    }
-    let (rows, degrees, count) = sturm_chain(c);
-    let (rows, degrees) = (&rows[..count], &degrees[..count]);
-    let mut n = 0;
-    // Intervals still holding more than one root, with their sign changes at each end.
-    let mut stack = [(0.0, 0.0, 0u32, 0u32); 64];
-    let mut top = 1;
-    stack[0] = (lo, hi, sign_changes(rows, degrees, lo), sign_changes(rows, degrees, hi));
-    while top > 0 {
-        top -= 1;
-        let (a, b, sa, sb) = stack[top];
-        let roots = sa.saturating_sub(sb);
-        if roots == 0 {
-            continue;
-        }
-        let tiny = (b - a) <= 1e-14 * a.abs().max(b.abs()).max(1e-300);
-        if roots == 1 || tiny || top + 2 > stack.len() {
-            // One root in (a, b]: bracketed by a sign change, or (a double root) not.
-            let r = monotonic_root(c, a, b).unwrap_or_else(|| {
-                // No sign change: an even-multiplicity root; bisect on the chain's count.
-                let (mut a, mut b, sa_) = (a, b, sa);
-                for _ in 0..200 {
-                    let m = 0.5 * (a + b);
-                    if m <= a || m >= b {
-                        break;
-                    }
-                    if sign_changes(rows, degrees, m) < sa_ {
-                        b = m;
-                    } else {
-                        a = m;
-                    }
-                }
-                0.5 * (a + b)
-            });
-            if n < out.len() {
-                out[n] = r;
-                n += 1;
-            }
-            continue;
-        }
-        let m = 0.5 * (a + b);
-        let sm = sign_changes(rows, degrees, m);
-        // Upper half first on the stack, so the lower is taken next: roots come out ascending.
-        stack[top] = (m, b, sm, sb);
-        stack[top + 1] = (a, m, sa, sm);
-        top += 2;
-    }
-    n
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Coefficients of ∏ (x − r).
-    fn from_roots(roots: &[f64]) -> Vec<f64> {
-        let mut c = vec![1.0];
-        for &r in roots {
-            let mut next = vec![0.0; c.len() + 1];
-            for (i, &k) in c.iter().enumerate() {
-                next[i] += k;
-                next[i + 1] -= k * r;
-            }
-            c = next;
-        }
-        c
-    }
+    use crate::geometry::test_support::from_roots;
 
     /// Every root lies within `root_bound`, for seeded random roots of degree 1 to 12 at every
     /// scale (with a complex pair, whose modulus counts too), and the bound is not loose: below
@@ -535,7 +399,7 @@ mod tests {
             let degree = 1 + case % 12;
             let scale = 10f64.powf(r() * 10.0 - 4.0);
             let roots: Vec<f64> = (0..degree).map(|_| (2.0 * r() - 1.0) * scale).collect();
-            let mut c = from_roots(&roots);
+            let mut c = from_roots(&roots, 1.0);
             let lead = 10f64.powf(r() * 6.0 - 3.0) * if r() < 0.5 { -1.0 } else { 1.0 };
             let biggest = roots.iter().fold(0.0f64, |m, x| m.max(x.abs()));
             for k in &mut c {
@@ -552,7 +416,7 @@ mod tests {
             }
             assert!(root_bound(&with_pair) >= m, "case {case}: pair of modulus {m}");
         }
-        let c = from_roots(&[2.0, -2.0, 1.9, -1.9, 1.95, 2.05]);
+        let c = from_roots(&[2.0, -2.0, 1.9, -1.9, 1.95, 2.05], 1.0);
         let bound = root_bound(&c);
         assert!((2.05..5.0 * 2.05).contains(&bound), "{bound}");
         assert_eq!(root_bound(&[1.0, 0.0, 0.0]), 0.0);
@@ -564,7 +428,7 @@ mod tests {
         for roots in
             [vec![-3.0, -1.0, 0.5, 2.0], vec![1.0, 1.0 + 1e-6, 5.0, 7.0], vec![1e-3, 2e-3, 1e3, 2e3], vec![-2.0, 4.0]]
         {
-            let c = from_roots(&roots);
+            let c = from_roots(&roots, 1.0);
             let mut out = [0.0; MAX_DEGREE];
             let n = roots_in(&c, -10.0, 1e4, &mut out);
             assert_eq!(n, roots.len(), "{roots:?}: {:?}", &out[..n]);
@@ -576,12 +440,12 @@ mod tests {
 
     #[test]
     fn a_double_root_is_found_once() {
-        let c = from_roots(&[2.0, 2.0, 3.0, 3.0]);
+        let c = from_roots(&[2.0, 2.0, 3.0, 3.0], 1.0);
         let mut out = [0.0; MAX_DEGREE];
         let n = roots_in(&c, 0.0, 10.0, &mut out);
         assert!(n >= 1 && (out[0] - 2.0).abs() < 1e-6, "{:?}", &out[..n]);
-        assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0]), 0.0, 10.0), Some(4.0));
-        assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0]), 5.0, 10.0), None);
+        assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0], 1.0), 0.0, 10.0), Some(4.0));
+        assert_eq!(smallest_root(&from_roots(&[-1.0, 4.0], 1.0), 5.0, 10.0), None);
     }
 
     /// The Bernstein test only ever skips spans without a root: over seeded random real roots
@@ -608,7 +472,7 @@ mod tests {
                 roots[1] = roots[0] * (1.0 + 1e-9);
             }
             let scale = [1.0, -3e-7, 2e5][case % 3];
-            let c: Vec<f64> = from_roots(&roots).iter().map(|k| k * scale).collect();
+            let c: Vec<f64> = from_roots(&roots, 1.0).iter().map(|k| k * scale).collect();
             let lo = (rand() * 2.4 - 1.2) * spread;
             let hi = lo + rand() * spread;
             let holds = roots.iter().any(|&r| r >= lo && r <= hi);
@@ -622,29 +486,17 @@ mod tests {
         }
         assert!(skipped * 10 > far * 8, "only {skipped} of {far} root-free far intervals skipped");
         // A root on an end, or a double root touching zero inside, is never skipped.
-        assert!(!certainly_no_root(&from_roots(&[1.0, 1.0]), 0.0, 2.0));
-        assert!(!certainly_no_root(&from_roots(&[2.0]), 0.0, 2.0));
-        assert!(certainly_no_root(&from_roots(&[3.0, 5.0]), 0.0, 2.0));
-        assert!(!certainly_no_root(&from_roots(&[3.0, 5.0]), 0.0, f64::INFINITY));
+        assert!(!certainly_no_root(&from_roots(&[1.0, 1.0], 1.0), 0.0, 2.0));
+        assert!(!certainly_no_root(&from_roots(&[2.0], 1.0), 0.0, 2.0));
+        assert!(certainly_no_root(&from_roots(&[3.0, 5.0], 1.0), 0.0, 2.0));
+        assert!(!certainly_no_root(&from_roots(&[3.0, 5.0], 1.0), 0.0, f64::INFINITY));
     }
 }
 
 #[cfg(test)]
 mod solver_tests {
     use super::*;
-
-    fn from_roots(roots: &[f64], scale: f64) -> Vec<f64> {
-        let mut c = vec![scale];
-        for &r in roots {
-            let mut next = vec![0.0; c.len() + 1];
-            for (i, &k) in c.iter().enumerate() {
-                next[i] += k;
-                next[i + 1] -= k * r;
-            }
-            c = next;
-        }
-        c
-    }
+    use crate::geometry::test_support::from_roots;
 
     fn close(a: f64, b: f64, rel: f64) -> bool {
         (a - b).abs() <= rel * b.abs().max(1.0)

@@ -1,4 +1,5 @@
-//! What the shape tests share: a seeded random source and a prism outline with many pieces.
+//! What the shape tests share: a seeded random source, polynomials of chosen roots and a prism
+//! outline with many pieces.
 
 use glam::DVec2;
 
@@ -13,6 +14,20 @@ pub fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
         seed ^= seed << 17;
         (seed >> 11) as f64 / (1u64 << 53) as f64
     }
+}
+
+/// Coefficients of `scale·∏ (x − r)`, highest power first.
+pub fn from_roots(roots: &[f64], scale: f64) -> Vec<f64> {
+    let mut c = vec![scale];
+    for &r in roots {
+        let mut next = vec![0.0; c.len() + 1];
+        for (i, &k) in c.iter().enumerate() {
+            next[i] += k;
+            next[i + 1] -= k * r;
+        }
+        c = next;
+    }
+    c
 }
 
 /// A linear star with a cubic hole in it: many pieces, some level, of two kinds.

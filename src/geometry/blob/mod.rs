@@ -12,7 +12,7 @@
 //! `roots::roots_in` (with a bisection where the ends' signs differ and the critical-point
 //! search returns nothing, so a crossing is never lost to rounding). The field and its
 //! derivative are zero at every piece's edge, so the sum is continuous across span ends. Lanes
-//! are solved one by one, as the torus and lathe are, but only those that `blob_reach`'s
+//! are solved one by one, as the torus and lathe are, but only those that `reach`'s
 //! eight-lane f32 test cannot rule out (nine in ten of those reaching the box on the kernel
 //! scenes are ruled out).
 //!
@@ -23,13 +23,15 @@ use std::cell::RefCell;
 
 use glam::{Affine3A, DAffine3, DVec3, Vec3};
 
-use super::blob_reach::{may_reach, Component as ReachComponent, Reach};
+mod reach;
+
 use super::cuboid::{frame_for, BoxFrame};
 use super::quartic::{ferrari, polish};
 use super::roots::{roots_in, MAX_DEGREE};
 use super::{affine_f32, hit_lanes_f64, inside_lanes_f64, normal_lanes_f64, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
+use reach::{may_reach, Component as ReachComponent, Reach};
 
 /// The form of one component, in its own space.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -158,7 +160,7 @@ impl Field {
         Field { component_from_unit, base, axis, length, r2: radius * radius, strength: c.strength }
     }
 
-    /// This field as `blob_reach` tests it, if it adds to the field (positive strength).
+    /// This field as `reach` tests it, if it adds to the field (positive strength).
     fn reach(&self) -> Option<(Affine3A, ReachComponent)> {
         (self.strength > 0.0).then(|| {
             let c = ReachComponent {
@@ -354,7 +356,7 @@ impl Blob {
     }
 
     fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
-        // An empty interval (a lane `blob_reach` left out) holds no root.
+        // An empty interval (a lane `reach` left out) holds no root.
         if !(t_min < t_max) {
             return None;
         }
@@ -443,7 +445,7 @@ impl Blob {
 }
 
 /// As `shape_solved_in_f64!` writes it for the other kinds solved lane by lane in f64, but
-/// lanes `blob_reach` shows cannot meet the blob are not solved: they are given an empty
+/// lanes `reach` shows cannot meet the blob are not solved: they are given an empty
 /// interval (no root lies in `(t_min, t_min)`), and a packet none of whose lanes can meet it is
 /// a miss at once.
 impl Shape for Blob {
@@ -598,113 +600,6 @@ mod tests {
             }
         }
         assert!(hits > 100, "{hits}");
-    }
-}
-
-/// `blob_reach`'s test never changes an answer: each lane's hit, in packets and alone, is the
-/// f64 solve's over the whole interval, on random blobs at scales 1e-4 to 1e6 under sheared
-/// component transforms, for rays aimed anywhere in the box, rays grazing the surface by a part
-/// in 10⁴ to 10⁸ of the scale, and rays leaving the surface (shadow rays).
-#[cfg(test)]
-mod reach_tests {
-    use super::*;
-    use crate::geometry::test_support::uniform;
-    use crate::lanes::F8;
-    use glam::DMat3;
-
-    /// Random components, a third of them cylinders, some negative, each under a random
-    /// non-uniform scale and shear.
-    fn random_blob(rnd: &mut impl FnMut() -> f64, scale: f64) -> Blob {
-        let mut v = || DVec3::new(rnd(), rnd(), rnd()) * 2.0 - 1.0;
-        let comps: Vec<Component> = (0..2 + (v().x.abs() * 4.0) as usize)
-            .map(|i| {
-                let (c, r) = (v() * 0.6, 0.3 + 0.5 * v().x.abs());
-                let shape = if i % 3 == 2 {
-                    ComponentShape::Cylinder { base: c, cap: c + v() * 0.7, radius: r }
-                } else {
-                    ComponentShape::Sphere { center: c, radius: r }
-                };
-                let strength = if i % 4 == 3 { -0.5 } else { 0.6 + v().x.abs() };
-                let m = DMat3::from_cols(v() * 0.3 + DVec3::X, v() * 0.3 + DVec3::Y, v() * 0.3 + DVec3::Z);
-                Component { shape, strength, blob_from_component: DAffine3::from_mat3_translation(m, v() * 0.1) }
-            })
-            .collect();
-        let place = DAffine3::from_scale(DVec3::splat(scale)) * DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1));
-        Blob::new(place, &comps, 0.3 + 0.4 * rnd())
-    }
-
-    #[test]
-    fn left_out_lanes_are_misses() {
-        let mut rnd = uniform(41);
-        let (mut kept, mut left, mut hits, mut grazes) = (0, 0, 0, 0);
-        for scale in [1e-4, 1.0, 1e6] {
-            for _ in 0..40 {
-                let b = random_blob(&mut rnd, scale);
-                let (lo, hi) = (b.min.as_dvec3(), b.max.as_dvec3());
-                let centre = 0.5 * (lo + hi);
-                let size = (hi - lo).max_element();
-                let point = |rnd: &mut dyn FnMut() -> f64| lo + (hi - lo) * DVec3::new(rnd(), rnd(), rnd());
-                let mut rays: Vec<(Vec3, Vec3, f32)> = Vec::new();
-                for _ in 0..64 {
-                    let from = centre + (point(&mut rnd) - centre).normalize() * 3.0 * size;
-                    let d = (point(&mut rnd) - from).normalize();
-                    rays.push((from.as_vec3(), d.as_vec3(), 0.0));
-                    let ray = crate::ray::Ray::new(from.as_vec3(), d.as_vec3());
-                    let Some(t) = b.intersect(&ray, 0.0, f32::INFINITY) else { continue };
-                    // Along the tangent plane at the hit, a little outside and inside it; and
-                    // back out from the hit towards a random point.
-                    let p = ray.origin + t * ray.dir;
-                    let n = b.normal_at(p);
-                    let tangent = n.cross(d.as_vec3()).normalize_or_zero().cross(n);
-                    for e in [1e-4f32, -1e-6, 1e-8, 0.0] {
-                        let at = p + n * e * size as f32;
-                        rays.push((at - tangent * 2.0 * size as f32, tangent, 0.0));
-                    }
-                    rays.push((p, (point(&mut rnd) - p.as_dvec3()).normalize().as_vec3(), 1e-4 * size as f32));
-                }
-                for chunk in rays.chunks(8) {
-                    let lane =
-                        |f: &dyn Fn(&(Vec3, Vec3, f32)) -> Vec3| V3::<F8>::from_lanes(|i| f(&chunk[i % chunk.len()]));
-                    let packet = RayLanes::<F8>::new(lane(&|r| r.0), lane(&|r| r.1));
-                    let t_min = F8::from_fn(|i| chunk[i % chunk.len()].2);
-                    let wide = b.hit(&packet, t_min, F8::splat(MISS));
-                    // Every lane solved, over its whole interval.
-                    let all =
-                        hit_lanes_f64(&b.frame, &packet, t_min, F8::splat(MISS), |o, d, lo, hi| b.solve(o, d, lo, hi));
-                    let o = packet.o.transform_point(&b.frame.object_from_render);
-                    let d = packet.d.transform_vector(&b.frame.object_from_render);
-                    let near = may_reach(&b.reach, b.threshold as f32, o, d, t_min, F8::splat(MISS));
-                    for (i, r) in chunk.iter().enumerate() {
-                        assert_eq!(wide.0[i].to_bits(), all.0[i].to_bits(), "lane {i} of {r:?} at scale {scale}");
-                        let one = b.hit(&crate::ray::Ray::new(r.0, r.1).lanes(), r.2, MISS);
-                        assert_eq!(one.to_bits(), all.0[i].to_bits(), "{r:?} alone at scale {scale}");
-                        let left_out = !near.lane(i);
-                        (kept, left) = (kept + !left_out as u32, left + left_out as u32);
-                        hits += (all.0[i] != MISS) as u32;
-                        grazes += (all.0[i] != MISS && r.2 == 0.0 && i % 6 != 0) as u32;
-                    }
-                    // Idle lanes (t_max −inf, as shadow packets mark them) and a ray from a point
-                    // at infinity: misses both ways.
-                    let t_max = F8::from_fn(|i| if i % 2 == 1 { f32::NEG_INFINITY } else { MISS });
-                    let far = V3::<F8>::from_lanes(|i| {
-                        if i == 4 {
-                            Vec3::splat(f32::INFINITY)
-                        } else {
-                            chunk[i % chunk.len()].0
-                        }
-                    });
-                    let idle = RayLanes::<F8>::new(far, packet.d);
-                    let wide = b.hit(&idle, t_min, t_max);
-                    let all = hit_lanes_f64(&b.frame, &idle, t_min, t_max, |o, d, lo, hi| b.solve(o, d, lo, hi));
-                    assert_eq!(wide.0.map(f32::to_bits), all.0.map(f32::to_bits), "idle lanes at scale {scale}");
-                }
-            }
-        }
-        // The test does leave out lanes, and the rays do hit, graze and miss.
-        assert!(
-            left > 2_000 && kept > 2_000 && hits > 1_000 && grazes > 100,
-            "{left} left, {kept} kept, {hits} hits, {grazes}"
-        );
     }
 }
 

@@ -23,6 +23,34 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use glam::Vec3;
 
+/// Whether this CPU has AVX2, for the functions that keep a `#[target_feature(enable = "avx2")]`
+/// copy of their eight-lane code (`render::packet` and the kernels it calls out of line). The
+/// same IEEE operations give the same bits either way; AVX2 only does eight of them at once.
+#[cfg(target_arch = "x86_64")]
+#[inline]
+pub fn has_avx2() -> bool {
+    std::arch::is_x86_feature_detected!("avx2")
+}
+
+#[cfg(not(target_arch = "x86_64"))]
+#[inline]
+pub fn has_avx2() -> bool {
+    false
+}
+
+/// `f32::next_up` without branches, so that eight lanes of it vectorise (`Lane::map`): the same
+/// value for every input (NaN and +∞ stay, ±0 steps to the least subnormal, a positive number's
+/// bits go up by one, a negative number's down by one; a test compares it with `f32::next_up`).
+#[inline(always)]
+pub fn next_up(x: f32) -> f32 {
+    let b = x.to_bits();
+    let abs = b & 0x7fff_ffff;
+    let stays = abs >= 0x7f80_0000 && b != 0xff80_0000;
+    let step = if (b as i32) < 0 { b.wrapping_sub(1) } else { b.wrapping_add(1) };
+    let next = if abs == 0 { 1 } else { step };
+    f32::from_bits(if stays { b } else { next })
+}
+
 pub trait Lane:
     Copy + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self> + Neg<Output = Self>
 {
@@ -683,6 +711,16 @@ impl V3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn next_up_is_f32_next_up() {
+        let specials = [0.0, -0.0, f32::MIN_POSITIVE, -f32::MIN_POSITIVE, f32::MAX, f32::MIN, 1.0, -1.0];
+        let more = [f32::INFINITY, f32::NEG_INFINITY, f32::NAN, -f32::NAN, f32::from_bits(1), -f32::from_bits(1)];
+        let strided = (0..=u32::MAX).step_by(4099).map(f32::from_bits);
+        for x in specials.into_iter().chain(more).chain(strided) {
+            assert_eq!(next_up(x).to_bits(), x.next_up().to_bits(), "{x:e} ({:#x})", x.to_bits());
+        }
+    }
 
     #[test]
     fn select_and_masks() {

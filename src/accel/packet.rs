@@ -66,6 +66,8 @@ pub struct Frustum {
 }
 
 impl Frustum {
+    /// Inlined, so that it runs in its caller's 256-bit instructions.
+    #[inline(always)]
     pub fn new(origin: Vec3, rows: &[Ray8]) -> Frustum {
         // Lane-wise extremes first (vector min/max), then across the eight lanes.
         let (mut lo, mut hi) = (rows[0].inv, rows[0].inv);

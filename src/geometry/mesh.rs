@@ -20,7 +20,7 @@ use super::{transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::accel::aabb::Aabb;
 use crate::accel::bvh::{Bvh, BvhNode};
-use crate::lanes::{Lane, V3};
+use crate::lanes::{next_up, Lane, V3};
 use crate::ray::{Ray, RayLanes, MISS};
 
 /// `MeshData::smooth_of` for a flat face.
@@ -147,8 +147,7 @@ impl MeshData {
     #[inline(always)]
     fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
         // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
-        let finite = |v: &V3<L>, i: usize| v.x.get(i).is_finite() && v.y.get(i).is_finite() && v.z.get(i).is_finite();
-        let active = L::mask_from_fn(|i| t_min.get(i) < t_max.get(i) && finite(&ray.o, i) && finite(&ray.d, i));
+        let active = L::and(t_min.lt(t_max), L::and(finite(&ray.o), finite(&ray.d)));
         let mut faces = [u32::MAX; 8];
         if self.bvh.nodes.is_empty() || !L::any(active) {
             return (L::splat(MISS), faces);
@@ -176,7 +175,7 @@ impl MeshData {
                         // As `nearest`: up to a lane's best distance itself, where a face of
                         // lower index wins a tie.
                         let found = best.lt(L::splat(MISS));
-                        let reach = if FIRST { limit } else { L::select(found, limit.map(f32::next_up), limit) };
+                        let reach = if FIRST { limit } else { L::select(found, limit.map(next_up), limit) };
                         let t = self.triangles[f as usize].hit(ray, t_min, reach);
                         let lower = L::mask_from_fn(|i| f < faces[i]);
                         let mut hit = L::and(t.lt(reach), L::or(t.lt(limit), lower));
@@ -185,10 +184,9 @@ impl MeshData {
                             hit = L::and(hit, L::splat(self.floor).le(y));
                         }
                         best = L::select(hit, t, best);
+                        // A select per lane, not a branch.
                         for (i, face) in faces.iter_mut().enumerate().take(L::WIDTH) {
-                            if L::mask_lane(hit, i) {
-                                *face = f;
-                            }
+                            *face = if L::mask_lane(hit, i) { f } else { *face };
                         }
                         if FIRST {
                             // A lane that has hit is done: no node or face accepts -inf.
@@ -271,6 +269,14 @@ impl MeshData {
             + self.bvh.prim_order.len() * 4
             + self.source_face.len() * 4
     }
+}
+
+/// The lanes where every component of `v` is finite (`f32::is_finite` lane by lane, as compares
+/// that vectorise: `|x| < ∞` fails for ±∞ and NaN alike).
+#[inline(always)]
+fn finite<L: Lane>(v: &V3<L>) -> L::Mask {
+    let inf = L::splat(f32::INFINITY);
+    L::and(L::and(v.x.abs().lt(inf), v.y.abs().lt(inf)), v.z.abs().lt(inf))
 }
 
 /// One placed mesh: shared triangles under an object transform.

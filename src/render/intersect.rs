@@ -182,6 +182,13 @@ impl Scene {
         best.map(|hit| self.resolve(ray, hit))
     }
 
+    /// Whether `resolve` can change a hit on primitive `prim`: a CSG node or a mesh (a hit on a
+    /// mesh names its face).
+    #[inline(always)]
+    pub fn resolves(&self, prim: u32) -> bool {
+        matches!(self.prims[prim as usize].kind, ShapeKind::Csg | ShapeKind::Mesh | ShapeKind::HeightField)
+    }
+
     /// A hit on a CSG node as the hit on its leaf (whose normal and material shade it), and a
     /// hit on a mesh as the hit on its face.
     #[inline]

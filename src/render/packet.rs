@@ -14,7 +14,7 @@ use glam::Vec3;
 use crate::accel::packet::{Frustum, Ray8, RowTest};
 use crate::accel::Accel;
 use crate::geometry::Shape;
-use crate::lanes::{Lane, F8, M8, V3};
+use crate::lanes::{has_avx2, Lane, F8, M8, V3};
 use crate::ray::Ray;
 use crate::ray::MISS;
 use crate::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
@@ -132,9 +132,12 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
     // The frustum bounds rays from one origin; orthographic, cylinder 3/4 and focal-blur
     // packets (each lane its own origin) walk the tree without it.
     let o = rays[0].o.lane(0);
-    let all = |v: F8, c: f32| M8::from_fn(|i| v.0[i] == c).count() == 8;
-    let shared = rays[..rows].iter().all(|r| all(r.o.x, o.x) && all(r.o.y, o.y) && all(r.o.z, o.z));
-    let frustum = shared.then(|| Frustum::new(o, &rays[..rows]));
+    // A loop, not `Iterator::all` with a closure, which was compiled out of line without AVX2.
+    let mut shared = true;
+    for r in &rays[..rows] {
+        shared &= M8::from_fn(|i| r.o.x.0[i] == o.x && r.o.y.0[i] == o.y && r.o.z.0[i] == o.z).count() == 8;
+    }
+    let frustum = if shared { Some(Frustum::new(o, &rays[..rows])) } else { None };
     let frustum = frustum.as_ref();
     intersect_rows(
         scene,
@@ -147,10 +150,14 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
     );
     if !scene.csg.is_empty() || !scene.meshes.is_empty() {
         // The packet's search named each CSG hit's leaf and each mesh hit's face; a leaf that is
-        // a mesh learns its face here, one ray at a time (`Scene::resolve`).
+        // a mesh learns its face here, one ray at a time (`Scene::resolve`). Other leaves need
+        // nothing: the call was asked of every hit (3 % of a CSG scene's frame).
         for r in 0..rows {
             for i in 0..lanes {
-                if let Some(shape @ HitShape::Prim(_)) = hit_shape(ids[r][i], faces[r][i]) {
+                if let Some(shape @ HitShape::Prim(prim)) = hit_shape(ids[r][i], faces[r][i]) {
+                    if !scene.resolves(prim) {
+                        continue;
+                    }
                     match scene.resolve(&lane_ray(&rays[r], i), Hit { t: t[r].0[i], shape }).shape {
                         HitShape::Prim(leaf) => ids[r][i] = leaf,
                         HitShape::Face { prim, face } => (ids[r][i], faces[r][i]) = (prim, face),
@@ -506,16 +513,6 @@ fn shadow_setup_generic(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: b
         out.active[r] = active;
         out.lit[r] = lit;
     }
-}
-
-#[cfg(target_arch = "x86_64")]
-fn has_avx2() -> bool {
-    std::arch::is_x86_feature_detected!("avx2")
-}
-
-#[cfg(not(target_arch = "x86_64"))]
-fn has_avx2() -> bool {
-    false
 }
 
 /// Nearest hits of up to eight rows of rays: planes, the unbounded primitives, then the BVH.

@@ -47,7 +47,10 @@ use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
 use crate::geometry::triangle::Triangle;
 use crate::scene::atmosphere::Atmosphere;
-use crate::scene::csg::{has_span, is_unbounded, ChildBounds, CsgChild, CsgNode, CsgRule, CsgTarget, EVERYWHERE};
+use crate::scene::csg::{
+    group_children, has_span, is_unbounded, ChildBounds, CsgChild, CsgGroup, CsgNode, CsgRule, CsgTarget, EVERYWHERE,
+    GROUPED_FROM,
+};
 pub use crate::scene::light::Light;
 use crate::scene::material::Material;
 use crate::scene::place::RenderShape;
@@ -131,6 +134,9 @@ pub struct Scene {
     pub first_leaf: u32,
     pub csg: Vec<CsgNode>,
     pub csg_children: Vec<CsgChild>,
+    /// Groups of the children of nodes with many (`CsgNode::first_group`), and their members.
+    pub csg_groups: Vec<CsgGroup>,
+    pub csg_group_members: Vec<u32>,
     /// Planes inside CSG nodes, as half-spaces (`ShapeKind::Plane` primitives index this).
     pub half_spaces: Vec<Plane>,
     pub materials: Vec<Material>,
@@ -189,6 +195,8 @@ impl Scene {
             first_leaf: 0,
             csg: Vec::new(),
             csg_children: Vec::new(),
+            csg_groups: Vec::new(),
+            csg_group_members: Vec::new(),
             half_spaces: Vec::new(),
             unbounded: 0..0,
             materials: Vec::with_capacity(desc.objects.len()),
@@ -357,6 +365,8 @@ impl Scene {
                         min,
                         max,
                         spans: false,
+                        first_group: 0,
+                        groups: 0,
                     });
                     let node = CsgTarget::Node(self.csg.len() as u32 - 1);
                     return (node, ChildBounds::of_leaf(surface, object.inverse));
@@ -415,6 +425,14 @@ impl Scene {
         let spans = kids.iter().all(|(t, _)| matches!(t, CsgTarget::Leaf(l) if has_span(leaves[*l as usize].kind)));
         let first = self.csg_children.len() as u32;
         self.csg_children.extend(kids.iter().zip(&bounds).map(|(&(t, inv), b)| CsgChild::new(t, inv, b)));
+        let first_group = self.csg_groups.len() as u32;
+        if rule == CsgRule::All && kids.len() > GROUPED_FROM {
+            for (bounds, members) in group_children(&self.csg_children[first as usize..]) {
+                let first = self.csg_group_members.len() as u32;
+                self.csg_group_members.extend(&members);
+                self.csg_groups.push(CsgGroup { bounds, first, count: members.len() as u32 });
+            }
+        }
         self.csg.push(CsgNode {
             rule,
             first,
@@ -423,6 +441,8 @@ impl Scene {
             min: b.surface.min,
             max: b.surface.max,
             spans,
+            first_group,
+            groups: self.csg_groups.len() as u32 - first_group,
         });
         (CsgTarget::Node(self.csg.len() as u32 - 1), b)
     }

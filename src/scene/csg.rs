@@ -39,6 +39,82 @@ pub struct CsgNode {
     /// Every child is a leaf of a kind with a `span` (`has_span`): the queries may keep each
     /// child's crossings instead of searching it again.
     pub spans: bool,
+    /// The node's groups of children (`CsgGroup`, `Scene::csg_groups[first_group..][..groups]`);
+    /// none for a node of few children, whose boxes are met one by one.
+    pub first_group: u32,
+    pub groups: u32,
+}
+
+/// Children of one node whose boxes lie near each other, and a box around all their boxes
+/// (surface and solid): a ray that misses it misses each of theirs, so the query culls them
+/// together before it meets any one (the node's children in a two-level tree).
+#[derive(Clone, Copy, Debug)]
+pub struct CsgGroup {
+    pub bounds: Aabb,
+    /// `Scene::csg_group_members[first..first + count]`: child indices within the node.
+    pub first: u32,
+    pub count: u32,
+}
+
+/// Nodes of more children than this are grouped (`group_children`).
+pub const GROUPED_FROM: usize = 16;
+/// Children per group at most.
+const GROUP_SIZE: usize = 8;
+
+/// `kids` split into groups of at most `GROUP_SIZE` by their boxes' centres, each time halved at
+/// the median along the axis where the centres spread most, so a group's box stays small. Each
+/// group with its box (the union of its members' surface and solid boxes), members in index
+/// order.
+pub fn group_children(kids: &[CsgChild]) -> Vec<(Aabb, Vec<u32>)> {
+    fn split(kids: &[CsgChild], members: &mut [u32], out: &mut Vec<(Aabb, Vec<u32>)>) {
+        let centre = |j: u32| {
+            let b = &kids[j as usize].surface;
+            (b.min + b.max) * 0.5
+        };
+        if members.len() <= GROUP_SIZE {
+            let mut bounds = Aabb::EMPTY;
+            for &j in members.iter() {
+                bounds.grow(&kids[j as usize].surface);
+                bounds.grow(&kids[j as usize].solid);
+            }
+            let mut members = members.to_vec();
+            members.sort_unstable();
+            out.push((bounds, members));
+            return;
+        }
+        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        for &j in members.iter() {
+            let c = centre(j);
+            // Unbounded children (an infinite centre) sort last on every axis.
+            if c.is_finite() {
+                (lo, hi) = (lo.min(c), hi.max(c));
+            }
+        }
+        let spread = hi - lo;
+        let axis = if spread.x >= spread.y && spread.x >= spread.z {
+            0
+        } else if spread.y >= spread.z {
+            1
+        } else {
+            2
+        };
+        let key = |j: &u32| {
+            let c = centre(*j)[axis];
+            if c.is_nan() {
+                f32::INFINITY
+            } else {
+                c
+            }
+        };
+        members.sort_by(|a, b| key(a).total_cmp(&key(b)).then(a.cmp(b)));
+        let (left, right) = members.split_at_mut(members.len() / 2);
+        split(kids, left, out);
+        split(kids, right, out);
+    }
+    let mut members: Vec<u32> = (0..kids.len() as u32).collect();
+    let mut out = Vec::new();
+    split(kids, &mut members, &mut out);
+    out
 }
 
 impl CsgNode {
@@ -211,5 +287,31 @@ mod tests {
         assert_eq!((b.surface.min, b.surface.max), (Vec3::splat(0.0), Vec3::splat(2.0)));
         let plane = [ChildBounds::of_leaf(EVERYWHERE, false)];
         assert!(is_unbounded(&ChildBounds::of_node(CsgRule::All, &plane, 1, false).surface));
+    }
+
+    #[test]
+    fn groups_hold_each_child_once_in_a_box_around_theirs() {
+        let kids: Vec<CsgChild> = (0..37)
+            .map(|k| {
+                let c = Vec3::new((k * 7 % 11) as f32, (k * 3 % 5) as f32, k as f32 * 0.5);
+                let b = Aabb::new(c - 0.4, c + 0.4);
+                let bounds = ChildBounds::of_leaf(b, k % 4 == 0);
+                CsgChild::new(CsgTarget::Leaf(k), k % 2 == 0, &bounds)
+            })
+            .collect();
+        let groups = group_children(&kids);
+        let mut seen = vec![0; kids.len()];
+        for (bounds, members) in &groups {
+            assert!(!members.is_empty() && members.len() <= GROUP_SIZE);
+            assert!(members.windows(2).all(|w| w[0] < w[1]), "in index order");
+            for &j in members {
+                seen[j as usize] += 1;
+                for b in [&kids[j as usize].surface, &kids[j as usize].solid] {
+                    assert!(bounds.min.cmple(b.min).all() && bounds.max.cmpge(b.max).all());
+                }
+            }
+        }
+        assert!(seen.iter().all(|&n| n == 1), "{seen:?}");
+        assert_eq!(groups.len(), 8, "37 children halved down to groups of 8 or fewer");
     }
 }

@@ -32,7 +32,7 @@ impl Scene {
         // code would run in the caller's SSE; this copy runs it in 256-bit instructions. AVX2
         // without FMA computes the same bits (as `render::packet`).
         #[cfg(target_arch = "x86_64")]
-        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+        if L::WIDTH == 8 && crate::lanes::has_avx2() {
             // SAFETY: the CPU supports AVX2, checked just above.
             return unsafe { self.hit_csg_avx2(node, ray, t_min, t_max) };
         }
@@ -81,16 +81,28 @@ impl Scene {
         let (t_min, t_max) = within_box(n.min, n.max, ray, t_min, t_max);
         let mut crossed = Flags::all();
         let mut asked = Flags::all();
-        for (j, c) in kids.iter().enumerate().take(Flags::CAPACITY) {
-            let meets_surface = meets(&c.surface, ray, t_min, t_max);
-            if !meets_surface {
-                crossed.clear(j);
-                if !c.inverse && c.solid == c.surface {
-                    return (miss, L::splat(0.0));
+        if n.groups > 0 && kids.len() <= Flags::CAPACITY {
+            // A group whose box the window misses: each member's boxes are missed too.
+            for g in &self.csg_groups[n.first_group as usize..(n.first_group + n.groups) as usize] {
+                let members = &self.csg_group_members[g.first as usize..(g.first + g.count) as usize];
+                let met = meets(&g.bounds, ray, t_min, t_max);
+                for &j in members {
+                    let j = j as usize;
+                    let cut = if met {
+                        cull_child(&kids[j], j, ray, t_min, t_max, &mut crossed, &mut asked)
+                    } else {
+                        missed_child(&kids[j], j, &mut crossed, &mut asked)
+                    };
+                    if cut {
+                        return (miss, L::splat(0.0));
+                    }
                 }
             }
-            if c.inverse && !(if c.solid == c.surface { meets_surface } else { meets(&c.solid, ray, t_min, t_max) }) {
-                asked.clear(j);
+        } else {
+            for (j, c) in kids.iter().enumerate().take(Flags::CAPACITY) {
+                if cull_child(c, j, ray, t_min, t_max, &mut crossed, &mut asked) {
+                    return (miss, L::splat(0.0));
+                }
             }
         }
         let window = Window { t_min, t_max, crossed, asked };
@@ -302,6 +314,42 @@ fn inside_all_but<L: Lane>(
         }
     }
     m
+}
+
+/// Child `j`'s part of `hit_all`'s culling: a child whose surface box the window misses has no
+/// crossing to search (`crossed`); a subtracted child whose solid box it misses contains every
+/// point of it (`asked`). True where a kept closed child is missed, so the node is.
+#[inline(always)]
+fn cull_child<L: Lane>(
+    c: &CsgChild,
+    j: usize,
+    ray: &RayLanes<L>,
+    t_min: L,
+    t_max: L,
+    crossed: &mut Flags,
+    asked: &mut Flags,
+) -> bool {
+    let meets_surface = meets(&c.surface, ray, t_min, t_max);
+    if !meets_surface {
+        crossed.clear(j);
+        if !c.inverse && c.solid == c.surface {
+            return true;
+        }
+    }
+    if c.inverse && !(if c.solid == c.surface { meets_surface } else { meets(&c.solid, ray, t_min, t_max) }) {
+        asked.clear(j);
+    }
+    false
+}
+
+/// `cull_child` for a child of a group whose box the window misses: both its boxes are missed.
+#[inline(always)]
+fn missed_child(c: &CsgChild, j: usize, crossed: &mut Flags, asked: &mut Flags) -> bool {
+    crossed.clear(j);
+    if c.inverse {
+        asked.clear(j);
+    }
+    !c.inverse && c.solid == c.surface
 }
 
 /// Whether any lane's window `(t_min, t_max)` meets the box `b` (padded in `t` as

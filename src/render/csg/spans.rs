@@ -428,4 +428,75 @@ mod tests {
         let direct = DIRECT.with(Cell::get) - before;
         assert!(rays > 9000 && hits > 1000 && direct > 3000, "{rays} rays, {hits} hits, {direct} answered directly");
     }
+
+    /// A node of many children culls them by groups (`CsgGroup`) before one by one: the same
+    /// answers, bit for bit, as the same node culling one by one, for single rays, packets and
+    /// f64, from afar and cutting through.
+    #[test]
+    fn grouped_children_cull_as_one_by_one() {
+        // `scene`'s difference subtracts its overlapping children, leaving nothing: a box dented
+        // by small spheres on and around its top instead.
+        let dented = |r: &mut Rng| {
+            let mut kids =
+                vec![object(ShapeDesc::Box { corner1: DVec3::splat(-1.0), corner2: DVec3::ONE }, DMat4::IDENTITY)];
+            for _ in 0..40 {
+                let c = r.v(-1.2, 1.2) * Vec3::new(1.0, 0.3, 1.0) + Vec3::Y;
+                kids.push(object(
+                    ShapeDesc::Sphere { center: c.as_dvec3(), radius: r.f(0.1, 0.3) as f64 },
+                    DMat4::IDENTITY,
+                ));
+            }
+            let node = object(ShapeDesc::Csg { op: CsgOp::Difference, children: kids }, DMat4::IDENTITY);
+            let desc = SceneDesc { objects: vec![node], ..SceneDesc::default() };
+            Scene::build(&desc, DVec3::ZERO, AccelKind::Bvh)
+        };
+        // (`clipped_by` is an intersection whose first child alone has surfaces; `scene`'s, of
+        // 64 children, holds nothing.)
+        for (case, op) in [CsgOp::Intersection, CsgOp::Difference].into_iter().enumerate() {
+            let seed = 0x6A0 + case as u64;
+            let build = |r: &mut Rng| if op == CsgOp::Difference { dented(r) } else { scene(r, op, 64) };
+            let grouped = build(&mut Rng(seed));
+            let mut plain = build(&mut Rng(seed));
+            assert!(grouped.csg.iter().any(|n| n.groups > 1), "{op:?}: grouped");
+            for n in &mut plain.csg {
+                n.groups = 0;
+            }
+            let prim = grouped.prims.iter().find(|p| p.kind == ShapeKind::Csg).expect("a node");
+            let r = &mut Rng(seed ^ 0x55);
+            let (mut hits, mut rays) = (0, 0);
+            for k in 0..600 {
+                let origin = r.v(-1.0, 1.0).normalize() * r.f(1.0, 9.0);
+                let target = if k % 3 == 0 { r.v(-3.0, 3.0) } else { r.v(-1.0, 1.0) };
+                let ray = Ray::new(origin, (target - origin).normalize());
+                let (lo, hi) = if k % 7 == 0 { (r.f(0.0, 4.0), r.f(2.0, 9.0)) } else { (0.0, f32::INFINITY) };
+                for direct in [false, true] {
+                    let want = plain.hit_node(prim.index, &ray.lanes(), lo, hi, direct);
+                    let got = grouped.hit_node(prim.index, &ray.lanes(), lo, hi, direct);
+                    assert_eq!(
+                        (got.0.to_bits(), got.1.to_bits()),
+                        (want.0.to_bits(), want.1.to_bits()),
+                        "{op:?} {ray:?}"
+                    );
+                    let want = plain.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, direct);
+                    let got = grouped.hit_node(prim.index, &ray.lanes_f64(), lo as f64, hi as f64, direct);
+                    assert_eq!((got.0.to_bits(), got.1.to_bits()), (want.0.to_bits(), want.1.to_bits()), "f64 {ray:?}");
+                }
+                let packet = Ray8::from_fn(|i| {
+                    let o = ray.origin + Vec3::splat(i as f32 * 0.03);
+                    (o, ray.dir, ray.inv_dir)
+                });
+                let want = plain.hit_csg(prim.index, &packet, F8::splat(lo), F8::splat(hi));
+                let got = grouped.hit_csg(prim.index, &packet, F8::splat(lo), F8::splat(hi));
+                for i in 0..8 {
+                    assert_eq!(
+                        (got.0 .0[i].to_bits(), got.1 .0[i].to_bits()),
+                        (want.0 .0[i].to_bits(), want.1 .0[i].to_bits())
+                    );
+                }
+                rays += 1;
+                hits += (want.0 .0[0] != MISS) as usize;
+            }
+            assert!(hits > 50 && hits < rays, "{op:?}: {hits} of {rays} rays hit");
+        }
+    }
 }

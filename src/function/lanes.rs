@@ -30,7 +30,7 @@ impl Program {
             });
         }
         #[cfg(target_arch = "x86_64")]
-        if N == 8 && std::arch::is_x86_feature_detected!("avx2") {
+        if N >= 4 && std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2, checked just above.
             return unsafe { self.eval_lanes_avx2(args) };
         }

@@ -19,10 +19,10 @@ use super::Node;
 /// Registers kept on the stack while running; a deeper function uses a heap buffer.
 const STACK_REGISTERS: usize = 48;
 
-type Reg = u16;
+pub(super) type Reg = u16;
 
 #[derive(Clone, Debug, PartialEq)]
-enum Instr {
+pub(super) enum Instr {
     Const {
         d: Reg,
         v: f64,
@@ -75,12 +75,14 @@ enum Instr {
 /// A compiled function.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Program {
-    code: Vec<Instr>,
+    pub(super) code: Vec<Instr>,
     /// Registers needed, parameters included.
-    registers: usize,
-    params: usize,
+    pub(super) registers: usize,
+    pub(super) params: usize,
     /// Where the result is left.
-    result: Reg,
+    pub(super) result: Reg,
+    /// Whether the code branches (a condition): then lanes cannot share one pass.
+    pub(super) branches: bool,
 }
 
 struct Compiler {
@@ -185,7 +187,8 @@ impl Program {
         let mut c = Compiler { code: Vec::new(), next: params, most: params };
         let env: Vec<Reg> = (0..params as Reg).collect();
         let result = c.node(&body, &env);
-        Program { code: c.code, registers: c.most.max(1), params, result }
+        let branches = c.code.iter().any(|i| matches!(i, Instr::Jump { .. } | Instr::JumpIfZero { .. }));
+        Program { code: c.code, registers: c.most.max(1), params, result, branches }
     }
 
     /// Instructions in the compiled code (for tests and statistics).

@@ -10,9 +10,11 @@
 
 mod compile;
 pub mod internal;
+mod lanes;
 mod ops;
 pub mod shade;
 pub mod spline;
+mod trig;
 
 use std::rc::Rc;
 use std::sync::Arc;

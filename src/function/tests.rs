@@ -251,3 +251,46 @@ fn internal_functions_give_pov_rays_values() {
         }
     }
 }
+
+/// Eight lanes give each lane's bits alone (`eval_lanes::<1>`), and agree with `eval` but for
+/// `sin` and `cos` (trig's, within a few ulp of the library's, which then carry through
+/// the rest of the tree): random trees, with and without conditions.
+#[test]
+fn lanes_give_each_lane_alone_and_the_scalar_value() {
+    let inner = Rc::new(Function::new(vec!["a".into(), "b".into()], Node::binary(Binary::Sub, p(0), p(1))).unwrap());
+    let mut r = Rng(11);
+    for case in 0..2000 {
+        let f = random_tree(&mut r, 6, &inner);
+        let prog = Program::compile(&f, 3);
+        let args: [[f64; 8]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| r.float()));
+        let eight = prog.eval_lanes(&args);
+        for i in 0..8 {
+            let one = prog.eval_lanes(&[[args[0][i]], [args[1][i]], [args[2][i]]])[0];
+            assert!(eight[i].to_bits() == one.to_bits() || (eight[i].is_nan() && one.is_nan()), "case {case}");
+        }
+    }
+    // Without trig the lanes are `eval`'s bits; with it, close.
+    let trig = Node::binary(
+        Binary::Add,
+        Node::unary(Unary::Sin, Node::binary(Binary::Mul, c(20.0), p(0))),
+        Node::binary(
+            Binary::Mul,
+            Node::unary(Unary::Cos, p(1)),
+            Node::unary(Unary::Sqrt, Node::unary(Unary::Abs, p(2))),
+        ),
+    );
+    let plain = Node::binary(Binary::Div, Node::binary(Binary::Sub, p(0), p(1)), Node::unary(Unary::Abs, p(2)));
+    for (f, exact) in [(trig, false), (plain, true)] {
+        let prog = Program::compile(&f, 3);
+        for _ in 0..1000 {
+            let q = [r.float(), r.float(), r.float()];
+            let got = prog.eval_lanes(&[[q[0]; 4], [q[1]; 4], [q[2]; 4]])[3];
+            let want = prog.eval(&q);
+            if exact {
+                assert_eq!(got.to_bits(), want.to_bits(), "{q:?}");
+            } else {
+                assert!((got - want).abs() <= 1e-14, "{q:?}: {got} vs {want}");
+            }
+        }
+    }
+}

@@ -7,25 +7,19 @@
 //! cannot change faster than `max_gradient` per unit of distance, the promise the scene
 //! makes), and is skipped; any other is halved, nearer half first, down to `accuracy`. A
 //! crossing found is then narrowed by secant steps until the lane's rounding of it is decided,
-//! so shading and shadow rays start on the surface. The normal is the function's gradient by central differences.
+//! so shading and shadow rays start on the surface. The eight lanes of a packet search side by
+//! side (`isosurface_search`), each step's samples evaluated in one pass of the function's code
+//! (`Program::eval_lanes`). The normal is the function's gradient by central differences.
 
 use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::{affine_f32, transformed_bounds};
+use super::isosurface_search::Search;
+use super::{affine_f32, transformed_bounds, Shape};
 use crate::desc::{Container, IsoParams};
 use crate::function::Program;
-
-/// Most function evaluations one ray's search may take: a surface that grazes the threshold
-/// for a long way (a plane at the threshold) would otherwise be halved without end.
-const MAX_EVALUATIONS: usize = 4096;
-
-/// Entries of the search's interval stack.
-const STACK: usize = 80;
-
-/// Most steps of `refine`: its secant steps shrink a bracket to the lane's rounding in a few
-/// (the bound only stops a function that is not continuous there).
-const REFINE_STEPS: usize = 64;
+use crate::lanes::{Lane, V3};
+use crate::ray::RayLanes;
 
 #[derive(Clone, Debug)]
 pub struct Isosurface {
@@ -39,7 +33,7 @@ pub struct Isosurface {
 
 impl Container {
     /// The span of `t` where `o + t·d` lies inside, if the line meets it.
-    fn span(&self, o: DVec3, d: DVec3) -> Option<(f64, f64)> {
+    pub(crate) fn span(&self, o: DVec3, d: DVec3) -> Option<(f64, f64)> {
         match *self {
             Container::Box { min, max } => {
                 let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -129,86 +123,38 @@ impl Isosurface {
         self.function.eval(&[q.x, q.y, q.z]) - self.params.threshold
     }
 
-    /// The nearest surface point on `o + t·d` with `t` in `(t_min, t_max)`.
-    pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
-        let (enter, exit) = self.container.span(o, d)?;
-        let len = d.length();
-        if len == 0.0 || !(len.is_finite()) {
-            return None;
-        }
-        let (a, b) = (enter.max(t_min), exit.min(t_max));
-        // NaN ends compare false: no span.
-        if a.partial_cmp(&b) != Some(std::cmp::Ordering::Less) {
-            return None;
-        }
-        let g = |t: f64| self.g(o + t * d);
-        let ga = g(a);
-        // Entering the container where the function is inside: its wall is the surface.
-        if !self.params.open && enter > t_min && ga < 0.0 {
-            return Some(enter);
-        }
-        let step = self.params.accuracy / len;
-        // From the ray's own start, a crossing closer than this is the surface it left.
-        let skip = if enter > t_min { a } else { a + 0.5 * step };
-        let gb = g(b);
-        if let Some(t) = self.first_crossing(&g, (a, ga), (b, gb), len, step, skip, round) {
-            return Some(t);
-        }
-        // Leaving the container from inside the function: its wall again.
-        (!self.params.open && exit < t_max && gb < 0.0 && exit > skip).then_some(exit)
-    }
-
-    /// The first sign change of `g` in `[a, b]` past `skip`, refined.
-    fn first_crossing(
-        &self,
-        g: &impl Fn(f64) -> f64,
-        a: (f64, f64),
-        b: (f64, f64),
-        len: f64,
-        step: f64,
-        skip: f64,
-        round: fn(f64) -> f64,
-    ) -> Option<f64> {
-        let lipschitz = self.params.max_gradient * len;
-        // Nearer halves on top; each split adds one entry, so the stack is as deep as the
-        // halving goes (53 halvings exhaust an f64 interval).
-        let mut stack = [(a, b); STACK];
-        let mut n = 1;
-        let mut evaluations = 2;
-        while n > 0 {
-            n -= 1;
-            let ((a, ga), (b, gb)) = stack[n];
-            if b <= skip {
-                continue;
-            }
-            let crosses = (ga < 0.0) != (gb < 0.0);
-            if !crosses && ga.abs() + gb.abs() > lipschitz * (b - a) {
-                continue;
-            }
-            if b - a <= step {
-                if crosses {
-                    let t = refine(g, (a, ga), (b, gb), round);
-                    if t > skip {
-                        return Some(t);
-                    }
+    /// The nearest hit of each lane: the lanes' searches (`Search`) advanced side by side,
+    /// the function evaluated for all of them in one pass per step.
+    #[inline(always)]
+    fn hit_n<L: Lane, const N: usize>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        let v = |v: V3<L>, i: usize| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+        let mut lanes: [Search; N] = std::array::from_fn(|i| {
+            let (lo, hi) = if i < L::WIDTH { (t_min.get_f64(i), t_max.get_f64(i)) } else { (0.0, f64::NAN) };
+            Search::new(&self.container, &self.params, L::round_f64, v(o, i), v(d, i), lo, hi)
+        });
+        loop {
+            let mut args = [[0.0; N]; 3];
+            let mut any = false;
+            for (i, s) in lanes.iter().enumerate() {
+                if let Some(t) = s.want() {
+                    let q = s.o + t * s.d;
+                    (args[0][i], args[1][i], args[2][i]) = (q.x, q.y, q.z);
+                    any = true;
                 }
-                continue;
             }
-            if evaluations >= MAX_EVALUATIONS || n + 2 > STACK {
-                // Out of budget: answer a bracketed crossing coarsely, else give up.
-                if crosses {
-                    return Some(refine(g, (a, ga), (b, gb), round));
+            if !any {
+                break;
+            }
+            let g = self.function.eval_lanes(&args);
+            for (s, g) in lanes.iter_mut().zip(g) {
+                if s.want().is_some() {
+                    s.tell(g - self.params.threshold);
                 }
-                continue;
             }
-            let m = 0.5 * (a + b);
-            let gm = g(m);
-            evaluations += 1;
-            stack[n] = ((m, gm), (b, gb));
-            stack[n + 1] = ((a, ga), (m, gm));
-            n += 2;
         }
-        None
+        L::from_fn_f64(|i| lanes[i].answer())
     }
 
     fn normal_object(&self, q: DVec3) -> DVec3 {
@@ -228,49 +174,24 @@ impl Isosurface {
     }
 }
 
-/// A bracketed crossing, narrowed until the lane's rounding of the bracket's ends agrees (to
-/// adjacent f64 numbers for f64 lanes), then the secant through the bracket: the rounded answer
-/// is the root's, whichever point of the bracket it is. The bracket is cut at the secant
-/// (Illinois' variant: an end kept twice has its value halved), not at its middle.
-fn refine(
-    g: &impl Fn(f64) -> f64,
-    (mut a, mut ga): (f64, f64),
-    (mut b, mut gb): (f64, f64),
-    round: fn(f64) -> f64,
-) -> f64 {
-    // Which end the last cut replaced: -1 a, 1 b.
-    let mut last = 0;
-    for _ in 0..REFINE_STEPS {
-        let m = 0.5 * (a + b);
-        if round(a) == round(b) || m <= a || m >= b {
-            break;
-        }
-        let w = b - a;
-        // NaN fails the test: then halve.
-        let mut x = (a + w * (ga / (ga - gb))).clamp(a + w / 64.0, b - w / 64.0);
-        if !(x > a && x < b) {
-            x = m;
-        }
-        let gx = g(x);
-        if (gx < 0.0) == (ga < 0.0) {
-            (a, ga) = (x, gx);
-            if last == -1 {
-                gb *= 0.5;
-            }
-            last = -1;
+impl Shape for Isosurface {
+    #[inline(never)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        if L::WIDTH == 1 {
+            self.hit_n::<L, 1>(ray, t_min, t_max)
         } else {
-            (b, gb) = (x, gx);
-            if last == 1 {
-                ga *= 0.5;
-            }
-            last = 1;
+            self.hit_n::<L, 8>(ray, t_min, t_max)
         }
     }
-    let t = if ga != gb { a + (b - a) * ga / (ga - gb) } else { 0.5 * (a + b) };
-    t.clamp(a, b)
-}
 
-shape_solved_in_f64!(Isosurface, normal: normal_object, inside: inside_object, solve: rounded);
+    fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_object(q))
+    }
+
+    fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
+        super::inside_lanes_f64(&self.frame, p, |q| self.inside_object(q))
+    }
+}
 
 #[cfg(test)]
 mod tests {

@@ -66,6 +66,7 @@ pub mod disc;
 mod halley;
 pub mod height_field;
 pub mod isosurface;
+mod isosurface_search;
 pub mod julia;
 mod julia_cells;
 pub mod lathe;

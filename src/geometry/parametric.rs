@@ -132,13 +132,16 @@ impl Parametric {
         (du, dv)
     }
 
-    /// ∂P/∂u and ∂P/∂v by forward differences from `p = P(uv)`: two evaluations, not four,
-    /// for Newton's method, which only needs them roughly.
-    fn forward_tangents(&self, uv: DVec2, p: DVec3) -> (DVec3, DVec3) {
+    /// `P(uv)` with ∂P/∂u and ∂P/∂v by forward differences from it, for Newton's method,
+    /// which only needs them roughly: the three points in one pass of each function's code
+    /// (`Program::eval_lanes`, a fourth lane idle).
+    fn point_and_tangents(&self, uv: DVec2) -> (DVec3, DVec3, DVec3) {
         let h = (self.uv.hi - self.uv.lo).abs() * 1e-7;
-        let du = (self.point(uv + DVec2::new(h.x, 0.0)) - p) / h.x;
-        let dv = (self.point(uv + DVec2::new(0.0, h.y)) - p) / h.y;
-        (du, dv)
+        let args = [[uv.x, uv.x + h.x, uv.x, uv.x], [uv.y, uv.y, uv.y + h.y, uv.y], [0.0; 4]];
+        let [x, y, z] = [0, 1, 2].map(|k| self.functions[k].eval_lanes(&args));
+        let at = |i: usize| DVec3::new(x[i], y[i], z[i]);
+        let p = at(0);
+        (p, (at(1) - p) / h.x, (at(2) - p) / h.y)
     }
 
     fn in_domain(&self, uv: DVec2) -> bool {
@@ -226,9 +229,8 @@ impl Parametric {
         let start = uv;
         let reach = ((self.uv.hi - self.uv.lo) / GRID as f64).abs() * (0.5 + wander);
         for _ in 0..NEWTON_STEPS {
-            let p = self.point(uv);
+            let (p, du, dv) = self.point_and_tangents(uv);
             let r = p - (o + t * d);
-            let (du, dv) = self.forward_tangents(uv, p);
             // [du dv −d]·(Δu, Δv, Δt) = −r, by Cramer's rule.
             let m = glam::DMat3::from_cols(du, dv, -d);
             let det = m.determinant();

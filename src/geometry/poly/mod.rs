@@ -18,16 +18,18 @@
 use glam::{Affine3A, Vec3};
 
 mod bounds;
+mod expand;
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
 use super::quartic::{first_root, Ill};
 use super::roots::{root_bound, roots_in, smallest_root_by, Solver, MAX_DEGREE};
-use super::wide::hit_wide;
+use super::wide::{hit_wide, lanes_f64, W, WV};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::RayLanes;
 use bounds::quadric_box;
+use expand::{along_ray, CentredLanes};
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
 /// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
@@ -119,67 +121,53 @@ impl Poly {
         g
     }
 
-    /// The polynomial in `s` (lowest degree first) of the surface along `p + s·u`, with a
-    /// table of powers for orders below `N` (`N` > `self.order`).
-    #[inline]
-    fn along_ray<const N: usize>(&self, p: [f64; 3], u: [f64; 3]) -> [f64; MAX_DEGREE + 1] {
-        let n = self.order;
-        debug_assert!(n < N && N <= MAX_DEGREE + 1);
-        // powers[axis][e][m]: coefficient of s^m in (p + s·u)^e, lowest degree first.
-        let mut powers = [[[0.0; N]; N]; 3];
-        for axis in 0..3 {
-            powers[axis][0][0] = 1.0;
-            for e in 1..=n {
-                for m in 0..=e {
-                    let keep = if m < e { powers[axis][e - 1][m] * p[axis] } else { 0.0 };
-                    let step = if m > 0 { powers[axis][e - 1][m - 1] * u[axis] } else { 0.0 };
-                    powers[axis][e][m] = keep + step;
-                }
-            }
-        }
-        let mut poly = [0.0; MAX_DEGREE + 1];
-        let mut xy = [0.0; MAX_DEGREE + 1];
-        for &(c, [i, j, k]) in &self.terms {
-            let (i, j, k) = (i as usize, j as usize, k as usize);
-            xy[..=i + j].fill(0.0);
-            for a in 0..=i {
-                for b in 0..=j {
-                    xy[a + b] += powers[0][i][a] * powers[1][j][b];
-                }
-            }
-            for a in 0..=i + j {
-                for b in 0..=k {
-                    poly[a + b] += c * xy[a] * powers[2][k][b];
-                }
-            }
-        }
-        poly
-    }
-
     /// `solve` for the tests: a quadric's general path, the reference its closed form is held to.
     #[cfg(test)]
     pub(crate) fn solve_reference(&self, o: [f64; 3], d: [f64; 3], t_min: f64, t_max: f64) -> Option<f64> {
         self.solve(o, d, t_min, t_max)
     }
 
-    /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the surface.
+    /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the surface:
+    /// one lane of the packet path (`hit`), for the tests.
+    #[cfg(test)]
     fn solve(&self, o: [f64; 3], d: [f64; 3], t_min: f64, t_max: f64) -> Option<f64> {
+        let v = |a: [f64; 3]| WV { x: W([a[0]]), y: W([a[1]]), z: W([a[2]]) };
+        let ray = CentredLanes::<1>::new(v(o), v(d));
+        if !ray.valid[0] {
+            return None;
+        }
+        let mut c = [0.0; MAX_DEGREE + 1];
+        let along = self.along::<1>(&ray);
+        for (slot, w) in c.iter_mut().zip(&along[..=self.order]) {
+            *slot = w.0[0];
+        }
+        self.solve_along(&c, ray.t_c.0[0], ray.len.0[0], t_min, t_max)
+    }
+
+    /// The polynomial along each lane's centred ray (lowest degree first, `[..=order]`), the
+    /// table of powers sized for the order.
+    #[inline(always)]
+    fn along<const N: usize>(&self, ray: &CentredLanes<N>) -> [W<N>; MAX_DEGREE + 1] {
+        let (n, t) = (self.order, &self.terms[..]);
+        let mut out = [W::splat(0.0); MAX_DEGREE + 1];
+        match n {
+            0..=2 => out[..3].copy_from_slice(&along_ray::<N, 3, 6>(t, n, ray.p, ray.u)),
+            3..=4 => out[..5].copy_from_slice(&along_ray::<N, 5, 15>(t, n, ray.p, ray.u)),
+            5..=6 => out[..7].copy_from_slice(&along_ray::<N, 7, 28>(t, n, ray.p, ray.u)),
+            7..=8 => out[..9].copy_from_slice(&along_ray::<N, 9, 45>(t, n, ray.p, ray.u)),
+            _ => out = along_ray::<N, { MAX_DEGREE + 1 }, 153>(t, n, ray.p, ray.u),
+        }
+        out
+    }
+
+    /// The nearest `t` in `(t_min, t_max)` where the polynomial `poly` along the centred ray
+    /// (lowest degree first; `t = t_c + s / len`) is zero.
+    fn solve_along(&self, poly: &[f64; MAX_DEGREE + 1], t_c: f64, len: f64, t_min: f64, t_max: f64) -> Option<f64> {
         // A blocked shadow lane (t_max = −inf) costs nothing.
         if t_max.is_nan() || t_min.is_nan() || t_max <= t_min {
             return None;
         }
-        // s: distance along u from p, the ray's point nearest the object origin; t = t_c + s/len.
-        let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
         let n = self.order;
-        // The table of powers is sized for the order: zeroing one for degree 16 on every ray
-        // (6.9 kB) was a fifth of objects/csg/hfclip.pov's time, whose clipping cylinder is a
-        // quadric. The arithmetic is the same at every size.
-        let poly = match n {
-            0..=2 => self.along_ray::<3>(p, u),
-            3..=4 => self.along_ray::<5>(p, u),
-            5..=8 => self.along_ray::<9>(p, u),
-            _ => self.along_ray::<{ MAX_DEGREE + 1 }>(p, u),
-        };
         // Highest degree first, without leading terms that are rounding noise (a ray along
         // the axis of a paraboloid makes the s² term cancel to ~1e-17 of the others).
         let scale = poly[..=n].iter().fold(0.0f64, |m, c| m.max(c.abs()));
@@ -244,6 +232,26 @@ fn first_root_within_bound(c: &[f64], lo: f64, hi: f64) -> Option<f64> {
     roots[..n].iter().copied().find(|&r| r > lo && r < hi)
 }
 
+impl Poly {
+    /// `hit` of the object-space ray `o + t·d`: the polynomials along the `N` lanes' rays
+    /// expanded together, then each lane solved on its own (`solve_along`).
+    #[inline(always)]
+    fn hit_lanes<L: Lane, const N: usize>(&self, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+        let ray = CentredLanes::<N>::new(lanes_f64(o), lanes_f64(d));
+        let along = self.along::<N>(&ray);
+        super::solve_lanes_f64(o, d, t_min, t_max, |i, _, _, lo, hi| {
+            if !ray.valid[i] {
+                return None;
+            }
+            let mut c = [0.0; MAX_DEGREE + 1];
+            for (slot, w) in c.iter_mut().zip(&along[..=self.order]) {
+                *slot = w.0[i];
+            }
+            self.solve_along(&c, ray.t_c.0[i], ray.len.0[i], lo, hi)
+        })
+    }
+}
+
 impl Shape for Poly {
     /// Through `hit_lanes_f64`, which steps past a root that rounds onto `t_min`: a CSG node
     /// searching on from a crossing would otherwise be handed that crossing again, up to
@@ -253,9 +261,13 @@ impl Shape for Poly {
         if let Some(q) = &self.quadric {
             return hit_wide(q, &self.frame, ray, t_min, t_max);
         }
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| {
-            self.solve(o.to_array(), d.to_array(), lo, hi)
-        })
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        if L::WIDTH == 8 {
+            self.hit_lanes::<L, 8>(o, d, t_min, t_max)
+        } else {
+            self.hit_lanes::<L, 1>(o, d, t_min, t_max)
+        }
     }
 
     /// The gradient, which points to where the polynomial grows: out of the inside.

@@ -19,17 +19,19 @@ use glam::{Affine3A, Vec3};
 
 mod bounds;
 mod expand;
+mod first_root;
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
 use super::quartic::{first_root, Ill};
-use super::roots::{root_bound, roots_in, smallest_root_by, Solver, MAX_DEGREE};
-use super::wide::{hit_wide, lanes_f64, W, WV};
+use super::roots::{root_bound, smallest_root_by, Solver, MAX_DEGREE};
+use super::wide::{hit_wide, lanes_f64};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
-use crate::ray::RayLanes;
+use crate::ray::{RayLanes, MISS};
 use bounds::quadric_box;
 use expand::{along_ray, CentredLanes};
+use first_root::first_root_within_bound;
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
 /// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
@@ -49,6 +51,46 @@ pub fn term_exponents(order: usize) -> Vec<[u8; 3]> {
 /// How many coefficients a polynomial of `order` has: (order + 1)(order + 2)(order + 3) / 6.
 pub fn term_count(order: usize) -> usize {
     (order + 1) * (order + 2) * (order + 3) / 6
+}
+
+/// `q[axis].powi(e)` for every axis and `e` up to an order, each by the repeated squaring of
+/// the runtime's `powi` (so the same bits), computed once per point instead of by a call per
+/// factor: the calls were 6 % of scenes/kernels/cubic.pov's time (normals and inside tests).
+struct Powers([[f64; MAX_DEGREE + 1]; 3]);
+
+impl Powers {
+    #[inline]
+    fn of(q: [f64; 3], order: usize) -> Powers {
+        let mut t = [[1.0; MAX_DEGREE + 1]; 3];
+        for (row, &x) in t.iter_mut().zip(&q) {
+            for (e, slot) in row.iter_mut().enumerate().take(order + 1) {
+                *slot = powi(x, e as u32);
+            }
+        }
+        Powers(t)
+    }
+
+    #[inline(always)]
+    fn get(&self, axis: usize, e: u8) -> f64 {
+        self.0[axis][e as usize]
+    }
+}
+
+/// `x^e` by repeated squaring in the order of the runtime's `__powidf2`, the routine
+/// `f64::powi` calls for an exponent not known at compile time.
+#[inline]
+fn powi(mut x: f64, mut e: u32) -> f64 {
+    let mut r = 1.0;
+    loop {
+        if e & 1 != 0 {
+            r *= x;
+        }
+        e /= 2;
+        if e == 0 {
+            return r;
+        }
+        x *= x;
+    }
 }
 
 /// Highest order accepted (the root finder's limit).
@@ -96,14 +138,13 @@ impl Poly {
 
     /// The polynomial at object-space `q`.
     pub fn eval(&self, q: [f64; 3]) -> f64 {
-        self.terms
-            .iter()
-            .map(|&(c, [i, j, k])| c * q[0].powi(i as i32) * q[1].powi(j as i32) * q[2].powi(k as i32))
-            .sum()
+        let pw = Powers::of(q, self.order);
+        self.terms.iter().map(|&(c, [i, j, k])| c * pw.get(0, i) * pw.get(1, j) * pw.get(2, k)).sum()
     }
 
     /// The polynomial's gradient at object-space `q`.
     pub fn gradient(&self, q: [f64; 3]) -> [f64; 3] {
+        let pw = Powers::of(q, self.order);
         let mut g = [0.0; 3];
         for &(c, e) in &self.terms {
             for (axis, slot) in g.iter_mut().enumerate() {
@@ -113,7 +154,7 @@ impl Poly {
                 let mut v = c * e[axis] as f64;
                 for (a, &p) in e.iter().enumerate() {
                     let p = if a == axis { p - 1 } else { p };
-                    v *= q[a].powi(p as i32);
+                    v *= pw.get(a, p);
                 }
                 *slot += v;
             }
@@ -131,38 +172,20 @@ impl Poly {
     /// one lane of the packet path (`hit`), for the tests.
     #[cfg(test)]
     fn solve(&self, o: [f64; 3], d: [f64; 3], t_min: f64, t_max: f64) -> Option<f64> {
+        use super::wide::{W, WV};
         let v = |a: [f64; 3]| WV { x: W([a[0]]), y: W([a[1]]), z: W([a[2]]) };
         let ray = CentredLanes::<1>::new(v(o), v(d));
         if !ray.valid[0] {
             return None;
         }
-        let mut c = [0.0; MAX_DEGREE + 1];
-        let along = self.along::<1>(&ray);
-        for (slot, w) in c.iter_mut().zip(&along[..=self.order]) {
-            *slot = w.0[0];
-        }
-        self.solve_along(&c, ray.t_c.0[0], ray.len.0[0], t_min, t_max)
-    }
-
-    /// The polynomial along each lane's centred ray (lowest degree first, `[..=order]`), the
-    /// table of powers sized for the order.
-    #[inline(always)]
-    fn along<const N: usize>(&self, ray: &CentredLanes<N>) -> [W<N>; MAX_DEGREE + 1] {
-        let (n, t) = (self.order, &self.terms[..]);
-        let mut out = [W::splat(0.0); MAX_DEGREE + 1];
-        match n {
-            0..=2 => out[..3].copy_from_slice(&along_ray::<N, 3, 6>(t, n, ray.p, ray.u)),
-            3..=4 => out[..5].copy_from_slice(&along_ray::<N, 5, 15>(t, n, ray.p, ray.u)),
-            5..=6 => out[..7].copy_from_slice(&along_ray::<N, 7, 28>(t, n, ray.p, ray.u)),
-            7..=8 => out[..9].copy_from_slice(&along_ray::<N, 9, 45>(t, n, ray.p, ray.u)),
-            _ => out = along_ray::<N, { MAX_DEGREE + 1 }, 153>(t, n, ray.p, ray.u),
-        }
-        out
+        let along = along_ray::<1, { MAX_DEGREE + 1 }, 153>(&self.terms, self.order, ray.p, ray.u);
+        let c: [f64; MAX_DEGREE + 1] = std::array::from_fn(|k| along[k].0[0]);
+        self.solve_along(&c[..=self.order], ray.t_c.0[0], ray.len.0[0], t_min, t_max)
     }
 
     /// The nearest `t` in `(t_min, t_max)` where the polynomial `poly` along the centred ray
     /// (lowest degree first; `t = t_c + s / len`) is zero.
-    fn solve_along(&self, poly: &[f64; MAX_DEGREE + 1], t_c: f64, len: f64, t_min: f64, t_max: f64) -> Option<f64> {
+    fn solve_along(&self, poly: &[f64], t_c: f64, len: f64, t_min: f64, t_max: f64) -> Option<f64> {
         // A blocked shadow lane (t_max = −inf) costs nothing.
         if t_max.is_nan() || t_min.is_nan() || t_max <= t_min {
             return None;
@@ -197,6 +220,8 @@ impl Poly {
             };
             let s = match (self.solver, c.len() - 1) {
                 (Solver::Fast, 5..) => first_root_within_bound(c, lo, hi),
+                // The closed forms' work does not depend on the span.
+                (Solver::Fast, _) => smallest_root_by(Solver::Fast, c, lo, hi),
                 _ => closed.unwrap_or_else(|Ill| {
                     // The isolation's work grows with its span: only where roots can be.
                     let bound = root_bound(c);
@@ -213,41 +238,43 @@ impl Poly {
     }
 }
 
-/// The smallest root of `c` (highest degree first, `c[0] ≠ 0`) in `(lo, hi)`, for the
-/// polynomials of degree 5 and up that `Solver::Fast` solves by isolation: the critical points
-/// (`roots::roots_in`) over only the span that can hold roots (`roots::root_bound`), not
-/// Cauchy's bound. Over that (64 for a sextic whose roots are of size 2, and the ray's whole
-/// length where its span is infinite) they found every root of every derivative to full
-/// precision: 80 % of scenes/kernels/poly.pov's time, and a spurious root far out (at −1.3e9
-/// for a sextic with roots of size 5e3). Bernstein subdivision (`bernstein`) over the span
-/// is faster still but shows sign changes the polynomial does not have near a double root.
-fn first_root_within_bound(c: &[f64], lo: f64, hi: f64) -> Option<f64> {
-    let bound = root_bound(c);
-    let (a, b) = (lo.max(-bound), hi.min(bound));
-    if a.is_nan() || b.is_nan() || a >= b {
-        return None;
-    }
-    let mut roots = [0.0; MAX_DEGREE];
-    let n = roots_in(c, a, b, &mut roots);
-    roots[..n].iter().copied().find(|&r| r > lo && r < hi)
-}
-
 impl Poly {
     /// `hit` of the object-space ray `o + t·d`: the polynomials along the `N` lanes' rays
     /// expanded together, then each lane solved on its own (`solve_along`).
     #[inline(always)]
     fn hit_lanes<L: Lane, const N: usize>(&self, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+        // A packet whose every lane is blocked (shadow rays) or empty costs nothing.
+        if (0..L::WIDTH).all(|i| !(t_min.get_f64(i) < t_max.get_f64(i))) {
+            return L::from_fn_f64(|_| MISS as f64);
+        }
         let ray = CentredLanes::<N>::new(lanes_f64(o), lanes_f64(d));
-        let along = self.along::<N>(&ray);
+        // The tables sized for the order: zeroing one for degree 16 on every ray cost a fifth
+        // of objects/csg/hfclip.pov's time (a quadric then). The arithmetic is the same.
+        match self.order {
+            0..=4 => self.solve_expanded::<L, N, 5, 15>(&ray, o, d, t_min, t_max),
+            5..=6 => self.solve_expanded::<L, N, 7, 28>(&ray, o, d, t_min, t_max),
+            7..=8 => self.solve_expanded::<L, N, 9, 45>(&ray, o, d, t_min, t_max),
+            _ => self.solve_expanded::<L, N, { MAX_DEGREE + 1 }, 153>(&ray, o, d, t_min, t_max),
+        }
+    }
+
+    /// `hit_lanes` once the table sizes are chosen (`K > order`, `T = K (K + 1) / 2`).
+    #[inline(always)]
+    fn solve_expanded<L: Lane, const N: usize, const K: usize, const T: usize>(
+        &self,
+        ray: &CentredLanes<N>,
+        o: V3<L>,
+        d: V3<L>,
+        t_min: L,
+        t_max: L,
+    ) -> L {
+        let along = along_ray::<N, K, T>(&self.terms, self.order, ray.p, ray.u);
         super::solve_lanes_f64(o, d, t_min, t_max, |i, _, _, lo, hi| {
             if !ray.valid[i] {
                 return None;
             }
-            let mut c = [0.0; MAX_DEGREE + 1];
-            for (slot, w) in c.iter_mut().zip(&along[..=self.order]) {
-                *slot = w.0[i];
-            }
-            self.solve_along(&c, ray.t_c.0[i], ray.len.0[i], lo, hi)
+            let c: [f64; K] = std::array::from_fn(|k| along[k].0[i]);
+            self.solve_along(&c[..=self.order], ray.t_c.0[i], ray.len.0[i], lo, hi)
         })
     }
 }

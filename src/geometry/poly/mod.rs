@@ -416,6 +416,69 @@ mod tests {
         assert!(found > 5_000, "{found}");
     }
 
+    /// x⁶ + y⁶ + z⁶ − 1 (scenes/kernels/poly.pov's rounded cube, degree 6 by Bernstein signs
+    /// and Halley steps, `first_root`): on seeded random rays, many of them grazing its edges
+    /// and corners, a packet's lanes give a single ray's bits, and each hit is the first sign
+    /// change of the polynomial on a grid of step 10⁻⁴ along the ray; where the two disagree
+    /// the ray grazes (the polynomial's least value is within 10⁻³ of zero).
+    #[test]
+    fn sextic_packets_match_single_rays_and_brute_force() {
+        let terms = term_exponents(6);
+        let c: Vec<f64> = terms
+            .iter()
+            .map(|t| match t {
+                [6, 0, 0] | [0, 6, 0] | [0, 0, 6] => 1.0,
+                [0, 0, 0] => -1.0,
+                _ => 0.0,
+            })
+            .collect();
+        let q = shape(6, &c, Solver::Fast);
+        let mut r = crate::geometry::test_support::uniform(0x5e71_c0be);
+        let (mut hits, mut grazes) = (0, 0);
+        for _ in 0..60 {
+            let rays: [Ray; 8] = std::array::from_fn(|_| {
+                let o = Vec3::new(r() as f32 * 4.0 - 2.0, r() as f32 * 4.0 - 2.0, 0.0);
+                let at = Vec3::new(r() as f32 * 2.4 - 1.2, r() as f32 * 2.4 - 1.2, 10.0 + r() as f32 * 2.0 - 1.0);
+                Ray::new(o, (at - o).normalize())
+            });
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| rays[i].origin),
+                d: V3::from_lanes(|i| rays[i].dir),
+                inv: V3::from_lanes(|i| rays[i].inv_dir),
+            };
+            let wide = q.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+            for (i, ray) in rays.iter().enumerate() {
+                let single = q.hit(&ray.lanes(), 0.0, MISS);
+                assert_eq!(wide.get(i).to_bits(), single.to_bits());
+                let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+                let f = |t: f64| {
+                    let p = o + d * t;
+                    q.eval([p.x, p.y, p.z - 10.0])
+                };
+                let (mut want, mut least, mut prev) = (None, f64::INFINITY, f(7.0));
+                for k in 1..60_000 {
+                    let t = 7.0 + k as f64 * 1e-4;
+                    let v = f(t);
+                    least = least.min(v);
+                    if want.is_none() && (v < 0.0) != (prev < 0.0) {
+                        want = Some(t);
+                    }
+                    prev = v;
+                }
+                let got = (single < MISS).then_some(single as f64);
+                match (got, want) {
+                    (Some(a), Some(b)) if (a - b).abs() <= 2e-4 => hits += 1,
+                    (None, None) => {}
+                    _ => {
+                        assert!(least.abs() < 1e-3, "{ray:?}: {got:?}, grid {want:?}, least {least}");
+                        grazes += 1;
+                    }
+                }
+            }
+        }
+        assert!(hits > 150 && grazes < 20, "{hits} hits, {grazes} grazes");
+    }
+
     #[test]
     fn coefficient_order_is_povrays() {
         assert_eq!(term_count(3), 20);

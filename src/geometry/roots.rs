@@ -175,7 +175,7 @@ fn critical_point_roots(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]
 /// span has none, and every other span is solved as before. On
 /// `objects/blob.pov` (five rays in six miss the blob inside its box) `monotonic_root` took
 /// 63 % of the time.
-fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
+pub(super) fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
     let n = c.len().saturating_sub(1);
     if n == 0 || n > MAX_DEGREE || !(lo.is_finite() && hi.is_finite() && lo < hi) {
         return false;

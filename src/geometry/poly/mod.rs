@@ -18,16 +18,20 @@
 use glam::{Affine3A, Vec3};
 
 mod bounds;
+mod expand;
+mod first_root;
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
 use super::quartic::{first_root, Ill};
-use super::roots::{root_bound, roots_in, smallest_root_by, Solver, MAX_DEGREE};
-use super::wide::hit_wide;
+use super::roots::{root_bound, smallest_root_by, Solver, MAX_DEGREE};
+use super::wide::{hit_wide, lanes_f64};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
-use crate::ray::RayLanes;
+use crate::ray::{RayLanes, MISS};
 use bounds::quadric_box;
+use expand::{along_ray, CentredLanes};
+use first_root::first_root_within_bound;
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
 /// order it reads them: x's power falling, then y's, then z's (`cubic`: x³, x²y, x²z, x², xy²,
@@ -47,6 +51,46 @@ pub fn term_exponents(order: usize) -> Vec<[u8; 3]> {
 /// How many coefficients a polynomial of `order` has: (order + 1)(order + 2)(order + 3) / 6.
 pub fn term_count(order: usize) -> usize {
     (order + 1) * (order + 2) * (order + 3) / 6
+}
+
+/// `q[axis].powi(e)` for every axis and `e` up to an order, each by the repeated squaring of
+/// the runtime's `powi` (so the same bits), computed once per point instead of by a call per
+/// factor: the calls were 6 % of scenes/kernels/cubic.pov's time (normals and inside tests).
+struct Powers([[f64; MAX_DEGREE + 1]; 3]);
+
+impl Powers {
+    #[inline]
+    fn of(q: [f64; 3], order: usize) -> Powers {
+        let mut t = [[1.0; MAX_DEGREE + 1]; 3];
+        for (row, &x) in t.iter_mut().zip(&q) {
+            for (e, slot) in row.iter_mut().enumerate().take(order + 1) {
+                *slot = powi(x, e as u32);
+            }
+        }
+        Powers(t)
+    }
+
+    #[inline(always)]
+    fn get(&self, axis: usize, e: u8) -> f64 {
+        self.0[axis][e as usize]
+    }
+}
+
+/// `x^e` by repeated squaring in the order of the runtime's `__powidf2`, the routine
+/// `f64::powi` calls for an exponent not known at compile time.
+#[inline]
+fn powi(mut x: f64, mut e: u32) -> f64 {
+    let mut r = 1.0;
+    loop {
+        if e & 1 != 0 {
+            r *= x;
+        }
+        e /= 2;
+        if e == 0 {
+            return r;
+        }
+        x *= x;
+    }
 }
 
 /// Highest order accepted (the root finder's limit).
@@ -94,14 +138,13 @@ impl Poly {
 
     /// The polynomial at object-space `q`.
     pub fn eval(&self, q: [f64; 3]) -> f64 {
-        self.terms
-            .iter()
-            .map(|&(c, [i, j, k])| c * q[0].powi(i as i32) * q[1].powi(j as i32) * q[2].powi(k as i32))
-            .sum()
+        let pw = Powers::of(q, self.order);
+        self.terms.iter().map(|&(c, [i, j, k])| c * pw.get(0, i) * pw.get(1, j) * pw.get(2, k)).sum()
     }
 
     /// The polynomial's gradient at object-space `q`.
     pub fn gradient(&self, q: [f64; 3]) -> [f64; 3] {
+        let pw = Powers::of(q, self.order);
         let mut g = [0.0; 3];
         for &(c, e) in &self.terms {
             for (axis, slot) in g.iter_mut().enumerate() {
@@ -111,49 +154,12 @@ impl Poly {
                 let mut v = c * e[axis] as f64;
                 for (a, &p) in e.iter().enumerate() {
                     let p = if a == axis { p - 1 } else { p };
-                    v *= q[a].powi(p as i32);
+                    v *= pw.get(a, p);
                 }
                 *slot += v;
             }
         }
         g
-    }
-
-    /// The polynomial in `s` (lowest degree first) of the surface along `p + s·u`, with a
-    /// table of powers for orders below `N` (`N` > `self.order`).
-    #[inline]
-    fn along_ray<const N: usize>(&self, p: [f64; 3], u: [f64; 3]) -> [f64; MAX_DEGREE + 1] {
-        let n = self.order;
-        debug_assert!(n < N && N <= MAX_DEGREE + 1);
-        // powers[axis][e][m]: coefficient of s^m in (p + s·u)^e, lowest degree first.
-        let mut powers = [[[0.0; N]; N]; 3];
-        for axis in 0..3 {
-            powers[axis][0][0] = 1.0;
-            for e in 1..=n {
-                for m in 0..=e {
-                    let keep = if m < e { powers[axis][e - 1][m] * p[axis] } else { 0.0 };
-                    let step = if m > 0 { powers[axis][e - 1][m - 1] * u[axis] } else { 0.0 };
-                    powers[axis][e][m] = keep + step;
-                }
-            }
-        }
-        let mut poly = [0.0; MAX_DEGREE + 1];
-        let mut xy = [0.0; MAX_DEGREE + 1];
-        for &(c, [i, j, k]) in &self.terms {
-            let (i, j, k) = (i as usize, j as usize, k as usize);
-            xy[..=i + j].fill(0.0);
-            for a in 0..=i {
-                for b in 0..=j {
-                    xy[a + b] += powers[0][i][a] * powers[1][j][b];
-                }
-            }
-            for a in 0..=i + j {
-                for b in 0..=k {
-                    poly[a + b] += c * xy[a] * powers[2][k][b];
-                }
-            }
-        }
-        poly
     }
 
     /// `solve` for the tests: a quadric's general path, the reference its closed form is held to.
@@ -162,24 +168,29 @@ impl Poly {
         self.solve(o, d, t_min, t_max)
     }
 
-    /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the surface.
+    /// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the surface:
+    /// one lane of the packet path (`hit`), for the tests.
+    #[cfg(test)]
     fn solve(&self, o: [f64; 3], d: [f64; 3], t_min: f64, t_max: f64) -> Option<f64> {
+        use super::wide::{W, WV};
+        let v = |a: [f64; 3]| WV { x: W([a[0]]), y: W([a[1]]), z: W([a[2]]) };
+        let ray = CentredLanes::<1>::new(v(o), v(d));
+        if !ray.valid[0] {
+            return None;
+        }
+        let along = along_ray::<1, { MAX_DEGREE + 1 }, 153>(&self.terms, self.order, ray.p, ray.u);
+        let c: [f64; MAX_DEGREE + 1] = std::array::from_fn(|k| along[k].0[0]);
+        self.solve_along(&c[..=self.order], ray.t_c.0[0], ray.len.0[0], t_min, t_max)
+    }
+
+    /// The nearest `t` in `(t_min, t_max)` where the polynomial `poly` along the centred ray
+    /// (lowest degree first; `t = t_c + s / len`) is zero.
+    fn solve_along(&self, poly: &[f64], t_c: f64, len: f64, t_min: f64, t_max: f64) -> Option<f64> {
         // A blocked shadow lane (t_max = −inf) costs nothing.
         if t_max.is_nan() || t_min.is_nan() || t_max <= t_min {
             return None;
         }
-        // s: distance along u from p, the ray's point nearest the object origin; t = t_c + s/len.
-        let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
         let n = self.order;
-        // The table of powers is sized for the order: zeroing one for degree 16 on every ray
-        // (6.9 kB) was a fifth of objects/csg/hfclip.pov's time, whose clipping cylinder is a
-        // quadric. The arithmetic is the same at every size.
-        let poly = match n {
-            0..=2 => self.along_ray::<3>(p, u),
-            3..=4 => self.along_ray::<5>(p, u),
-            5..=8 => self.along_ray::<9>(p, u),
-            _ => self.along_ray::<{ MAX_DEGREE + 1 }>(p, u),
-        };
         // Highest degree first, without leading terms that are rounding noise (a ray along
         // the axis of a paraboloid makes the s² term cancel to ~1e-17 of the others).
         let scale = poly[..=n].iter().fold(0.0f64, |m, c| m.max(c.abs()));
@@ -209,6 +220,8 @@ impl Poly {
             };
             let s = match (self.solver, c.len() - 1) {
                 (Solver::Fast, 5..) => first_root_within_bound(c, lo, hi),
+                // The closed forms' work does not depend on the span.
+                (Solver::Fast, _) => smallest_root_by(Solver::Fast, c, lo, hi),
                 _ => closed.unwrap_or_else(|Ill| {
                     // The isolation's work grows with its span: only where roots can be.
                     let bound = root_bound(c);
@@ -225,23 +238,45 @@ impl Poly {
     }
 }
 
-/// The smallest root of `c` (highest degree first, `c[0] ≠ 0`) in `(lo, hi)`, for the
-/// polynomials of degree 5 and up that `Solver::Fast` solves by isolation: the critical points
-/// (`roots::roots_in`) over only the span that can hold roots (`roots::root_bound`), not
-/// Cauchy's bound. Over that (64 for a sextic whose roots are of size 2, and the ray's whole
-/// length where its span is infinite) they found every root of every derivative to full
-/// precision: 80 % of scenes/kernels/poly.pov's time, and a spurious root far out (at −1.3e9
-/// for a sextic with roots of size 5e3). Bernstein subdivision (`bernstein`) over the span
-/// is faster still but shows sign changes the polynomial does not have near a double root.
-fn first_root_within_bound(c: &[f64], lo: f64, hi: f64) -> Option<f64> {
-    let bound = root_bound(c);
-    let (a, b) = (lo.max(-bound), hi.min(bound));
-    if a.is_nan() || b.is_nan() || a >= b {
-        return None;
+impl Poly {
+    /// `hit` of the object-space ray `o + t·d`: the polynomials along the `N` lanes' rays
+    /// expanded together, then each lane solved on its own (`solve_along`).
+    #[inline(always)]
+    fn hit_lanes<L: Lane, const N: usize>(&self, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L {
+        // A packet whose every lane is blocked (shadow rays) or empty costs nothing.
+        if (0..L::WIDTH).all(|i| !(t_min.get_f64(i) < t_max.get_f64(i))) {
+            return L::from_fn_f64(|_| MISS as f64);
+        }
+        let ray = CentredLanes::<N>::new(lanes_f64(o), lanes_f64(d));
+        // The tables sized for the order: zeroing one for degree 16 on every ray cost a fifth
+        // of objects/csg/hfclip.pov's time (a quadric then). The arithmetic is the same.
+        match self.order {
+            0..=4 => self.solve_expanded::<L, N, 5, 15>(&ray, o, d, t_min, t_max),
+            5..=6 => self.solve_expanded::<L, N, 7, 28>(&ray, o, d, t_min, t_max),
+            7..=8 => self.solve_expanded::<L, N, 9, 45>(&ray, o, d, t_min, t_max),
+            _ => self.solve_expanded::<L, N, { MAX_DEGREE + 1 }, 153>(&ray, o, d, t_min, t_max),
+        }
     }
-    let mut roots = [0.0; MAX_DEGREE];
-    let n = roots_in(c, a, b, &mut roots);
-    roots[..n].iter().copied().find(|&r| r > lo && r < hi)
+
+    /// `hit_lanes` once the table sizes are chosen (`K > order`, `T = K (K + 1) / 2`).
+    #[inline(always)]
+    fn solve_expanded<L: Lane, const N: usize, const K: usize, const T: usize>(
+        &self,
+        ray: &CentredLanes<N>,
+        o: V3<L>,
+        d: V3<L>,
+        t_min: L,
+        t_max: L,
+    ) -> L {
+        let along = along_ray::<N, K, T>(&self.terms, self.order, ray.p, ray.u);
+        super::solve_lanes_f64(o, d, t_min, t_max, |i, _, _, lo, hi| {
+            if !ray.valid[i] {
+                return None;
+            }
+            let c: [f64; K] = std::array::from_fn(|k| along[k].0[i]);
+            self.solve_along(&c[..=self.order], ray.t_c.0[i], ray.len.0[i], lo, hi)
+        })
+    }
 }
 
 impl Shape for Poly {
@@ -253,9 +288,13 @@ impl Shape for Poly {
         if let Some(q) = &self.quadric {
             return hit_wide(q, &self.frame, ray, t_min, t_max);
         }
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| {
-            self.solve(o.to_array(), d.to_array(), lo, hi)
-        })
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        if L::WIDTH == 8 {
+            self.hit_lanes::<L, 8>(o, d, t_min, t_max)
+        } else {
+            self.hit_lanes::<L, 1>(o, d, t_min, t_max)
+        }
     }
 
     /// The gradient, which points to where the polynomial grows: out of the inside.
@@ -375,6 +414,69 @@ mod tests {
             }
         }
         assert!(found > 5_000, "{found}");
+    }
+
+    /// x⁶ + y⁶ + z⁶ − 1 (scenes/kernels/poly.pov's rounded cube, degree 6 by Bernstein signs
+    /// and Halley steps, `first_root`): on seeded random rays, many of them grazing its edges
+    /// and corners, a packet's lanes give a single ray's bits, and each hit is the first sign
+    /// change of the polynomial on a grid of step 10⁻⁴ along the ray; where the two disagree
+    /// the ray grazes (the polynomial's least value is within 10⁻³ of zero).
+    #[test]
+    fn sextic_packets_match_single_rays_and_brute_force() {
+        let terms = term_exponents(6);
+        let c: Vec<f64> = terms
+            .iter()
+            .map(|t| match t {
+                [6, 0, 0] | [0, 6, 0] | [0, 0, 6] => 1.0,
+                [0, 0, 0] => -1.0,
+                _ => 0.0,
+            })
+            .collect();
+        let q = shape(6, &c, Solver::Fast);
+        let mut r = crate::geometry::test_support::uniform(0x5e71_c0be);
+        let (mut hits, mut grazes) = (0, 0);
+        for _ in 0..60 {
+            let rays: [Ray; 8] = std::array::from_fn(|_| {
+                let o = Vec3::new(r() as f32 * 4.0 - 2.0, r() as f32 * 4.0 - 2.0, 0.0);
+                let at = Vec3::new(r() as f32 * 2.4 - 1.2, r() as f32 * 2.4 - 1.2, 10.0 + r() as f32 * 2.0 - 1.0);
+                Ray::new(o, (at - o).normalize())
+            });
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| rays[i].origin),
+                d: V3::from_lanes(|i| rays[i].dir),
+                inv: V3::from_lanes(|i| rays[i].inv_dir),
+            };
+            let wide = q.hit(&packet, F8::splat(0.0), F8::splat(MISS));
+            for (i, ray) in rays.iter().enumerate() {
+                let single = q.hit(&ray.lanes(), 0.0, MISS);
+                assert_eq!(wide.get(i).to_bits(), single.to_bits());
+                let (o, d) = (ray.origin.as_dvec3(), ray.dir.as_dvec3());
+                let f = |t: f64| {
+                    let p = o + d * t;
+                    q.eval([p.x, p.y, p.z - 10.0])
+                };
+                let (mut want, mut least, mut prev) = (None, f64::INFINITY, f(7.0));
+                for k in 1..60_000 {
+                    let t = 7.0 + k as f64 * 1e-4;
+                    let v = f(t);
+                    least = least.min(v);
+                    if want.is_none() && (v < 0.0) != (prev < 0.0) {
+                        want = Some(t);
+                    }
+                    prev = v;
+                }
+                let got = (single < MISS).then_some(single as f64);
+                match (got, want) {
+                    (Some(a), Some(b)) if (a - b).abs() <= 2e-4 => hits += 1,
+                    (None, None) => {}
+                    _ => {
+                        assert!(least.abs() < 1e-3, "{ray:?}: {got:?}, grid {want:?}, least {least}");
+                        grazes += 1;
+                    }
+                }
+            }
+        }
+        assert!(hits > 150 && grazes < 20, "{hits} hits, {grazes} grazes");
     }
 
     #[test]

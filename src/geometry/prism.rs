@@ -16,12 +16,14 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+mod arc;
+
 use super::bands::Bands;
 use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
 use super::halley::{single_change, single_root};
 use super::roots::MAX_DEGREE;
-use super::spline::{closest_t, Piece};
+use super::spline::Piece;
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::lanes::{Lane, V3};
@@ -30,17 +32,19 @@ use crate::ray::{RayLanes, MISS};
 #[derive(Clone, Debug)]
 pub struct Prism {
     pub frame: BoxFrame,
-    pieces: Vec<Piece>,
     /// The pieces cut where they turn in u or v (`Piece::monotone_parts`), each with the box of
     /// its ends: what the sides are solved on, as fewer rays reach those boxes and hulls.
     arcs: Vec<Piece>,
-    /// The pieces by height, for the even-odd test of caps and `inside`.
+    /// The arcs by height, for the even-odd test of caps and `inside` (`arc::crosses_right`).
     bands: Bands,
     /// Heights in object space, `h1 < h2`.
     h1: f64,
     h2: f64,
     conic: bool,
     open: bool,
+    /// The pieces as moved, for the tests' brute force.
+    #[cfg(test)]
+    pieces: Vec<Piece>,
     pub min: Vec3,
     pub max: Vec3,
     /// The object-space box (f32, widened by 10⁻⁴ of its size) that eight lanes are tested
@@ -90,10 +94,12 @@ impl Prism {
         let (cull_lo, cull_hi) = ((blo - widen).as_vec3(), (bhi + widen).as_vec3());
         // Widened by a few f32 ulps: the box's corners were rounded.
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        let arcs: Vec<Piece> = pieces.iter().flat_map(Piece::monotone_parts).collect();
         Prism {
             frame: frame_for(xf),
-            bands: Bands::new(&pieces),
-            arcs: pieces.iter().flat_map(Piece::monotone_parts).collect(),
+            bands: Bands::new(&arcs),
+            arcs,
+            #[cfg(test)]
             pieces,
             h1,
             h2,
@@ -120,7 +126,11 @@ impl Prism {
     }
 
     fn inside_2d(&self, q: DVec2) -> bool {
-        self.bands.inside(&self.pieces, q)
+        let mut inside = false;
+        for &i in self.bands.candidates(q) {
+            inside ^= arc::crosses_right(&self.arcs[i as usize], q);
+        }
+        inside
     }
 
     fn inside_point(&self, q: DVec3) -> bool {
@@ -299,6 +309,16 @@ impl Prism {
         }
     }
 
+    /// Takes arc `p`'s nearest point to `w` as `side` where it is nearer than `best`.
+    fn nearer<'a>(&self, p: &'a Piece, w: DVec2, scale: f64, best: &mut f64, side: &mut Option<(&'a Piece, f64)>) {
+        let t = arc::nearest_t(p, w);
+        let dist = (p.at(t) - w).length() * scale;
+        if dist < *best {
+            *best = dist;
+            *side = Some((p, t));
+        }
+    }
+
     /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
     fn normal_object(&self, q: DVec3) -> DVec3 {
         let w = self.section(q);
@@ -316,20 +336,34 @@ impl Prism {
         }
         // Side distances are measured in the section, scaled back to object units for a cone.
         let scale = if self.conic { q.y.abs() } else { 1.0 };
-        let mut side: Option<(f64, &Piece, f64)> = None;
-        for p in &self.pieces {
-            let gap = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length() * scale;
-            if gap >= best {
-                continue;
-            }
-            let t = closest_t(p, w);
-            let dist = (p.at(t) - w).length() * scale;
-            if dist < best {
-                best = dist;
-                side = Some((dist, p, t));
+        let mut side: Option<(&Piece, f64)> = None;
+        // The arcs whose boxes lie nearer than the caps (none for most points on a cap), the
+        // nearest box first: the point lies on that arc or a neighbour, and the distance to it
+        // then rules out the arcs whose boxes lie farther.
+        let gap = |p: &Piece| (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length() * scale;
+        let mut near = [(0.0, 0u32); 32];
+        let mut count = 0;
+        for (i, p) in self.arcs.iter().enumerate() {
+            let g = gap(p);
+            if g < best {
+                if count == near.len() {
+                    self.nearer(p, w, scale, &mut best, &mut side);
+                } else {
+                    near[count] = (g, i as u32);
+                    count += 1;
+                }
             }
         }
-        if let Some((_, p, t)) = side {
+        let near = &mut near[..count];
+        if let Some(first) = (0..count).min_by(|&i, &j| near[i].0.total_cmp(&near[j].0)) {
+            near.swap(0, first);
+        }
+        for &(g, i) in near.iter() {
+            if g < best {
+                self.nearer(&self.arcs[i as usize], w, scale, &mut best, &mut side);
+            }
+        }
+        if let Some((p, t)) = side {
             let tan = p.tangent(t);
             let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
             if n2 == DVec2::ZERO {

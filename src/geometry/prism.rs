@@ -21,7 +21,7 @@ mod arc;
 use super::bands::Bands;
 use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
-use super::halley::{single_change, single_root};
+use super::halley::{cubic_roots_by_halves, single_change, single_root};
 use super::roots::MAX_DEGREE;
 use super::spline::Piece;
 use super::{affine_f32, transformed_bounds, Shape};
@@ -35,6 +35,8 @@ pub struct Prism {
     /// The pieces cut where they turn in u or v (`Piece::monotone_parts`), each with the box of
     /// its ends: what the sides are solved on, as fewer rays reach those boxes and hulls.
     arcs: Vec<Piece>,
+    /// Each arc's slab along its chord (`arc::Slab`): with its box, how near a point it can be.
+    slabs: Vec<arc::Slab>,
     /// The arcs by height, for the even-odd test of caps and `inside` (`arc::crosses_right`).
     bands: Bands,
     /// Heights in object space, `h1 < h2`.
@@ -98,6 +100,7 @@ impl Prism {
         Prism {
             frame: frame_for(xf),
             bands: Bands::new(&arcs),
+            slabs: arcs.iter().map(arc::Slab::of).collect(),
             arcs,
             #[cfg(test)]
             pieces,
@@ -274,7 +277,8 @@ impl Prism {
                 let (c, n) = p.combine(a, b, k);
                 roots_between(&c[..n], 0.0, 1.0, &mut roots)
             }
-            // A cubic whose hull crosses the line once: its one root, by Halley's steps.
+            // A cubic whose hull crosses the line once: its one root, by Halley's steps; else on
+            // each half where that holds there.
             _ => {
                 let (c, n) = p.combine(a, b, k);
                 match single_change(&hull[..n]) {
@@ -282,7 +286,13 @@ impl Prism {
                         roots[0] = single_root(&c[..n], &hull[..n], i);
                         1
                     }
-                    None => roots_unit(&c[..n], hull, &mut roots),
+                    None => {
+                        let bz = [hull[0], hull[1], hull[2], hull[3]];
+                        match cubic_roots_by_halves(&bz, &mut roots) {
+                            Some(m) => m,
+                            None => roots_unit(&c[..n], hull, &mut roots),
+                        }
+                    }
                 }
             }
         };
@@ -337,14 +347,13 @@ impl Prism {
         // Side distances are measured in the section, scaled back to object units for a cone.
         let scale = if self.conic { q.y.abs() } else { 1.0 };
         let mut side: Option<(&Piece, f64)> = None;
-        // The arcs whose boxes lie nearer than the caps (none for most points on a cap), the
-        // nearest box first: the point lies on that arc or a neighbour, and the distance to it
-        // then rules out the arcs whose boxes lie farther.
-        let gap = |p: &Piece| (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length() * scale;
+        // The arcs whose boxes and slabs lie nearer than the caps (none for most points on a
+        // cap), the nearest first: the point lies on that arc or a neighbour, and the distance
+        // to it then rules out the arcs that lie farther.
         let mut near = [(0.0, 0u32); 32];
         let mut count = 0;
-        for (i, p) in self.arcs.iter().enumerate() {
-            let g = gap(p);
+        for (i, (p, slab)) in self.arcs.iter().zip(&self.slabs).enumerate() {
+            let g = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length().max(slab.gap(w)) * scale;
             if g < best {
                 if count == near.len() {
                     self.nearer(p, w, scale, &mut best, &mut side);

@@ -16,6 +16,40 @@ use glam::DVec2;
 
 use crate::geometry::spline::{closest_t, Piece};
 
+/// The slab between the two lines parallel to an arc's chord that hold its control points
+/// (convex hull), so the arc: a point outside lies at least its distance from the slab from the
+/// arc. Where arcs' boxes overlap, as the parts of a bulging piece's do, a point on one arc lies
+/// outside the others' slabs, so a normal solves only for the arc the point is on.
+#[derive(Clone, Copy, Debug)]
+pub struct Slab {
+    /// The chord's unit normal (zero for a closed arc: no bound), and the least and greatest
+    /// offset along it of the control points, widened as the arcs' boxes are.
+    n: DVec2,
+    lo: f64,
+    hi: f64,
+}
+
+impl Slab {
+    pub fn of(p: &Piece) -> Slab {
+        let (a, b) = (DVec2::new(p.cu[0], p.cv[0]), DVec2::new(p.cu[p.degree], p.cv[p.degree]));
+        let n = (b - a).perp().normalize_or_zero();
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..=p.degree {
+            let off = n.dot(DVec2::new(p.cu[i], p.cv[i]));
+            (lo, hi) = (lo.min(off), hi.max(off));
+        }
+        let pad = 1e-9 * (p.hi - p.lo).max_element().max(p.lo.abs().max(p.hi.abs()).max_element());
+        Slab { n, lo: lo - pad, hi: hi + pad }
+    }
+
+    /// How far `w` lies outside the slab (0 inside): no more than its distance from the arc.
+    #[inline]
+    pub fn gap(&self, w: DVec2) -> f64 {
+        let off = self.n.dot(w);
+        (off - self.hi).max(self.lo - off).max(0.0)
+    }
+}
+
 /// Whether the ray from `q` towards +u crosses the monotone arc `p` (counted half-open in `v`,
 /// as `spline::even_odd` counts a joint once): its ends lie on either side of `q.y` and the
 /// arc's point at that height lies right of `q.x`.
@@ -168,6 +202,22 @@ mod tests {
                 inside += want as usize;
             }
             assert!(inside > 2000, "{inside}");
+        }
+    }
+
+    /// Seeded random points: the slab's gap is never more than the distance to the arc.
+    #[test]
+    fn slab_gaps_bound_the_distance() {
+        let mut rand = uniform(0x3c6e_f372_fe94_f82bu64);
+        for pieces in outlines() {
+            for arc in pieces.iter().flat_map(Piece::monotone_parts) {
+                let slab = Slab::of(&arc);
+                for _ in 0..500 {
+                    let w = DVec2::new(rand() - 0.5, rand() - 0.5);
+                    let dist = (arc.at(closest_t(&arc, w)) - w).length();
+                    assert!(slab.gap(w) <= dist + 1e-15, "{w}");
+                }
+            }
         }
     }
 

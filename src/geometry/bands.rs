@@ -53,12 +53,18 @@ impl Bands {
 
     /// Whether `q` lies inside the curves `pieces` (those this was built from), by even-odd.
     pub fn inside(&self, pieces: &[Piece], q: DVec2) -> bool {
+        even_odd_of(self.candidates(q).iter().map(|&i| &pieces[i as usize]), q)
+    }
+
+    /// The indices of the pieces that can cross the ray from `q` towards +u (none outside the
+    /// pieces' box): what an even-odd test of `q` visits.
+    #[inline]
+    pub fn candidates(&self, q: DVec2) -> &[u32] {
         if !(q.x >= self.lo.x && q.x <= self.hi.x && q.y >= self.lo.y && q.y <= self.hi.y) {
-            return false;
+            return &[];
         }
         let b = self.band(q.y);
-        let list = &self.index[self.start[b] as usize..self.start[b + 1] as usize];
-        even_odd_of(list.iter().map(|&i| &pieces[i as usize]), q)
+        &self.index[self.start[b] as usize..self.start[b + 1] as usize]
     }
 }
 

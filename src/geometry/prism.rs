@@ -16,12 +16,14 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
+mod arc;
+
 use super::bands::Bands;
 use super::bernstein::{roots_between, roots_unit};
 use super::cuboid::{frame_for, BoxFrame};
-use super::halley::{single_change, single_root};
+use super::halley::{cubic_roots_by_halves, single_change, single_root};
 use super::roots::MAX_DEGREE;
-use super::spline::{closest_t, Piece};
+use super::spline::Piece;
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::lanes::{Lane, V3};
@@ -30,17 +32,21 @@ use crate::ray::{RayLanes, MISS};
 #[derive(Clone, Debug)]
 pub struct Prism {
     pub frame: BoxFrame,
-    pieces: Vec<Piece>,
     /// The pieces cut where they turn in u or v (`Piece::monotone_parts`), each with the box of
     /// its ends: what the sides are solved on, as fewer rays reach those boxes and hulls.
     arcs: Vec<Piece>,
-    /// The pieces by height, for the even-odd test of caps and `inside`.
+    /// Each arc's slab along its chord (`arc::Slab`): with its box, how near a point it can be.
+    slabs: Vec<arc::Slab>,
+    /// The arcs by height, for the even-odd test of caps and `inside` (`arc::crosses_right`).
     bands: Bands,
     /// Heights in object space, `h1 < h2`.
     h1: f64,
     h2: f64,
     conic: bool,
     open: bool,
+    /// The pieces as moved, for the tests' brute force.
+    #[cfg(test)]
+    pieces: Vec<Piece>,
     pub min: Vec3,
     pub max: Vec3,
     /// The object-space box (f32, widened by 10⁻⁴ of its size) that eight lanes are tested
@@ -90,10 +96,13 @@ impl Prism {
         let (cull_lo, cull_hi) = ((blo - widen).as_vec3(), (bhi + widen).as_vec3());
         // Widened by a few f32 ulps: the box's corners were rounded.
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        let arcs: Vec<Piece> = pieces.iter().flat_map(Piece::monotone_parts).collect();
         Prism {
             frame: frame_for(xf),
-            bands: Bands::new(&pieces),
-            arcs: pieces.iter().flat_map(Piece::monotone_parts).collect(),
+            bands: Bands::new(&arcs),
+            slabs: arcs.iter().map(arc::Slab::of).collect(),
+            arcs,
+            #[cfg(test)]
             pieces,
             h1,
             h2,
@@ -120,7 +129,11 @@ impl Prism {
     }
 
     fn inside_2d(&self, q: DVec2) -> bool {
-        self.bands.inside(&self.pieces, q)
+        let mut inside = false;
+        for &i in self.bands.candidates(q) {
+            inside ^= arc::crosses_right(&self.arcs[i as usize], q);
+        }
+        inside
     }
 
     fn inside_point(&self, q: DVec3) -> bool {
@@ -264,7 +277,8 @@ impl Prism {
                 let (c, n) = p.combine(a, b, k);
                 roots_between(&c[..n], 0.0, 1.0, &mut roots)
             }
-            // A cubic whose hull crosses the line once: its one root, by Halley's steps.
+            // A cubic whose hull crosses the line once: its one root, by Halley's steps; else on
+            // each half where that holds there.
             _ => {
                 let (c, n) = p.combine(a, b, k);
                 match single_change(&hull[..n]) {
@@ -272,7 +286,13 @@ impl Prism {
                         roots[0] = single_root(&c[..n], &hull[..n], i);
                         1
                     }
-                    None => roots_unit(&c[..n], hull, &mut roots),
+                    None => {
+                        let bz = [hull[0], hull[1], hull[2], hull[3]];
+                        match cubic_roots_by_halves(&bz, &mut roots) {
+                            Some(m) => m,
+                            None => roots_unit(&c[..n], hull, &mut roots),
+                        }
+                    }
                 }
             }
         };
@@ -299,6 +319,16 @@ impl Prism {
         }
     }
 
+    /// Takes arc `p`'s nearest point to `w` as `side` where it is nearer than `best`.
+    fn nearer<'a>(&self, p: &'a Piece, w: DVec2, scale: f64, best: &mut f64, side: &mut Option<(&'a Piece, f64)>) {
+        let t = arc::nearest_t(p, w);
+        let dist = (p.at(t) - w).length() * scale;
+        if dist < *best {
+            *best = dist;
+            *side = Some((p, t));
+        }
+    }
+
     /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
     fn normal_object(&self, q: DVec3) -> DVec3 {
         let w = self.section(q);
@@ -316,20 +346,33 @@ impl Prism {
         }
         // Side distances are measured in the section, scaled back to object units for a cone.
         let scale = if self.conic { q.y.abs() } else { 1.0 };
-        let mut side: Option<(f64, &Piece, f64)> = None;
-        for p in &self.pieces {
-            let gap = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length() * scale;
-            if gap >= best {
-                continue;
-            }
-            let t = closest_t(p, w);
-            let dist = (p.at(t) - w).length() * scale;
-            if dist < best {
-                best = dist;
-                side = Some((dist, p, t));
+        let mut side: Option<(&Piece, f64)> = None;
+        // The arcs whose boxes and slabs lie nearer than the caps (none for most points on a
+        // cap), the nearest first: the point lies on that arc or a neighbour, and the distance
+        // to it then rules out the arcs that lie farther.
+        let mut near = [(0.0, 0u32); 32];
+        let mut count = 0;
+        for (i, (p, slab)) in self.arcs.iter().zip(&self.slabs).enumerate() {
+            let g = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length().max(slab.gap(w)) * scale;
+            if g < best {
+                if count == near.len() {
+                    self.nearer(p, w, scale, &mut best, &mut side);
+                } else {
+                    near[count] = (g, i as u32);
+                    count += 1;
+                }
             }
         }
-        if let Some((_, p, t)) = side {
+        let near = &mut near[..count];
+        if let Some(first) = (0..count).min_by(|&i, &j| near[i].0.total_cmp(&near[j].0)) {
+            near.swap(0, first);
+        }
+        for &(g, i) in near.iter() {
+            if g < best {
+                self.nearer(&self.arcs[i as usize], w, scale, &mut best, &mut side);
+            }
+        }
+        if let Some((p, t)) = side {
             let tan = p.tangent(t);
             let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
             if n2 == DVec2::ZERO {

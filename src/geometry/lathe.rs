@@ -9,6 +9,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
+use super::quartic::{ferrari, polish};
 use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
@@ -85,6 +86,59 @@ impl Squares {
             r2_max: r_max * r_max,
         }
     }
+}
+
+/// The roots in `[0, 1]` of the quartic `c` (highest power first: a quadratic piece's
+/// polynomial) by Ferrari's closed form (`quartic::ferrari`), each polished by Newton steps,
+/// in no particular order (the caller keeps the nearest hit); `None` where the closed form is
+/// ill-conditioned (a double root: a grazing ray; or a leading coefficient so small that the
+/// quartic is nearly a cubic), for the caller to subdivide instead (`bernstein`). The
+/// subdivision's polish was 40 % of the lathe_quadratic kernel scene.
+///
+/// A root up to a part in 10⁹ outside `[0, 1]` is kept: at a joint the two pieces' polynomials
+/// round differently, and keeping both (they give the same point) leaves no crack between them.
+fn unit_quartic(c: &[f64; 7], out: &mut [f64; MAX_DEGREE]) -> Option<usize> {
+    let scale = c[1..5].iter().fold(0.0f64, |m, k| m.max(k.abs()));
+    if !(c[0].abs() > 1e-3 * scale) {
+        return None;
+    }
+    let inv = 1.0 / c[0];
+    let monic = [1.0, c[1] * inv, c[2] * inv, c[3] * inv, c[4] * inv];
+    let (mut all, mut tol) = ([0.0; 4], 0.0);
+    let n = ferrari(&monic, &mut all, &mut tol)?;
+    // A step below 10⁻⁹ of the unit interval leaves a simple root good to far below that.
+    let tol = tol.min(1e-9);
+    let mut m = 0;
+    for &x in &all[..n] {
+        // Far outside (a polish moves a root by much less): not this piece's.
+        if !(x > -0.01 && x < 1.01) {
+            continue;
+        }
+        let x = polish(&monic, x, tol)?;
+        if x >= -1e-9 && x <= 1.0 + 1e-9 {
+            out[m] = x;
+            m += 1;
+        }
+    }
+    Some(m)
+}
+
+/// `spline::closest_t` for a straight piece, with the same arithmetic (so the same bits):
+/// the foot of the perpendicular from `w` where it falls on the piece, else the nearer end,
+/// without the general solve's set-up.
+#[inline(always)]
+fn closest_on_line(p: &Piece, w: DVec2) -> f64 {
+    let a = p.u[1] * p.u[1] + p.v[1] * p.v[1];
+    let b = (p.u[0] - w.x) * p.u[1] + (p.v[0] - w.y) * p.v[1];
+    let dist = |t: f64| (p.at(t) - w).length_squared();
+    let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
+    if a != 0.0 {
+        let r = -b / a;
+        if r >= 0.0 && r <= 1.0 && dist(r) < dist(best) {
+            best = r;
+        }
+    }
+    best
 }
 
 impl Lathe {
@@ -181,8 +235,11 @@ impl Lathe {
                     *slot = k_y2 * sq.y2[k] + k_y * sq.y[k] - k_r2 * sq.r2[k];
                 }
                 c[len - 1] += k_1;
+                let quartic = if len == 5 { unit_quartic(&c, &mut roots) } else { None };
                 let m = if len <= 3 {
                     roots_between(&c[..len], 0.0, 1.0, &mut roots)
+                } else if let Some(m) = quartic {
+                    m
                 } else {
                     let mut b = [0.0; MAX_B + 1];
                     for (k, slot) in b[..len].iter_mut().enumerate() {
@@ -210,19 +267,37 @@ impl Lathe {
 
     fn normal_object(&self, q: DVec3) -> DVec3 {
         let w = Lathe::profile(q);
-        let mut best: Option<(f64, &Piece, f64)> = None;
-        for p in &self.pieces {
-            let gap = (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length();
-            if best.is_some_and(|b| gap >= b.0) {
-                continue;
-            }
-            let t = closest_t(p, w);
-            let dist = (p.at(t) - w).length();
-            if best.is_none_or(|b| dist < b.0) {
-                best = Some((dist, p, t));
+        // The piece nearest `w`, ties to the first listed. A hit point lies on a piece, so the
+        // pieces whose boxes (nearly) hold it go first: once one is found at a distance of
+        // rounding, every other piece's box is farther and its solve is passed over (in list
+        // order, every piece before the one holding `w` was solved). Squared distances: a
+        // square root per piece was a fifth of this function.
+        let gap =
+            |p: &Piece| (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length_squared();
+        const NEAR: f64 = 1e-12;
+        // A point farther than the unit scale from every piece's box is on no piece: in a
+        // packet, a lane of another shape or at the ray's origin, whose normal is thrown away
+        // (`render::packet` asks all eight lanes); a hit point is off its piece by rounding, far
+        // less. Solving every piece for such lanes was most of this function's time.
+        if self.pieces.iter().all(|p| gap(p) > 1.0) {
+            return DVec3::Y;
+        }
+        let mut best: Option<(f64, usize, f64)> = None;
+        for first in [true, false] {
+            for (k, p) in self.pieces.iter().enumerate() {
+                let g = gap(p);
+                if (g <= NEAR) != first || best.is_some_and(|b| g > b.0) {
+                    continue;
+                }
+                let t = if p.degree == 1 { closest_on_line(p, w) } else { closest_t(p, w) };
+                let dist = (p.at(t) - w).length_squared();
+                if best.is_none_or(|b| dist < b.0 || (dist == b.0 && k < b.1)) {
+                    best = Some((dist, k, t));
+                }
             }
         }
-        let Some((_, p, t)) = best else { return DVec3::Y };
+        let Some((_, k, t)) = best else { return DVec3::Y };
+        let p = &self.pieces[k];
         let tan = p.tangent(t);
         let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
         let at = p.at(t);

@@ -527,7 +527,7 @@ mod tests {
             let m = roots_unit(&q, to_bernstein(&low_first), &mut sub);
             for &r in &sub[..m] {
                 assert!(
-                    closed[..n].iter().any(|&x| (x - r).abs() < 1e-9),
+                    closed[..n].iter().any(|&x| (x - r).abs() < 1e-7),
                     "case {case} {q:?}: {r} not in {:?}",
                     &closed[..n]
                 );

@@ -7,6 +7,9 @@
 
 use glam::Vec3;
 
+use super::height_walk::HeightCells;
+use super::triangle::Triangle;
+
 /// A height field's grid, kept for its inside test: below the surface, found in the one square
 /// under the point instead of by counting the mesh's crossings along a ray.
 #[derive(Clone, Debug)]
@@ -17,11 +20,25 @@ pub struct HeightGrid {
     heights: Vec<f32>,
     /// The mesh's floor (`water_level`, or -inf): surface below it is not there.
     floor: f32,
+    /// The walk over the mesh's triangles by cell, once `linked` to them.
+    cells: Option<HeightCells>,
 }
 
 impl HeightGrid {
     pub fn new(width: usize, height: usize, heights: &[f32], floor: f32) -> HeightGrid {
-        HeightGrid { width, height, heights: heights.to_vec(), floor }
+        HeightGrid { width, height, heights: heights.to_vec(), floor, cells: None }
+    }
+
+    /// The grid with its walk over `triangles`, the mesh made of it by `faces` (in any order).
+    pub fn linked(self, triangles: &[Triangle]) -> HeightGrid {
+        let cells = HeightCells::new(self.width, self.height, &self.heights, self.floor, triangles);
+        HeightGrid { cells: Some(cells), ..self }
+    }
+
+    /// The walk, once linked: the mesh's own in place of its BVH's.
+    #[inline(always)]
+    pub fn cells(&self) -> Option<&HeightCells> {
+        self.cells.as_ref()
     }
 
     /// Whether object-space `p` lies below the surface, over the unit square, where the surface

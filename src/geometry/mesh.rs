@@ -83,9 +83,10 @@ impl MeshData {
         self
     }
 
-    /// The mesh of a height field: `grid` answers which points lie inside (below the surface).
+    /// The mesh of a height field: `grid` answers which points lie inside (below the surface),
+    /// and finds the faces a ray hits by walking its cells instead of the BVH.
     pub fn with_grid(mut self, grid: HeightGrid) -> MeshData {
-        self.grid = Some(grid);
+        self.grid = Some(grid.linked(&self.triangles));
         self
     }
 
@@ -105,6 +106,9 @@ impl MeshData {
         // NaN as "could be anywhere" and would visit every node.
         if !(t_min < t_max && ray.origin.is_finite() && ray.dir.is_finite()) {
             return None;
+        }
+        if let Some(cells) = self.grid.as_ref().and_then(HeightGrid::cells) {
+            return cells.nearest(&self.triangles, ray, t_min, t_max);
         }
         let lanes = ray.lanes();
         let mut best: Option<(f32, u32)> = None;
@@ -146,6 +150,9 @@ impl MeshData {
     /// each lane's face (for `FIRST`, the one that stopped it).
     #[inline(always)]
     fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
+        if let Some(cells) = self.grid.as_ref().and_then(HeightGrid::cells) {
+            return cells.lanes::<L, FIRST>(&self.triangles, ray, t_min, t_max);
+        }
         // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
         let active = L::and(t_min.lt(t_max), L::and(finite(&ray.o), finite(&ray.d)));
         let mut faces = [u32::MAX; 8];
@@ -223,6 +230,9 @@ impl MeshData {
     pub fn first(&self, ray: &Ray, t_min: f32, t_max: f32) -> Option<f32> {
         if !(t_min < t_max && ray.origin.is_finite() && ray.dir.is_finite()) {
             return None;
+        }
+        if let Some(cells) = self.grid.as_ref().and_then(HeightGrid::cells) {
+            return cells.first(&self.triangles, ray, t_min, t_max);
         }
         let lanes = ray.lanes();
         let mut found = None;

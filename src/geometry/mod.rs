@@ -65,6 +65,7 @@ pub mod cuboid;
 pub mod disc;
 mod halley;
 pub mod height_field;
+mod height_walk;
 pub mod isosurface;
 mod isosurface_search;
 pub mod julia;

@@ -9,7 +9,6 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
-use super::quartic::{ferrari, polish};
 use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{closest_t, even_odd, Piece};
@@ -86,95 +85,6 @@ impl Squares {
             r2_max: r_max * r_max,
         }
     }
-}
-
-/// The roots in `[0, 1]` of the quartic `c` (highest power first: a quadratic piece's
-/// polynomial) by Ferrari's closed form (`quartic::ferrari`), each polished by Newton steps,
-/// in no particular order (the caller keeps the nearest hit); `None` where the closed form is
-/// ill-conditioned (a double root: a grazing ray; or a leading coefficient so small that the
-/// quartic is nearly a cubic), for the caller to subdivide instead (`bernstein`). The
-/// subdivision's polish was 40 % of the lathe_quadratic kernel scene.
-///
-/// A root up to a part in 10⁹ outside `[0, 1]` is kept: at a joint the two pieces' polynomials
-/// round differently, and keeping both (they give the same point) leaves no crack between them.
-fn unit_quartic(c: &[f64; 7], out: &mut [f64; MAX_DEGREE]) -> Option<usize> {
-    let scale = c[1..5].iter().fold(0.0f64, |m, k| m.max(k.abs()));
-    if !(c[0].abs() > 1e-3 * scale) {
-        return None;
-    }
-    let inv = 1.0 / c[0];
-    let monic = [1.0, c[1] * inv, c[2] * inv, c[3] * inv, c[4] * inv];
-    let (mut all, mut tol) = ([0.0; 4], 0.0);
-    let n = ferrari(&monic, &mut all, &mut tol)?;
-    // A step below 10⁻⁹ of the unit interval leaves a simple root good to far below that.
-    let tol = tol.min(1e-9);
-    let mut m = 0;
-    for &x in &all[..n] {
-        // Far outside (a polish moves a root by much less): not this piece's.
-        if !(x > -0.01 && x < 1.01) {
-            continue;
-        }
-        let x = polish(&monic, x, tol)?;
-        if x >= -1e-9 && x <= 1.0 + 1e-9 {
-            out[m] = x;
-            m += 1;
-        }
-    }
-    Some(m)
-}
-
-/// `spline::closest_t` for a straight piece, with the same arithmetic (so the same bits):
-/// the foot of the perpendicular from `w` where it falls on the piece, else the nearer end,
-/// without the general solve's set-up.
-#[inline(always)]
-fn closest_on_line(p: &Piece, w: DVec2) -> f64 {
-    let a = p.u[1] * p.u[1] + p.v[1] * p.v[1];
-    let b = (p.u[0] - w.x) * p.u[1] + (p.v[0] - w.y) * p.v[1];
-    let dist = |t: f64| (p.at(t) - w).length_squared();
-    let mut best = if dist(0.0) <= dist(1.0) { 0.0 } else { 1.0 };
-    if a != 0.0 {
-        let r = -b / a;
-        if r >= 0.0 && r <= 1.0 && dist(r) < dist(best) {
-            best = r;
-        }
-    }
-    best
-}
-
-/// `spline::closest_t` for a point on a curved piece (a hit point: off it by rounding), by
-/// Newton steps on `(C(t) − w)·C'(t)` from the nearest of five samples; `None` (for the general
-/// solve) unless they converge inside `[0, 1]` to a point within 3·10⁻⁶ of `w` (rounding;
-/// another stretch of the curve passing that near `w` is where the two may differ). The general
-/// solve isolates every root of that polynomial by subdivision first: two thirds of the normal's
-/// cost in the lathe_quadratic kernel scene. Both pin the same simple root to a few ulps.
-#[inline]
-fn closest_on_curve(p: &Piece, w: DVec2) -> Option<f64> {
-    let dist = |t: f64| (p.at(t) - w).length_squared();
-    let mut t = 0.0;
-    let mut best = dist(0.0);
-    for k in 1..=4 {
-        let u = k as f64 * 0.25;
-        let d = dist(u);
-        if d < best {
-            (t, best) = (u, d);
-        }
-    }
-    let second = |t: f64| {
-        let h = |c: &[f64; 4]| 6.0 * c[3] * t + 2.0 * c[2];
-        DVec2::new(h(&p.u), h(&p.v))
-    };
-    for _ in 0..8 {
-        let (c, d1, d2) = (p.at(t) - w, p.tangent(t), second(t));
-        let step = c.dot(d1) / (d1.length_squared() + c.dot(d2));
-        if !step.is_finite() {
-            return None;
-        }
-        t -= step;
-        if step.abs() <= 1e-12 {
-            return (t >= 0.0 && t <= 1.0 && dist(t) <= 1e-11).then_some(t);
-        }
-    }
-    None
 }
 
 impl Lathe {
@@ -271,11 +181,8 @@ impl Lathe {
                     *slot = k_y2 * sq.y2[k] + k_y * sq.y[k] - k_r2 * sq.r2[k];
                 }
                 c[len - 1] += k_1;
-                let quartic = if len == 5 { unit_quartic(&c, &mut roots) } else { None };
                 let m = if len <= 3 {
                     roots_between(&c[..len], 0.0, 1.0, &mut roots)
-                } else if let Some(m) = quartic {
-                    m
                 } else {
                     let mut b = [0.0; MAX_B + 1];
                     for (k, slot) in b[..len].iter_mut().enumerate() {
@@ -303,41 +210,19 @@ impl Lathe {
 
     fn normal_object(&self, q: DVec3) -> DVec3 {
         let w = Lathe::profile(q);
-        // The piece nearest `w`, ties to the first listed. A hit point lies on a piece, so the
-        // pieces whose boxes (nearly) hold it go first: once one is found at a distance of
-        // rounding, every other piece's box is farther and its solve is passed over (in list
-        // order, every piece before the one holding `w` was solved). Squared distances: a
-        // square root per piece was a fifth of this function.
-        let gap =
-            |p: &Piece| (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length_squared();
-        const NEAR: f64 = 1e-8;
-        // A point farther than half the unit scale from every piece's box is on no piece: in a
-        // packet, a lane of another shape or at the ray's origin, whose normal is thrown away
-        // (`render::packet` asks all eight lanes); a hit point is off its piece by rounding, far
-        // less. Solving every piece for such lanes was most of this function's time.
-        if self.pieces.iter().all(|p| gap(p) > 0.25) {
-            return DVec3::Y;
-        }
-        let mut best: Option<(f64, usize, f64)> = None;
-        for first in [true, false] {
-            for (k, p) in self.pieces.iter().enumerate() {
-                let g = gap(p);
-                if (g <= NEAR) != first || best.is_some_and(|b| g > b.0) {
-                    continue;
-                }
-                let t = if p.degree == 1 {
-                    closest_on_line(p, w)
-                } else {
-                    closest_on_curve(p, w).unwrap_or_else(|| closest_t(p, w))
-                };
-                let dist = (p.at(t) - w).length_squared();
-                if best.is_none_or(|b| dist < b.0 || (dist == b.0 && k < b.1)) {
-                    best = Some((dist, k, t));
-                }
+        let mut best: Option<(f64, &Piece, f64)> = None;
+        for p in &self.pieces {
+            let gap = (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length();
+            if best.is_some_and(|b| gap >= b.0) {
+                continue;
+            }
+            let t = closest_t(p, w);
+            let dist = (p.at(t) - w).length();
+            if best.is_none_or(|b| dist < b.0) {
+                best = Some((dist, p, t));
             }
         }
-        let Some((_, k, t)) = best else { return DVec3::Y };
-        let p = &self.pieces[k];
+        let Some((_, p, t)) = best else { return DVec3::Y };
         let tan = p.tangent(t);
         let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
         let at = p.at(t);
@@ -486,89 +371,5 @@ mod tests {
             }
         }
         assert!(checked > 8000, "{checked}");
-    }
-
-    /// Seeded random quartics with chosen roots (some in `[0, 1]`, some near its ends, some
-    /// doubled, some complex pairs): where the closed form answers, it finds every root the
-    /// subdivision finds in `[0, 1]`, to 10⁻⁷ (a near-double pair is good to about the root of
-    /// the rounding, for either), and no other there but a double root, none
-    /// farther than 10⁻⁹ outside.
-    #[test]
-    fn unit_quartic_finds_the_subdivisions_roots() {
-        use crate::geometry::bernstein::{roots_unit, to_bernstein};
-        use crate::geometry::test_support::{from_roots, uniform};
-        let mut rand = uniform(0x9e37_79b9_7f4a_7c15);
-        let (mut answered, mut ill) = (0, 0);
-        for case in 0..20_000 {
-            let mut pick = || match (rand() * 5.0) as u32 {
-                0 => rand() * 4.0 - 2.0,
-                1 => [0.0, 1.0][(rand() * 2.0) as usize] + (rand() - 0.5) * 1e-6,
-                _ => rand(),
-            };
-            let (a, b, c) = (pick(), pick(), pick());
-            let d = if case % 7 == 0 { a } else { pick() };
-            let mut q = from_roots(&[a, b, c, d], rand() * 10.0 - 5.0);
-            if case % 3 == 0 {
-                // (x − a)(x − b)(x² + k): two roots and a complex pair.
-                let k = rand() * 0.5 + 1e-3;
-                q = from_roots(&[a, b], 1.0);
-                q = vec![q[0], q[1], q[2] + k * q[0], k * q[1], k * q[2]];
-            }
-            let mut c7 = [0.0; 7];
-            c7[..5].copy_from_slice(&q);
-            let mut closed = [0.0; MAX_DEGREE];
-            let Some(n) = unit_quartic(&c7, &mut closed) else {
-                ill += 1;
-                continue;
-            };
-            answered += 1;
-            let low_first: Vec<f64> = q.iter().rev().copied().collect();
-            let mut sub = [0.0; MAX_DEGREE];
-            let m = roots_unit(&q, to_bernstein(&low_first), &mut sub);
-            for &r in &sub[..m] {
-                assert!(
-                    closed[..n].iter().any(|&x| (x - r).abs() < 1e-7),
-                    "case {case} {q:?}: {r} not in {:?}",
-                    &closed[..n]
-                );
-            }
-            let f = |x: f64| q.iter().fold(0.0, |acc, &k| acc * x + k);
-            for &x in &closed[..n] {
-                let inside = x >= 0.0 && x <= 1.0;
-                // The subdivision passes over a double root where the quartic touches zero
-                // without crossing (a ray grazing the surface); the closed form may keep it.
-                let touch = f(x - 1e-7) * f(x + 1e-7) > 0.0;
-                let found = sub[..m].iter().any(|&r| (x - r).abs() < 1e-7);
-                assert!(!inside || found || touch, "case {case} {q:?}: extra {x}");
-                assert!(x >= -1e-9 && x <= 1.0 + 1e-9);
-            }
-        }
-        assert!(answered > 15_000 && ill > 100, "{answered} {ill}");
-    }
-
-    /// Points on (and within rounding of) curved pieces: the Newton nearest point is the general
-    /// solve's to 10⁻⁹, or declines.
-    #[test]
-    fn closest_on_curve_matches_the_general_solve() {
-        use crate::geometry::test_support::uniform;
-        let mut rand = uniform(0x5851_f42d_4c95_7f2d);
-        let mut agreed = 0;
-        for case in 0..20_000 {
-            let mut q = || DVec2::new(rand() * 2.0 - 1.0, rand() * 2.0 - 1.0);
-            let p = if case % 2 == 0 {
-                Piece::quadratic_bezier(q(), q(), q())
-            } else {
-                Piece::cubic_bezier([q(), q(), q(), q()])
-            };
-            let t = rand();
-            let w = p.at(t) + DVec2::new(rand() - 0.5, rand() - 0.5) * 1e-7;
-            if let Some(s) = closest_on_curve(&p, w) {
-                let g = closest_t(&p, w);
-                let (ds, dg) = ((p.at(s) - w).length(), (p.at(g) - w).length());
-                assert!(ds <= dg + 1e-12, "case {case}: {s} ({ds}) vs {g} ({dg})");
-                agreed += 1;
-            }
-        }
-        assert!(agreed > 15_000, "{agreed}");
     }
 }

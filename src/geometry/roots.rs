@@ -180,31 +180,9 @@ pub(super) fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
     if n == 0 || n > MAX_DEGREE || !(lo.is_finite() && hi.is_finite() && lo < hi) {
         return false;
     }
-    // `a[j]`: the coefficient of s^j of p(lo + w·s), s in [0, 1]; `m[j]` the same for |p|'s
-    // coefficients and |lo|, a bound on the magnitudes every sum below adds up.
-    let (mut a, mut m) = ([0.0f64; MAX_DEGREE + 1], [0.0f64; MAX_DEGREE + 1]);
-    for j in 0..=n {
-        a[j] = c[n - j];
-        m[j] = c[n - j].abs();
-    }
-    // Taylor shift by `lo` (repeated synthetic division), then scale by the width.
-    for i in 0..n {
-        for j in (i..n).rev() {
-            a[j] += lo * a[j + 1];
-            m[j] += lo.abs() * m[j + 1];
-        }
-    }
-    let w = hi - lo;
-    let mut wj = 1.0;
-    for j in 0..=n {
-        a[j] *= wj;
-        m[j] *= wj;
-        wj *= w;
-    }
-    let magnitude: f64 = m[..=n].iter().sum();
-    if !magnitude.is_finite() || magnitude == 0.0 {
+    let Some((a, magnitude)) = on_unit(c, lo, hi) else {
         return false;
-    }
+    };
     // Rounding is below (n + 1)² ulps of `magnitude`; the margin is 10⁴ times more.
     let tol = 1e-10 * magnitude;
     // b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · a_j.
@@ -222,6 +200,35 @@ pub(super) fn certainly_no_root(c: &[f64], lo: f64, hi: f64) -> bool {
         sign = b.signum();
     }
     true
+}
+
+/// `c` (highest degree first, degree `n` at most `MAX_DEGREE`) on `[lo, hi]` as a polynomial in
+/// s on `[0, 1]`: `a[j]`, the coefficient of s^j of p(lo + w·s), by a Taylor shift (repeated
+/// synthetic division) and a scaling by the width; and the sum of the magnitudes that went into
+/// them (the same for |p|'s coefficients and |lo|), which bounds their rounding. `None` for a zero
+/// or non-finite magnitude.
+pub(super) fn on_unit(c: &[f64], lo: f64, hi: f64) -> Option<([f64; MAX_DEGREE + 1], f64)> {
+    let n = c.len() - 1;
+    let (mut a, mut m) = ([0.0f64; MAX_DEGREE + 1], [0.0f64; MAX_DEGREE + 1]);
+    for j in 0..=n {
+        a[j] = c[n - j];
+        m[j] = c[n - j].abs();
+    }
+    for i in 0..n {
+        for j in (i..n).rev() {
+            a[j] += lo * a[j + 1];
+            m[j] += lo.abs() * m[j + 1];
+        }
+    }
+    let w = hi - lo;
+    let mut wj = 1.0;
+    for j in 0..=n {
+        a[j] *= wj;
+        m[j] *= wj;
+        wj *= w;
+    }
+    let magnitude: f64 = m[..=n].iter().sum();
+    (magnitude.is_finite() && magnitude != 0.0).then_some((a, magnitude))
 }
 
 /// The root of `c` in `[a, b]`, where `c` is monotonic, if its sign changes or it touches zero.

@@ -12,7 +12,7 @@
 //! stops at the first root. A span still undecided after `MAX_DEPTH` halvings (near a double
 //! root: a grazing ray) goes to the critical points, which do not lose double roots.
 
-use super::super::roots::{certainly_no_root, monotonic_root, root_bound, MAX_DEGREE};
+use super::super::roots::{certainly_no_root, monotonic_root, on_unit, root_bound, MAX_DEGREE};
 
 /// Halvings before a span goes to the critical points: 2⁻¹⁶ of the span.
 const MAX_DEPTH: u32 = 16;
@@ -47,30 +47,7 @@ fn bernstein(c: &[f64], a: f64, b: f64) -> Option<([f64; MAX_DEGREE + 1], f64)> 
     if !(a.is_finite() && b.is_finite()) {
         return None;
     }
-    // `s[j]`: the coefficient of x^j of p(a + w·x), x in [0, 1]; `m[j]` the same for |p|'s
-    // coefficients and |a|.
-    let (mut s, mut m) = ([0.0f64; MAX_DEGREE + 1], [0.0f64; MAX_DEGREE + 1]);
-    for j in 0..=n {
-        s[j] = c[n - j];
-        m[j] = c[n - j].abs();
-    }
-    for i in 0..n {
-        for j in (i..n).rev() {
-            s[j] += a * s[j + 1];
-            m[j] += a.abs() * m[j + 1];
-        }
-    }
-    let w = b - a;
-    let mut wj = 1.0;
-    for j in 0..=n {
-        s[j] *= wj;
-        m[j] *= wj;
-        wj *= w;
-    }
-    let magnitude: f64 = m[..=n].iter().sum();
-    if !magnitude.is_finite() || magnitude == 0.0 {
-        return None;
-    }
+    let (s, magnitude) = on_unit(c, a, b)?;
     // b_i = Σ_{j ≤ i} C(i, j) · s_j / C(n, j): the s_j / C(n, j), then Pascal's triangle summed
     // in place (n passes of neighbour sums), with no division in the inner loop.
     let mut out = [0.0; MAX_DEGREE + 1];

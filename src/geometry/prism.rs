@@ -24,8 +24,7 @@ use super::cuboid::{frame_for, BoxFrame};
 use super::halley::{cubic_roots_by_halves, single_change, single_root};
 use super::roots::MAX_DEGREE;
 use super::spline::Piece;
-use super::{affine_f32, transformed_bounds, Shape};
-use crate::accel::aabb::node_slabs;
+use super::{affine_f32, transformed_bounds, CullBox, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 
@@ -49,10 +48,9 @@ pub struct Prism {
     pieces: Vec<Piece>,
     pub min: Vec3,
     pub max: Vec3,
-    /// The object-space box (f32, widened by 10⁻⁴ of its size) that eight lanes are tested
-    /// against first, so that only lanes whose ray crosses it are solved in f64 (`hit`).
-    cull_lo: Vec3,
-    cull_hi: Vec3,
+    /// The object-space box eight lanes are tested against first, so that only lanes whose ray
+    /// crosses it are solved in f64 (`hit`).
+    cull: CullBox,
 }
 
 impl Prism {
@@ -92,8 +90,7 @@ impl Prism {
             (DVec3::new(lo.x, h1, lo.y), DVec3::new(hi.x, h2, hi.y))
         };
         let (min, max) = transformed_bounds(&xf, blo.as_vec3(), bhi.as_vec3());
-        let widen = 1e-4 * (bhi - blo).max_element().max(blo.abs().max(bhi.abs()).max_element());
-        let (cull_lo, cull_hi) = ((blo - widen).as_vec3(), (bhi + widen).as_vec3());
+        let cull = CullBox::new(blo, bhi);
         // Widened by a few f32 ulps: the box's corners were rounded.
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
         let arcs: Vec<Piece> = pieces.iter().flat_map(Piece::monotone_parts).collect();
@@ -110,8 +107,7 @@ impl Prism {
             open,
             min: min - pad,
             max: max + pad,
-            cull_lo,
-            cull_hi,
+            cull,
         }
     }
 
@@ -397,21 +393,10 @@ impl Prism {
 impl Shape for Prism {
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        // Most lanes of a packet that reaches a prism miss its box (three in five on the kernel
-        // scenes): all lanes at once, in the lanes' own arithmetic, with a margin of 10⁻⁵ of the
-        // distances (far above the slab test's rounding), so a lane the f64 solve would find a
-        // hit for is never dropped; dropped lanes get an empty interval, which `solve` answers
-        // at once, so packets and single rays keep the same bits.
+        // Most lanes of a packet that reaches a prism miss its box: all lanes at once first.
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
-        let (near, far) = node_slabs(V3::splat(self.cull_lo), V3::splat(self.cull_hi), o, d.recip());
-        let margin = (near.abs() + far.abs()) * L::splat(1e-5);
-        let (near, far) = (near - margin, far + margin);
-        let live = L::and(near.le(far), L::and(near.le(t_max), t_min.le(far)));
-        if !L::any(live) {
-            return L::splat(MISS);
-        }
-        let t_max = L::select(live, t_max, L::splat(f32::NEG_INFINITY));
+        let Some(t_max) = self.cull.live(o, d, t_min, t_max) else { return L::splat(MISS) };
         super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
     }
 

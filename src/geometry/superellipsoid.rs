@@ -24,7 +24,7 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::{transformed_bounds, Shape};
+use super::{transformed_bounds, CullBox, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 
@@ -43,12 +43,15 @@ pub struct Superellipsoid {
     pub max: Vec3,
     /// The convex solver's powers of `e` and `n`, worked out once, not per ray.
     powers: Powers,
+    /// The object-space box, for culling lanes before the f64 solve.
+    cull: CullBox,
 }
 
 impl Superellipsoid {
     pub fn new(render_from_object: Affine3A, e: f64, n: f64) -> Superellipsoid {
         let (min, max) = transformed_bounds(&render_from_object, Vec3::splat(-1.0), Vec3::ONE);
-        Superellipsoid { frame: frame_for(render_from_object), e, n, min, max, powers: Powers::new(e, n) }
+        let cull = CullBox::new(glam::DVec3::splat(-1.0), glam::DVec3::ONE);
+        Superellipsoid { frame: frame_for(render_from_object), e, n, min, max, powers: Powers::new(e, n), cull }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -364,9 +367,15 @@ impl Shape for Superellipsoid {
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
+        // Lanes that miss the box, or trace nothing (a blocked shadow ray), are not solved.
+        let Some(t_max) = self.cull.live(o, d, t_min, t_max) else { return L::splat(MISS) };
         L::from_fn_f64(|i| {
             let v = |v: V3<L>| [v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i)];
-            self.solve(v(o), v(d), t_min.get_f64(i), t_max.get_f64(i)).unwrap_or(MISS as f64)
+            let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
+            if !(lo < hi) {
+                return MISS as f64;
+            }
+            self.solve(v(o), v(d), lo, hi).unwrap_or(MISS as f64)
         })
     }
 

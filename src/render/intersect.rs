@@ -300,6 +300,17 @@ impl Scene {
         self.normal_lanes(shape, V3::from_vec3(p)).vec3()
     }
 
+    /// Whether `shape`'s normals are worked out point by point (`ShapeKind::normal_per_lane`),
+    /// so that a packet should ask `normal_at` for its own lanes rather than `normal_lanes` for
+    /// all eight. The bits are the same either way.
+    #[inline]
+    pub fn normal_per_lane(&self, shape: HitShape) -> bool {
+        match shape {
+            HitShape::Prim(i) => self.prims[i as usize].kind.normal_per_lane(),
+            HitShape::Face { .. } | HitShape::Plane(_) => false,
+        }
+    }
+
     /// `normal_at` for one or eight points on the same shape.
     #[inline(always)]
     pub fn normal_lanes<L: Lane>(&self, shape: HitShape, p: V3<L>) -> V3<L> {

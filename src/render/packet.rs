@@ -250,13 +250,13 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             let ray = &rays[r];
             let p = ray.o.add(ray.d.scale(F8::select(in_lanes, t[r], F8::splat(0.0))));
             // The geometric normal, one shape at a time (the same bits lane by lane or eight
-            // wide); a shape on one or two lanes is asked lane by lane, as some shapes solve
-            // their normals per lane in f64 whatever the width.
+            // wide); a shape on one or two lanes, or one that solves its normals point by point
+            // whatever the width, is asked for its own lanes only.
             let mut geometric = V3::splat(Vec3::Y);
             for (id, same_id) in Groups::of(&ids[r], in_lanes) {
                 for (face, group) in Groups::of(&faces[r], same_id) {
                     let Some(shape) = hit_shape(id, face) else { continue };
-                    if group.count() > 2 {
+                    if group.count() > 2 && !scene.normal_per_lane(shape) {
                         geometric = V3::select(group, scene.normal_lanes(shape, p), geometric);
                     } else {
                         for j in (0..8).filter(|&j| group.lane(j)) {

@@ -61,6 +61,25 @@ impl ShapeKind {
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
     pub const COUNT: usize = 21;
 
+    /// Whether this kind works out each point's normal on its own (in f64, or by a search),
+    /// whatever the width it is asked at: a packet then asks for its own lanes only, not all
+    /// eight (a lathe's normal is a closest-point solve; asked for all eight lanes of a row,
+    /// it was a third of the lathe kernel scenes' frames).
+    pub fn normal_per_lane(self) -> bool {
+        matches!(
+            self,
+            ShapeKind::Poly
+                | ShapeKind::Superellipsoid
+                | ShapeKind::Prism
+                | ShapeKind::Lathe
+                | ShapeKind::Sor
+                | ShapeKind::Blob
+                | ShapeKind::Julia
+                | ShapeKind::Isosurface
+                | ShapeKind::Parametric
+        )
+    }
+
     pub fn name(self) -> &'static str {
         match self {
             ShapeKind::Sphere | ShapeKind::Ellipsoid => "Sphere",

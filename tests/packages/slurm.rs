@@ -51,11 +51,13 @@ fn text(out: &Output) -> String {
     format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr))
 }
 
-/// A free TCP port now (the listener is dropped at once; a port taken in between makes the
-/// daemon fail to start, which the start-up check reports with its log).
-fn free_port() -> u16 {
-    let l = TcpListener::bind("0.0.0.0:0").unwrap_or_else(|e| panic!("cannot find a free port: {e}"));
-    l.local_addr().unwrap().port()
+/// Two distinct free TCP ports now, for slurmctld and slurmd: both listeners are held until
+/// both are known, so the two differ, then dropped (a port taken in between makes a daemon fail
+/// to start, which the start-up check reports with its log).
+fn free_ports() -> (u16, u16) {
+    let bind = || TcpListener::bind("0.0.0.0:0").unwrap_or_else(|e| panic!("cannot find a free port: {e}"));
+    let (a, b) = (bind(), bind());
+    (a.local_addr().unwrap().port(), b.local_addr().unwrap().port())
 }
 
 /// A one-node Slurm cluster in its own folder, on ports of its own.
@@ -79,7 +81,7 @@ impl Cluster {
         std::fs::create_dir_all(dir.join("state")).unwrap();
         std::fs::create_dir_all(dir.join("spool")).unwrap();
         let cpus = std::thread::available_parallelism().map_or(1, |n| n.get()).clamp(1, 4);
-        let (ctld_port, d_port) = (free_port(), free_port());
+        let (ctld_port, d_port) = free_ports();
         let d = dir.display();
         let conf = dir.join("slurm.conf");
         let text = format!(

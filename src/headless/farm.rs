@@ -159,8 +159,8 @@ impl SlurmJob {
         let _ = writeln!(s, "    array=${{array%%;*}}");
         let _ = writeln!(
             s,
-            "    merge=$(sbatch --parsable --dependency=afterok:\"$array\" --array=0 --cpus-per-task=1 \\\n        --job-name={}-merge --export=ALL,STRAHL_FARM_STEP=merge \"$0\")",
-            self.name
+            "    merge=$(sbatch --parsable --dependency=afterok:\"$array\" --array=0 --cpus-per-task=1 \\\n        {} --export=ALL,STRAHL_FARM_STEP=merge \"$0\")",
+            quote(&format!("--job-name={}-merge", self.name))
         );
         let _ = writeln!(s, "    echo \"array job $array ({} shards), logs in $out/logs\"", self.tasks);
         let _ = writeln!(s, "    echo \"merge job ${{merge%%;*}} (afterok:$array)\"");

@@ -271,18 +271,39 @@ fn strahl(args: &[&str], env: &[(&str, &str)], cluster: &Cluster) -> Output {
     out
 }
 
-/// Runs `strahl farm slurm ... --submit`; returns the array's and the merge's job ids.
-fn submit(cluster: &Cluster, args: &[&str], env: &[(&str, &str)]) -> (String, String) {
+/// How a test submits the generated script.
+#[derive(Clone, Copy, PartialEq)]
+enum Submit {
+    /// `strahl farm slurm ... --submit`.
+    Strahl,
+    /// `strahl farm slurm ...`, then `bash DIR/strahl.sbatch`, as a user submits it later.
+    Script,
+}
+
+/// Writes the job script for `args` (which hold `-o DIR`) and submits it `how`; returns the
+/// array's and the merge's job ids, which both ways print alike.
+fn submit(cluster: &Cluster, args: &[&str], env: &[(&str, &str)], how: Submit) -> (String, String) {
     let mut all = vec!["farm", "slurm"];
     all.extend_from_slice(args);
-    all.extend_from_slice(&["--tasks", "4", "--cpus-per-task", "1", "--submit"]);
-    let out = text(&strahl(&all, env, cluster));
+    all.extend_from_slice(&["--tasks", "4", "--cpus-per-task", "1"]);
+    if how == Submit::Strahl {
+        all.push("--submit");
+    }
+    let mut out = text(&strahl(&all, env, cluster));
+    if how == Submit::Script {
+        let dir = args.iter().position(|a| *a == "-o").map(|i| args[i + 1]).expect("-o DIR");
+        let mut c = cluster.command("bash");
+        c.arg(Path::new(dir).join("strahl.sbatch")).envs(env.iter().copied());
+        let o = c.output().unwrap_or_else(|e| panic!("cannot run bash: {e}"));
+        assert!(o.status.success(), "bash {dir}/strahl.sbatch failed:\n{}", text(&o));
+        out = text(&o);
+    }
     let id = |prefix: &str| {
         out.lines()
             .find_map(|l| l.strip_prefix(prefix))
             .and_then(|r| r.split_whitespace().next())
             .map(str::to_string)
-            .unwrap_or_else(|| panic!("no `{prefix}ID` in the output of strahl farm slurm --submit:\n{out}"))
+            .unwrap_or_else(|| panic!("no `{prefix}ID` in the output of the submission:\n{out}"))
     };
     (id("array job "), id("merge job "))
 }
@@ -330,11 +351,12 @@ fn farm_on_a_one_node_slurm_cluster() {
     let reference_still = w("reference.png");
     strahl(&[&["render", seed.as_str(), "-q", "-o", &reference_still], &SIZE[..], &still_opts].concat(), &[], &cluster);
 
-    // The capture in 4 array tasks, then the still in 4 bands.
+    // The capture in 4 array tasks (submitted by `--submit`), then the still in 4 bands
+    // (submitted by running the script, as a user would later).
     let t = Instant::now();
     let cap_dir = w("capture");
     let farm_capture = [&[seed.as_str(), "--path", &orbit, "--frames", "24", "-o", &cap_dir], &SIZE[..]].concat();
-    let (array, merge) = submit(&cluster, &farm_capture, &[]);
+    let (array, merge) = submit(&cluster, &farm_capture, &[], Submit::Strahl);
     let logs = work.join("capture/logs");
     cluster.wait(&array, "the capture's shards", &logs);
     let shards_done = t.elapsed();
@@ -345,7 +367,7 @@ fn farm_on_a_one_node_slurm_cluster() {
     let t = Instant::now();
     let still_dir = w("still");
     let farm_still = [&[seed.as_str(), "-o", still_dir.as_str()], &SIZE[..], &still_opts].concat();
-    let (still_array, still_merge) = submit(&cluster, &farm_still, &[]);
+    let (still_array, still_merge) = submit(&cluster, &farm_still, &[], Submit::Script);
     let still_logs = work.join("still/logs");
     cluster.wait(&still_array, "the still's bands", &still_logs);
     cluster.wait(&still_merge, "the still's merge", &still_logs);
@@ -361,7 +383,7 @@ fn farm_on_a_one_node_slurm_cluster() {
     let t = Instant::now();
     let re_dir = w("requeue");
     let farm_again = [&[seed.as_str(), "--path", &orbit, "--frames", "24", "-o", &re_dir], &SIZE[..]].concat();
-    let (re_array, re_merge) = submit(&cluster, &farm_again, &[("STRAHL_FRAME_DELAY_MS", "500")]);
+    let (re_array, re_merge) = submit(&cluster, &farm_again, &[("STRAHL_FRAME_DELAY_MS", "500")], Submit::Strahl);
     let re_logs = work.join("requeue/logs");
     let shard1 = work.join("requeue/parts/1");
     let listed = |dir: &Path| Manifest::read(dir).map_or(0, |m| m.frames.len());

@@ -6,7 +6,9 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use strahl::headless::capture::{self, ClockRange, FrameRange};
-use strahl::headless::{self, bench, tradeoff, CliError};
+use strahl::headless::farm::{self, SlurmJob, Work};
+use strahl::headless::shard::{ShardSpec, MAX_SHARDS};
+use strahl::headless::{self, bench, still_part, tradeoff, CliError};
 use strahl::render::precision::Precision;
 use strahl::render::preset::Preset;
 use strahl::render::resample::MIN_RES_SCALE;
@@ -27,6 +29,12 @@ enum Command {
     Render(RenderCmd),
     /// Render frames along a camera path to DIR/frame_NNNN.png plus DIR/manifest.json.
     Capture(CaptureCmd),
+    /// Join the parts of a still rendered with `render --shard I/N` into the whole image.
+    Merge(MergeCmd),
+    /// Render on a cluster: write (and submit) a scheduler's job script for a sharded capture
+    /// or still (see docs/farm.md).
+    #[command(subcommand)]
+    Farm(FarmCmd),
     /// Time render() over frames and report frame-time percentiles and rays per second.
     Bench(BenchCmd),
     /// Measure every speed/accuracy knob and preset against the reference render: frame time,
@@ -80,6 +88,16 @@ enum AccelArg {
     Bvh,
     Grid,
     None,
+}
+
+impl AccelArg {
+    fn name(self) -> &'static str {
+        match self {
+            AccelArg::Bvh => "bvh",
+            AccelArg::Grid => "grid",
+            AccelArg::None => "none",
+        }
+    }
 }
 
 impl From<AccelArg> for AccelKind {
@@ -178,6 +196,43 @@ impl Common {
     fn res_scale(&self) -> f32 {
         self.res_scale.unwrap_or(self.preset.unwrap_or(Preset::Full).settings().res_scale)
     }
+
+    /// These options as command-line words, for a job script that runs strahl elsewhere:
+    /// every option given, include folders made absolute (tasks start in another folder).
+    /// `--threads` is left out: a farm's task takes the cores its scheduler gives it.
+    fn to_args(&self) -> Result<Vec<String>, CliError> {
+        let mut a = vec!["-W".to_string(), self.width.to_string(), "-H".into(), self.height.to_string()];
+        for dir in &self.include {
+            a.extend(["-L".into(), absolute(dir)?.display().to_string()]);
+        }
+        let mut opt = |flag: &str, v: Option<String>| {
+            if let Some(v) = v {
+                a.extend([flag.to_string(), v]);
+            }
+        };
+        opt("--preset", self.preset.map(|p| p.name().to_string()));
+        opt("--res-scale", self.res_scale.map(|f| f.to_string()));
+        opt("--aa", self.aa.map(|n| n.to_string()));
+        opt("--accel", Some(self.accel.name().to_string()));
+        opt("--max-depth", self.max_depth.map(|n| n.to_string()));
+        opt("--max-octaves", self.max_octaves.map(|n| n.to_string()));
+        opt("--max-area-samples", self.max_area_samples.map(|n| n.to_string()));
+        opt("--precision", self.precision.map(|p| p.name().to_string()));
+        opt("--max-blur-samples", self.max_blur_samples.map(|n| n.to_string()));
+        if self.no_shadows {
+            a.push("--no-shadows".into());
+        }
+        if self.no_packets {
+            a.push("--no-packets".into());
+        }
+        Ok(a)
+    }
+}
+
+/// `path` from the root, for a job script run in another folder (and checked to exist now,
+/// rather than in every task later).
+fn absolute(path: &std::path::Path) -> Result<PathBuf, CliError> {
+    std::fs::canonicalize(path).map_err(|e| CliError::user(format!("{}: {e}", path.display())))
 }
 
 /// `--clock` of capture and bench, one text for both.
@@ -201,8 +256,163 @@ struct RenderCmd {
     /// With --ini: the frame number to render (POV-Ray's frame_number).
     #[arg(long, value_name = "K", requires = "ini")]
     frame: Option<u32>,
+    /// Render only shard I of N (from 0): every N-th strip of 8 rows, at the full image's size,
+    /// to OUTPUT.shard-I-of-N.png; `auto` reads I and N from a Slurm, AWS Batch or (with
+    /// auto/N) Kubernetes job array. `--merge` or `strahl merge` joins the parts.
+    #[arg(long, value_name = "I/N", conflicts_with = "merge")]
+    shard: Option<ShardSpec>,
+    /// With --shard: one contiguous band of rows per shard instead of interleaved strips.
+    #[arg(long, requires = "shard")]
+    chunk: bool,
+    /// Join the parts that `--shard` wrote beside OUTPUT into OUTPUT, checking that they were
+    /// rendered with this command line's scene, size and settings; renders nothing.
+    #[arg(long)]
+    merge: bool,
     #[command(flatten)]
     common: Common,
+}
+
+#[derive(Args)]
+struct MergeCmd {
+    /// The parts (`render --shard I/N` writes OUTPUT.shard-I-of-N.png), every shard of one render.
+    #[arg(required = true, value_name = "PART")]
+    parts: Vec<PathBuf>,
+    /// The whole image to write (PNG; written only once every part checks out).
+    #[arg(short = 'o', long, value_name = "PNG")]
+    output: PathBuf,
+    /// Print nothing but errors.
+    #[arg(short, long)]
+    quiet: bool,
+}
+
+#[derive(Subcommand)]
+enum FarmCmd {
+    /// Write DIR/strahl.sbatch: a Slurm job array over the shards (logs DIR/logs/%x_%A_%a.out)
+    /// and a merge job that runs once every shard succeeded. With --path, a capture (merged
+    /// into DIR/frames); without, a still in bands (merged into DIR/SCENE.png).
+    Slurm(SlurmCmd),
+}
+
+#[derive(Args)]
+#[command(
+    override_usage = "strahl farm slurm <SCENE> [--path <PATH> --frames <N>] -o <DIR> --tasks <N> [--submit] [OPTIONS]"
+)]
+struct SlurmCmd {
+    /// The POV-Ray scene file.
+    scene: PathBuf,
+    /// Camera path: farm a capture of --frames frames along it (without it: a still).
+    #[arg(long, requires = "frames")]
+    path: Option<PathBuf>,
+    /// Frames in the capture (with --path).
+    #[arg(long, value_name = "N", requires = "path", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    frames: Option<u32>,
+    #[arg(long, value_name = "A..B", allow_hyphen_values = true, requires = "path", help = CLOCK_HELP)]
+    clock: Option<ClockRange>,
+    /// Output folder: the script, logs/, parts/ and the merged result (created if missing).
+    #[arg(short = 'o', long, value_name = "DIR")]
+    output: PathBuf,
+    /// Array tasks (shards).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=MAX_SHARDS as i64))]
+    tasks: u32,
+    /// Cores per task; each task renders with this many threads.
+    #[arg(long, value_name = "C", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4096))]
+    cpus_per_task: u32,
+    /// Time limit per task, in Slurm's syntax (e.g. 01:00:00).
+    #[arg(long, value_name = "T")]
+    time: Option<String>,
+    /// Slurm partition.
+    #[arg(long, value_name = "NAME")]
+    partition: Option<String>,
+    /// Another #SBATCH option, verbatim (repeatable), e.g. --sbatch=--account=proj.
+    #[arg(long = "sbatch", value_name = "OPTION", allow_hyphen_values = true)]
+    sbatch: Vec<String>,
+    /// Slurm job name (default: strahl-SCENE).
+    #[arg(long, value_name = "NAME")]
+    job_name: Option<String>,
+    /// Deal each shard contiguous frames or rows instead of interleaved ones.
+    #[arg(long)]
+    chunk: bool,
+    /// The strahl executable the tasks run (default: this one).
+    #[arg(long, value_name = "PATH")]
+    strahl: Option<PathBuf>,
+    /// Submit the array and the merge with sbatch and print their job ids.
+    #[arg(long)]
+    submit: bool,
+    #[command(flatten)]
+    common: Common,
+}
+
+/// `strahl farm slurm`: checks the job, writes the script, and submits it where asked.
+fn farm_slurm(f: SlurmCmd) -> Result<(), CliError> {
+    if f.common.threads != 0 {
+        return Err(CliError::user("--threads is not for a farm: each task uses --cpus-per-task threads"));
+    }
+    let scene = absolute(&f.scene)?;
+    let stem = scene.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "strahl".into());
+    let mut args = vec![scene.display().to_string()];
+    let work = match (&f.path, f.frames) {
+        (Some(path), Some(frames)) => {
+            if f.tasks > frames {
+                return Err(CliError::user(format!(
+                    "--tasks {} is more than the {frames} frames: give at most {frames}",
+                    f.tasks
+                )));
+            }
+            args.extend([
+                "--path".into(),
+                absolute(path)?.display().to_string(),
+                "--frames".into(),
+                frames.to_string(),
+            ]);
+            if let Some(c) = f.clock {
+                args.push(format!("--clock={c}"));
+            }
+            args.extend(f.common.to_args()?);
+            Work::Capture { args }
+        }
+        _ => {
+            let (unit, what) = if f.chunk { (1, "rows") } else { (headless::band::STRIP, "strips of 8 rows") };
+            let units = f.common.height.div_ceil(unit);
+            if f.tasks > units {
+                return Err(CliError::user(format!(
+                    "--tasks {} is more than the image's {units} {what}: give at most {units}",
+                    f.tasks
+                )));
+            }
+            args.extend(f.common.to_args()?);
+            Work::Still { args, name: stem.clone() }
+        }
+    };
+    let strahl = match &f.strahl {
+        Some(p) => absolute(p)?,
+        None => std::env::current_exe()
+            .map_err(|e| CliError::user(format!("cannot find this strahl executable ({e}); give --strahl")))?,
+    };
+    headless::output::check_folder_writable("-o", &f.output)?;
+    headless::output::create_dir(&f.output)?;
+    let job = SlurmJob {
+        strahl,
+        dir: absolute(&f.output)?,
+        name: f.job_name.unwrap_or_else(|| format!("strahl-{stem}")),
+        tasks: f.tasks,
+        cpus_per_task: f.cpus_per_task,
+        time: f.time,
+        partition: f.partition,
+        extra: f.sbatch,
+        chunk: f.chunk,
+        work,
+    };
+    let script = farm::write(&job)?;
+    println!("wrote {}", script.display());
+    if f.submit {
+        let ids = farm::submit(&job, &script)?;
+        println!("array job {} ({} shards), logs in {}", ids.array, job.tasks, job.dir.join("logs").display());
+        println!("merge job {} (afterok:{}), result: {}", ids.merge, ids.array, job.result().display());
+    } else {
+        println!("submit with: bash {}", script.display());
+    }
+    headless::output::flush_stdout();
+    Ok(())
 }
 
 #[derive(Args)]
@@ -219,8 +429,16 @@ struct CaptureCmd {
     #[arg(long, value_name = "N", required_unless_present = "merge", value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     frames: Option<u32>,
     /// Render only frames START..END (END excluded) of the N, e.g. to shard across machines.
-    #[arg(long, value_name = "START..END")]
+    #[arg(long, value_name = "START..END", conflicts_with = "shard")]
     frames_range: Option<FrameRange>,
+    /// Render only shard I of N (from 0): frames I, I+N, I+2N, ...; `auto` reads I and N from a
+    /// Slurm, AWS Batch or (with auto/N) Kubernetes job array. A shard rerun into its folder
+    /// skips the frames its manifest lists as done, so a requeued task resumes.
+    #[arg(long, value_name = "I/N")]
+    shard: Option<ShardSpec>,
+    /// With --shard: deal each shard one contiguous run of frames instead of every N-th frame.
+    #[arg(long, requires = "shard")]
+    chunk: bool,
     #[arg(long, value_name = "A..B", allow_hyphen_values = true, help = CLOCK_HELP)]
     clock: Option<ClockRange>,
     /// Output folder: created if missing. It must be empty or hold this same capture (same scene,
@@ -236,7 +454,7 @@ struct CaptureCmd {
     #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=4096))]
     tile: u32,
     /// Merge the manifests (and frames) of shard folders into -o DIR instead of rendering.
-    #[arg(long, num_args = 1.., value_name = "DIR", conflicts_with_all = ["scene", "path", "frames", "frames_range", "clock"])]
+    #[arg(long, num_args = 1.., value_name = "DIR", conflicts_with_all = ["scene", "path", "frames", "frames_range", "clock", "shard"])]
     merge: Vec<PathBuf>,
     /// Print nothing but errors, and no progress bar.
     #[arg(short, long)]
@@ -392,20 +610,32 @@ fn run(cli: Cli) -> Result<(), CliError> {
             seconds: o.seconds,
             quiet: o.quiet,
         }),
-        Command::Render(r) => headless::render::run(&headless::render::RenderArgs {
-            clock: match &r.ini {
-                Some(ini) => headless::render::clock_from_ini(ini, r.frame)?,
-                None => strahl::pov::Clock::default(),
-            },
-            scene: r.scene,
-            include: r.common.include.clone(),
-            output: r.output,
-            settings: r.common.settings(),
-            res_scale: r.common.res_scale(),
-            threads: r.common.threads,
-            accel: r.common.accel.into(),
-            quiet: r.quiet,
-        }),
+        Command::Merge(m) => still_part::merge(&m.parts, &m.output, None, m.quiet),
+        Command::Farm(FarmCmd::Slurm(f)) => farm_slurm(f),
+        Command::Render(r) => {
+            let merge = r.merge;
+            let args = headless::render::RenderArgs {
+                clock: match &r.ini {
+                    Some(ini) => headless::render::clock_from_ini(ini, r.frame)?,
+                    None => strahl::pov::Clock::default(),
+                },
+                scene: r.scene,
+                include: r.common.include.clone(),
+                output: r.output,
+                settings: r.common.settings(),
+                res_scale: r.common.res_scale(),
+                threads: r.common.threads,
+                accel: r.common.accel.into(),
+                quiet: r.quiet,
+                shard: r.shard,
+                chunk: r.chunk,
+            };
+            if merge {
+                headless::render::run_merge(&args)
+            } else {
+                headless::render::run(&args)
+            }
+        }
         Command::Capture(c) if !c.merge.is_empty() => capture::run_merge(&c.merge, &c.output),
         Command::Capture(c) => capture::run(&capture::CaptureArgs {
             // clap enforces these unless --merge is given, which the arm above handles.
@@ -414,6 +644,8 @@ fn run(cli: Cli) -> Result<(), CliError> {
             frames: c.frames.unwrap_or(0),
             include: c.common.include.clone(),
             range: c.frames_range,
+            shard: c.shard,
+            chunk: c.chunk,
             output: c.output,
             settings: RenderSettings { tile: c.tile, ..c.common.settings() },
             res_scale: c.common.res_scale(),

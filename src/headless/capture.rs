@@ -1,5 +1,6 @@
 //! `strahl capture`: renders frames along a camera path to PNGs plus `manifest.json`, whole or
-//! as a shard (`--frames-range a..b`), and merges shard manifests (`--merge`).
+//! as a shard (`--frames-range a..b`, or `--shard I/N`, which also resumes a killed shard), and
+//! merges shard manifests (`--merge`).
 //!
 //! Frame i of N sits at t = i/(N-1) on the path, independent of the shard that renders it, and
 //! render space is always centred on the scene's own camera, so a frame's pixels depend only on
@@ -19,6 +20,7 @@ use crate::camera::Camera;
 use crate::headless::json::Json;
 use crate::headless::manifest::{frame_file_name, CameraRecord, FrameRecord, Manifest};
 use crate::headless::progress::Progress;
+use crate::headless::shard::{self, ShardSpec};
 use crate::headless::{output, with_threads, CliError, Staged};
 use crate::pov::Clock;
 use crate::render::image::Image;
@@ -138,7 +140,14 @@ pub struct CaptureJob<'a> {
     pub path_name: String,
     pub path: &'a CameraPath,
     pub frames: u32,
-    pub range: FrameRange,
+    /// The frames to render, ascending: a range of them, or the ones dealt to a shard.
+    pub indices: Vec<u32>,
+    /// Frames of this capture already rendered and checked (a resumed shard's): listed in the
+    /// manifest with the new ones, not rendered again.
+    pub done: Vec<FrameRecord>,
+    /// Write the manifest after every frame, so that a shard killed mid-way (a requeued job
+    /// array task) leaves a manifest of the frames it finished, which its rerun then skips.
+    pub checkpoint: bool,
     pub settings: RenderSettings,
     /// Fraction of the output size to trace, upscaled back (1 = every pixel).
     pub res_scale: f32,
@@ -151,7 +160,7 @@ pub struct CaptureJob<'a> {
 /// What, besides the camera, decides the pixels: recorded so shards of different settings never
 /// merge. (Tile size and thread count are left out on purpose: they do not change pixels.)
 pub fn settings_json(s: &RenderSettings, res_scale: f32, accel: AccelKind) -> Json {
-    Json::object(vec![
+    let mut fields = vec![
         ("res_scale", Json::Number(res_scale as f64)),
         ("aa", Json::Number(s.aa as f64)),
         ("max_trace_level", Json::opt_u32(s.quality.max_trace_level)),
@@ -159,7 +168,16 @@ pub fn settings_json(s: &RenderSettings, res_scale: f32, accel: AccelKind) -> Js
         ("max_octaves", Json::opt_u32(s.quality.max_octaves)),
         ("precision", Json::str(s.quality.precision.name())),
         ("accel", Json::str(accel.name())),
-    ])
+    ];
+    // These caps change pixels too; written only when given, so manifests without them keep
+    // the fields they always had (and still merge with shards written before).
+    if let Some(n) = s.quality.max_area_samples {
+        fields.push(("max_area_samples", Json::Number(n as f64)));
+    }
+    if let Some(n) = s.quality.max_blur_samples {
+        fields.push(("max_blur_samples", Json::Number(n as f64)));
+    }
+    Json::object(fields)
 }
 
 /// Renders one frame into `image` and returns its 8-bit RGB pixels and the render time in ms.
@@ -196,9 +214,10 @@ pub fn capture(
 ) -> Result<Manifest, CliError> {
     let mut image = Image::new(job.settings.width, job.settings.height);
     let mut low = Image::default();
-    let progress = Progress::new((job.range.end - job.range.start) as u64, "frames", job.quiet);
-    let mut frames = Vec::new();
-    for index in job.range.start..job.range.end {
+    let progress = Progress::new(job.indices.len() as u64, "frames", job.quiet);
+    let pause = frame_delay();
+    let mut frames = job.done.clone();
+    for (k, &index) in job.indices.iter().enumerate() {
         let own = own_scene(index)?;
         let Staged { scene, base } = own.as_ref().unwrap_or(shared);
         let t = frame_t(index, job.frames);
@@ -218,10 +237,63 @@ pub fn capture(
             sha256: sha256_hex(&rgb),
             render_ms,
         });
-        progress.update((index + 1 - job.range.start) as u64);
+        if job.checkpoint {
+            write_manifest(out_dir, &sorted(frames.clone(), job))?;
+        }
+        if let Some(pause) = pause {
+            std::thread::sleep(pause);
+        }
+        progress.update(k as u64 + 1);
     }
     progress.finish();
-    Ok(Manifest { frames, ..header(job) })
+    Ok(sorted(frames, job))
+}
+
+/// `STRAHL_FRAME_DELAY_MS=N`: a pause of N ms after each frame. Only for tests that must catch
+/// a shard in the middle of its frames (the Slurm test kills one there and requeues it: at
+/// 64×48 a frame takes milliseconds, too fast to catch); unset, nothing waits.
+fn frame_delay() -> Option<std::time::Duration> {
+    let ms: u64 = std::env::var("STRAHL_FRAME_DELAY_MS").ok()?.trim().parse().ok()?;
+    (ms > 0).then(|| std::time::Duration::from_millis(ms.min(60_000)))
+}
+
+/// The job's manifest listing `frames`, in index order.
+fn sorted(mut frames: Vec<FrameRecord>, job: &CaptureJob) -> Manifest {
+    frames.sort_by_key(|f| f.index);
+    Manifest { frames, ..header(job) }
+}
+
+/// The frames among `wanted` that folder `dir` already holds for this capture: listed in its
+/// manifest (which must be of the same capture) with a PNG whose pixels match the listed
+/// SHA-256. Anything else (no manifest, another capture's, a frame file missing or cut short by
+/// a kill) is rendered again.
+fn already_done(dir: &Path, this: &Manifest, wanted: &[u32]) -> Vec<FrameRecord> {
+    let Ok(found) = Manifest::read(dir) else {
+        return Vec::new();
+    };
+    if !found.same_header(this) {
+        return Vec::new();
+    }
+    found
+        .frames
+        .into_iter()
+        .filter(|f| wanted.binary_search(&f.index).is_ok() && f.file == frame_file_name(f.index))
+        .filter(|f| output::read_png(&dir.join(&f.file)).is_ok_and(|(_, _, rgb)| sha256_hex(&rgb) == f.sha256))
+        .collect()
+}
+
+/// Deletes the temporary files of strahl's frames and manifest that a killed run left in `dir`
+/// (`.frame_0003.png.1234.tmp`): nothing reads them, and they would pile up with every requeue.
+fn remove_stale_temporaries(dir: &Path) {
+    let Ok(listing) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in listing.filter_map(|e| e.ok()) {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if name.starts_with('.') && name.ends_with(".tmp") && is_capture_file(&name) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 pub fn write_manifest(dir: &Path, manifest: &Manifest) -> Result<(), CliError> {
@@ -296,6 +368,11 @@ pub struct CaptureArgs {
     pub path: PathBuf,
     pub frames: u32,
     pub range: Option<FrameRange>,
+    /// `--shard`: render only the frames dealt to this shard, resuming where a killed run of
+    /// the same shard stopped.
+    pub shard: Option<ShardSpec>,
+    /// `--chunk`: deal each shard one contiguous run of frames instead of every N-th frame.
+    pub chunk: bool,
     pub output: PathBuf,
     pub settings: RenderSettings,
     pub res_scale: f32,
@@ -317,39 +394,78 @@ pub fn run(args: &CaptureArgs) -> Result<(), CliError> {
         return Err(CliError::user("--frames must be at least 1"));
     }
     let range = args.range.unwrap_or(FrameRange { start: 0, end: args.frames }).within(args.frames)?;
+    let found = args.shard.map(|s| s.resolve(&shard::process_env).map_err(CliError::user)).transpose()?;
+    let indices: Vec<u32> = match &found {
+        Some(f) => f.shard.items(args.frames, 1, args.chunk),
+        None => (range.start..range.end).collect(),
+    };
     let path = CameraPath::load(&args.path)?;
-    let job = CaptureJob {
+    let mut job = CaptureJob {
         scene_name: args.scene.display().to_string(),
         path_name: args.path.display().to_string(),
         path: &path,
         frames: args.frames,
-        range,
+        indices,
+        done: Vec::new(),
+        checkpoint: found.is_some(),
         settings: args.settings,
         res_scale: args.res_scale,
         accel: args.accel,
         clock: args.clock,
         quiet: args.quiet,
     };
-    let plan = plan_output(&args.output, &header(&job), args.force)?;
+    let this = header(&job);
+    let plan = plan_output(&args.output, &this, args.force)?;
     let load = |index| {
         let clock = frame_clock(args.clock, index, args.frames);
         Staged::load(&args.scene, &args.include, &args.settings, args.accel, clock).map(|(s, _)| s)
     };
     // The scene of the shard's first frame, so that scene errors come before the folder changes;
     // without --clock it is every frame's scene.
-    let first = load(range.start)?;
-    let own_scene = |index| if args.clock.is_some() && index != range.start { load(index).map(Some) } else { Ok(None) };
+    let first_index = job.indices.first().copied().unwrap_or(0);
+    let first = load(first_index)?;
+    let own_scene = |index| if args.clock.is_some() && index != first_index { load(index).map(Some) } else { Ok(None) };
+    // A shard resumes: a requeued task finds the frames its killed run finished and skips them.
+    if found.is_some() && plan == OutputPlan::Use {
+        job.done = already_done(&args.output, &this, &job.indices);
+        job.indices.retain(|i| job.done.binary_search_by_key(i, |f| f.index).is_err());
+        remove_stale_temporaries(&args.output);
+    }
     apply_output_plan(&args.output, plan)?;
+    if let Some(f) = &found {
+        if !args.quiet {
+            let resumed = if job.done.is_empty() {
+                String::new()
+            } else {
+                format!(", resuming: {} already done, {} to render", job.done.len(), job.indices.len())
+            };
+            println!(
+                "shard {} ({}): {} of {} frames{resumed}",
+                f.shard,
+                f.source,
+                job.done.len() + job.indices.len(),
+                args.frames
+            );
+            output::flush_stdout();
+        }
+    }
     let manifest = with_threads(args.threads, || capture(&first, &own_scene, &job, &args.output))??;
     write_manifest(&args.output, &manifest)?;
     if !args.quiet {
-        let total: f64 = manifest.frames.iter().map(|f| f.render_ms).sum();
+        let rendered: Vec<&FrameRecord> =
+            manifest.frames.iter().filter(|f| job.indices.binary_search(&f.index).is_ok()).collect();
+        let total: f64 = rendered.iter().map(|f| f.render_ms).sum();
         let clock = args.clock.map_or(String::new(), |c| format!(", clock {c}, scene parsed per frame"));
+        let which = match &found {
+            Some(f) => format!("shard {}", f.shard),
+            None => format!("frames {range}"),
+        };
         println!(
-            "captured frames {range} of {} to {} ({:.1} ms/frame{clock})",
+            "captured {which} of {} to {} ({} rendered, {:.1} ms/frame{clock})",
             args.frames,
             args.output.display(),
-            total / manifest.frames.len().max(1) as f64
+            rendered.len(),
+            total / rendered.len().max(1) as f64
         );
         output::flush_stdout();
     }

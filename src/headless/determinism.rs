@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use crate::camera::path::CameraPath;
 use crate::camera::Camera;
-use crate::headless::capture::{capture, frame_t, render_rgb8, sha256_hex, CaptureJob, FrameRange};
+use crate::headless::capture::{capture, frame_t, render_rgb8, sha256_hex, CaptureJob};
 use crate::headless::manifest::Manifest;
 use crate::headless::{with_threads, Staged};
 use crate::render::image::Image;
@@ -115,7 +115,9 @@ fn shards_merge_into_the_whole_capture() {
         path_name: "seed.orbit.path".into(),
         path: &path,
         frames: 5,
-        range: FrameRange { start, end },
+        indices: (start..end).collect(),
+        done: Vec::new(),
+        checkpoint: false,
         settings: RenderSettings { width: 24, height: 18, ..RenderSettings::default() },
         res_scale: 1.0,
         accel: AccelKind::Bvh,

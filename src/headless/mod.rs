@@ -1,12 +1,14 @@
-//! Headless front ends: `render`, `capture`, `bench`, `tradeoff`, `survey`, `path orbit`, and the shared plumbing (loading,
+//! Headless front ends: `render`, `capture`, `merge`, `farm`, `bench`, `tradeoff`, `survey`, `path orbit`, and the shared plumbing (loading,
 //! errors, thread pools, JSON, image metrics). Nothing here touches a window.
 //!
 //! Layer 9 of docs/design/architecture.md, the top: uses `pov`, `render` and below; only `app` and `main` use it.
 
+pub mod band;
 pub mod bench;
 pub mod capture;
 #[cfg(test)]
 mod determinism;
+pub mod farm;
 pub mod json;
 pub mod manifest;
 pub mod metrics;
@@ -17,6 +19,8 @@ pub mod progress;
 pub mod render;
 pub mod report;
 pub mod scaling;
+pub mod shard;
+pub mod still_part;
 pub mod survey;
 pub mod tradeoff;
 

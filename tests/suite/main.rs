@@ -8,6 +8,7 @@ mod common;
 mod cli;
 mod extremes;
 mod far;
+mod farm;
 mod fly;
 mod golden;
 mod language;

@@ -54,10 +54,14 @@ impl Scene {
         let stops =
             direct && CAP > 8 && !L::any(L::not(L::splat(0.0).le(window.t_min))) && kids.iter().all(|c| !c.inverse);
         let mw = (window.t_max.abs() + scale) * L::splat(SPAN_MARGIN);
-        for (j, c) in kids.iter().enumerate() {
-            if !(window.crossed.get(j) || window.asked.get(j)) {
-                continue;
-            }
+        let mut kept = 0;
+        // The children to span: those searched or asked (at most `SPANS`, one word of flags).
+        let mut live =
+            if kids.is_empty() { 0 } else { window.crossed.word(0, kids.len()) | window.asked.word(0, kids.len()) };
+        while live != 0 {
+            let j = live.trailing_zeros() as usize;
+            live &= live - 1;
+            let c = &kids[j];
             let CsgTarget::Leaf(l) = c.target else { unreachable!("a node with spans has leaves only") };
             let (valid, near, far) = self.span_prim(&self.prims[l as usize], ray);
             spans[j] = (valid, near, far);
@@ -73,7 +77,8 @@ impl Scene {
                 missed = L::or(missed, L::not(valid));
                 entries.add(j, valid, near, |a, b| a.lt(b));
                 exits.add(j, valid, far, |a, b| b.lt(a));
-                if stops && j % 8 == 7 && j + 1 < kids.len() {
+                kept += 1;
+                if stops && kept % 8 == 0 && j + 1 < kids.len() {
                     let apart = apart(entries.best, exits.best, missed, window, mw);
                     if !L::any(L::not(apart)) {
                         #[cfg(test)]
@@ -86,7 +91,10 @@ impl Scene {
         if direct && count == 0 && !inverse_crossed {
             // A node with spans holds leaves only, added one after the other (`Scene::build`):
             // child `j`'s leaf is the first one's plus `j`.
-            let CsgTarget::Leaf(first) = kids[0].target else { unreachable!() };
+            let first = match kids.first() {
+                Some(CsgChild { target: CsgTarget::Leaf(l), .. }) => *l,
+                _ => 0,
+            };
             debug_assert!(kids.iter().enumerate().all(|(j, c)| c.target == CsgTarget::Leaf(first + j as u32)));
             if let Some(hit) = hit_kept(&entries, &exits, missed, window, scale, n.surfaces as usize, first as f32) {
                 #[cfg(test)]

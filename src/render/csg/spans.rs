@@ -471,10 +471,14 @@ mod tests {
                 hits += (want.0 != MISS) as usize;
             }
         }
+        // Some calls end before `hit_kept` (an empty window, or `apart` among the first
+        // children): the paths the comparisons above covered besides the search.
         let direct = DIRECT.with(Cell::get) - before;
-        assert!(rays > 9000 && hits > 1000 && direct > 3000, "{rays} rays, {hits} hits, {direct} answered directly");
         let stopped = STOPPED.with(Cell::get) - stopped_before;
-        assert!(stopped > 100, "{stopped} answered before the last child");
+        assert!(
+            rays > 9000 && hits > 1000 && direct + stopped > 2500,
+            "{rays} rays, {hits} hits, {direct} answered directly, {stopped} before the last child"
+        );
     }
 
     /// A node of many children culls them by groups (`CsgGroup`) before one by one: the same

@@ -29,19 +29,61 @@ impl Scene {
     /// none), and the leaf it belongs to (an index into `prims`, as a float: exact below 2^24).
     pub fn hit_csg<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
         // Packets reach here through a call that is not inlined (nodes nest), so the 8-wide
-        // code would run in the caller's SSE; this copy runs it in 256-bit instructions. AVX2
-        // without FMA computes the same bits (as `render::packet`).
+        // code would run in the caller's SSE; the copies below run it in 256-bit instructions.
+        // AVX2 without FMA computes the same bits (as `render::packet`).
         #[cfg(target_arch = "x86_64")]
         if L::WIDTH == 8 && crate::lanes::has_avx2() {
             // SAFETY: the CPU supports AVX2, checked just above.
             return unsafe { self.hit_csg_avx2(node, ray, t_min, t_max) };
         }
+        if L::WIDTH == 8 {
+            // Out of line, so that this dispatch stays small for the AVX2 packets (an inlined
+            // search made every call reserve and probe its stack frame).
+            return self.hit_node_outlined(node, ray, t_min, t_max);
+        }
         self.hit_node(node, ray, t_min, t_max, true)
+    }
+
+    #[inline(never)]
+    fn hit_node_outlined<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        self.hit_node(node, ray, t_min, t_max, true)
+    }
+
+    /// `hit_csg` for AVX2 packets: a node of a few children with spans (the common small
+    /// `intersection`, `difference`, `clipped_by`) in its own function, apart from the general
+    /// search, which inlines every shape's kernel: its stack frame (tens of KiB, probed page by
+    /// page on every call) and code were paid by each small node too.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn hit_csg_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        let n = &self.csg[node as usize];
+        match way(n) {
+            FEW => self.hit_few_avx2(node, ray, t_min, t_max),
+            MANY => self.hit_many_avx2(node, ray, t_min, t_max),
+            _ => self.hit_any_avx2(node, ray, t_min, t_max),
+        }
     }
 
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn hit_csg_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+    #[inline(never)]
+    unsafe fn hit_few_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        let n = &self.csg[node as usize];
+        self.hit_all::<L, FEW>(n, &self.csg_children[n.children()], ray, t_min, t_max, true)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn hit_many_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
+        let n = &self.csg[node as usize];
+        self.hit_all::<L, MANY>(n, &self.csg_children[n.children()], ray, t_min, t_max, true)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    #[inline(never)]
+    unsafe fn hit_any_avx2<L: Lane>(&self, node: u32, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, L) {
         self.hit_node(node, ray, t_min, t_max, true)
     }
 
@@ -53,7 +95,7 @@ impl Scene {
         let n = &self.csg[node as usize];
         let kids = &self.csg_children[n.children()];
         if n.rule == CsgRule::All {
-            return self.hit_all(n, kids, ray, t_min, t_max, direct);
+            return self.hit_all::<L, ANY>(n, kids, ray, t_min, t_max, direct);
         }
         // A union keeps every crossing; a merge one inside no other child.
         let window = Window { t_min, t_max, crossed: Flags::all(), asked: Flags::all() };
@@ -67,8 +109,10 @@ impl Scene {
     /// surface box is missed has no crossing to search; a subtracted (inverted) child whose
     /// solid box is missed contains every point of the window, so no inside test asks it; a
     /// kept child whose box is missed contains none, so the node is missed.
+    ///
+    /// `WAY` (`way`): which answer this copy compiles, `ANY` choosing by the node.
     #[inline(always)]
-    fn hit_all<L: Lane>(
+    fn hit_all<L: Lane, const WAY: u8>(
         &self,
         n: &CsgNode,
         kids: &[CsgChild],
@@ -79,17 +123,31 @@ impl Scene {
     ) -> (L, L) {
         let miss = L::splat(MISS);
         let (t_min, t_max) = within_box(n.min, n.max, ray, t_min, t_max);
+        // An empty window in every lane (a packet that meets the node's box in the BVH, not
+        // in this window): nothing to find.
+        if !L::any(L::not(t_max.le(t_min))) {
+            return (miss, L::splat(0.0));
+        }
+        // A node with spans meets its kept children's boxes only as a group's: the window lies
+        // within the node's box, which lies within each kept child's, so their own boxes would
+        // cut nothing, and a kept child whose box a lane's window misses shows in its span
+        // (every point of the window clearly outside it, or outside its box by the pad).
+        let spans = way(n) != ANY;
         let mut crossed = Flags::all();
         let mut asked = Flags::all();
-        if n.groups > 0 && kids.len() <= Flags::CAPACITY {
+        if WAY != FEW && n.groups > 0 && kids.len() <= Flags::CAPACITY {
             // A group whose box the window misses: each member's boxes are missed too.
             for g in &self.csg_groups[n.first_group as usize..(n.first_group + n.groups) as usize] {
                 let members = &self.csg_group_members[g.first as usize..(g.first + g.count) as usize];
+                if spans && members.iter().all(|&j| !kids[j as usize].inverse) {
+                    continue;
+                }
                 let met = meets(&g.bounds, ray, t_min, t_max);
                 for &j in members {
                     let j = j as usize;
                     let cut = if met {
-                        cull_child(&kids[j], j, ray, t_min, t_max, &mut crossed, &mut asked)
+                        !(spans && !kids[j].inverse)
+                            && cull_child(&kids[j], j, ray, t_min, t_max, &mut crossed, &mut asked)
                     } else {
                         missed_child(&kids[j], j, &mut crossed, &mut asked)
                     };
@@ -100,15 +158,15 @@ impl Scene {
             }
         } else {
             for (j, c) in kids.iter().enumerate().take(Flags::CAPACITY) {
-                if cull_child(c, j, ray, t_min, t_max, &mut crossed, &mut asked) {
+                if !(spans && !c.inverse) && cull_child(c, j, ray, t_min, t_max, &mut crossed, &mut asked) {
                     return (miss, L::splat(0.0));
                 }
             }
         }
         let window = Window { t_min, t_max, crossed, asked };
-        if n.spans && kids.len() <= 8 {
+        if WAY == FEW || (WAY == ANY && way(n) == FEW) {
             self.hit_spans::<L, 8>(n, kids, ray, &window, direct)
-        } else if n.spans && kids.len() <= SPANS {
+        } else if WAY == MANY || (WAY == ANY && way(n) == MANY) {
             self.hit_spans::<L, SPANS>(n, kids, ray, &window, direct)
         } else {
             let mut all = AllChildren { scene: self, kids, ray, asked: &window.asked, rejecters: Rejecters::default() };
@@ -131,10 +189,7 @@ impl Scene {
         let mut best = window.t_max;
         let mut leaf = L::splat(0.0);
         let mut found = L::mask_from_fn(|_| false);
-        for i in 0..n.surfaces as usize {
-            if !window.crossed.get(i) {
-                continue;
-            }
+        for i in window.crossed.ones(n.surfaces as usize) {
             let mut from = window.t_min;
             for _ in 0..MAX_CROSSINGS {
                 let (t, l) = children.search(i, from, best);
@@ -200,6 +255,26 @@ impl Scene {
             CsgTarget::Leaf(i) => (self.hit_prim_in(&self.prims[i as usize], ray, t_min, t_max), L::splat(i as f32)),
             CsgTarget::Node(k) => self.hit_csg(k, ray, t_min, t_max),
         }
+    }
+}
+
+/// `hit_all`'s answers: from the spans of at most 8 children (`FEW`) or of at most `SPANS`
+/// (`MANY`), or by the search (`ANY`, which also stands for "choose by the node").
+const ANY: u8 = 0;
+const FEW: u8 = 1;
+const MANY: u8 = 2;
+
+/// Which of `hit_all`'s answers node `n` takes (`ANY`: the search, or not under `CsgRule::All`).
+#[inline(always)]
+fn way(n: &CsgNode) -> u8 {
+    if n.rule != CsgRule::All || !n.spans {
+        ANY
+    } else if n.count <= 8 {
+        FEW
+    } else if n.count as usize <= SPANS {
+        MANY
+    } else {
+        ANY
     }
 }
 
@@ -391,14 +466,58 @@ impl Flags {
         j >= Flags::CAPACITY || self.0[j / 64] & (1 << (j % 64)) != 0
     }
 
+    /// The children among the first `count` whose flag is set, in order: a node's loops skip
+    /// the culled ones a word at a time instead of asking each.
+    #[inline(always)]
+    fn ones(&self, count: usize) -> Ones<'_> {
+        let bits = if count > 0 { self.word(0, count) } else { 0 };
+        Ones { flags: self, count, w: 0, bits, beyond: Flags::CAPACITY }
+    }
+
     /// Word `w` of the flags of `count` children (bits past `count` cleared).
     #[inline(always)]
-    fn word(&self, w: usize, count: usize) -> u64 {
+    pub(super) fn word(&self, w: usize, count: usize) -> u64 {
         let bits = self.0[w];
         if (w + 1) * 64 > count {
             bits & (u64::MAX >> ((w + 1) * 64 - count))
         } else {
             bits
+        }
+    }
+}
+
+/// `Flags::ones`: the set flags' children below `count`, then those past `CAPACITY`.
+struct Ones<'a> {
+    flags: &'a Flags,
+    count: usize,
+    /// The word `bits` came from, and its flags not yet given.
+    w: usize,
+    bits: u64,
+    /// The next child past `CAPACITY`.
+    beyond: usize,
+}
+
+impl Iterator for Ones<'_> {
+    type Item = usize;
+
+    #[inline(always)]
+    fn next(&mut self) -> Option<usize> {
+        loop {
+            if self.bits != 0 {
+                let j = self.w * 64 + self.bits.trailing_zeros() as usize;
+                self.bits &= self.bits - 1;
+                return Some(j);
+            }
+            if (self.w + 1) * 64 < self.count.min(Flags::CAPACITY) {
+                self.w += 1;
+                self.bits = self.flags.word(self.w, self.count);
+                continue;
+            }
+            if self.beyond < self.count {
+                self.beyond += 1;
+                return Some(self.beyond - 1);
+            }
+            return None;
         }
     }
 }

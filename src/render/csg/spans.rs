@@ -5,6 +5,7 @@
 //! compare them), in fewer shape tests.
 
 use super::{Children, Window};
+use crate::geometry::Shape;
 use crate::lanes::{Lane, V3};
 use crate::ray::{pick_root, RayLanes, MISS};
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
@@ -46,10 +47,21 @@ impl Scene {
         let mut subtracted = [0usize; CAP];
         let mut count = 0;
         let mut inverse_crossed = false;
-        for (j, c) in kids.iter().enumerate() {
-            if !(window.crossed.get(j) || window.asked.get(j)) {
-                continue;
-            }
+        let scale = ray.o.x.abs().max(ray.o.y.abs()).max(ray.o.z.abs());
+        // A node of many kept children whose spans already leave every lane clearly missed
+        // (`apart`) stops there: later children only narrow the spans' overlap, and
+        // `hit_kept` would answer a miss in every lane (the same expression).
+        let stops =
+            direct && CAP > 8 && !L::any(L::not(L::splat(0.0).le(window.t_min))) && kids.iter().all(|c| !c.inverse);
+        let mw = (window.t_max.abs() + scale) * L::splat(SPAN_MARGIN);
+        let mut kept = 0;
+        // The children to span: those searched or asked (at most `SPANS`, one word of flags).
+        let mut live =
+            if kids.is_empty() { 0 } else { window.crossed.word(0, kids.len()) | window.asked.word(0, kids.len()) };
+        while live != 0 {
+            let j = live.trailing_zeros() as usize;
+            live &= live - 1;
+            let c = &kids[j];
             let CsgTarget::Leaf(l) = c.target else { unreachable!("a node with spans has leaves only") };
             let (valid, near, far) = self.span_prim(&self.prims[l as usize], ray);
             spans[j] = (valid, near, far);
@@ -65,15 +77,26 @@ impl Scene {
                 missed = L::or(missed, L::not(valid));
                 entries.add(j, valid, near, |a, b| a.lt(b));
                 exits.add(j, valid, far, |a, b| b.lt(a));
+                kept += 1;
+                if stops && kept % 8 == 0 && j + 1 < kids.len() {
+                    let apart = apart(entries.best, exits.best, missed, window, mw);
+                    if !L::any(L::not(apart)) {
+                        #[cfg(test)]
+                        tests::STOPPED.with(|d| d.set(d.get() + 1));
+                        return (miss, L::splat(0.0));
+                    }
+                }
             }
         }
-        let scale = ray.o.x.abs().max(ray.o.y.abs()).max(ray.o.z.abs());
         if direct && count == 0 && !inverse_crossed {
-            let leaf = |j: usize| match kids[j].target {
-                CsgTarget::Leaf(l) => l as f32,
-                CsgTarget::Node(_) => unreachable!(),
+            // A node with spans holds leaves only, added one after the other (`Scene::build`):
+            // child `j`'s leaf is the first one's plus `j`.
+            let first = match kids.first() {
+                Some(CsgChild { target: CsgTarget::Leaf(l), .. }) => *l,
+                _ => 0,
             };
-            if let Some(hit) = hit_kept(&entries, &exits, missed, window, scale, n.surfaces as usize, leaf) {
+            debug_assert!(kids.iter().enumerate().all(|(j, c)| c.target == CsgTarget::Leaf(first + j as u32)));
+            if let Some(hit) = hit_kept(&entries, &exits, missed, window, scale, n.surfaces as usize, first as f32) {
                 #[cfg(test)]
                 tests::DIRECT.with(|d| d.set(d.get() + 1));
                 return hit;
@@ -90,6 +113,20 @@ impl Scene {
             scale,
         };
         self.search_all(n, ray, window, &mut children)
+    }
+
+    /// `inside_prim` for the kinds `csg::has_span` names: the same tests, without the
+    /// dispatch over every kind (whose inlined tests bloated the span nodes' code and frame).
+    #[inline(always)]
+    fn inside_span_prim<L: Lane>(&self, p: &PrimRef, q: V3<L>) -> L::Mask {
+        let i = p.index as usize;
+        match p.kind {
+            ShapeKind::Box => self.boxes[i].inside(q),
+            ShapeKind::Sphere => self.spheres[i].inside(q),
+            ShapeKind::Ellipsoid => self.ellipsoids[i].inside(q),
+            ShapeKind::Plane => self.half_spaces[i].inside(q),
+            _ => unreachable!("{:?} has no span", p.kind),
+        }
     }
 
     /// A leaf's `span` (for the kinds `csg::has_span` names).
@@ -141,7 +178,9 @@ impl<L: Lane> SpanChildren<'_, L> {
         let inverse = L::mask_from_fn(|_| self.kids[j].inverse);
         let near_end = L::not(L::or(within, beyond));
         if L::any(near_end) {
-            let tested = self.scene.inside_child(&self.kids[j], p);
+            let c = &self.kids[j];
+            let CsgTarget::Leaf(l) = c.target else { unreachable!("a node with spans has leaves only") };
+            let tested = L::xor(self.scene.inside_span_prim(&self.scene.prims[l as usize], p), inverse);
             L::or(L::and(near_end, tested), L::and(L::not(near_end), L::xor(within, inverse)))
         } else {
             L::xor(within, inverse)
@@ -190,7 +229,7 @@ impl<L: Lane> Children<L> for SpanChildren<'_, L> {
 /// `hit_spans`' answer for a node whose every child is kept (no subtracted child meets the
 /// window), straight from the latest entry `E` and earliest exit `X` among the children's spans
 /// (`second`: the runner-up, `holder`: whose), where every lane's answer is clear; `None` sends
-/// the packet to the search.
+/// the packet to the search. Child `j`'s leaf is `first_leaf + j`.
 ///
 /// The search takes the nearest crossing of a surface child in the window that every other
 /// child contains; each verdict depends only on the child and the point, and `hit_spans` gives
@@ -216,7 +255,7 @@ fn hit_kept<L: Lane>(
     window: &Window<L>,
     scale: L,
     surfaces: usize,
-    leaf: impl Fn(usize) -> f32,
+    first_leaf: f32,
 ) -> Option<(L, L)> {
     let (t_min, t_max) = (window.t_min, window.t_max);
     let margin = |t: L| (t.abs() + scale) * L::splat(SPAN_MARGIN);
@@ -235,25 +274,29 @@ fn hit_kept<L: Lane>(
         L::and(L::and(surface(h), in_window(e)), L::and(inside(e, e2, L::select(same, x2, x)), e2.lt(e - margin(e))));
     let exit = L::and(L::and(L::and(e.le(t_min), surface(g)), in_window(x)), inside(x, L::select(same, e2, e), x2));
     let mw = margin(t_max);
-    let miss = L::or(
-        L::or(missed, t_max.le(t_min)),
-        L::or(L::or(t_max.le(e - mw), (x + mw).lt(e - mw)), L::and(L::and(e.le(t_min), x.le(t_min)), (x + mw).lt(x2))),
-    );
+    let miss = L::or(apart(e, x, missed, window, mw), L::and(L::and(e.le(t_min), x.le(t_min)), (x + mw).lt(x2)));
     let clear = L::and(L::splat(0.0).le(t_min), L::or(L::or(entry, exit), miss));
     if L::any(L::not(clear)) {
         return None;
     }
     let t = L::select(entry, e, L::select(exit, x, L::splat(MISS)));
     let holder = L::select(entry, h, L::select(exit, g, L::splat(-1.0)));
-    let leaf = L::from_fn(|k| {
-        let j = holder.get(k);
-        if j < 0.0 {
-            0.0
-        } else {
-            leaf(j as usize)
-        }
-    });
+    // Child `j`'s leaf is `first_leaf + j` (exact: both below 2^24); none (-1) answers 0.
+    // Lane arithmetic, not a function of each lane's holder, which was compiled out of line.
+    let zero = L::splat(0.0);
+    let leaf = L::select(zero.le(holder), holder + L::splat(first_leaf), zero);
     Some((t, leaf))
+}
+
+/// `hit_kept`'s lanes that miss whatever comes before and after in the window, from the latest
+/// entry `e` and earliest exit `x` of the kept children (`missed`: lanes that miss one; `mw`:
+/// the margin at `t_max`): the window is empty, or ends before `e - mw`, or the spans are
+/// disjoint by `mw`. Each only grows as more children narrow `e` and `x` (rounding is
+/// monotonic), so a lane apart among some children is apart among all.
+#[inline(always)]
+fn apart<L: Lane>(e: L, x: L, missed: L::Mask, window: &Window<L>, mw: L) -> L::Mask {
+    let (t_min, t_max) = (window.t_min, window.t_max);
+    L::or(L::or(missed, t_max.le(t_min)), L::or(t_max.le(e - mw), (x + mw).lt(e - mw)))
 }
 
 /// Per lane, the largest (or smallest, by `better`) of some children's values and which child
@@ -306,6 +349,8 @@ mod tests {
     thread_local! {
         /// How many packets or rays `hit_kept` answered on this thread.
         pub static DIRECT: Cell<usize> = const { Cell::new(0) };
+        /// How many packets or rays `hit_spans` answered before the last child's span.
+        pub static STOPPED: Cell<usize> = const { Cell::new(0) };
     }
 
     struct Rng(u64);
@@ -383,6 +428,7 @@ mod tests {
     fn the_direct_answer_is_the_searchs() {
         let r = &mut Rng(0xC59);
         let before = DIRECT.with(Cell::get);
+        let stopped_before = STOPPED.with(Cell::get);
         let (mut rays, mut hits) = (0, 0);
         for case in 0..24 {
             let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip][case % 3];
@@ -425,8 +471,14 @@ mod tests {
                 hits += (want.0 != MISS) as usize;
             }
         }
+        // Some calls end before `hit_kept` (an empty window, or `apart` among the first
+        // children): the paths the comparisons above covered besides the search.
         let direct = DIRECT.with(Cell::get) - before;
-        assert!(rays > 9000 && hits > 1000 && direct > 3000, "{rays} rays, {hits} hits, {direct} answered directly");
+        let stopped = STOPPED.with(Cell::get) - stopped_before;
+        assert!(
+            rays > 9000 && hits > 1000 && direct + stopped > 2500,
+            "{rays} rays, {hits} hits, {direct} answered directly, {stopped} before the last child"
+        );
     }
 
     /// A node of many children culls them by groups (`CsgGroup`) before one by one: the same

@@ -471,14 +471,13 @@ mod tests {
                 hits += (want.0 != MISS) as usize;
             }
         }
-        // Some calls end before `hit_kept` (an empty window, or `apart` among the first
-        // children): the paths the comparisons above covered besides the search.
+        // Both paths are exercised, each compared bit for bit above. Some calls now end before
+        // `hit_kept` (an empty window, or `apart` among the first children), which leaves about
+        // 3000 answered directly where it was over 3000.
         let direct = DIRECT.with(Cell::get) - before;
+        assert!(rays > 9000 && hits > 1000 && direct > 2500, "{rays} rays, {hits} hits, {direct} answered directly");
         let stopped = STOPPED.with(Cell::get) - stopped_before;
-        assert!(
-            rays > 9000 && hits > 1000 && direct + stopped > 2500,
-            "{rays} rays, {hits} hits, {direct} answered directly, {stopped} before the last child"
-        );
+        assert!(stopped > 100, "{stopped} answered before the last child");
     }
 
     /// A node of many children culls them by groups (`CsgGroup`) before one by one: the same

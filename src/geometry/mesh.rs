@@ -36,6 +36,8 @@ pub struct MeshData {
     /// Unit vertex normals of the smooth faces.
     smooth: Vec<[Vec3; 3]>,
     bvh: Bvh,
+    /// The same hierarchy for the packet walk (`walk_lanes`): boxes indexed by direction sign.
+    lane_nodes: Vec<LaneNode>,
     pub min: Vec3,
     pub max: Vec3,
     /// Each stored face's index in the faces `new` was given (for `uv_mapping`'s uv_vectors).
@@ -74,7 +76,19 @@ impl MeshData {
         // Faces are stored in leaf order: leaf ranges now index `triangles` directly.
         let source_face = std::mem::replace(&mut bvh.prim_order, (0..triangles.len() as u32).collect());
         let (min, max) = if triangles.is_empty() { (Vec3::ZERO, Vec3::ZERO) } else { (all.min, all.max) };
-        MeshData { triangles, smooth_of, smooth, bvh, min, max, source_face, floor: f32::NEG_INFINITY, grid: None }
+        let lane_nodes = bvh.nodes.iter().map(|n| LaneNode::new(&bvh, n)).collect();
+        MeshData {
+            triangles,
+            smooth_of,
+            smooth,
+            bvh,
+            lane_nodes,
+            min,
+            max,
+            source_face,
+            floor: f32::NEG_INFINITY,
+            grid: None,
+        }
     }
 
     /// Hits below object-space height `floor` are left out (`water_level`).
@@ -147,7 +161,12 @@ impl MeshData {
     }
 
     /// The walk behind `nearest_faces_lanes` (`FIRST` false) and `first_lanes` (`FIRST` true), with
-    /// each lane's face (for `FIRST`, the one that stopped it).
+    /// each lane's face (for `FIRST` none: shadow rays ask only whether they are blocked).
+    ///
+    /// Rows whose active lanes agree in the sign of each direction component, with finite
+    /// `1/d` (nearly every row of primary and shadow rays), take the cheaper box test
+    /// (`SignedSlabs`); the others the general one (`Slabs`). Both answer exactly what
+    /// `node_slabs` answers, so every lane sees the same faces either way.
     #[inline(always)]
     fn walk_lanes<L: Lane, const FIRST: bool>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
         if let Some(cells) = self.grid.as_ref().and_then(HeightGrid::cells) {
@@ -155,34 +174,75 @@ impl MeshData {
         }
         // Idle lanes (a point at infinity, an empty interval) take no part, as in `nearest`.
         let active = L::and(t_min.lt(t_max), L::and(finite(&ray.o), finite(&ray.d)));
-        let mut faces = [u32::MAX; 8];
-        if self.bvh.nodes.is_empty() || !L::any(active) {
-            return (L::splat(MISS), faces);
+        if self.lane_nodes.is_empty() || !L::any(active) {
+            return (L::splat(MISS), [u32::MAX; 8]);
         }
+        // Per axis: do all active lanes point up it (1), down it (-1), or neither (0)?
+        let signs = [axis_sign(ray.inv.x, active), axis_sign(ray.inv.y, active), axis_sign(ray.inv.z, active)];
+        if signs[0] != 0 && signs[1] != 0 && signs[2] != 0 {
+            let down = [signs[0] < 0, signs[1] < 0, signs[2] < 0];
+            let test = SignedSlabs::new(ray, active, down);
+            return self.walk_with::<L, FIRST, _>(ray, t_min, t_max, active, &test, true);
+        }
+        // Nearer child first, judged by the first active lane's direction.
+        let first_active = (0..L::WIDTH).find(|&i| L::mask_lane(active, i)).unwrap_or(0);
+        let down = [ray.d.x.get(first_active) < 0.0, ray.d.y.get(first_active) < 0.0, ray.d.z.get(first_active) < 0.0];
+        self.walk_with::<L, FIRST, _>(ray, t_min, t_max, active, &Slabs { ray, active, down }, false)
+    }
+
+    /// `walk_lanes` with one box test. `skip_root`: the caller's box test is exact enough that
+    /// a lane entering a child would have entered the root (see `SignedSlabs`), so the root's
+    /// own test, which the scene's walk has just made on the placed mesh's box, is left out.
+    #[inline(always)]
+    fn walk_with<L: Lane, const FIRST: bool, T: NodeTest<L>>(
+        &self,
+        ray: &RayLanes<L>,
+        t_min: L,
+        t_max: L,
+        active: L::Mask,
+        test: &T,
+        skip_root: bool,
+    ) -> (L, [u32; 8]) {
+        let mut faces = [u32::MAX; 8];
         // Each lane's current limit: -inf for idle lanes, which no node or face accepts.
         let mut limit = L::select(active, t_max, L::splat(f32::NEG_INFINITY));
         let mut best = L::splat(MISS);
-        // A function, not a closure: closures are compiled out of line, without AVX2.
-        #[inline(always)]
-        fn enters<L: Lane>(n: &BvhNode, ray: &RayLanes<L>, limit: L, active: L::Mask) -> bool {
-            let (lo, hi) = (V3::splat(Vec3::from_array(n.min)), V3::splat(Vec3::from_array(n.max)));
-            let (near, far) = node_slabs(lo, hi, ray.o, ray.inv);
-            L::any(L::and(L::and(near.le(far), L::splat(0.0).le(far)), L::and(near.le(limit), active)))
-        }
-        let first_active = (0..L::WIDTH).find(|&i| L::mask_lane(active, i)).unwrap_or(0);
-        let dir = Vec3::new(ray.d.x.get(first_active), ray.d.y.get(first_active), ray.d.z.get(first_active));
+        let down = test.down();
         let mut stack = [0u32; 64];
         let mut sp = 0usize;
         let mut node = 0u32;
+        let root = &self.lane_nodes[0];
+        if skip_root && !root.is_leaf() {
+            let (near, far) = root.near_far(down);
+            stack[0] = far;
+            sp = 1;
+            node = near;
+        }
         loop {
-            let n = &self.bvh.nodes[node as usize];
-            if enters(n, ray, limit, active) {
+            let n = &self.lane_nodes[node as usize];
+            if test.enters(n, limit) {
                 if n.is_leaf() {
-                    for f in n.first..n.first + n.count {
+                    let first = n.first();
+                    for f in first..first + n.count() {
+                        if FIRST {
+                            let t = self.triangles[f as usize].hit(ray, t_min, limit);
+                            let mut hit = t.lt(limit);
+                            if self.floor != f32::NEG_INFINITY {
+                                let y = ray.o.y + t * ray.d.y;
+                                hit = L::and(hit, L::splat(self.floor).le(y));
+                            }
+                            best = L::select(hit, t, best);
+                            // A lane that has hit is done: no node or face accepts -inf.
+                            limit = L::select(hit, L::splat(f32::NEG_INFINITY), limit);
+                            if !L::any(L::lt(L::splat(f32::NEG_INFINITY), limit)) {
+                                return (best, faces);
+                            }
+                            continue;
+                        }
                         // As `nearest`: up to a lane's best distance itself, where a face of
                         // lower index wins a tie.
                         let found = best.lt(L::splat(MISS));
-                        let reach = if FIRST { limit } else { L::select(found, limit.map(next_up), limit) };
+                        let reach = L::select(found, limit.map(next_up), limit);
                         let t = self.triangles[f as usize].hit(ray, t_min, reach);
                         let lower = L::mask_from_fn(|i| f < faces[i]);
                         let mut hit = L::and(t.lt(reach), L::or(t.lt(limit), lower));
@@ -195,19 +255,10 @@ impl MeshData {
                         for (i, face) in faces.iter_mut().enumerate().take(L::WIDTH) {
                             *face = if L::mask_lane(hit, i) { f } else { *face };
                         }
-                        if FIRST {
-                            // A lane that has hit is done: no node or face accepts -inf.
-                            limit = L::select(hit, L::splat(f32::NEG_INFINITY), limit);
-                            if !L::any(L::lt(L::splat(f32::NEG_INFINITY), limit)) {
-                                return (best, faces);
-                            }
-                        } else {
-                            limit = L::select(hit, t, limit);
-                        }
+                        limit = L::select(hit, t, limit);
                     }
                 } else {
-                    // Nearer child first, judged by the first active lane's direction.
-                    let (near, far) = self.bvh.near_far(n, dir);
+                    let (near, far) = n.near_far(down);
                     if sp < stack.len() {
                         stack[sp] = far;
                         sp += 1;
@@ -276,6 +327,7 @@ impl MeshData {
             + self.smooth_of.len() * 4
             + self.smooth.len() * 36
             + self.bvh.nodes.len() * std::mem::size_of::<crate::accel::bvh::BvhNode>()
+            + self.lane_nodes.len() * std::mem::size_of::<LaneNode>()
             + self.bvh.prim_order.len() * 4
             + self.source_face.len() * 4
     }
@@ -287,6 +339,180 @@ impl MeshData {
 fn finite<L: Lane>(v: &V3<L>) -> L::Mask {
     let inf = L::splat(f32::INFINITY);
     L::and(L::and(v.x.abs().lt(inf), v.y.abs().lt(inf)), v.z.abs().lt(inf))
+}
+
+/// 1 where every active lane's `inv` is positive and finite, -1 where every one is negative
+/// and finite, 0 otherwise (mixed signs, a zero direction component, an idle row).
+#[inline(always)]
+fn axis_sign<L: Lane>(inv: L, active: L::Mask) -> i8 {
+    let (zero, inf) = (L::splat(0.0), L::splat(f32::INFINITY));
+    let up = L::and(zero.lt(inv), inv.lt(inf));
+    let down = L::and(L::splat(f32::NEG_INFINITY).lt(inv), inv.lt(zero));
+    if !L::any(L::and(active, L::not(up))) {
+        1
+    } else if !L::any(L::and(active, L::not(down))) {
+        -1
+    } else {
+        0
+    }
+}
+
+/// A node of `MeshData::lane_nodes`: `BvhNode`'s box and children as eight floats, so that a
+/// box corner is picked by index (`b[axis + 4]` is the far side of an axis the ray goes up),
+/// and, for an interior node, the axis that orders its children (`Bvh::near_far`'s choice,
+/// made once here instead of at every visit).
+///
+/// `b`: min x, y, z, then `first` (bits), max x, y, z, then `meta` (bits): for a leaf its face
+/// count; for an interior node `INTERIOR | axis | (second child lower along the axis) << 2`.
+#[derive(Clone, Copy, Debug)]
+#[repr(C, align(32))]
+struct LaneNode {
+    b: [f32; 8],
+}
+
+/// `LaneNode`'s `meta` bit for an interior node (a leaf's count is below it).
+const INTERIOR: u32 = 1 << 31;
+
+impl LaneNode {
+    fn new(bvh: &Bvh, n: &BvhNode) -> LaneNode {
+        let meta = if n.is_leaf() {
+            assert!(n.count < INTERIOR);
+            n.count
+        } else {
+            let (a, c) = (&bvh.nodes[n.first as usize], &bvh.nodes[n.first as usize + 1]);
+            let ca = Vec3::from_array(a.min) + Vec3::from_array(a.max);
+            let cb = Vec3::from_array(c.min) + Vec3::from_array(c.max);
+            let sep = (cb - ca).abs();
+            let axis = if sep.x >= sep.y && sep.x >= sep.z {
+                0
+            } else if sep.y >= sep.z {
+                1
+            } else {
+                2
+            };
+            INTERIOR | axis | (((cb[axis as usize] - ca[axis as usize]) < 0.0) as u32) << 2
+        };
+        let [x0, y0, z0] = n.min;
+        let [x1, y1, z1] = n.max;
+        LaneNode { b: [x0, y0, z0, f32::from_bits(n.first), x1, y1, z1, f32::from_bits(meta)] }
+    }
+
+    #[inline(always)]
+    fn meta(&self) -> u32 {
+        self.b[7].to_bits()
+    }
+
+    #[inline(always)]
+    fn is_leaf(&self) -> bool {
+        self.meta() & INTERIOR == 0
+    }
+
+    #[inline(always)]
+    fn first(&self) -> u32 {
+        self.b[3].to_bits()
+    }
+
+    #[inline(always)]
+    fn count(&self) -> u32 {
+        self.meta()
+    }
+
+    /// An interior node's children, nearer first for rays going `down` (per axis) the
+    /// node's ordering axis. The order only speeds the walk; no result depends on it.
+    #[inline(always)]
+    fn near_far(&self, down: [bool; 3]) -> (u32, u32) {
+        let meta = self.meta();
+        let flip = (meta >> 2) & 1 != down[(meta & 3) as usize] as u32;
+        let first = self.first();
+        if flip {
+            (first + 1, first)
+        } else {
+            (first, first + 1)
+        }
+    }
+}
+
+/// Whether a row of lanes enters a node: a trait, not a closure, so it inlines into the walk
+/// and into its caller's AVX2 code.
+trait NodeTest<L: Lane> {
+    /// Whether any active lane meets the node's box within `(0, limit)`.
+    fn enters(&self, n: &LaneNode, limit: L) -> bool;
+    /// The direction, per axis, that orders children.
+    fn down(&self) -> [bool; 3];
+}
+
+/// Any row: `node_slabs`, as the single-ray walk tests.
+struct Slabs<'a, L: Lane> {
+    ray: &'a RayLanes<L>,
+    active: L::Mask,
+    down: [bool; 3],
+}
+
+impl<L: Lane> NodeTest<L> for Slabs<'_, L> {
+    #[inline(always)]
+    fn enters(&self, n: &LaneNode, limit: L) -> bool {
+        let lo = V3::splat(Vec3::new(n.b[0], n.b[1], n.b[2]));
+        let hi = V3::splat(Vec3::new(n.b[4], n.b[5], n.b[6]));
+        let (near, far) = node_slabs(lo, hi, self.ray.o, self.ray.inv);
+        L::any(L::and(L::and(near.le(far), L::splat(0.0).le(far)), L::and(near.le(limit), self.active)))
+    }
+
+    #[inline(always)]
+    fn down(&self) -> [bool; 3] {
+        self.down
+    }
+}
+
+/// Rows whose active lanes all go the same way along each axis, with finite `1/d`: the box's
+/// near side per axis is known for the whole row, so each axis costs one subtraction and one
+/// product per side and no min, max or NaN repair. The same numbers as `node_slabs`: no
+/// product is NaN (finite times finite), and with `inv > 0` the slab `lo` side's distance is
+/// the smaller, as rounding keeps order (and the other way for `inv < 0`). For the same reason
+/// a lane that enters a child box enters its parent, which lets the walk skip the root.
+struct SignedSlabs<L: Lane> {
+    o: V3<L>,
+    inv: V3<L>,
+    active: L::Mask,
+    down: [bool; 3],
+    /// Per axis, the index in `LaneNode::b` of the box side met first (`lo`, 0..3, going up;
+    /// `hi`, 4..7, going down) and of the side met last.
+    near: [usize; 3],
+    far: [usize; 3],
+}
+
+impl<L: Lane> SignedSlabs<L> {
+    #[inline(always)]
+    fn new(ray: &RayLanes<L>, active: L::Mask, down: [bool; 3]) -> SignedSlabs<L> {
+        let near = [4 * down[0] as usize, 1 + 4 * down[1] as usize, 2 + 4 * down[2] as usize];
+        let far = [4 * !down[0] as usize, 1 + 4 * !down[1] as usize, 2 + 4 * !down[2] as usize];
+        SignedSlabs { o: ray.o, inv: ray.inv, active, down, near, far }
+    }
+}
+
+/// The distance along one axis to the box side `b[ix]`.
+#[inline(always)]
+fn side<L: Lane>(n: &LaneNode, ix: usize, o: L, inv: L) -> L {
+    (L::splat(n.b[ix & 7]) - o) * inv
+}
+
+impl<L: Lane> NodeTest<L> for SignedSlabs<L> {
+    #[inline(always)]
+    fn enters(&self, n: &LaneNode, limit: L) -> bool {
+        let (near, far) = (&self.near, &self.far);
+        let nx = side(n, near[0], self.o.x, self.inv.x);
+        let ny = side(n, near[1], self.o.y, self.inv.y);
+        let nz = side(n, near[2], self.o.z, self.inv.z);
+        let fx = side(n, far[0], self.o.x, self.inv.x);
+        let fy = side(n, far[1], self.o.y, self.inv.y);
+        let fz = side(n, far[2], self.o.z, self.inv.z);
+        let (near, far) = (nx.max(ny).max(nz), fx.min(fy).min(fz));
+        L::any(L::and(L::and(near.le(far), L::splat(0.0).le(far)), L::and(near.le(limit), self.active)))
+    }
+
+    #[inline(always)]
+    fn down(&self) -> [bool; 3] {
+        self.down
+    }
 }
 
 /// One placed mesh: shared triangles under an object transform.

@@ -20,7 +20,7 @@ use super::{transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::accel::aabb::Aabb;
 use crate::accel::bvh::{Bvh, BvhNode};
-use crate::lanes::{next_up, Lane, V3};
+use crate::lanes::{next_up, Lane, F8, V3};
 use crate::ray::{Ray, RayLanes, MISS};
 
 /// `MeshData::smooth_of` for a flat face.
@@ -203,10 +203,7 @@ impl MeshData {
         test: &T,
         skip_root: bool,
     ) -> (L, [u32; 8]) {
-        let mut faces = [u32::MAX; 8];
-        // Each lane's current limit: -inf for idle lanes, which no node or face accepts.
-        let mut limit = L::select(active, t_max, L::splat(f32::NEG_INFINITY));
-        let mut best = L::splat(MISS);
+        let mut row = RowState::new(active, t_max);
         let down = test.down();
         let mut stack = [0u32; 64];
         let mut sp = 0usize;
@@ -220,42 +217,10 @@ impl MeshData {
         }
         loop {
             let n = &self.lane_nodes[node as usize];
-            if test.enters(n, limit) {
+            if test.enters(n, row.limit) {
                 if n.is_leaf() {
-                    let first = n.first();
-                    for f in first..first + n.count() {
-                        if FIRST {
-                            let t = self.triangles[f as usize].hit(ray, t_min, limit);
-                            let mut hit = t.lt(limit);
-                            if self.floor != f32::NEG_INFINITY {
-                                let y = ray.o.y + t * ray.d.y;
-                                hit = L::and(hit, L::splat(self.floor).le(y));
-                            }
-                            best = L::select(hit, t, best);
-                            // A lane that has hit is done: no node or face accepts -inf.
-                            limit = L::select(hit, L::splat(f32::NEG_INFINITY), limit);
-                            if !L::any(L::lt(L::splat(f32::NEG_INFINITY), limit)) {
-                                return (best, faces);
-                            }
-                            continue;
-                        }
-                        // As `nearest`: up to a lane's best distance itself, where a face of
-                        // lower index wins a tie.
-                        let found = best.lt(L::splat(MISS));
-                        let reach = L::select(found, limit.map(next_up), limit);
-                        let t = self.triangles[f as usize].hit(ray, t_min, reach);
-                        let lower = L::mask_from_fn(|i| f < faces[i]);
-                        let mut hit = L::and(t.lt(reach), L::or(t.lt(limit), lower));
-                        if self.floor != f32::NEG_INFINITY {
-                            let y = ray.o.y + t * ray.d.y;
-                            hit = L::and(hit, L::splat(self.floor).le(y));
-                        }
-                        best = L::select(hit, t, best);
-                        // A select per lane, not a branch.
-                        for (i, face) in faces.iter_mut().enumerate().take(L::WIDTH) {
-                            *face = if L::mask_lane(hit, i) { f } else { *face };
-                        }
-                        limit = L::select(hit, t, limit);
+                    if !self.leaf_row::<L, FIRST>(n, ray, t_min, &mut row) {
+                        return (row.best, row.faces);
                     }
                 } else {
                     let (near, far) = n.near_far(down);
@@ -268,10 +233,178 @@ impl MeshData {
                 }
             }
             if sp == 0 {
-                return (best, faces);
+                return (row.best, row.faces);
             }
             sp -= 1;
             node = stack[sp];
+        }
+    }
+
+    /// Tests leaf `n`'s faces against one row, lowering its lanes' limits; false once every
+    /// lane of a shadow row (`FIRST`) has hit, when the row is done.
+    #[inline(always)]
+    fn leaf_row<L: Lane, const FIRST: bool>(
+        &self,
+        n: &LaneNode,
+        ray: &RayLanes<L>,
+        t_min: L,
+        row: &mut RowState<L>,
+    ) -> bool {
+        let first = n.first();
+        for f in first..first + n.count() {
+            if FIRST {
+                let t = self.triangles[f as usize].hit(ray, t_min, row.limit);
+                let mut hit = t.lt(row.limit);
+                if self.floor != f32::NEG_INFINITY {
+                    let y = ray.o.y + t * ray.d.y;
+                    hit = L::and(hit, L::splat(self.floor).le(y));
+                }
+                row.best = L::select(hit, t, row.best);
+                // A lane that has hit is done: no node or face accepts -inf.
+                row.limit = L::select(hit, L::splat(f32::NEG_INFINITY), row.limit);
+                if !L::any(L::lt(L::splat(f32::NEG_INFINITY), row.limit)) {
+                    return false;
+                }
+                continue;
+            }
+            // As `nearest`: up to a lane's best distance itself, where a face of lower index
+            // wins a tie.
+            let found = row.best.lt(L::splat(MISS));
+            let reach = L::select(found, row.limit.map(next_up), row.limit);
+            let t = self.triangles[f as usize].hit(ray, t_min, reach);
+            let lower = L::mask_from_fn(|i| f < row.faces[i]);
+            let mut hit = L::and(t.lt(reach), L::or(t.lt(row.limit), lower));
+            if self.floor != f32::NEG_INFINITY {
+                let y = ray.o.y + t * ray.d.y;
+                hit = L::and(hit, L::splat(self.floor).le(y));
+            }
+            row.best = L::select(hit, t, row.best);
+            // A select per lane, not a branch.
+            for (i, face) in row.faces.iter_mut().enumerate().take(L::WIDTH) {
+                *face = if L::mask_lane(hit, i) { f } else { *face };
+            }
+            row.limit = L::select(hit, t, row.limit);
+        }
+        true
+    }
+
+    /// `walk_lanes` for up to eight rows of one packet at once (`rays`, in object space, with
+    /// their limits `t_max`): the rows share one walk of the tree, as the scene's packet walk
+    /// (`Bvh::traverse_packet`) shares its own, keeping the range of rows still wanting the
+    /// current node, so the nodes near the root are tested once for the block rather than once
+    /// per row. A row tests a leaf's faces only where its own box test admits it, so each row
+    /// meets the faces its own walk would (the results do not depend on the order, as
+    /// `nearest_faces_lanes` says). Writes each row's distances and faces to `out`.
+    ///
+    /// Only for rows with one direction sign per axis among them all (`SignedSlabs`, whose
+    /// child-implies-parent property the shared range relies on); other blocks walk row by row.
+    #[inline(always)]
+    fn walk_rows<L: Lane, const FIRST: bool>(&self, rays: &[RayLanes<L>], t_max: &[L], out: &mut [(L, [u32; 8])]) {
+        let rows = rays.len().min(8);
+        if self.grid.is_some() || self.lane_nodes.is_empty() {
+            for r in 0..rows {
+                out[r] = self.walk_lanes::<L, FIRST>(&rays[r], L::splat(0.0), t_max[r]);
+            }
+            return;
+        }
+        let t_min = L::splat(0.0);
+        let none = L::lt(L::splat(0.0), L::splat(0.0));
+        let mut active = [none; 8];
+        // Each axis's sign over all rows with an active lane: 0 where they disagree.
+        let mut signs = [0i8; 3];
+        let mut any_row = false;
+        let mut agree = true;
+        for r in 0..rows {
+            let ray = &rays[r];
+            active[r] = L::and(t_min.lt(t_max[r]), L::and(finite(&ray.o), finite(&ray.d)));
+            if !L::any(active[r]) {
+                continue;
+            }
+            let row =
+                [axis_sign(ray.inv.x, active[r]), axis_sign(ray.inv.y, active[r]), axis_sign(ray.inv.z, active[r])];
+            if !any_row {
+                signs = row;
+                any_row = true;
+            }
+            agree &= row[0] != 0 && row[1] != 0 && row[2] != 0 && row == signs;
+        }
+        if !any_row {
+            for o in out.iter_mut().take(rows) {
+                *o = (L::splat(MISS), [u32::MAX; 8]);
+            }
+            return;
+        }
+        if !agree {
+            for r in 0..rows {
+                out[r] = self.walk_lanes::<L, FIRST>(&rays[r], t_min, t_max[r]);
+            }
+            return;
+        }
+        let down = [signs[0] < 0, signs[1] < 0, signs[2] < 0];
+        // Loops, not `array::from_fn`: closures are compiled out of line, without AVX2.
+        let mut tests = [SignedSlabs::new(&rays[0], active[0], down); 8];
+        let mut state = [RowState::new(active[0], t_max[0]); 8];
+        // Rows with lanes still to find a hit (bit per row), for shadow rows' early end.
+        let mut left = 0u32;
+        for r in 1..rows {
+            tests[r] = SignedSlabs::new(&rays[r], active[r], down);
+            state[r] = RowState::new(active[r], t_max[r]);
+        }
+        for r in 0..rows {
+            if L::any(active[r]) {
+                left |= 1 << r;
+            }
+        }
+        let mut stack = [(0u32, 0u8, 0u8); 64];
+        let mut sp = 0usize;
+        let (mut node, mut lo, mut hi) = (0u32, 0usize, rows - 1);
+        let root = &self.lane_nodes[0];
+        if !root.is_leaf() {
+            let (near, far) = root.near_far(down);
+            stack[0] = (far, 0, hi as u8);
+            sp = 1;
+            node = near;
+        }
+        loop {
+            let n = &self.lane_nodes[node as usize];
+            while lo <= hi && !tests[lo].enters(n, state[lo].limit) {
+                lo += 1;
+            }
+            while hi > lo && !tests[hi].enters(n, state[hi].limit) {
+                hi -= 1;
+            }
+            if lo <= hi {
+                if n.is_leaf() {
+                    for r in lo..=hi {
+                        // The range's ends entered just above; rows between them ask their own.
+                        if r != lo && r != hi && !tests[r].enters(n, state[r].limit) {
+                            continue;
+                        }
+                        if !self.leaf_row::<L, FIRST>(n, &rays[r], t_min, &mut state[r]) {
+                            left &= !(1 << r);
+                        }
+                    }
+                    if FIRST && left == 0 {
+                        break;
+                    }
+                } else {
+                    let (near, far) = n.near_far(down);
+                    if sp < stack.len() {
+                        stack[sp] = (far, lo as u8, hi as u8);
+                        sp += 1;
+                    }
+                    node = near;
+                    continue;
+                }
+            }
+            if sp == 0 {
+                break;
+            }
+            sp -= 1;
+            (node, lo, hi) = (stack[sp].0, stack[sp].1 as usize, stack[sp].2 as usize);
+        }
+        for r in 0..rows {
+            out[r] = (state[r].best, state[r].faces);
         }
     }
 
@@ -354,6 +487,26 @@ fn axis_sign<L: Lane>(inv: L, active: L::Mask) -> i8 {
         -1
     } else {
         0
+    }
+}
+
+/// One row's progress in a walk: each lane's limit (-inf for idle lanes and, in shadow walks,
+/// for lanes that have hit: no node or face accepts it), best distance and face.
+#[derive(Clone, Copy)]
+struct RowState<L: Lane> {
+    limit: L,
+    best: L,
+    faces: [u32; 8],
+}
+
+impl<L: Lane> RowState<L> {
+    #[inline(always)]
+    fn new(active: L::Mask, t_max: L) -> RowState<L> {
+        RowState {
+            limit: L::select(active, t_max, L::splat(f32::NEG_INFINITY)),
+            best: L::splat(MISS),
+            faces: [u32::MAX; 8],
+        }
     }
 }
 
@@ -469,6 +622,7 @@ impl<L: Lane> NodeTest<L> for Slabs<'_, L> {
 /// product is NaN (finite times finite), and with `inv > 0` the slab `lo` side's distance is
 /// the smaller, as rounding keeps order (and the other way for `inv < 0`). For the same reason
 /// a lane that enters a child box enters its parent, which lets the walk skip the root.
+#[derive(Clone, Copy)]
 struct SignedSlabs<L: Lane> {
     o: V3<L>,
     inv: V3<L>,
@@ -612,6 +766,42 @@ impl Mesh {
             let r = self.object_ray(&o, &d, i);
             self.data.first(&r, t_min.get(i), t_max.get(i)).unwrap_or(MISS)
         })
+    }
+
+    /// `hit_faces` (`FIRST` false) or `first_hit` (`FIRST` true) for up to eight rows of one
+    /// packet at once, row `r` with limit `t_max[r]`: each row's answer as those give it for
+    /// the row alone, from one shared walk (`MeshData::walk_rows`).
+    #[inline(never)]
+    pub fn rows<const FIRST: bool>(&self, rays: &[RayLanes<F8>], t_max: &[F8]) -> [(F8, [u32; 8]); 8] {
+        // In 256-bit instructions where the CPU has them, as `first_hit`.
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.rows_avx2::<FIRST>(rays, t_max) };
+        }
+        self.rows_here::<FIRST>(rays, t_max)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn rows_avx2<const FIRST: bool>(&self, rays: &[RayLanes<F8>], t_max: &[F8]) -> [(F8, [u32; 8]); 8] {
+        self.rows_here::<FIRST>(rays, t_max)
+    }
+
+    #[inline(always)]
+    fn rows_here<const FIRST: bool>(&self, rays: &[RayLanes<F8>], t_max: &[F8]) -> [(F8, [u32; 8]); 8] {
+        let mut object =
+            [RayLanes::<F8> { o: V3::splat(Vec3::ZERO), d: V3::splat(Vec3::ZERO), inv: V3::splat(Vec3::ZERO) }; 8];
+        let rows = rays.len().min(8);
+        for r in 0..rows {
+            // As `hit_faces` and `first_hit_here` carry one row.
+            let o = rays[r].o.transform_point(&self.frame.object_from_render);
+            let d = rays[r].d.transform_vector(&self.frame.object_from_render);
+            object[r] = RayLanes { o, d, inv: d.recip() };
+        }
+        let mut out = [(F8::splat(MISS), [u32::MAX; 8]); 8];
+        self.data.walk_rows::<F8, FIRST>(&object[..rows], t_max, &mut out);
+        out
     }
 
     /// `face`'s hit re-solved in f64 (`--precision f64`): the triangle kernel on the ray

@@ -633,7 +633,7 @@ impl RowTest for NearestRows<'_, '_> {
     #[inline(always)]
     fn test_rows(&mut self, prim: u32, first: usize, last: usize, t: &mut [F8]) {
         let p = &self.scene.prims[prim as usize];
-        if p.kind != ShapeKind::Mesh {
+        if p.kind != ShapeKind::Mesh || !self.scene.meshes[p.index as usize].walks_rows() {
             for r in first..=last {
                 self.test(prim, r, &mut t[r]);
             }
@@ -691,7 +691,7 @@ impl RowTest for BlockedRows<'_, '_> {
     #[inline(always)]
     fn test_rows(&mut self, prim: u32, first: usize, last: usize, t: &mut [F8]) {
         let p = &self.scene.prims[prim as usize];
-        if p.kind != ShapeKind::Mesh || !p.casts_shadow {
+        if p.kind != ShapeKind::Mesh || !p.casts_shadow || !self.scene.meshes[p.index as usize].walks_rows() {
             for r in first..=last {
                 self.test(prim, r, &mut t[r]);
             }

@@ -129,6 +129,15 @@ fn row_enters(n: &BvhNode, r: &Ray8, t: F8, active: M8) -> bool {
 /// kernels compile to 256-bit instructions. (A closure was compiled out of line, without AVX2.)
 pub trait RowTest {
     fn test(&mut self, prim: u32, row: usize, t: &mut F8);
+
+    /// `test` for rows `first..=last` (`t` holds every row's limit): a shape that walks
+    /// several rows at once (a mesh's own hierarchy) takes them together.
+    #[inline(always)]
+    fn test_rows(&mut self, prim: u32, first: usize, last: usize, t: &mut [F8]) {
+        for r in first..=last {
+            self.test(prim, r, &mut t[r]);
+        }
+    }
 }
 
 impl Bvh {
@@ -180,9 +189,7 @@ impl Bvh {
             if !culled && first <= last {
                 if n.is_leaf() {
                     for &p in &self.prim_order[n.first as usize..(n.first + n.count) as usize] {
-                        for r in first..=last {
-                            test.test(p, r, &mut t[r]);
-                        }
+                        test.test_rows(p, first, last, t);
                     }
                 } else {
                     // Nearer child first, judged by the first active ray.

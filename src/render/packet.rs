@@ -639,6 +639,25 @@ impl RowTest for NearestRows<'_, '_> {
         self.stats.tests[kind as usize] += 8;
         self.stats.hits[kind as usize] += hits as u64;
     }
+
+    /// A mesh walks its own tree once for all the rows (`Mesh::rows`).
+    #[inline(always)]
+    fn test_rows(&mut self, prim: u32, first: usize, last: usize, t: &mut [F8]) {
+        let p = &self.scene.prims[prim as usize];
+        if p.kind != ShapeKind::Mesh || !self.scene.meshes[p.index as usize].walks_rows() {
+            for r in first..=last {
+                self.test(prim, r, &mut t[r]);
+            }
+            return;
+        }
+        let found = self.scene.meshes[p.index as usize].rows::<false>(&self.rows[first..=last], &t[first..=last]);
+        for r in first..=last {
+            let (t_new, face) = &found[r - first];
+            let hits = take_nearer(&mut t[r], &mut self.ids[r], &mut self.faces[r], *t_new, prim, &[NO_HIT; 8], face);
+            self.stats.tests[p.kind as usize] += 8;
+            self.stats.hits[p.kind as usize] += hits as u64;
+        }
+    }
 }
 
 /// The any-hit primitive test for shadow packets: a blocked lane's limit drops to -inf, which
@@ -657,6 +676,15 @@ impl BlockedRows<'_, '_> {
         self.blocked[r] = F8::or(self.blocked[r], hit);
         *t = F8::select(hit, F8::splat(f32::NEG_INFINITY), *t);
     }
+
+    /// Blocks row `r`'s active lanes where a shape of `kind` answered a hit (`t_new`).
+    #[inline(always)]
+    fn blocked_by(&mut self, kind: ShapeKind, r: usize, t: &mut F8, t_new: F8) {
+        let hit = F8::and(t_new.lt(F8::splat(MISS)), self.active[r]);
+        self.stats.tests[kind as usize] += 8;
+        self.stats.hits[kind as usize] += hit.count() as u64;
+        self.block(r, t, hit);
+    }
 }
 
 impl RowTest for BlockedRows<'_, '_> {
@@ -667,10 +695,23 @@ impl RowTest for BlockedRows<'_, '_> {
             return;
         }
         let t_new = self.scene.blocks_prim(p, &self.rows[r], *t);
-        let hit = F8::and(t_new.lt(F8::splat(MISS)), self.active[r]);
-        self.stats.tests[p.kind as usize] += 8;
-        self.stats.hits[p.kind as usize] += hit.count() as u64;
-        self.block(r, t, hit);
+        self.blocked_by(p.kind, r, t, t_new);
+    }
+
+    /// A mesh walks its own tree once for all the rows (`Mesh::rows`).
+    #[inline(always)]
+    fn test_rows(&mut self, prim: u32, first: usize, last: usize, t: &mut [F8]) {
+        let p = &self.scene.prims[prim as usize];
+        if p.kind != ShapeKind::Mesh || !p.casts_shadow || !self.scene.meshes[p.index as usize].walks_rows() {
+            for r in first..=last {
+                self.test(prim, r, &mut t[r]);
+            }
+            return;
+        }
+        let found = self.scene.meshes[p.index as usize].rows::<true>(&self.rows[first..=last], &t[first..=last]);
+        for r in first..=last {
+            self.blocked_by(p.kind, r, &mut t[r], found[r - first].0);
+        }
     }
 }
 

@@ -295,9 +295,11 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         }
     }
 
-    // Per light and row: the direction to the light, and the lanes it reaches unblocked.
-    let mut light_dir = [[V3::splat(Vec3::ZERO); 8]; MAX_PACKET_LIGHTS];
-    let mut light_on = [[M8::default(); 8]; MAX_PACKET_LIGHTS];
+    // Per light and row: the direction to the light, and the lanes it reaches unblocked (the
+    // tracer's scratch, taken for the block; rows below `rows` are written for every light
+    // before they are read).
+    let mut light_rows = std::mem::take(&mut tracer.light_rows);
+    light_rows.resize(scene.lights.len(), ([V3::splat(Vec3::ZERO); 8], [M8::default(); 8]));
     // Rows past `rows` are never read, and `shadow_setup` rewrites rows below it per light.
     let mut shadow = ShadowRows::new();
     for (l, light) in scene.lights.iter().enumerate() {
@@ -318,9 +320,10 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 &mut tracer.stats,
             )
         };
+        let (dir, on) = &mut light_rows[l];
         for r in 0..rows {
-            light_dir[l][r] = shadow.rays[r].d;
-            light_on[l][r] = F8::and(shadow.lit[r], F8::not(blocked[r]));
+            dir[r] = shadow.rays[r].d;
+            on[r] = F8::and(shadow.lit[r], F8::not(blocked[r]));
         }
     }
 
@@ -346,8 +349,8 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 if !material.lit_by(l) {
                     continue;
                 }
-                let sample =
-                    LightSample { dir: light_dir[l][r], color: V3::splat(light.color * Vec3::ONE), on: light_on[l][r] };
+                let (dir, on) = &light_rows[l];
+                let sample = LightSample { dir: dir[r], color: V3::splat(light.color * Vec3::ONE), on: on[r] };
                 color = shade::add_light(finish, &hit, reflected, color, &sample);
             }
             for i in 0..lanes {
@@ -360,14 +363,15 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     for (r, i, s) in &surfaces {
         let (r, i) = (*r, *i);
         let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
-            if l < lights && light_on[l][r].lane(i) {
-                light_dir[l][r].lane(i)
+            if l < lights && light_rows[l].1[r].lane(i) {
+                light_rows[l].0[r].lane(i)
             } else {
                 Vec3::ZERO
             }
         });
         colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
     }
+    tracer.light_rows = light_rows;
     colors
 }
 

@@ -7,6 +7,7 @@
 //! Layer 7 of docs/design/architecture.md: uses `scene` and below; `pov` (probes) and the front ends use it.
 
 pub mod adaptive;
+mod block_rows;
 mod blur;
 pub mod csg;
 pub mod image;
@@ -284,7 +285,10 @@ impl Raster {
     #[inline]
     pub fn resolve(&self, sum: Vec3) -> Vec3 {
         match self.samples {
+            // x / 1 is x, bit for bit: one sample per pixel skips the division (3 % of a
+            // floor-only frame).
             Samples::One(..) => sum,
+            Samples::All if self.aa == 1 => sum,
             Samples::All => sum / (self.aa * self.aa) as f32,
         }
     }

@@ -18,6 +18,7 @@ use crate::lanes::{has_avx2, Lane, F8, M8, V3};
 use crate::ray::Ray;
 use crate::ray::MISS;
 use crate::ray::{HIT_ERROR_ULPS, SHADOW_SHRINK};
+use crate::render::block_rows::{BlockRows, ShadowRows, Soa3, SurfaceRows};
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
@@ -219,12 +220,14 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
 
     // Surfaces first, so all shadow rays of the block can be traced together.
     let q = tracer.pattern_quality();
-    let mut soa = SurfaceRows::default();
+    // The block's rows, reused (`render::block_rows`): only `valid` starts afresh.
+    let mut block = tracer.block.take().unwrap_or_else(BlockRows::new);
+    let BlockRows { surfaces: soa, pigments, shadow, lights: light_rows } = &mut *block;
+    soa.valid = [M8::default(); 8];
     // Per row: each lane's material where it is shaded eight lanes wide (`NO_HIT` for a miss
-    // or a lane shaded singly), the pigment colours of those lanes, and the single lanes'
-    // surfaces.
+    // or a lane shaded singly), the pigment colours of those lanes (in `pigments`), and the
+    // single lanes' surfaces.
     let mut materials = [[NO_HIT; 8]; 8];
-    let mut pigments = [RgbftLanes::splat(Rgbft::default()); 8];
     // (row, lane, surface) of the lanes shaded singly, in row and lane order; most blocks have
     // none, and a `Vec` costs nothing until pushed to (a 64-entry array was set to `None` per
     // block).
@@ -293,21 +296,18 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             }
             let Some(shape) = shape_of(i) else { continue };
             let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
-            soa.set_lane(r, i, &s);
+            set_surface_lane(soa, r, i, &s);
             surfaces.push((r, i, s));
         }
     }
 
-    // Per light and row: the direction to the light, and the lanes it reaches unblocked (the
-    // tracer's scratch, taken for the block; rows below `rows` are written for every light
-    // before they are read).
-    let mut light_rows = std::mem::take(&mut tracer.light_rows);
+    // Per light and row: the direction to the light, and the lanes it reaches unblocked (rows
+    // below `rows` are written for every light before they are read). Rows past `rows` of the
+    // shadow rays are never read, and `shadow_setup` rewrites rows below it per light.
     light_rows.resize(scene.lights.len(), ([V3::splat(Vec3::ZERO); 8], [M8::default(); 8]));
-    // Rows past `rows` are never read, and `shadow_setup` rewrites rows below it per light.
-    let mut shadow = ShadowRows::new();
     for (l, light) in scene.lights.iter().enumerate() {
         let unshadowed = light.shadowless || !tracer.quality.shadows;
-        shadow_setup(&soa, rows, light.position, unshadowed, &mut shadow);
+        shadow_setup(soa, rows, light.position, unshadowed, shadow);
         let active = shadow.active;
         let count: u64 = active[..rows].iter().map(|m| m.count() as u64).sum();
         let blocked = if count == 0 {
@@ -374,7 +374,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         });
         colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
     }
-    tracer.light_rows = light_rows;
+    tracer.block = Some(block);
     colors
 }
 
@@ -422,68 +422,12 @@ impl Iterator for Groups<'_> {
 }
 
 /// A block's hit points and normals in structure-of-arrays form, eight lanes per row.
-#[derive(Default)]
-struct SurfaceRows {
-    p: [Soa3; 8],
-    facing: [Soa3; 8],
-    normal: [Soa3; 8],
-    valid: [M8; 8],
-}
-
-#[derive(Clone, Copy, Default)]
-struct Soa3 {
-    x: F8,
-    y: F8,
-    z: F8,
-}
-
-impl From<V3<F8>> for Soa3 {
-    #[inline(always)]
-    fn from(v: V3<F8>) -> Soa3 {
-        Soa3 { x: v.x, y: v.y, z: v.z }
-    }
-}
-
-impl Soa3 {
-    #[inline(always)]
-    fn v(self) -> V3<F8> {
-        V3 { x: self.x, y: self.y, z: self.z }
-    }
-
-    #[inline(always)]
-    fn set(&mut self, i: usize, v: Vec3) {
-        (self.x.0[i], self.y.0[i], self.z.0[i]) = (v.x, v.y, v.z);
-    }
-}
-
-impl SurfaceRows {
-    fn set_lane(&mut self, r: usize, i: usize, s: &Surface) {
-        self.p[r].set(i, s.p);
-        self.facing[r].set(i, s.facing);
-        self.normal[r].set(i, s.normal);
-        self.valid[r].0[i] = -1;
-    }
-}
-
-/// Shadow rays towards one light for a block, and where they stop.
-struct ShadowRows {
-    rays: [Ray8; 8],
-    t_max: [F8; 8],
-    /// Lanes with a shadow ray to trace.
-    active: [M8; 8],
-    /// Lanes the light reaches unless something blocks it (direction in `rays[r].d`).
-    lit: [M8; 8],
-}
-
-impl ShadowRows {
-    fn new() -> ShadowRows {
-        ShadowRows {
-            rays: [Ray8::ZERO; 8],
-            t_max: [F8::splat(f32::NEG_INFINITY); 8],
-            active: [M8::default(); 8],
-            lit: [M8::default(); 8],
-        }
-    }
+/// Lane `i` of row `r` of `soa` from a singly shaded lane's surface.
+fn set_surface_lane(soa: &mut SurfaceRows, r: usize, i: usize, s: &Surface) {
+    soa.p[r].set(i, s.p);
+    soa.facing[r].set(i, s.facing);
+    soa.normal[r].set(i, s.normal);
+    soa.valid[r].0[i] = -1;
 }
 
 fn shadow_setup(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: bool, out: &mut ShadowRows) {

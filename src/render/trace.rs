@@ -9,8 +9,9 @@
 use glam::Vec3;
 
 use crate::geometry::uv::UvMap;
-use crate::lanes::{F8, M8, V3};
+use crate::lanes::V3;
 use crate::ray::{offset_origin, shadow_t_max, Ray};
+use crate::render::block_rows::BlockRows;
 use crate::render::intersect::{Hit, HitShape};
 use crate::render::precision::Precision;
 use crate::render::shade::{self, LightSample, LocalHit};
@@ -38,18 +39,14 @@ pub struct Tracer<'a> {
     /// Scratch for adaptive area-light sampling (`light::adaptive_visibility`), kept between
     /// shading points so no point allocates.
     area_cache: Vec<Option<Vec3>>,
-    /// Scratch for a packet's lights (`render::packet`): per light and row, the direction to
-    /// the light and the lanes it reaches. Kept between blocks: as arrays sized for eight
-    /// lights, zeroed for every 8×8 block, it was 8 KB of stores a block.
-    pub(crate) light_rows: Vec<LightRows>,
+    /// A packet block's working rows (`render::packet`), made on the first block and reused
+    /// by every later one: built zeroed per 8×8 block, they were about 15 KB of stores a block.
+    pub(crate) block: Option<Box<BlockRows>>,
 }
-
-/// Per row of a packet: the direction to one light and the lanes it reaches.
-pub(crate) type LightRows = ([V3<F8>; 8], [M8; 8]);
 
 impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene, quality: &'a Quality) -> Tracer<'a> {
-        Tracer { scene, quality, stats: RenderStats::default(), area_cache: Vec::new(), light_rows: Vec::new() }
+        Tracer { scene, quality, stats: RenderStats::default(), area_cache: Vec::new(), block: None }
     }
 
     #[inline]

@@ -83,7 +83,9 @@ fn intersect_rows_generic(
             stats.hits[ShapeKind::Plane as usize] += hits as u64;
         }
     }
-    let mut test = NearestRows { scene, rows, ids, faces, stats: RenderStats::default() };
+    // Counted straight into the caller's statistics: a local `RenderStats` (about 0.8 KB) was
+    // zeroed and added field by field three times per block, 5 % of a floor-only frame.
+    let mut test = NearestRows { scene, rows, ids, faces, stats };
     // Unbounded primitives (`Scene::unbounded`), for every row, as planes.
     for prim in scene.unbounded.clone() {
         for r in 0..rows.len() {
@@ -93,9 +95,8 @@ fn intersect_rows_generic(
     if let Accel::Bvh(bvh) = &scene.accel {
         let all = [M8([-1; 8]); 8];
         let visited = bvh.traverse_packet(rows, t, &all[..rows.len()], frustum, &mut test);
-        stats.nodes_visited += visited as u64;
+        test.stats.nodes_visited += visited as u64;
     }
-    *stats += test.stats;
 }
 
 /// The nearest-hit primitive test for packets: records which primitive each lane hit, and
@@ -105,7 +106,7 @@ struct NearestRows<'a, 'r> {
     rows: &'r [Ray8],
     ids: &'r mut [[u32; 8]],
     faces: &'r mut [[u32; 8]],
-    stats: RenderStats,
+    stats: &'r mut RenderStats,
 }
 
 impl RowTest for NearestRows<'_, '_> {
@@ -146,7 +147,7 @@ struct BlockedRows<'a, 'r> {
     rows: &'r [Ray8],
     active: &'r [M8],
     blocked: [M8; 8],
-    stats: RenderStats,
+    stats: &'r mut RenderStats,
 }
 
 impl BlockedRows<'_, '_> {
@@ -233,7 +234,7 @@ fn occluded_rows_generic(
     light: Vec3,
     stats: &mut RenderStats,
 ) -> [M8; 8] {
-    let mut test = BlockedRows { scene, rows, active, blocked: [M8::default(); 8], stats: RenderStats::default() };
+    let mut test = BlockedRows { scene, rows, active, blocked: [M8::default(); 8], stats };
     // Planes by side, as `Scene::occluded_towards`: blocked when the ray's origin and the light
     // lie strictly on opposite sides.
     for (plane, _) in scene.planes.iter().zip(&scene.plane_casts_shadow).filter(|(_, &casts)| casts) {
@@ -260,8 +261,7 @@ fn occluded_rows_generic(
         }
     }
     if let Accel::Bvh(bvh) = &scene.accel {
-        stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, &mut test) as u64;
+        test.stats.nodes_visited += bvh.traverse_packet(rows, t_max, active, None, &mut test) as u64;
     }
-    *stats += test.stats;
     test.blocked
 }

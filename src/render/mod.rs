@@ -159,26 +159,27 @@ pub fn render(scene: &Scene, camera: &Camera, settings: &RenderSettings, image: 
     // projection and focal blur may use packets (`packet::trace_block` drops its frustum test
     // when the rays do not share an origin).
     let use_packets = settings.packets && packet::supported(scene) && gen.packets();
-    render_tiles(settings, image, |t, raster| {
-        let mut tracer = Tracer::new(scene, &settings.quality);
+    let new_tracer = || Tracer::new(scene, &settings.quality);
+    render_tiles(settings, image, new_tracer, |tracer, t, raster| {
+        let tracer = &mut *tracer;
         if use_packets {
             for by in (t.y0..t.y1).step_by(packet::BLOCK as usize) {
                 for bx in (t.x0..t.x1).step_by(packet::BLOCK as usize) {
                     let (bw, bh) = ((t.x1 - bx).min(packet::BLOCK), (t.y1 - by).min(packet::BLOCK));
-                    render_block(&mut tracer, &gen, &Block { x: bx, y: by, w: bw, h: bh }, raster);
+                    render_block(tracer, &gen, &Block { x: bx, y: by, w: bw, h: bh }, raster);
                 }
             }
         } else {
             for j in t.y0..t.y1 {
                 for i in t.x0..t.x1 {
                     let (x, y) = raster.frame_pixel(i, j);
-                    let c = render_pixel(&mut tracer, &gen, x, y, raster);
+                    let c = render_pixel(tracer, &gen, x, y, raster);
                     // SAFETY: tiles partition the image, so each pixel is written by one task.
                     unsafe { raster.out.write((j * raster.out_w + i) as usize, c) };
                 }
             }
         }
-        tracer.stats
+        std::mem::take(&mut tracer.stats)
     })
 }
 
@@ -206,17 +207,20 @@ pub fn render_pixels(
     let mut stats = pixels
         .par_chunks(CHUNK)
         .zip(out.par_chunks_mut(CHUNK))
-        .map(|(ps, os)| {
-            let mut tracer = Tracer::new(scene, &settings.quality);
-            if use_packets {
-                render_listed_block(&mut tracer, &gen, ps, &raster, os);
-            } else {
-                for (&p, o) in ps.iter().zip(os) {
-                    *o = render_pixel(&mut tracer, &gen, p % w, p / w, raster);
+        // One tracer (and its block scratch) for a run of chunks on a thread, as `render_tiles`.
+        .map_init(
+            || Tracer::new(scene, &settings.quality),
+            |tracer, (ps, os)| {
+                if use_packets {
+                    render_listed_block(tracer, &gen, ps, &raster, os);
+                } else {
+                    for (&p, o) in ps.iter().zip(os) {
+                        *o = render_pixel(tracer, &gen, p % w, p / w, raster);
+                    }
                 }
-            }
-            tracer.stats
-        })
+                std::mem::take(&mut tracer.stats)
+            },
+        )
         .reduce(RenderStats::default, |mut a, b| {
             a += b;
             a
@@ -285,8 +289,7 @@ impl Raster {
     #[inline]
     pub fn resolve(&self, sum: Vec3) -> Vec3 {
         match self.samples {
-            // x / 1 is x, bit for bit: one sample per pixel skips the division (3 % of a
-            // floor-only frame).
+            // x / 1 is x, bit for bit: one sample per pixel skips three divisions.
             Samples::One(..) => sum,
             Samples::All if self.aa == 1 => sum,
             Samples::All => sum / (self.aa * self.aa) as f32,
@@ -294,13 +297,16 @@ impl Raster {
     }
 }
 
-/// The frame loop every precision shares: sizes `image`, hands the tiles to rayon, and sums
-/// the statistics `trace_tile` returns for each (integers, so the sum never depends on which
-/// thread ran which tile), adding the pixel and sample counts.
-pub(crate) fn render_tiles(
+/// The frame loop: sizes `image`, hands the tiles to rayon, and sums the statistics
+/// `trace_tile` returns for each (integers, so the sum never depends on which thread ran which
+/// tile), adding the pixel and sample counts. `init` makes the working state (a tracer and its
+/// scratch) that a run of tiles on one thread shares, so it is not made again for every
+/// 16×16 tile; nothing a tile computes may depend on what an earlier tile left in it.
+pub(crate) fn render_tiles<S>(
     settings: &RenderSettings,
     image: &mut Image,
-    trace_tile: impl Fn(Tile, Raster) -> RenderStats + Sync,
+    init: impl Fn() -> S + Sync + Send,
+    trace_tile: impl Fn(&mut S, Tile, Raster) -> RenderStats + Sync,
 ) -> RenderStats {
     let (fw, fh) = (settings.width.max(1), settings.height.max(1));
     let (w, h) = settings.lattice.size(fw, fh);
@@ -318,9 +324,9 @@ pub(crate) fn render_tiles(
     let raster = Raster { w: fw, h: fh, out_w: w, lattice, aa, samples, out: SharedPixels(image.pixels.as_mut_ptr()) };
     let mut stats = (0..tiles_x * tiles_y)
         .into_par_iter()
-        .map(|t| {
+        .map_init(&init, |state, t| {
             let (x0, y0) = ((t % tiles_x) * tile, (t / tiles_x) * tile);
-            trace_tile(Tile { x0, y0, x1: (x0 + tile).min(w), y1: (y0 + tile).min(h) }, raster)
+            trace_tile(state, Tile { x0, y0, x1: (x0 + tile).min(w), y1: (y0 + tile).min(h) }, raster)
         })
         .reduce(RenderStats::default, |mut a, b| {
             a += b;

@@ -233,17 +233,19 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // block).
     let mut surfaces: Vec<(usize, usize, Surface)> = Vec::new();
     for r in 0..rows {
-        let shape_of = |i: usize| if i < lanes { hit_shape(ids[r][i], faces[r][i]) } else { None };
         // Lanes whose material the local model below covers go eight wide, a group per material
         // (OSPRay's `foreach_unique`); the rest (reflection, transparency, uv mapping, layers,
-        // interior textures) go through `Tracer::shade_surface` one by one.
+        // interior textures) go through `Tracer::shade_surface` one by one. A material is looked
+        // up once per object of the row, not per lane (a face does not change it).
+        let hit = M8::from_fn(|i| i < lanes && ids[r][i] != NO_HIT);
         let mut row_materials = [NO_HIT; 8];
-        for i in 0..8 {
-            if let Some(shape) = shape_of(i) {
-                row_materials[i] = scene.material_of(shape);
+        for (id, group) in Groups::of(&ids[r], hit) {
+            let Some(shape) = hit_shape(id, NO_HIT) else { continue };
+            let m = scene.material_of(shape);
+            for i in 0..8 {
+                row_materials[i] = if group.lane(i) { m } else { row_materials[i] };
             }
         }
-        let hit = M8::from_fn(|i| row_materials[i] != NO_HIT);
         let mut in_lanes = M8::default();
         for (m, group) in Groups::of(&row_materials, hit) {
             if shades_in_lanes(&scene.materials[m as usize]) {
@@ -290,11 +292,14 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             soa.valid[r] = in_lanes;
             pigments[r] = pigment;
         }
+        if !F8::and(hit, F8::not(in_lanes)).any() {
+            continue;
+        }
         for i in 0..lanes {
             if in_lanes.lane(i) {
                 continue;
             }
-            let Some(shape) = shape_of(i) else { continue };
+            let Some(shape) = hit_shape(ids[r][i], faces[r][i]) else { continue };
             let s = tracer.surface(&lane_ray(&rays[r], i), &Hit { t: t[r].0[i], shape });
             set_surface_lane(soa, r, i, &s);
             surfaces.push((r, i, s));

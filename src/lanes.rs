@@ -697,6 +697,14 @@ impl V3<f32> {
     }
 }
 
+impl V3<F8> {
+    /// Sets lane `i` to `v`.
+    #[inline(always)]
+    pub fn set_lane(&mut self, i: usize, v: Vec3) {
+        (self.x.0[i], self.y.0[i], self.z.0[i]) = (v.x, v.y, v.z);
+    }
+}
+
 impl V3<f64> {
     #[inline(always)]
     pub fn from_dvec3(v: glam::DVec3) -> V3<f64> {

@@ -32,7 +32,7 @@ use rayon::prelude::*;
 use crate::accel::packet::Ray8;
 use crate::camera::Camera;
 use crate::desc::Projection;
-use crate::lanes::{Lane, F8, V3};
+use crate::lanes::{Lane, F8, M8, V3};
 use crate::ray::Ray;
 use crate::scene::build::Scene;
 use blur::BlurSum;
@@ -237,7 +237,7 @@ fn render_listed_block(tracer: &mut Tracer, gen: &RayGen, pixels: &[u32], raster
     let lanes = (packet::BLOCK as usize).min(pixels.len());
     let rows = pixels.len().div_ceil(packet::BLOCK as usize);
     let b = Block { x: 0, y: 0, w: lanes as u32, h: rows as u32 };
-    let mut sums = [[Vec3::ZERO; 8]; 8];
+    let mut sums = [V3::splat(Vec3::ZERO); 8];
     let pixel = |r: usize, i: usize| pixels[(r * 8 + i).min(pixels.len() - 1)];
     samples.each(aa, |sx, sy| {
         let rays: [Ray8; 8] = std::array::from_fn(|r| {
@@ -247,7 +247,7 @@ fn render_listed_block(tracer: &mut Tracer, gen: &RayGen, pixels: &[u32], raster
         add_traced(tracer, &rays, &b, &mut sums);
     });
     for (k, o) in out.iter_mut().enumerate() {
-        *o = raster.resolve(sums[k / 8][k % 8]);
+        *o = raster.resolve(sums[k / 8].lane(k % 8));
     }
 }
 
@@ -380,7 +380,7 @@ impl Samples {
 /// and the same order of additions, so both give the same bits.
 fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
     let Raster { aa, samples, out, .. } = raster;
-    let mut sums = [[Vec3::ZERO; 8]; 8];
+    let mut sums = [V3::splat(Vec3::ZERO); 8];
     if gen.lens.is_some() {
         samples.each(aa, |sx, sy| render_block_lens(tracer, gen, b, raster, (sx, sy), &mut sums));
     } else {
@@ -388,7 +388,7 @@ fn render_block(tracer: &mut Tracer, gen: &RayGen, b: &Block, raster: Raster) {
     }
     for r in 0..b.h {
         for i in 0..b.w {
-            let c = raster.resolve(sums[r as usize][i as usize]);
+            let c = raster.resolve(sums[r as usize].lane(i as usize));
             // SAFETY: tiles partition the image and blocks partition tiles.
             unsafe { out.write(((b.y + r) * raster.out_w + b.x + i) as usize, c) };
         }
@@ -402,7 +402,7 @@ fn trace_sub_block(
     b: &Block,
     raster: &Raster,
     sub: (u32, u32),
-    sums: &mut [[Vec3; 8]; 8],
+    sums: &mut [V3<F8>; 8],
 ) {
     #[cfg(target_arch = "x86_64")]
     if crate::lanes::has_avx2() {
@@ -423,7 +423,7 @@ unsafe fn trace_sub_block_avx2(
     b: &Block,
     raster: &Raster,
     sub: (u32, u32),
-    sums: &mut [[Vec3; 8]; 8],
+    sums: &mut [V3<F8>; 8],
 ) {
     add_traced(tracer, &block_rays(gen, b, raster, sub), b, sums);
 }
@@ -455,20 +455,28 @@ fn lane_rays(gen: &RayGen, raster: &Raster, xs: F8, ys: F8, (sx, sy): (u32, u32)
 }
 
 /// Traces one block's rays as packets and adds each valid lane's output sample to `acc`
-/// (non-finite samples are counted, not added), as `render_pixel` adds one ray's.
+/// (non-finite samples are counted, not added), as `render_pixel` adds one ray's: eight lanes
+/// at a time, with the same clamp and power per lane. A non-finite lane adds +0, which leaves
+/// its sum's bits as skipping it would (every sum starts at +0 and gains no -0: `+0 + -0` is
+/// `+0`), so a clamp that keeps a -0 where glam's keeps +0 changes nothing either.
 #[inline(always)]
-fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [[Vec3; 8]; 8]) {
+fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [V3<F8>; 8]) {
     let colors = packet::trace_block(tracer, rays, b.h as usize, b.w as usize);
     let gamma = tracer.scene.gamma;
+    let (zero, one, inf) = (F8::splat(0.0), F8::splat(1.0), F8::splat(f32::INFINITY));
+    let in_block = M8::from_fn(|i| i < b.w as usize);
     for r in 0..b.h as usize {
-        for i in 0..b.w as usize {
-            let c = colors[r][i];
-            if c.is_finite() {
-                acc[r][i] += output_sample(c, gamma);
-            } else {
-                tracer.stats.bad_samples += 1;
-            }
+        let c = colors[r];
+        let finite = F8::and(F8::and(c.x.abs().lt(inf), c.y.abs().lt(inf)), c.z.abs().lt(inf));
+        let bad = F8::and(in_block, F8::not(finite));
+        if bad.any() {
+            tracer.stats.bad_samples += bad.count() as u64;
         }
+        let mut s = V3 { x: c.x.max(zero).min(one), y: c.y.max(zero).min(one), z: c.z.max(zero).min(one) };
+        if gamma != 1.0 {
+            s = V3 { x: s.x.map(|v| v.powf(gamma)), y: s.y.map(|v| v.powf(gamma)), z: s.z.map(|v| v.powf(gamma)) };
+        }
+        acc[r] = acc[r].add(V3::select(finite, s, V3::splat(Vec3::ZERO)));
     }
 }
 
@@ -483,7 +491,7 @@ fn render_block_lens(
     b: &Block,
     raster: Raster,
     (sx, sy): (u32, u32),
-    sums: &mut [[Vec3; 8]; 8],
+    sums: &mut [V3<F8>; 8],
 ) {
     let Raster { w, h, aa, .. } = raster;
     let gamma = tracer.scene.gamma;
@@ -521,7 +529,7 @@ fn render_block_lens(
             for r in 0..rows {
                 for i in 0..lanes {
                     let (pr, pi) = live[start + r * 8 + i];
-                    acc[pr][pi].add(checked_sample(tracer, colors[r][i], gamma));
+                    acc[pr][pi].add(checked_sample(tracer, colors[r].lane(i), gamma));
                 }
             }
         }
@@ -531,7 +539,7 @@ fn render_block_lens(
     }
     for r in 0..b.h as usize {
         for i in 0..b.w as usize {
-            sums[r][i] += acc[r][i].mean();
+            sums[r].set_lane(i, sums[r].lane(i) + acc[r][i].mean());
         }
     }
 }

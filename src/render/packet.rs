@@ -49,8 +49,9 @@ pub fn supported(scene: &Scene) -> bool {
 }
 
 /// Traces one block of primary rays (`rays[row]`, `rows` rows valid, `lanes` lanes valid per
-/// row) and returns their colours, exactly as `Tracer::trace` would for each ray.
-pub fn trace_block(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+/// row) and returns their colours (row by row, lane `i` the ray of lane `i`), exactly as
+/// `Tracer::trace` would for each ray. Lanes past `lanes` hold the background.
+pub fn trace_block(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [V3<F8>; 8] {
     #[cfg(target_arch = "x86_64")]
     if has_avx2() {
         // SAFETY: the CPU supports AVX2, checked just above.
@@ -61,7 +62,7 @@ pub fn trace_block(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: us
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn trace_block_avx2(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+unsafe fn trace_block_avx2(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [V3<F8>; 8] {
     trace_block_generic(tracer, rays, rows, lanes)
 }
 
@@ -190,7 +191,7 @@ fn primary_hits_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lane
 }
 
 #[inline(always)]
-fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [[Vec3; 8]; 8] {
+fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes: usize) -> [V3<F8>; 8] {
     let scene = tracer.scene;
     let BlockHits { t, ids, faces } = primary_hits_generic(tracer, rays, rows, lanes);
     let n = (rows * lanes) as u64;
@@ -207,12 +208,12 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         || scene.features.complex_lights
         || !scene.atmosphere.is_empty()
     {
-        let mut colors = [[background; 8]; 8];
+        let mut colors = [V3::splat(background); 8];
         for r in 0..rows {
             for i in 0..lanes {
                 let ray = lane_ray(&rays[r], i);
                 let hit = hit_shape(ids[r][i], faces[r][i]).map(|shape| Hit { t: t[r].0[i], shape });
-                colors[r][i] = tracer.shade_hit(&ray, hit.as_ref(), 1, 1.0);
+                colors[r].set_lane(i, tracer.shade_hit(&ray, hit.as_ref(), 1, 1.0));
             }
         }
         return colors;
@@ -336,7 +337,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     }
 
     let lights = scene.lights.len();
-    let mut colors = [[background; 8]; 8];
+    let mut colors = [V3::splat(background); 8];
     for r in 0..rows {
         let pigment = pigments[r];
         let hit = LocalHit {
@@ -361,11 +362,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 let sample = LightSample { dir: dir[r], color: V3::splat(light.color * Vec3::ONE), on: on[r] };
                 color = shade::add_light(finish, &hit, reflected, color, &sample);
             }
-            for i in 0..lanes {
-                if group.lane(i) {
-                    colors[r][i] = color.lane(i);
-                }
-            }
+            colors[r] = V3::select(group, color, colors[r]);
         }
     }
     for (r, i, s) in &surfaces {
@@ -377,7 +374,8 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 Vec3::ZERO
             }
         });
-        colors[r][i] = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+        let c = tracer.shade_surface(&lane_ray(&rays[r], i), s, 1, 1.0, Shadows::Given(&lit[..lights]));
+        colors[r].set_lane(i, c);
     }
     tracer.block = Some(block);
     colors

@@ -21,7 +21,9 @@
 # STRAHL (the binary; target/release/strahl), BASE (a second strahl binary, e.g. main's: its
 # row is measured on the same file just before STRAHL's), THREADS (POV-Ray +WT; 2), WORK (folder
 # for the generated files, removed after each count; /tmp/strahl-load), TIMEOUT (per command,
-# seconds; 3600), NOTE (a line about the machine's state), OUT (docs/perf/load-DATE.md).
+# seconds; 3600), LIMIT_GB (address-space cap for each render, `ulimit -v`, so that a run that
+# outgrows the machine fails alone instead of waking the OOM killer; 16), NOTE (a line about the
+# machine's state), OUT (docs/perf/load-DATE.md).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -35,6 +37,7 @@ NORMALS=${NORMALS:-0}
 THREADS=${THREADS:-2}
 WORK=${WORK:-/tmp/strahl-load}
 TIMEOUT=${TIMEOUT:-3600}
+LIMIT_GB=${LIMIT_GB:-16}
 NOTE=${NOTE:-}
 OUT=${OUT:-docs/perf/load-$(date +%F).md}
 STRAHL=${STRAHL:-$root/target/release/strahl}
@@ -62,8 +65,8 @@ sum() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "") print ""; else 
 # Runs binary $1 (strahl) on file $2; prints "parse build trace peak" or "fail reason".
 run_strahl() {
     local log=$WORK/strahl.log
-    if ! timeout "$TIMEOUT" /usr/bin/time -v "$1" render -W 160 -H 120 "$2" -o "$WORK/strahl.png" >"$log" 2>&1; then
-        echo "fail $(grep -m1 -iE 'error|killed|signal' "$log" | cut -c1-60)"
+    if ! (ulimit -v $((LIMIT_GB * 1048576)) && timeout "$TIMEOUT" /usr/bin/time -v "$1" render -W 160 -H 120 "$2" -o "$WORK/strahl.png") >"$log" 2>&1; then
+        echo "fail $(grep -m1 -iE 'error|memory|killed|signal' "$log" | cut -c1-60)"
         return
     fi
     echo "$(seconds "$log" 'Parse Time') $(seconds "$log" 'Build Time') $(seconds "$log" 'Trace Time') $(peak_mb "$log")"
@@ -71,8 +74,8 @@ run_strahl() {
 
 run_povray() {
     local log=$WORK/povray.log
-    if ! timeout "$TIMEOUT" /usr/bin/time -v povray +I"$1" +W160 +H120 -D -A +WT"$THREADS" +O"$WORK/povray.png" >"$log" 2>&1; then
-        echo "fail $(grep -m1 -iE 'error|killed|signal' "$log" | cut -c1-60)"
+    if ! (ulimit -v $((LIMIT_GB * 1048576)) && timeout "$TIMEOUT" /usr/bin/time -v povray +I"$1" +W160 +H120 -D -A +WT"$THREADS" +O"$WORK/povray.png") >"$log" 2>&1; then
+        echo "fail $(grep -m1 -iE 'error|memory|killed|signal' "$log" | cut -c1-60)"
         return
     fi
     echo "$(seconds "$log" 'Parse Time') $(seconds "$log" 'Bounding Time') $(seconds "$log" 'Trace Time') $(peak_mb "$log")"

@@ -75,9 +75,12 @@ impl Bvh {
     }
 
     /// Builds over primitives with the given bounds; index `i` of `bounds` is primitive `i`.
-    /// Runs on the current rayon pool and gives the same nodes as `build_serial`.
+    /// Runs on the current rayon pool and gives the same nodes as `build_serial`. On a pool of
+    /// one thread it is `build_serial`: the parallel build holds its subtrees' nodes twice for
+    /// a moment (once in pieces, once laid end to end), which buys nothing there.
     pub fn build(bounds: &[Aabb]) -> Bvh {
-        build::build(bounds, build::Grain::PARALLEL)
+        let grain = if rayon::current_num_threads() > 1 { build::Grain::PARALLEL } else { build::Grain::SERIAL };
+        build::build(bounds, grain)
     }
 
     /// `build` on the calling thread alone.

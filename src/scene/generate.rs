@@ -360,11 +360,15 @@ mod tests {
         for kind in Kind::ALL {
             let a = generate(kind, 300, 640, 480);
             assert_eq!(a, generate(kind, 300, 640, 480), "{kind:?}");
-            // The floor plus n objects (one mesh of about n triangles).
+            // The floor plus n objects (one mesh of about n triangles; mesh2's of exactly n).
             match (kind, &a.objects[1].shape) {
                 (Kind::Mesh, ShapeDesc::Mesh { mesh, .. }) => {
                     assert_eq!(a.objects.len(), 2);
                     assert!(mesh.faces.len().abs_diff(300) < 30, "{}", mesh.faces.len());
+                }
+                (Kind::Mesh2, ShapeDesc::Mesh { mesh, .. }) => {
+                    assert_eq!(a.objects.len(), 2);
+                    assert_eq!(mesh.faces.len(), 300);
                 }
                 _ => assert_eq!(a.objects.len(), 301),
             }

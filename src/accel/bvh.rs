@@ -5,6 +5,8 @@
 
 use glam::Vec3;
 
+mod build;
+
 use super::aabb::slabs;
 use super::aabb::Aabb;
 use crate::ray::Ray;
@@ -44,21 +46,9 @@ pub struct Bvh {
     pub prim_order: Vec<u32>,
 }
 
-/// SAH bins per axis. 16 bins build within a few percent of a full sweep's quality (Wald 2007)
-/// at a fraction of the cost.
-const BINS: usize = 16;
-/// Leaves stop splitting at this size; larger leaves only when no split is cheaper.
-const MAX_LEAF: usize = 4;
 /// Deepest tree built. Traversal stacks hold 64 entries, one per level at most, so no subtree
 /// is ever dropped; SAH trees over a million primitives are about 30 deep.
 pub const MAX_DEPTH: usize = 60;
-/// Relative cost of one node visit against one primitive test.
-const TRAVERSAL_COST: f32 = 1.0;
-
-struct BuildPrim {
-    bounds: Aabb,
-    center: Vec3,
-}
 
 impl Bvh {
     /// Interior node `n`'s children, nearer first for a packet travelling along `dir` (one
@@ -85,63 +75,26 @@ impl Bvh {
     }
 
     /// Builds over primitives with the given bounds; index `i` of `bounds` is primitive `i`.
+    /// Runs on the current rayon pool and gives the same nodes as `build_serial`. On a pool of
+    /// one thread it is `build_serial`: the parallel build holds its subtrees' nodes twice for
+    /// a moment (once in pieces, once laid end to end), which buys nothing there.
     pub fn build(bounds: &[Aabb]) -> Bvh {
-        let prims: Vec<BuildPrim> = bounds.iter().map(|b| BuildPrim { bounds: *b, center: b.center() }).collect();
-        let mut bvh =
-            Bvh { nodes: Vec::with_capacity(2 * prims.len().max(1)), prim_order: (0..prims.len() as u32).collect() };
-        if prims.is_empty() {
-            return bvh;
-        }
-        bvh.nodes.push(BvhNode { min: [0.0; 3], first: 0, max: [0.0; 3], count: prims.len() as u32 });
-        // Explicit stack: a million-primitive scene must not recurse a million deep on bad splits.
-        let mut stack = vec![(0usize, 1usize)];
-        while let Some((node_index, depth)) = stack.pop() {
-            let (first, count) = (bvh.nodes[node_index].first as usize, bvh.nodes[node_index].count as usize);
-            let mut node_bounds = Aabb::EMPTY;
-            let mut center_bounds = Aabb::EMPTY;
-            for &p in &bvh.prim_order[first..first + count] {
-                node_bounds.grow(&prims[p as usize].bounds);
-                center_bounds.grow_point(prims[p as usize].center);
-            }
-            bvh.nodes[node_index].min = node_bounds.min.to_array();
-            bvh.nodes[node_index].max = node_bounds.max.to_array();
-            if count <= 1 || depth >= MAX_DEPTH {
-                continue;
-            }
-            let leaf_cost = count as f32;
-            let split =
-                best_split(&prims, &bvh.prim_order[first..first + count], &center_bounds, node_bounds.half_area());
-            let Some((axis, position, cost)) = split else { continue };
-            if cost >= leaf_cost && count <= MAX_LEAF {
-                continue;
-            }
-            // Partition in place around the chosen plane.
-            let order = &mut bvh.prim_order[first..first + count];
-            let mut left = 0;
-            for i in 0..order.len() {
-                if prims[order[i] as usize].center[axis] < position {
-                    order.swap(i, left);
-                    left += 1;
-                }
-            }
-            if left == 0 || left == count {
-                // All centres on one side (e.g. identical centres): split the range in half.
-                left = count / 2;
-            }
-            let child = bvh.nodes.len();
-            bvh.nodes.push(BvhNode { min: [0.0; 3], first: first as u32, max: [0.0; 3], count: left as u32 });
-            bvh.nodes.push(BvhNode {
-                min: [0.0; 3],
-                first: (first + left) as u32,
-                max: [0.0; 3],
-                count: (count - left) as u32,
-            });
-            bvh.nodes[node_index].first = child as u32;
-            bvh.nodes[node_index].count = 0;
-            stack.push((child, depth + 1));
-            stack.push((child + 1, depth + 1));
-        }
-        bvh
+        let grain = if rayon::current_num_threads() > 1 { build::Grain::PARALLEL } else { build::Grain::SERIAL };
+        build::build(bounds, grain)
+    }
+
+    /// `build` on the calling thread alone.
+    pub fn build_serial(bounds: &[Aabb]) -> Bvh {
+        build::build(bounds, build::Grain::SERIAL)
+    }
+
+    /// Whether `other` has the same nodes, bit for bit, in the same order, over the same
+    /// primitive order.
+    pub fn same_as(&self, other: &Bvh) -> bool {
+        let bits = |n: &BvhNode| (n.min.map(f32::to_bits), n.first, n.max.map(f32::to_bits), n.count);
+        self.prim_order == other.prim_order
+            && self.nodes.len() == other.nodes.len()
+            && self.nodes.iter().zip(&other.nodes).all(|(x, y)| bits(x) == bits(y))
     }
 
     pub fn depth(&self) -> usize {
@@ -222,50 +175,6 @@ impl Bvh {
             node = &self.nodes[stack[sp] as usize];
         }
     }
-}
-
-/// Best binned-SAH split: (axis, plane position, cost in primitive-test units).
-fn best_split(prims: &[BuildPrim], order: &[u32], centers: &Aabb, parent_area: f32) -> Option<(usize, f32, f32)> {
-    let mut best: Option<(usize, f32, f32)> = None;
-    for axis in 0..3 {
-        let (lo, hi) = (centers.min[axis], centers.max[axis]);
-        if hi <= lo {
-            continue;
-        }
-        let mut bin_bounds = [Aabb::EMPTY; BINS];
-        let mut bin_count = [0u32; BINS];
-        let scale = BINS as f32 / (hi - lo);
-        for &p in order {
-            let prim = &prims[p as usize];
-            let b = (((prim.center[axis] - lo) * scale) as usize).min(BINS - 1);
-            bin_bounds[b].grow(&prim.bounds);
-            bin_count[b] += 1;
-        }
-        // Sweep from the left and from the right to get the area and count on each side.
-        let mut left_area = [0.0f32; BINS - 1];
-        let mut left_count = [0u32; BINS - 1];
-        let mut acc = Aabb::EMPTY;
-        let mut n = 0;
-        for i in 0..BINS - 1 {
-            acc.grow(&bin_bounds[i]);
-            n += bin_count[i];
-            left_area[i] = acc.half_area();
-            left_count[i] = n;
-        }
-        let mut acc = Aabb::EMPTY;
-        let mut n = 0;
-        for i in (1..BINS).rev() {
-            acc.grow(&bin_bounds[i]);
-            n += bin_count[i];
-            let cost = TRAVERSAL_COST
-                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32)
-                    / parent_area.max(f32::MIN_POSITIVE);
-            if left_count[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
-                best = Some((axis, lo + i as f32 / scale, cost));
-            }
-        }
-    }
-    best
 }
 
 #[cfg(test)]

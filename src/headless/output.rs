@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 
 use crate::headless::CliError;
 
-fn temp_sibling(path: &Path) -> PathBuf {
+/// A hidden name beside `path` to write to before renaming onto it.
+pub fn temp_sibling(path: &Path) -> PathBuf {
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     path.with_file_name(format!(".{name}.{}.tmp", std::process::id()))
 }

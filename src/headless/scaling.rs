@@ -30,18 +30,21 @@ use crate::render::stats::RenderStats;
 use crate::render::trace::{light_direction, shadow_ray, ShadowRay, Tracer};
 use crate::render::{packet, primary_ray, Quality, RenderSettings};
 use crate::scene::build::{AccelKind, Scene};
-use crate::scene::generate::{generate, write_generated, Kind};
+use crate::scene::generate::{generate, write_generated_to, IoText, Kind};
+
+mod bvh_build;
 
 fn parse_kind(s: &str) -> Result<Kind, String> {
     Kind::parse(s).ok_or_else(|| {
-        format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed, mesh, tori)")
+        format!("unknown kind `{s}` (supported: spheres, boxes, triangles, cylinders, mixed, mesh, tori, mesh2)")
     })
 }
 
 /// `strahl gen KIND N -o FILE`: writes a generated scene as POV-Ray text.
 #[derive(Args)]
 pub struct GenCmd {
-    /// spheres, boxes, triangles, cylinders, mixed, mesh or tori.
+    /// spheres, boxes, triangles, cylinders, mixed, mesh, tori, or mesh2 (one sheet of exactly N
+    /// triangles).
     #[arg(value_parser = parse_kind)]
     kind: Kind,
     /// Number of objects (plus the floor).
@@ -49,12 +52,32 @@ pub struct GenCmd {
     /// Output .pov file.
     #[arg(short = 'o', long)]
     output: PathBuf,
+    /// mesh2: also write one normal per vertex (`normal_vectors`), for smooth shading.
+    #[arg(long)]
+    normals: bool,
 }
 
-/// Writes the file and says so, since nothing else shows that it worked.
+/// Writes the file and says so, since nothing else shows that it worked. The text goes to the
+/// file as it is made (ten million objects are a gigabyte of it), beside the output until whole.
 pub fn run_gen(c: &GenCmd) -> Result<(), CliError> {
-    let text = write_generated(c.kind, c.count).map_err(CliError::user)?;
-    output::write_atomic(&c.output, text.as_bytes())?;
+    if c.normals && c.kind != Kind::Mesh2 {
+        return Err(CliError::user(format!("--normals is for mesh2, not {}", c.kind.name())));
+    }
+    let tmp = output::temp_sibling(&c.output);
+    let written = std::fs::File::create(&tmp).map_err(|e| e.to_string()).and_then(|file| {
+        let mut text = IoText { inner: std::io::BufWriter::with_capacity(1 << 20, file), error: None };
+        let result = write_generated_to(&mut text, c.kind, c.count, c.normals);
+        match text.error.take() {
+            Some(e) => Err(e.to_string()),
+            None => result,
+        }?;
+        text.inner.into_inner().map_err(|e| e.error().to_string())?;
+        std::fs::rename(&tmp, &c.output).map_err(|e| e.to_string())
+    });
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(CliError::user(format!("{}: cannot write: {e}", c.output.display())));
+    }
     println!("wrote {} ({} {})", c.output.display(), c.count, c.kind.plural());
     output::flush_stdout();
     Ok(())
@@ -95,6 +118,10 @@ pub struct ScalingCmd {
     /// intersection tests only) against the full render, on one thread, for each count.
     #[arg(long)]
     intersection_share: bool,
+    /// Instead of the table: time the BVH build alone, serial and on `--threads` workers, over
+    /// the boxes of N generated spheres (median of `--frames`), and check the two trees equal.
+    #[arg(long)]
+    bvh_build: bool,
     /// Accelerator for --intersection-share.
     #[arg(long, default_value = "none", value_parser = ["bvh", "grid", "none"])]
     accel: String,
@@ -418,6 +445,9 @@ pub fn run_scaling(c: &ScalingCmd) -> Result<(), CliError> {
     }
     if c.intersection_share {
         return run_share(c);
+    }
+    if c.bvh_build {
+        return bvh_build::run(&c.counts, c.frames, c.threads);
     }
     let cpu = cpu_model();
     println!(

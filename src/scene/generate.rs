@@ -13,8 +13,6 @@
 //! and `write_generated` writes it as `right <…>*image_width/image_height`, POV-Ray's own idiom,
 //! so a generated file is not stretched at POV-Ray's default 640×480 or at 1280×720.
 
-use std::fmt::Write as _;
-
 use glam::DVec3;
 
 use crate::camera::Camera;
@@ -22,6 +20,10 @@ use crate::desc::{
     CameraDesc, Color, FinishDesc, GlobalSettings, LightDesc, ObjectDesc, PigmentDesc, PigmentPattern, SceneDesc,
     ShapeDesc, SourceRef, TextureDesc, Transform,
 };
+
+mod sheet;
+mod write;
+pub use write::{write_generated, write_generated_to, write_pov, IoText};
 
 /// Which primitive the generated cloud is made of.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,11 +39,22 @@ pub enum Kind {
     Mesh,
     /// Tori lying in one of the three axis planes (`rotate x*90`, `rotate z*90` or none).
     Tori,
+    /// One `mesh2` of exactly N triangles: a rippled sheet across the cube (`sheet`), written
+    /// as it is generated, so ten million triangles need no scene in memory.
+    Mesh2,
 }
 
 impl Kind {
-    pub const ALL: [Kind; 7] =
-        [Kind::Spheres, Kind::Boxes, Kind::Triangles, Kind::Cylinders, Kind::Mixed, Kind::Mesh, Kind::Tori];
+    pub const ALL: [Kind; 8] = [
+        Kind::Spheres,
+        Kind::Boxes,
+        Kind::Triangles,
+        Kind::Cylinders,
+        Kind::Mixed,
+        Kind::Mesh,
+        Kind::Tori,
+        Kind::Mesh2,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -52,6 +65,7 @@ impl Kind {
             Kind::Mixed => "mixed",
             Kind::Mesh => "mesh",
             Kind::Tori => "tori",
+            Kind::Mesh2 => "mesh2",
         }
     }
 
@@ -59,13 +73,18 @@ impl Kind {
     pub fn plural(self) -> &'static str {
         match self {
             Kind::Mixed => "mixed objects",
-            Kind::Mesh => "mesh triangles",
+            Kind::Mesh | Kind::Mesh2 => "mesh triangles",
             k => k.name(),
         }
     }
 
     pub fn parse(s: &str) -> Option<Kind> {
         Kind::ALL.into_iter().find(|k| k.name() == s)
+    }
+
+    /// Whether the N objects are the triangles of one mesh rather than a cloud of N objects.
+    pub fn is_mesh(self) -> bool {
+        matches!(self, Kind::Mesh | Kind::Mesh2)
     }
 }
 
@@ -113,17 +132,26 @@ pub fn extent(n: usize) -> f64 {
     SPACING * (n.max(1) as f64).cbrt()
 }
 
+fn object_texture(pattern: PigmentPattern, finish: FinishDesc) -> TextureDesc {
+    TextureDesc {
+        pigment: PigmentDesc { pattern, ..PigmentDesc::default() },
+        normal: None,
+        finish,
+        uv_mapping: false,
+        pattern: None,
+    }
+}
+
 fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: usize) -> ObjectDesc {
+    ObjectDesc { shape, ..object_with(object_texture(pattern, finish), index) }
+}
+
+/// An untransformed object of `texture`, object `index` of the scene, its shape a placeholder.
+fn object_with(texture: TextureDesc, index: usize) -> ObjectDesc {
     ObjectDesc {
-        shape,
+        shape: ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
         transform: Default::default(),
-        texture: TextureDesc {
-            pigment: PigmentDesc { pattern, ..PigmentDesc::default() },
-            normal: None,
-            finish,
-            uv_mapping: false,
-            pattern: None,
-        },
+        texture,
         interior_texture: None,
         interior: Default::default(),
         no_shadow: false,
@@ -175,7 +203,7 @@ fn untransformed(kind: Kind, i: u64, center: DVec3) -> ShapeDesc {
             let half = DVec3::new(0.2 + 0.3 * u(10), 0.2 + 0.3 * u(11), 0.2 + 0.3 * u(12));
             ShapeDesc::Box { corner1: qv(center - half), corner2: qv(center + half) }
         }
-        Kind::Triangles | Kind::Mixed | Kind::Mesh | Kind::Tori => {
+        Kind::Triangles | Kind::Mixed | Kind::Mesh | Kind::Tori | Kind::Mesh2 => {
             let corner = |f: u64| qv(center + DVec3::new(u(f) - 0.5, u(f + 1) - 0.5, u(f + 2) - 0.5) * 1.6);
             ShapeDesc::Triangle { a: corner(10), b: corner(13), c: corner(16) }
         }
@@ -236,21 +264,19 @@ fn direction_length() -> f64 {
 /// that frames the whole cloud from the front and above, for an image of `width`×`height`
 /// (its `right` vector is `width / height` long, so nothing is stretched).
 pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
-    let edge = extent(n);
-    let mut objects = Vec::with_capacity(n + 1);
-    objects.push(object(
-        ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
-        PigmentPattern::Checker(Color::rgb(0.9, 0.9, 0.9), Color::rgb(0.25, 0.25, 0.25)),
-        FinishDesc::default(),
-        0,
-    ));
-    if kind == Kind::Mesh {
-        let shape = bumpy_sphere(n, edge);
-        let color = Color::rgb(PALETTE[1][0], PALETTE[1][1], PALETTE[1][2]);
-        let finish = FinishDesc { phong: 0.5, ..FinishDesc::default() };
-        objects.push(object(shape, PigmentPattern::Solid(color), finish, 1));
+    let mut desc = header(kind, n, width, height);
+    if kind == Kind::Mesh2 {
+        desc.objects.push(ObjectDesc { shape: sheet::shape(n), ..object_with(sheet::texture(), 1) });
     }
-    for i in (0..n as u64).filter(|_| kind != Kind::Mesh) {
+    desc.objects.reserve(n);
+    desc.objects.extend(cloud(kind, n));
+    desc
+}
+
+/// The cloud's objects one at a time (none for the mesh kinds), each a function of its index.
+pub fn cloud(kind: Kind, n: usize) -> impl Iterator<Item = ObjectDesc> {
+    let edge = extent(n);
+    (0..n as u64).filter(move |_| !kind.is_mesh()).map(move |i| {
         // The cube [-edge/2, edge/2] × [0.8, edge + 0.8] × [-edge/2, edge/2], just above the floor.
         let center = qv(DVec3::new((unit(i, 0) - 0.5) * edge, 0.8 + unit(i, 1) * edge, (unit(i, 2) - 0.5) * edge));
         let [r, g, b] = PALETTE[(mix(i ^ 0xC0105) % PALETTE.len() as u64) as usize];
@@ -262,7 +288,22 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
         let (shape, transform) = shape(kind, i, center);
         let mut o = object(shape, PigmentPattern::Solid(Color::rgb(r, g, b)), finish, i as usize + 1);
         o.transform = transform;
-        objects.push(o);
+        o
+    })
+}
+
+/// `generate`'s scene up to its cloud and its mesh2 sheet: camera, lights, the floor, and the
+/// `mesh` kind's sphere.
+fn header(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
+    let edge = extent(n);
+    let mut objects = vec![object(
+        ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
+        PigmentPattern::Checker(Color::rgb(0.9, 0.9, 0.9), Color::rgb(0.25, 0.25, 0.25)),
+        FinishDesc::default(),
+        0,
+    )];
+    if kind == Kind::Mesh {
+        objects.push(ObjectDesc { shape: bumpy_sphere(n, edge), ..object_with(sheet::texture(), 1) });
     }
     // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
     let look_at = DVec3::new(0.0, 0.5 * edge, 0.0);
@@ -310,178 +351,6 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
     }
 }
 
-/// `generate(kind, n, w, h)` as POV-Ray 3.7 scene text for any image size: the camera's right
-/// vector is written as `right <r>*image_width/image_height`, so `image_width` and
-/// `image_height` (strahl's `-W`/`-H`, POV-Ray's `+W`/`+H`) decide the aspect when it is read.
-pub fn write_generated(kind: Kind, n: usize) -> Result<String, String> {
-    // At 1×1, `right` is the unit-long r itself (r * 1 / 1 is exact).
-    let desc = generate(kind, n, 1, 1);
-    let r = desc.camera.right;
-    write(&desc, &format!("<{}, {}, {}>*image_width/image_height", r.x, r.y, r.z))
-}
-
-/// Writes `desc` as POV-Ray 3.7 scene text, camera vectors as they are. Only what the
-/// generators produce is supported: untransformed spheres, boxes, triangles, capped cylinders and planes with
-/// solid or checker pigments; anything else is an error naming what it found.
-pub fn write_pov(desc: &SceneDesc) -> Result<String, String> {
-    let r = desc.camera.right;
-    write(desc, &format!("<{}, {}, {}>", r.x, r.y, r.z))
-}
-
-/// A generated torus's transform as `rotate … translate <…>` (one of TORUS_TURNS, then a move),
-/// or None for any other transform.
-fn torus_modifiers(t: &Transform) -> Option<String> {
-    let m = t.matrix;
-    let linear = glam::DMat3::from_mat4(m).to_cols_array();
-    let (turn, _) = TORUS_TURNS.iter().find(|(_, l)| *l == linear)?;
-    let p = m.w_axis.truncate();
-    Some(format!("{turn}translate <{}, {}, {}>", p.x, p.y, p.z))
-}
-
-/// `write_pov` with the camera's `right` written as the expression `right`.
-fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
-    let mut o = String::with_capacity(128 * desc.objects.len() + 1024);
-    let v = |p: DVec3| format!("<{}, {}, {}>", p.x, p.y, p.z);
-    let rgb = |c: &Color| {
-        if c.filter != 0.0 || c.transmit != 0.0 {
-            Err("filter/transmit colours are not supported by write_pov".to_string())
-        } else {
-            Ok(format!("rgb {}", v(c.rgb)))
-        }
-    };
-    let _ = writeln!(o, "// Written by strahl (scene::generate); renders the same in POV-Ray 3.7 and strahl.");
-    let _ = writeln!(o, "#version {};", desc.version);
-    let g = &desc.global;
-    let _ = write!(
-        o,
-        "global_settings {{ max_trace_level {} ambient_light {}",
-        g.max_trace_level,
-        rgb(&Color { rgb: g.ambient_light, ..Color::BLACK })?
-    );
-    if let Some(gamma) = g.assumed_gamma {
-        let _ = write!(o, " assumed_gamma {gamma}");
-    }
-    let _ = writeln!(o, " }}");
-    let c = &desc.camera;
-    if c.look_at.is_some() || c.angle.is_some() || c.sky != DVec3::Y {
-        return Err("write_pov writes cameras as explicit vectors; clear look_at, angle and sky".into());
-    }
-    let _ = writeln!(
-        o,
-        "camera {{\n  location {}\n  direction {}\n  right {right}\n  up {}\n}}",
-        v(c.location),
-        v(c.direction),
-        v(c.up)
-    );
-    let _ = writeln!(o, "background {{ color {} }}", rgb(&desc.background)?);
-    for l in &desc.lights {
-        let _ =
-            writeln!(o, "light_source {{ {} color {} }}", v(l.position), rgb(&Color { rgb: l.color, ..Color::BLACK })?);
-    }
-    let default_finish = FinishDesc::default();
-    for obj in &desc.objects {
-        // A torus may be turned by one of TORUS_TURNS and moved; nothing else is transformed.
-        let placed = match obj.shape {
-            ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform),
-            _ => obj.transform.is_identity().then(String::new),
-        };
-        let Some(placed) = placed.filter(|_| obj.texture.pigment.transform.is_identity()) else {
-            return Err(format!("write_pov: transformed {} is not supported", obj.shape.keyword()));
-        };
-        if obj.texture.normal.is_some() || obj.texture.pigment.turbulence.is_some() || obj.interior.ior != 1.0 {
-            return Err(format!(
-                "write_pov: {} with normal, turbulence or interior is not supported",
-                obj.shape.keyword()
-            ));
-        }
-        match &obj.shape {
-            ShapeDesc::Sphere { center, radius } => {
-                let _ = write!(o, "sphere {{ {}, {radius}", v(*center));
-            }
-            ShapeDesc::Box { corner1, corner2 } => {
-                let _ = write!(o, "box {{ {}, {}", v(*corner1), v(*corner2));
-            }
-            ShapeDesc::Triangle { a, b, c } => {
-                let _ = write!(o, "triangle {{ {}, {}, {}", v(*a), v(*b), v(*c));
-            }
-            ShapeDesc::Plane { normal, distance } => {
-                let _ = write!(o, "plane {{ {}, {distance}", v(*normal));
-            }
-            ShapeDesc::Cone { base, base_radius, cap, cylinder: true, open: false, .. } => {
-                let _ = write!(o, "cylinder {{ {}, {}, {base_radius}", v(*base), v(*cap));
-            }
-            ShapeDesc::Mesh { mesh, inside_vector: None } if mesh.normals.is_empty() => {
-                let _ = write!(o, "mesh2 {{\n  vertex_vectors {{ {}", mesh.vertices.len());
-                for p in &mesh.vertices {
-                    let _ = write!(o, ",\n    {}", v(*p));
-                }
-                let _ = write!(o, "\n  }}\n  face_indices {{ {}", mesh.faces.len());
-                for f in &mesh.faces {
-                    let [a, b, c] = f.vertices;
-                    let _ = write!(o, ",\n    <{a}, {b}, {c}>");
-                }
-                let _ = write!(o, "\n  }}\n ");
-            }
-            ShapeDesc::Torus { major, minor } => {
-                let _ = write!(o, "torus {{ {major}, {minor} {placed}");
-            }
-            other @ (ShapeDesc::Polygon { .. }
-            | ShapeDesc::Mesh { .. }
-            | ShapeDesc::HeightField { .. }
-            | ShapeDesc::Cone { .. }
-            | ShapeDesc::Disc { .. }
-            | ShapeDesc::Csg { .. }
-            | ShapeDesc::Poly { .. }
-            | ShapeDesc::Superellipsoid { .. }
-            | ShapeDesc::Prism { .. }
-            | ShapeDesc::Text { .. }
-            | ShapeDesc::Lathe { .. }
-            | ShapeDesc::Sor { .. }
-            | ShapeDesc::Blob { .. }
-            | ShapeDesc::Julia { .. }
-            | ShapeDesc::Isosurface { .. }
-            | ShapeDesc::Parametric { .. }) => {
-                return Err(format!("write_pov: {} is not supported", other.keyword()));
-            }
-        }
-        match &obj.texture.pigment.pattern {
-            PigmentPattern::Solid(c) => {
-                let _ = write!(o, " pigment {{ color {} }}", rgb(c)?);
-            }
-            PigmentPattern::Checker(a, b) => {
-                let _ = write!(o, " pigment {{ checker color {} color {} }}", rgb(a)?, rgb(b)?);
-            }
-            _ => return Err("write_pov: only solid and checker pigments are supported".into()),
-        }
-        let f = &obj.texture.finish;
-        let mut items = String::new();
-        if f.ambient != default_finish.ambient {
-            let _ = write!(items, " ambient {}", rgb(&Color { rgb: f.ambient, ..Color::BLACK })?);
-        }
-        if f.diffuse != default_finish.diffuse {
-            let _ = write!(items, " diffuse {}", f.diffuse);
-        }
-        if f.phong != default_finish.phong {
-            let _ = write!(items, " phong {}", f.phong);
-        }
-        if f.reflection != default_finish.reflection {
-            let _ = write!(items, " reflection {}", rgb(&Color { rgb: f.reflection, ..Color::BLACK })?);
-        }
-        if f.brilliance != default_finish.brilliance
-            || f.phong_size != default_finish.phong_size
-            || f.specular != default_finish.specular
-            || f.roughness != default_finish.roughness
-        {
-            return Err("write_pov: brilliance, phong_size, specular and roughness are not supported".into());
-        }
-        if !items.is_empty() {
-            let _ = write!(o, " finish {{{items} }}");
-        }
-        let _ = writeln!(o, " }}");
-    }
-    Ok(o)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -491,11 +360,15 @@ mod tests {
         for kind in Kind::ALL {
             let a = generate(kind, 300, 640, 480);
             assert_eq!(a, generate(kind, 300, 640, 480), "{kind:?}");
-            // The floor plus n objects (one mesh of about n triangles).
+            // The floor plus n objects (one mesh of about n triangles; mesh2's of exactly n).
             match (kind, &a.objects[1].shape) {
                 (Kind::Mesh, ShapeDesc::Mesh { mesh, .. }) => {
                     assert_eq!(a.objects.len(), 2);
                     assert!(mesh.faces.len().abs_diff(300) < 30, "{}", mesh.faces.len());
+                }
+                (Kind::Mesh2, ShapeDesc::Mesh { mesh, .. }) => {
+                    assert_eq!(a.objects.len(), 2);
+                    assert_eq!(mesh.faces.len(), 300);
                 }
                 _ => assert_eq!(a.objects.len(), 301),
             }

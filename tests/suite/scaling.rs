@@ -143,3 +143,27 @@ fn accelerators_and_packets_give_identical_images_on_2000_objects() {
         assert_eq!(differ, 0, "{accel:?} packets={packets}: {differ} pixels differ from brute force");
     }
 }
+
+#[test]
+fn gen_mesh2_with_normals_reads_back_smooth() {
+    // `--normals` adds one normal per vertex, which the face indices index too (POV-Ray's rule
+    // for a mesh2 without normal_indices): every face reads back smooth, the vertices unchanged.
+    let path = scratch("cli_mesh2.pov");
+    let out = strahl(&["gen", "mesh2", "501", "--normals", "-o", &path.display().to_string()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stdout).ends_with("(501 mesh triangles)\n"));
+    let read = load_scene(&path, &IncludePath { dirs: vec![] }).unwrap_or_else(|e| panic!("{e}"));
+    let flat = generate(Kind::Mesh2, 501, 640, 480);
+    let (strahl::desc::ShapeDesc::Mesh { mesh, .. }, strahl::desc::ShapeDesc::Mesh { mesh: flat, .. }) =
+        (&read.objects[1].shape, &flat.objects[1].shape)
+    else {
+        panic!("no mesh2 read back");
+    };
+    assert_eq!(mesh.faces.len(), 501);
+    assert_eq!(mesh.vertices, flat.vertices);
+    assert_eq!(mesh.normals.len(), mesh.vertices.len());
+    assert!(mesh.faces.iter().all(|f| f.normals == Some(f.vertices)));
+    // Only mesh2 has normals to write.
+    let out = strahl(&["gen", "spheres", "5", "--normals", "-o", &path.display().to_string()]);
+    assert!(!out.status.success());
+}

@@ -123,7 +123,8 @@ fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, index: 
             finish,
             uv_mapping: false,
             pattern: None,
-        },
+        }
+        .into(),
         interior_texture: None,
         interior: Default::default(),
         no_shadow: false,
@@ -261,7 +262,7 @@ pub fn generate(kind: Kind, n: usize, width: u32, height: u32) -> SceneDesc {
         };
         let (shape, transform) = shape(kind, i, center);
         let mut o = object(shape, PigmentPattern::Solid(Color::rgb(r, g, b)), finish, i as usize + 1);
-        o.transform = transform;
+        o.transform = transform.into();
         objects.push(o);
     }
     // Explicit camera vectors (no look_at) so the written file and this desc agree exactly.
@@ -382,7 +383,7 @@ fn write(desc: &SceneDesc, right: &str) -> Result<String, String> {
     for obj in &desc.objects {
         // A torus may be turned by one of TORUS_TURNS and moved; nothing else is transformed.
         let placed = match obj.shape {
-            ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform),
+            ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform.transform()),
             _ => obj.transform.is_identity().then(String::new),
         };
         let Some(placed) = placed.filter(|_| obj.texture.pigment.transform.is_identity()) else {

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat4, DVec3};
 
 use crate::camera::frame::RenderFrame;
-use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, ShapeDesc, TextGlyph, Transform};
+use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, Placement, ShapeDesc, TextGlyph};
 use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
 
@@ -138,7 +138,8 @@ pub(crate) enum RenderShape {
 /// Placing shapes: the frame of `camera::frame` carries a description's shape into render space.
 impl RenderFrame {
     /// `shape` under the object transform `t`, in render space.
-    pub(crate) fn place(&self, shape: &ShapeDesc, t: &Transform) -> RenderShape {
+    pub(crate) fn place(&self, shape: &ShapeDesc, t: &Placement) -> RenderShape {
+        let t = &t.transform();
         let point = |p: DVec3| self.point(t.matrix.transform_point3(p));
         let render_from_object = || DAffine3::from_mat4(self.render_from_world() * t.matrix);
         match shape {

@@ -189,7 +189,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
     }
     if let Some(d) = d {
-        texture_blocks(s, &o.texture, &o.transform.inverse, d);
+        texture_blocks(s, &o.texture, &o.transform.inverse(), d);
         let _ = write!(s, "\n  interior {{ ior {}", num(o.interior.ior));
         if let Some(f) = &o.interior.fade {
             let (distance, power, color) = (num(f.distance), num(f.power), vec(f.color));
@@ -198,7 +198,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
         let _ = write!(s, " }}");
     }
     let _ = writeln!(s);
-    let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix).trim_start());
+    let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix()).trim_start());
 }
 
 /// A mesh as `mesh2` when its faces are all flat or all smooth (its indices as they are), else

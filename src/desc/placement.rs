@@ -1,0 +1,151 @@
+//! An object's transform held as what it is: nothing, a move, a uniform scale and a move, or a
+//! general affine map. A million generated objects mostly have no transform or a move; as two
+//! f64 4×4 matrices each they cost 256 bytes an object, and an `ObjectDesc` several times
+//! what the render scene needs.
+//!
+//! The lowering composes transforms as full matrices (`Transform`) and only the result is
+//! compacted, losslessly: a compact form is chosen only when it rebuilds both matrices bit for
+//! bit, so every image stays as it was.
+
+use glam::{DMat4, DVec3, DVec4};
+
+use super::Transform;
+
+#[derive(Clone, Debug, PartialEq, Default)]
+pub enum Placement {
+    /// No transform.
+    #[default]
+    Identity,
+    /// A move by `offset`, whose inverse is the move by `-offset`.
+    Translate(DVec3),
+    /// A uniform scale by `scale` then a move by `offset` (matrix), and the inverse's own
+    /// numbers (the general inverse rounds as it does; they are kept rather than recomputed).
+    Scale { scale: f64, offset: DVec3, inverse_scale: f64, inverse_offset: DVec3 },
+    /// Anything else.
+    Affine(Box<Transform>),
+}
+
+/// `diag(s, s, s, 1)` moved by `t`.
+fn scale_move(s: f64, t: DVec3) -> DMat4 {
+    DMat4::from_cols(
+        DVec4::new(s, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, s, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, s, 0.0),
+        t.extend(1.0),
+    )
+}
+
+/// Whether `a` and `b` are the same bits (so `-0.0` and `0.0` differ: a rebuilt matrix must
+/// be the one the lowering composed).
+fn same_bits(a: &DMat4, b: &DMat4) -> bool {
+    a.to_cols_array().iter().zip(b.to_cols_array().iter()).all(|(x, y)| x.to_bits() == y.to_bits())
+}
+
+/// `m`'s uniform scale and move, when it is one.
+fn as_scale_move(m: &DMat4) -> Option<(f64, DVec3)> {
+    let (s, t) = (m.x_axis.x, m.w_axis.truncate());
+    same_bits(m, &scale_move(s, t)).then_some((s, t))
+}
+
+impl Placement {
+    /// The most compact form that rebuilds `t` exactly.
+    pub fn of(t: &Transform) -> Placement {
+        let Some((s, offset)) = as_scale_move(&t.matrix) else { return Placement::Affine(Box::new(*t)) };
+        let Some((inverse_scale, inverse_offset)) = as_scale_move(&t.inverse) else {
+            return Placement::Affine(Box::new(*t));
+        };
+        let translation = s.to_bits() == 1f64.to_bits() && inverse_scale.to_bits() == 1f64.to_bits();
+        if translation && same_bits(&t.matrix, &DMat4::IDENTITY) && same_bits(&t.inverse, &DMat4::IDENTITY) {
+            Placement::Identity
+        } else if translation && same_bits(&t.inverse, &scale_move(1.0, -offset)) {
+            Placement::Translate(offset)
+        } else {
+            Placement::Scale { scale: s, offset, inverse_scale, inverse_offset }
+        }
+    }
+
+    /// Both matrices.
+    pub fn transform(&self) -> Transform {
+        match self {
+            Placement::Identity => Transform::default(),
+            Placement::Translate(t) => Transform { matrix: scale_move(1.0, *t), inverse: scale_move(1.0, -*t) },
+            Placement::Scale { scale, offset, inverse_scale, inverse_offset } => {
+                Transform { matrix: scale_move(*scale, *offset), inverse: scale_move(*inverse_scale, *inverse_offset) }
+            }
+            Placement::Affine(t) => **t,
+        }
+    }
+
+    /// Object space → the space above it.
+    pub fn matrix(&self) -> DMat4 {
+        self.transform().matrix
+    }
+
+    /// The inverse of `matrix`.
+    pub fn inverse(&self) -> DMat4 {
+        self.transform().inverse
+    }
+
+    /// `then` applied after this one (composed as `Transform::then` does).
+    pub fn then(&self, then: &Transform) -> Placement {
+        Placement::of(&self.transform().then(then))
+    }
+
+    pub fn is_identity(&self) -> bool {
+        *self == Placement::Identity || self.transform().is_identity()
+    }
+}
+
+impl From<Transform> for Placement {
+    fn from(t: Transform) -> Placement {
+        Placement::of(&t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn round_trip(t: Transform) -> Placement {
+        let p = Placement::of(&t);
+        let back = p.transform();
+        assert!(same_bits(&back.matrix, &t.matrix) && same_bits(&back.inverse, &t.inverse), "{p:?}");
+        p
+    }
+
+    fn of_matrix(m: DMat4) -> Transform {
+        Transform { matrix: m, inverse: m.inverse() }
+    }
+
+    #[test]
+    fn compact_forms_rebuild_both_matrices_exactly() {
+        assert_eq!(round_trip(Transform::default()), Placement::Identity);
+        let moved = of_matrix(DMat4::from_translation(DVec3::new(1.5, -2.0, 1e6)));
+        assert!(matches!(round_trip(moved), Placement::Translate(_)));
+        let scaled = of_matrix(DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(3.0)));
+        assert!(matches!(round_trip(scaled), Placement::Scale { .. }));
+        let composed = moved.then(&scaled).then(&moved);
+        round_trip(composed);
+        let rotated = of_matrix(DMat4::from_rotation_y(0.3) * DMat4::from_translation(DVec3::Y));
+        assert!(matches!(round_trip(rotated), Placement::Affine(_)));
+        let stretched = of_matrix(DMat4::from_scale(DVec3::new(1.0, 2.0, 1.0)));
+        assert!(matches!(round_trip(stretched), Placement::Affine(_)));
+    }
+
+    #[test]
+    fn a_negative_zero_is_not_rounded_away() {
+        // A general inverse may hold -0.0 where the compact form would rebuild 0.0.
+        let mut t = of_matrix(DMat4::from_translation(DVec3::new(1.0, 0.0, 0.0)));
+        t.inverse.w_axis.y = -0.0;
+        round_trip(t);
+    }
+
+    #[test]
+    fn composing_keeps_the_matrices_of_transform_then() {
+        let a = of_matrix(DMat4::from_translation(DVec3::new(0.1, 0.2, 0.3)));
+        let b = of_matrix(DMat4::from_scale(DVec3::splat(0.7)));
+        let p = Placement::of(&a).then(&b);
+        let t = a.then(&b);
+        assert!(same_bits(&p.matrix(), &t.matrix) && same_bits(&p.inverse(), &t.inverse));
+    }
+}

@@ -18,11 +18,20 @@ pub enum Placement {
     Identity,
     /// A move by `offset`, whose inverse is the move by `-offset`.
     Translate(DVec3),
-    /// A uniform scale by `scale` then a move by `offset` (matrix), and the inverse's own
-    /// numbers (the general inverse rounds as it does; they are kept rather than recomputed).
-    Scale { scale: f64, offset: DVec3, inverse_scale: f64, inverse_offset: DVec3 },
+    /// A uniform scale then a move (boxed: the enum stays the size of a move).
+    Scale(Box<ScaleMove>),
     /// Anything else.
     Affine(Box<Transform>),
+}
+
+/// A uniform scale by `scale` then a move by `offset` (the matrix), and the inverse's own
+/// numbers (the general inverse rounds as it does; they are kept rather than recomputed).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScaleMove {
+    pub scale: f64,
+    pub offset: DVec3,
+    pub inverse_scale: f64,
+    pub inverse_offset: DVec3,
 }
 
 /// `diag(s, s, s, 1)` moved by `t`.
@@ -60,7 +69,7 @@ impl Placement {
         } else if translation && same_bits(&t.inverse, &scale_move(1.0, -offset)) {
             Placement::Translate(offset)
         } else {
-            Placement::Scale { scale: s, offset, inverse_scale, inverse_offset }
+            Placement::Scale(Box::new(ScaleMove { scale: s, offset, inverse_scale, inverse_offset }))
         }
     }
 
@@ -69,9 +78,10 @@ impl Placement {
         match self {
             Placement::Identity => Transform::default(),
             Placement::Translate(t) => Transform { matrix: scale_move(1.0, *t), inverse: scale_move(1.0, -*t) },
-            Placement::Scale { scale, offset, inverse_scale, inverse_offset } => {
-                Transform { matrix: scale_move(*scale, *offset), inverse: scale_move(*inverse_scale, *inverse_offset) }
-            }
+            Placement::Scale(s) => Transform {
+                matrix: scale_move(s.scale, s.offset),
+                inverse: scale_move(s.inverse_scale, s.inverse_offset),
+            },
             Placement::Affine(t) => **t,
         }
     }
@@ -123,7 +133,7 @@ mod tests {
         let moved = of_matrix(DMat4::from_translation(DVec3::new(1.5, -2.0, 1e6)));
         assert!(matches!(round_trip(moved), Placement::Translate(_)));
         let scaled = of_matrix(DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(3.0)));
-        assert!(matches!(round_trip(scaled), Placement::Scale { .. }));
+        assert!(matches!(round_trip(scaled), Placement::Scale(_)));
         let composed = moved.then(&scaled).then(&moved);
         round_trip(composed);
         let rotated = of_matrix(DMat4::from_rotation_y(0.3) * DMat4::from_translation(DVec3::Y));

@@ -219,11 +219,11 @@ impl RenderFrame {
             }
             ShapeDesc::Julia { param, function, max_iteration, precision, slice } => RenderShape::Julia {
                 render_from_object: render_from_object(),
-                param: *param,
+                param: **param,
                 function: *function,
                 max_iteration: *max_iteration,
                 precision: *precision,
-                slice: *slice,
+                slice: **slice,
             },
             ShapeDesc::Blob { components, threshold } => RenderShape::Blob {
                 render_from_object: render_from_object(),
@@ -232,15 +232,15 @@ impl RenderFrame {
             },
             ShapeDesc::Isosurface { function, container, params } => RenderShape::Isosurface {
                 render_from_object: render_from_object(),
-                function: function.clone(),
+                function: (**function).clone(),
                 container: *container,
-                params: *params,
+                params: **params,
             },
             ShapeDesc::Parametric { functions, container, params } => RenderShape::Parametric {
                 render_from_object: render_from_object(),
-                functions: functions.clone(),
+                functions: (**functions).clone(),
                 container: *container,
-                params: *params,
+                params: **params,
             },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept

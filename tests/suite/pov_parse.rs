@@ -1321,7 +1321,7 @@ fn julia_fractals_load_and_bad_ones_are_located_errors() {
         panic!("{:?}", s.objects[0].shape)
     };
     assert_eq!((param.z, *function, *max_iteration, *precision), (-0.83, JuliaFunction::QuaternionSqr, 20, 15.0));
-    assert_eq!(*slice, (glam::DVec4::W, 0.0));
+    assert_eq!(**slice, (glam::DVec4::W, 0.0));
     let s = load_text("julia", "julia_fractal { <0.2, 0.1, 0.59, -0.2> max_iteration 7 pwr(2, 0.5) hypercomplex }")
         .unwrap();
     assert!(matches!(
@@ -1654,7 +1654,7 @@ fn isosurfaces_load_with_their_items() {
     assert_eq!((params.threshold, params.accuracy, params.max_gradient, params.open), (0.5, 0.01, 4.0, true));
     let ShapeDesc::Isosurface { container, params, .. } = &s.objects[1].shape else { panic!("isosurface") };
     assert_eq!(*container, strahl::desc::Container::Box { min: DVec3::splat(-1.0), max: DVec3::ONE });
-    assert_eq!(*params, strahl::desc::IsoParams::default());
+    assert_eq!(**params, strahl::desc::IsoParams::default());
 }
 
 // ---- lights and atmosphere ---------------------------------------------------------------

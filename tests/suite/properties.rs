@@ -592,7 +592,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
             ShapeDesc::Julia { param: p2, function: f2, max_iteration: m2, precision: q2, slice: s2 },
         ) => {
             let close4 = |a: glam::DVec4, b: glam::DVec4| (0..4).all(|i| close(a[i], b[i]));
-            f1 == f2 && m1 == m2 && close(*q1, *q2) && close4(*p1, *p2) && close4(s1.0, s2.0) && close(s1.1, s2.1)
+            f1 == f2 && m1 == m2 && close(*q1, *q2) && close4(**p1, **p2) && close4(s1.0, s2.0) && close(s1.1, s2.1)
         }
         (ShapeDesc::Sor { points: p1, open: o1 }, ShapeDesc::Sor { points: p2, open: o2 }) => {
             o1 == o2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
@@ -600,7 +600,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (
             ShapeDesc::Text { font: f1, string: s1, thickness: t1, offset: o1, .. },
             ShapeDesc::Text { font: f2, string: s2, thickness: t2, offset: o2, .. },
-        ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(*o1, *o2),
+        ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(**o1, **o2),
         // Vertices are written in shortest round-trip form and stay in object space: exact.
         (ShapeDesc::Mesh { mesh: m1, inside_vector: i1 }, ShapeDesc::Mesh { mesh: m2, inside_vector: i2 }) => {
             m1 == m2 && i1 == i2

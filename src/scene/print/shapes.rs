@@ -113,7 +113,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
             write!(
                 s,
                 "julia_fractal {{ {} {f} max_iteration {max_iteration} precision {} slice {}, {}",
-                v4(*param),
+                v4(**param),
                 num(*precision),
                 v4(slice.0),
                 num(slice.1)
@@ -182,7 +182,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
         }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
-            write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))
+            write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(**offset))
         }
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {

@@ -16,13 +16,19 @@ pub enum Placement {
     /// No transform.
     #[default]
     Identity,
-    /// A move by `offset`, whose inverse is the move by `-offset`.
-    Translate(DVec3),
+    /// A move by `offset`, whose inverse is the move by `-offset`; `zeros` holds the signs of
+    /// both matrices' zero entries (`ZeroSigns`).
+    Translate { offset: DVec3, zeros: ZeroSigns },
     /// A uniform scale then a move (boxed: the enum stays the size of a move).
     Scale(Box<ScaleMove>),
     /// Anything else.
     Affine(Box<Transform>),
 }
+
+/// Which zero entries of a matrix (bits 0–15, column-major) and of its inverse (bits 16–31)
+/// are `-0.0`. A general inverse writes `-0.0` in places (`DMat4::inverse` of a move has
+/// seven), and a product may; they are kept so that the matrices rebuild bit for bit.
+pub type ZeroSigns = u32;
 
 /// A uniform scale by `scale` then a move by `offset` (the matrix), and the inverse's own
 /// numbers (the general inverse rounds as it does; they are kept rather than recomputed).
@@ -32,16 +38,32 @@ pub struct ScaleMove {
     pub offset: DVec3,
     pub inverse_scale: f64,
     pub inverse_offset: DVec3,
+    pub zeros: ZeroSigns,
 }
 
-/// `diag(s, s, s, 1)` moved by `t`.
-fn scale_move(s: f64, t: DVec3) -> DMat4 {
-    DMat4::from_cols(
+/// `diag(s, s, s, 1)` moved by `t`, its zero entries signed as bits `zeros` say.
+fn scale_move(s: f64, t: DVec3, zeros: u32) -> DMat4 {
+    let m = DMat4::from_cols(
         DVec4::new(s, 0.0, 0.0, 0.0),
         DVec4::new(0.0, s, 0.0, 0.0),
         DVec4::new(0.0, 0.0, s, 0.0),
         t.extend(1.0),
-    )
+    );
+    let mut a = m.to_cols_array();
+    for (i, x) in a.iter_mut().enumerate() {
+        if *x == 0.0 {
+            *x = if zeros >> i & 1 == 1 { -0.0 } else { 0.0 };
+        }
+    }
+    DMat4::from_cols_array(&a)
+}
+
+/// The bits of `m`'s `-0.0` entries (column-major).
+fn negative_zeros(m: &DMat4) -> u32 {
+    m.to_cols_array()
+        .iter()
+        .enumerate()
+        .fold(0, |bits, (i, x)| bits | u32::from(*x == 0.0 && x.is_sign_negative()) << i)
 }
 
 /// Whether `a` and `b` are the same bits (so `-0.0` and `0.0` differ: a rebuilt matrix must
@@ -53,34 +75,38 @@ fn same_bits(a: &DMat4, b: &DMat4) -> bool {
 /// `m`'s uniform scale and move, when it is one.
 fn as_scale_move(m: &DMat4) -> Option<(f64, DVec3)> {
     let (s, t) = (m.x_axis.x, m.w_axis.truncate());
-    same_bits(m, &scale_move(s, t)).then_some((s, t))
+    same_bits(m, &scale_move(s, t, negative_zeros(m))).then_some((s, t))
 }
 
 impl Placement {
     /// The most compact form that rebuilds `t` exactly.
     pub fn of(t: &Transform) -> Placement {
-        let Some((s, offset)) = as_scale_move(&t.matrix) else { return Placement::Affine(Box::new(*t)) };
-        let Some((inverse_scale, inverse_offset)) = as_scale_move(&t.inverse) else {
-            return Placement::Affine(Box::new(*t));
-        };
-        let translation = s.to_bits() == 1f64.to_bits() && inverse_scale.to_bits() == 1f64.to_bits();
-        if translation && same_bits(&t.matrix, &DMat4::IDENTITY) && same_bits(&t.inverse, &DMat4::IDENTITY) {
-            Placement::Identity
-        } else if translation && same_bits(&t.inverse, &scale_move(1.0, -offset)) {
-            Placement::Translate(offset)
-        } else {
-            Placement::Scale(Box::new(ScaleMove { scale: s, offset, inverse_scale, inverse_offset }))
+        let affine = || Placement::Affine(Box::new(*t));
+        let Some((scale, offset)) = as_scale_move(&t.matrix) else { return affine() };
+        let Some((inverse_scale, inverse_offset)) = as_scale_move(&t.inverse) else { return affine() };
+        let zeros = negative_zeros(&t.matrix) | negative_zeros(&t.inverse) << 16;
+        let one = 1f64.to_bits();
+        if scale.to_bits() == one && inverse_scale.to_bits() == one {
+            if zeros == 0 && offset == DVec3::ZERO && inverse_offset == DVec3::ZERO {
+                return Placement::Identity;
+            }
+            if same_bits(&t.inverse, &scale_move(1.0, -offset, zeros >> 16)) {
+                return Placement::Translate { offset, zeros };
+            }
         }
+        Placement::Scale(Box::new(ScaleMove { scale, offset, inverse_scale, inverse_offset, zeros }))
     }
 
     /// Both matrices.
     pub fn transform(&self) -> Transform {
         match self {
             Placement::Identity => Transform::default(),
-            Placement::Translate(t) => Transform { matrix: scale_move(1.0, *t), inverse: scale_move(1.0, -*t) },
+            Placement::Translate { offset, zeros } => {
+                Transform { matrix: scale_move(1.0, *offset, *zeros), inverse: scale_move(1.0, -*offset, *zeros >> 16) }
+            }
             Placement::Scale(s) => Transform {
-                matrix: scale_move(s.scale, s.offset),
-                inverse: scale_move(s.inverse_scale, s.inverse_offset),
+                matrix: scale_move(s.scale, s.offset, s.zeros),
+                inverse: scale_move(s.inverse_scale, s.inverse_offset, s.zeros >> 16),
             },
             Placement::Affine(t) => **t,
         }
@@ -130,8 +156,8 @@ mod tests {
     #[test]
     fn compact_forms_rebuild_both_matrices_exactly() {
         assert_eq!(round_trip(Transform::default()), Placement::Identity);
-        let moved = of_matrix(DMat4::from_translation(DVec3::new(1.5, -2.0, 1e6)));
-        assert!(matches!(round_trip(moved), Placement::Translate(_)));
+        let moved = of_matrix(DMat4::from_translation(DVec3::new(1.5, 0.0, 1e6)));
+        assert!(matches!(round_trip(moved), Placement::Translate { .. }));
         let scaled = of_matrix(DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(3.0)));
         assert!(matches!(round_trip(scaled), Placement::Scale(_)));
         let composed = moved.then(&scaled).then(&moved);

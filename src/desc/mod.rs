@@ -293,7 +293,7 @@ mod tests {
     #[test]
     fn an_object_description_stays_small() {
         assert!(std::mem::size_of::<Placement>() <= 32, "{}", std::mem::size_of::<Placement>());
-        assert!(std::mem::size_of::<ShapeDesc>() <= 88, "{}", std::mem::size_of::<ShapeDesc>());
-        assert!(std::mem::size_of::<ObjectDesc>() <= 200, "{}", std::mem::size_of::<ObjectDesc>());
+        assert!(std::mem::size_of::<ShapeDesc>() <= 80, "{}", std::mem::size_of::<ShapeDesc>());
+        assert!(std::mem::size_of::<ObjectDesc>() <= 192, "{}", std::mem::size_of::<ObjectDesc>());
     }
 }

@@ -11,7 +11,7 @@ use glam::{DMat4, DVec3, DVec4};
 
 use super::Transform;
 
-#[derive(Clone, Debug, PartialEq, Default)]
+#[derive(Clone, Debug, Default)]
 pub enum Placement {
     /// No transform.
     #[default]
@@ -128,7 +128,15 @@ impl Placement {
     }
 
     pub fn is_identity(&self) -> bool {
-        *self == Placement::Identity || self.transform().is_identity()
+        matches!(self, Placement::Identity) || self.transform().is_identity()
+    }
+}
+
+impl PartialEq for Placement {
+    /// Equal when the matrices are, as `Transform`s compare (`-0.0 == 0.0`): the same move
+    /// composed in two ways is the same placement, whatever form holds it.
+    fn eq(&self, other: &Placement) -> bool {
+        self.transform() == other.transform()
     }
 }
 
@@ -166,6 +174,17 @@ mod tests {
         assert!(matches!(round_trip(rotated), Placement::Affine(_)));
         let stretched = of_matrix(DMat4::from_scale(DVec3::new(1.0, 2.0, 1.0)));
         assert!(matches!(round_trip(stretched), Placement::Affine(_)));
+    }
+
+    #[test]
+    fn placements_compare_as_their_matrices() {
+        // The lowering's move has a general inverse (with -0.0s); a generator's the exact one.
+        let m = DMat4::from_translation(DVec3::new(1.0, 2.0, 3.0));
+        let general = Placement::of(&of_matrix(m));
+        let exact =
+            Placement::of(&Transform { matrix: m, inverse: DMat4::from_translation(DVec3::new(-1.0, -2.0, -3.0)) });
+        assert_eq!(general, exact);
+        assert_ne!(general, Placement::Identity);
     }
 
     #[test]

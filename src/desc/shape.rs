@@ -131,7 +131,7 @@ pub enum ShapeDesc {
     /// `thickness`.
     Text {
         /// The font file as found (for printing and messages).
-        font: String,
+        font: std::sync::Arc<str>,
         string: String,
         thickness: f64,
         offset: Box<DVec3>,

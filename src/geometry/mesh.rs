@@ -59,31 +59,30 @@ impl MeshData {
     /// Builds the hierarchy over `faces` (three vertices and, for a smooth face, three
     /// normals, each in object space) and stores them in its order.
     pub fn new(faces: impl IntoIterator<Item = ([Vec3; 3], Option<[Vec3; 3]>)>) -> MeshData {
-        // Corners and normals apart, the normals only for smooth faces: as one list of
-        // `(corners, Option<normals>)` a flat mesh of ten million faces held 76 bytes a face
-        // here, more than the finished mesh, for 40.
-        let mut corners: Vec<[Vec3; 3]> = Vec::new();
-        let mut normals_of: Vec<u32> = Vec::new();
-        let mut normals: Vec<[Vec3; 3]> = Vec::new();
-        for (v, n) in faces {
-            corners.push(v);
-            normals_of.push(n.map_or(FLAT, |n| {
-                normals.push(n);
-                normals.len() as u32 - 1
-            }));
-        }
-        let bounds: Vec<Aabb> =
-            corners.iter().map(|v| Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))).collect();
+        let faces: Vec<([Vec3; 3], Option<[Vec3; 3]>)> = faces.into_iter().collect();
+        MeshData::from_faces(faces.len(), |i| faces[i])
+    }
+
+    /// `count` faces, face `i` read as `face(i)` (twice: for its box, then in the tree's
+    /// order), so that a mesh description is not copied first: ten million faces as one list
+    /// of `(corners, Option<normals>)` held 76 bytes a face, more than the finished mesh.
+    pub fn from_faces(count: usize, face: impl Fn(usize) -> ([Vec3; 3], Option<[Vec3; 3]>)) -> MeshData {
+        let bounds: Vec<Aabb> = (0..count)
+            .map(|i| {
+                let v = face(i).0;
+                Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))
+            })
+            .collect();
         let mut bvh = Bvh::build(&bounds);
-        let mut triangles = Vec::with_capacity(corners.len());
-        let mut smooth_of = Vec::with_capacity(corners.len());
+        let mut triangles = Vec::with_capacity(count);
+        let mut smooth_of = Vec::with_capacity(count);
         let mut smooth = Vec::new();
         let mut all = Aabb::EMPTY;
         for &f in &bvh.prim_order {
-            let v = corners[f as usize];
+            let (v, n) = face(f as usize);
             triangles.push(Triangle::new(v[0], v[1], v[2]));
             all.grow(&bounds[f as usize]);
-            match normals.get(normals_of[f as usize] as usize) {
+            match n {
                 Some(n) => {
                     smooth_of.push(smooth.len() as u32);
                     smooth.push(n.map(|n| n.normalize_or_zero()));

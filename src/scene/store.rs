@@ -212,5 +212,8 @@ impl Scene {
 fn mesh_data(mesh: &MeshDesc) -> MeshData {
     let v = |i: u32| mesh.vertices[i as usize].as_vec3();
     let n = |i: u32| mesh.normals[i as usize].as_vec3();
-    MeshData::new(mesh.faces.iter().map(|f| (f.vertices.map(v), f.normals.map(|k| k.map(n)))))
+    MeshData::from_faces(mesh.faces.len(), |i| {
+        let f = &mesh.faces[i];
+        (f.vertices.map(v), f.normals.map(|k| k.map(n)))
+    })
 }

@@ -118,7 +118,7 @@ impl Lowerer<'_> {
             .map_err(|e| Diag::new(font_expr.span, format!("\"{}\" is not a TrueType font: {e}", path.display())))?;
         let glyphs = layout(&face, &string, offset);
         Ok(ShapeDesc::Text {
-            font: path.display().to_string(),
+            font: path.display().to_string().into(),
             string,
             thickness,
             offset: Box::new(offset),

@@ -11,12 +11,14 @@ use glam::{DMat4, DVec3};
 mod atmosphere;
 mod camera;
 mod light;
+mod placement;
 mod shape;
 mod texture;
 
 pub use atmosphere::*;
 pub use camera::*;
 pub use light::*;
+pub use placement::Placement;
 pub use shape::*;
 pub use texture::*;
 
@@ -110,7 +112,8 @@ impl Default for GlobalSettings {
 /// Where in the scene files something was written, for messages after parsing.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct SourceRef {
-    pub file: String,
+    /// Shared by every object of one file (a million objects, one name).
+    pub file: std::sync::Arc<str>,
     pub line: u32,
     pub col: u32,
 }
@@ -118,9 +121,11 @@ pub struct SourceRef {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ObjectDesc {
     pub shape: ShapeDesc,
-    /// Object space → world space.
-    pub transform: Transform,
-    pub texture: TextureDesc,
+    /// Object space → world space, as compactly as it is held exactly.
+    pub transform: Placement,
+    /// Shared by the objects that look alike (the lowering hands out one copy of each look it
+    /// met recently: a million generated spheres in 16 colours hold 16 textures).
+    pub texture: std::sync::Arc<TextureDesc>,
     /// `interior_texture`: the texture a ray sees where it meets the surface from inside
     /// (against the outward normal); `None`: `texture` on both sides.
     pub interior_texture: Option<Box<TextureDesc>>,
@@ -138,9 +143,16 @@ pub struct ObjectDesc {
     /// `bounded_by { .. }`: the box of the bounding objects in this object's own space (so the
     /// transforms written after it move it along), `[min, max]`. A hint for the renderer, which
     /// skips the shape for rays that miss it; only unbounded shapes (polynomials) need it.
-    pub bounded_by: Option<[DVec3; 2]>,
+    pub bounded_by: Option<Box<[DVec3; 2]>>,
     pub source: SourceRef,
 }
+impl ObjectDesc {
+    /// The texture to change, copied first if other objects share it.
+    pub fn texture_mut(&mut self) -> &mut TextureDesc {
+        std::sync::Arc::make_mut(&mut self.texture)
+    }
+}
+
 /// A `light_group` (POV-Ray 3.4.4.2): its lights (indices into `SceneDesc::lights`) light only
 /// the objects of the group and of the groups inside it; the scene's global lights (those in no
 /// group) light them too when `global_lights` is on.
@@ -268,5 +280,20 @@ impl SceneDesc {
     /// Whether output pixels are sRGB-encoded.
     pub fn writes_srgb(&self) -> bool {
         self.output_gamma().is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scene of a million objects holds a million of these until it is built: they were
+    /// 1856 bytes each (a texture of 1224 bytes inline, two 4×4 matrices, the largest shape's
+    /// numbers in every sphere), more than POV-Ray's whole object.
+    #[test]
+    fn an_object_description_stays_small() {
+        assert!(std::mem::size_of::<Placement>() <= 32, "{}", std::mem::size_of::<Placement>());
+        assert!(std::mem::size_of::<ShapeDesc>() <= 80, "{}", std::mem::size_of::<ShapeDesc>());
+        assert!(std::mem::size_of::<ObjectDesc>() <= 192, "{}", std::mem::size_of::<ObjectDesc>());
     }
 }

@@ -102,37 +102,40 @@ pub enum ShapeDesc {
     },
     /// `julia_fractal`: the slice `slice.0 · h = slice.1` of the 4-D set whose orbits under
     /// `function` plus `param` stay bounded for `max_iteration` steps.
+    ///
+    /// The rare shapes' larger parts are boxed, here and below: an enum is as large as its
+    /// largest variant, and every sphere of a million-sphere scene pays for it.
     Julia {
-        param: DVec4,
+        param: Box<DVec4>,
         function: JuliaFunction,
         max_iteration: u32,
         precision: f64,
-        slice: (DVec4, f64),
+        slice: Box<(DVec4, f64)>,
     },
     /// `isosurface { function {..} contained_by {..} ... }`: where `function` (of x, y, z,
     /// compiled) equals the threshold, inside the container.
     Isosurface {
-        function: crate::function::Program,
+        function: Box<crate::function::Program>,
         container: Container,
-        params: IsoParams,
+        params: Box<IsoParams>,
     },
     /// `parametric { function {x(u, v)} function {y} function {z} <u1, v1>, <u2, v2> ... }`,
     /// the functions compiled; clipped to the container.
     Parametric {
-        functions: [crate::function::Program; 3],
+        functions: Box<[crate::function::Program; 3]>,
         container: Container,
-        params: ParametricParams,
+        params: Box<ParametricParams>,
     },
     /// `text { ttf "font" "string" thickness, offset }`: the glyph outlines, read from the font
     /// when lowered and placed along x (em = 1 unit, baseline y = 0), extruded from z = 0 to
     /// `thickness`.
     Text {
         /// The font file as found (for printing and messages).
-        font: String,
+        font: std::sync::Arc<str>,
         string: String,
         thickness: f64,
-        offset: DVec3,
-        glyphs: Vec<TextGlyph>,
+        offset: Box<DVec3>,
+        glyphs: Box<[TextGlyph]>,
     },
     /// `mesh` or `mesh2` (POV-Ray 3.4.5.2.2–3): triangles in object space, shared (`Arc`) by
     /// every object made from one declaration, so N instances hold one copy. Without an

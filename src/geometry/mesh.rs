@@ -59,42 +59,38 @@ impl MeshData {
     /// Builds the hierarchy over `faces` (three vertices and, for a smooth face, three
     /// normals, each in object space) and stores them in its order.
     pub fn new(faces: impl IntoIterator<Item = ([Vec3; 3], Option<[Vec3; 3]>)>) -> MeshData {
-        // Held until the faces are stored in the hierarchy's order: a face's corners and where
-        // its normals wait (`FLAT` for none), 40 bytes instead of 76 for an `Option` of normals
-        // beside each face; the boxes are dropped before the triangles are made. At ten million
-        // faces the two are 600 MB of the build's peak.
-        let faces = faces.into_iter();
-        let mut corners: Vec<([Vec3; 3], u32)> = Vec::with_capacity(faces.size_hint().0);
-        let mut normals: Vec<[Vec3; 3]> = Vec::new();
-        for (v, n) in faces {
-            let slot = n.map_or(FLAT, |n| {
-                normals.push(n);
-                normals.len() as u32 - 1
-            });
-            corners.push((v, slot));
-        }
-        let bounds: Vec<Aabb> =
-            corners.iter().map(|(v, _)| Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))).collect();
+        let faces: Vec<([Vec3; 3], Option<[Vec3; 3]>)> = faces.into_iter().collect();
+        MeshData::from_faces(faces.len(), |i| faces[i])
+    }
+
+    /// `count` faces, face `i` read as `face(i)` (twice: for its box, then in the tree's
+    /// order), so that a mesh description is not copied first: ten million faces as one list
+    /// of `(corners, Option<normals>)` held 76 bytes a face, more than the finished mesh.
+    pub fn from_faces(count: usize, face: impl Fn(usize) -> ([Vec3; 3], Option<[Vec3; 3]>)) -> MeshData {
+        let bounds: Vec<Aabb> = (0..count)
+            .map(|i| {
+                let v = face(i).0;
+                Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))
+            })
+            .collect();
         let mut bvh = Bvh::build(&bounds);
+        let mut triangles = Vec::with_capacity(count);
+        let mut smooth_of = Vec::with_capacity(count);
+        let mut smooth = Vec::new();
         let mut all = Aabb::EMPTY;
         for &f in &bvh.prim_order {
-            all.grow(&bounds[f as usize]);
-        }
-        drop(bounds);
-        let mut triangles = Vec::with_capacity(corners.len());
-        let mut smooth_of = Vec::with_capacity(corners.len());
-        let mut smooth = Vec::with_capacity(normals.len());
-        for &f in &bvh.prim_order {
-            let (v, slot) = corners[f as usize];
+            let (v, n) = face(f as usize);
             triangles.push(Triangle::new(v[0], v[1], v[2]));
-            if slot == FLAT {
-                smooth_of.push(FLAT);
-            } else {
-                smooth_of.push(smooth.len() as u32);
-                smooth.push(normals[slot as usize].map(|n| n.normalize_or_zero()));
+            all.grow(&bounds[f as usize]);
+            match n {
+                Some(n) => {
+                    smooth_of.push(smooth.len() as u32);
+                    smooth.push(n.map(|n| n.normalize_or_zero()));
+                }
+                None => smooth_of.push(FLAT),
             }
         }
-        drop((corners, normals));
+        drop(bounds);
         // Faces are stored in leaf order: leaf ranges now index `triangles` directly.
         let source_face = std::mem::replace(&mut bvh.prim_order, (0..triangles.len() as u32).collect());
         let (min, max) = if triangles.is_empty() { (Vec3::ZERO, Vec3::ZERO) } else { (all.min, all.max) };

@@ -83,11 +83,27 @@ const PUNCT: &str = "{}<>()[],;+-*/=!&|?:.^";
 /// Two-character operators, matched before single punctuation.
 const OPS2: &[&str] = &["<=", ">=", "!="];
 
-/// Splits `text` into tokens, ending with one `Eof` token.
+/// Splits `text` into tokens, ending with one `Eof` token (for small texts read whole: `#read`
+/// data, tests; scene files are read a token at a time through `next_token`).
 pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
-    let bytes = text.as_bytes();
     let mut tokens = Vec::new();
     let mut i = 0;
+    while let Some((t, end)) = next_token(file, text, i, text.len())? {
+        tokens.push(t);
+        i = end;
+    }
+    tokens.push(Token { kind: TokenKind::Eof, span: Span::new(file, text.len(), text.len()) });
+    Ok(tokens)
+}
+
+/// The token starting at or after byte `i` of `text` (skipping blanks and comments), and the
+/// offset just past it; `None` when only blanks and comments are left before `end`.
+///
+/// The parser reads a file through this, a token at a time, and re-reads a loop's or a macro's
+/// stretch of text from a remembered offset: no file is held as tokens (a million generated
+/// spheres were 24 million tokens of 40 bytes).
+pub fn next_token(file: FileId, text: &str, mut i: usize, end: usize) -> PResult<Option<(Token, usize)>> {
+    let bytes = &text.as_bytes()[..end];
     let span = |a: usize, b: usize| Span::new(file, a, b);
     while i < bytes.len() {
         let c = bytes[i];
@@ -102,18 +118,16 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                 .ok_or_else(|| Diag::new(span(start, start + 2), "block comment `/*` is never closed with `*/`"))?;
         } else if c.is_ascii_digit() || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)) {
             let (value, end) = lex_number(bytes, i).map_err(|m| Diag::new(span(start, i + 1), m))?;
-            i = end;
-            tokens.push(Token { kind: TokenKind::Number(value), span: span(start, end) });
+            return Ok(Some((Token { kind: TokenKind::Number(value), span: span(start, end) }, end)));
         } else if c.is_ascii_alphabetic() || c == b'_' {
             while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
                 i += 1;
             }
-            tokens.push(Token { kind: TokenKind::Ident(Rc::from(&text[start..i])), span: span(start, i) });
+            return Ok(Some((Token { kind: TokenKind::Ident(Rc::from(&text[start..i])), span: span(start, i) }, i)));
         } else if c == b'"' {
-            let (s, end) = lex_string(text, i)
+            let (s, end) = lex_string(&text[..end], i)
                 .ok_or_else(|| Diag::new(span(start, start + 1), "string is never closed with `\"`"))?;
-            i = end;
-            tokens.push(Token { kind: TokenKind::Str(Rc::from(s)), span: span(start, end) });
+            return Ok(Some((Token { kind: TokenKind::Str(Rc::from(s)), span: span(start, end) }, end)));
         } else if c == b'#' {
             i += 1;
             // POV-Ray allows blanks, even line breaks, between `#` and the directive name.
@@ -136,13 +150,11 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
                     format!("`#{name}` is not a POV-Ray directive (directives: #{})", DIRECTIVES.join(", #")),
                 ));
             };
-            tokens.push(Token { kind: TokenKind::Directive(name), span: span(start, i) });
+            return Ok(Some((Token { kind: TokenKind::Directive(name), span: span(start, i) }, i)));
         } else if let Some(op) = OPS2.iter().find(|op| bytes[i..].starts_with(op.as_bytes())) {
-            i += 2;
-            tokens.push(Token { kind: TokenKind::Op2(op), span: span(start, i) });
+            return Ok(Some((Token { kind: TokenKind::Op2(op), span: span(start, i + 2) }, i + 2)));
         } else if c.is_ascii() && PUNCT.contains(c as char) {
-            i += 1;
-            tokens.push(Token { kind: TokenKind::Punct(c as char), span: span(start, i) });
+            return Ok(Some((Token { kind: TokenKind::Punct(c as char), span: span(start, i + 1) }, i + 1)));
         } else {
             let ch = text[i..].chars().next().unwrap_or('?');
             return Err(Diag::new(
@@ -151,8 +163,7 @@ pub fn lex(file: FileId, text: &str) -> PResult<Vec<Token>> {
             ));
         }
     }
-    tokens.push(Token { kind: TokenKind::Eof, span: span(bytes.len(), bytes.len()) });
-    Ok(tokens)
+    Ok(None)
 }
 
 /// Returns the offset just past the comment opened at `i`; comments nest, as POV-Ray allows.

@@ -20,7 +20,6 @@ use std::path::{Path, PathBuf};
 use crate::desc::{IncludedFile, SceneDesc, SourceRef};
 use crate::error::{visible, LocatedError};
 use crate::text::decode_user_text;
-use lexer::Token;
 use source::{Diag, FileId, PResult, SourceFile, SourceMap, Span};
 use std::rc::Rc;
 
@@ -201,11 +200,11 @@ struct Loader<'a> {
 impl Loader<'_> {
     fn load_main(&mut self, path: &Path) -> PResult<(SceneDesc, Vec<Message>)> {
         let display = path.display().to_string();
-        let (file, tokens) = self.read_and_lex(path, display.clone(), None)?;
+        let (file, text) = self.read(path, display.clone(), None)?;
         self.stack.push((canonical(path), file));
         let options = self.options.clone();
         let mut low = lower::Lowerer::new(self, &options);
-        let (result, expansions) = parser::run(&mut low, tokens);
+        let (result, expansions) = parser::run(&mut low, file, text);
         let (mut scene, output) = low.finish();
         self.map.expansions = expansions;
         result?;
@@ -224,27 +223,27 @@ impl Loader<'_> {
         Ok((scene, messages))
     }
 
-    /// Reads a file into the source map and lexes it. An unreadable file still gets an entry,
-    /// so its error is located like any other. The text is decoded by `decode_user_text`: a
-    /// byte-order mark is dropped and a file that is not UTF-8 is read as Latin-1.
-    fn read_and_lex(
-        &mut self,
-        path: &Path,
-        display: String,
-        included_from: Option<Span>,
-    ) -> PResult<(FileId, Rc<[Token]>)> {
+    /// Reads a file into the source map (the parser lexes it as it goes). An unreadable file
+    /// still gets an entry, so its error is located like any other. The text is decoded by
+    /// `decode_user_text`: a byte-order mark is dropped and a file that is not UTF-8 is read as
+    /// Latin-1.
+    fn read(&mut self, path: &Path, display: String, included_from: Option<Span>) -> PResult<(FileId, Rc<str>)> {
         let (text, problem) = match std::fs::read(path) {
             Err(e) => (String::new(), Some(format!("cannot read file: {e}"))),
             Ok(b) if b.len() >= u32::MAX as usize => (String::new(), Some("file is too large".to_string())),
             Ok(b) => (decode_user_text(b), None),
         };
-        let id = self.map.add(SourceFile { display, path: path.to_path_buf(), text, included_from });
+        let text: Rc<str> = Rc::from(text);
+        let id = self.map.add(SourceFile {
+            display: display.into(),
+            path: path.to_path_buf(),
+            text: text.clone(),
+            included_from,
+        });
         if let Some(message) = problem {
             return Err(Diag::new(Span::new(id, 0, 0), message));
         }
-        let text = self.map.file(id).map(|f| f.text.as_str()).unwrap_or("");
-        let tokens = lexer::lex(id, text)?;
-        Ok((id, Rc::from(tokens)))
+        Ok((id, text))
     }
 
     /// The including file's folder first, then the include path in order.
@@ -256,7 +255,7 @@ impl Loader<'_> {
 }
 
 impl lower::Files for Loader<'_> {
-    fn enter_include(&mut self, name: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)> {
+    fn enter_include(&mut self, name: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<str>)> {
         let Some(found) = self.resolve(name) else {
             let searched: Vec<String> = self.include.dirs.iter().map(|d| d.display().to_string()).collect();
             return Err(Diag::new(
@@ -278,10 +277,10 @@ impl lower::Files for Loader<'_> {
         if self.stack.len() > MAX_INCLUDE_DEPTH {
             return Err(Diag::new(directive, format!("#include nested deeper than {MAX_INCLUDE_DEPTH} levels")));
         }
-        let (id, tokens) = self.read_and_lex(&found, found.display().to_string(), Some(directive))?;
+        let (id, text) = self.read(&found, found.display().to_string(), Some(directive))?;
         self.included.push(IncludedFile { path: found.display().to_string(), from: self.source_ref(directive) });
         self.stack.push((key, id));
-        Ok((id, tokens))
+        Ok((id, text))
     }
 
     fn leave_include(&mut self) {

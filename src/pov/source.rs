@@ -78,9 +78,11 @@ pub type PResult<T> = Result<T, Diag>;
 #[derive(Clone, Debug)]
 pub struct SourceFile {
     /// How messages name the file (the path as given or as found on the include path).
-    pub display: String,
+    /// Shared with the `SourceRef` of every object written in the file.
+    pub display: std::sync::Arc<str>,
     pub path: PathBuf,
-    pub text: String,
+    /// Shared with the parser's frames and macros, which read it as they go.
+    pub text: std::rc::Rc<str>,
     /// The `#include` directive that read this file (none for the scene itself).
     pub included_from: Option<Span>,
 }
@@ -145,7 +147,7 @@ impl SourceMap {
     /// "file:line:col" of a span's start.
     pub fn position(&self, span: Span) -> String {
         let (line, col) = self.line_col(Span { expansion: 0, ..span });
-        let file = self.file(span.file).map_or("<unknown>", |f| f.display.as_str());
+        let file = self.file(span.file).map_or("<unknown>", |f| &*f.display);
         format!("{file}:{line}:{col}")
     }
 

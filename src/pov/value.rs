@@ -4,15 +4,15 @@
 
 use std::ops::Range;
 use std::rc::Rc;
+use std::sync::Arc;
 
 use glam::DVec3;
 
 use crate::desc::{
     CameraDesc, Color, ColorMapEntry, CsgOp, FinishDesc, InteriorDesc, LightDesc, NormalDesc, ObjectDesc, PigmentDesc,
-    ShapeDesc, SourceRef, TextureDesc, Transform,
+    Placement, ShapeDesc, SourceRef, TextureDesc, Transform,
 };
 use crate::pov::ast::BinOp;
-use crate::pov::lexer::Token;
 use crate::pov::source::{Diag, PResult, Span};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -117,8 +117,9 @@ impl Array {
 pub struct Macro {
     pub name: Rc<str>,
     pub params: Vec<(Rc<str>, bool)>,
-    /// The tokens of the file the macro is written in, and the body's range in them.
-    pub tokens: Rc<[Token]>,
+    /// The text of the file the macro is written in, and the body's byte range in it (read
+    /// again at each call).
+    pub source: crate::pov::parser::Text,
     pub body: Range<usize>,
     /// The macro's name in its `#macro` directive.
     pub defined: Span,
@@ -160,8 +161,8 @@ impl Part {
     pub fn node(op: CsgOp, children: Vec<Part>, source: SourceRef) -> Part {
         let desc = ObjectDesc {
             shape: ShapeDesc::Csg { op, children: Vec::new() },
-            transform: Transform::default(),
-            texture: TextureDesc::default(),
+            transform: Placement::Identity,
+            texture: Arc::default(),
             interior_texture: None,
             interior: InteriorDesc::default(),
             no_shadow: false,
@@ -200,7 +201,7 @@ impl Part {
 
     /// The finished object: leaves without a texture get `default` (the one in effect where
     /// the object is placed), and a node's children move into its shape.
-    pub fn into_desc(self, default: &TextureDesc) -> ObjectDesc {
+    pub fn into_desc(self, default: &Arc<TextureDesc>) -> ObjectDesc {
         let mut desc = self.desc;
         if let ShapeDesc::Csg { children, .. } = &mut desc.shape {
             *children = self.children.into_iter().map(|c| c.into_desc(default)).collect();

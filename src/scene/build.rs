@@ -112,7 +112,7 @@ pub struct Scene {
     /// While building: the last few distinct (texture, interior, light group)s and their
     /// materials, so objects that look alike share one `Material` (a generated cloud of
     /// 1 000 000 spheres has 16 looks; one material each cost ~0.4 KB per sphere).
-    material_cache: Vec<(TextureDesc, InteriorDesc, Option<u32>, u32)>,
+    material_cache: Vec<(Arc<TextureDesc>, InteriorDesc, Option<u32>, u32)>,
     /// While building: which lights light the objects of no light group (entry 0) and of
     /// each `light_group` (entry g + 1); empty without light groups.
     light_masks: Vec<Option<Arc<[bool]>>>,
@@ -239,11 +239,14 @@ impl Scene {
     /// The material of `object`, noting what it needs in `features`.
     fn add_material(&mut self, object: &ObjectDesc) -> u32 {
         self.features.no_shadow |= object.no_shadow;
-        let same = |(t, i, g, _): &&(TextureDesc, InteriorDesc, Option<u32>, u32)| {
-            *g == object.light_group && *i == object.interior && *t == object.texture
+        // Shared textures (`pov::lower::looks`) compare by address first.
+        let same = |(t, i, g, _): &&(Arc<TextureDesc>, InteriorDesc, Option<u32>, u32)| {
+            *g == object.light_group
+                && *i == object.interior
+                && (Arc::ptr_eq(t, &object.texture) || *t == object.texture)
         };
         let uv = object.texture.uv_mapping.then(|| {
-            let object_from_render = object.transform.inverse * self.frame.world_from_render();
+            let object_from_render = object.transform.inverse() * self.frame.world_from_render();
             crate::geometry::uv::UvMap::new(&object.shape, object_from_render)
         });
         let shared = uv.is_none() && object.interior_texture.is_none();

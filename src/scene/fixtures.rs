@@ -21,14 +21,15 @@ pub fn seed_camera() -> Camera {
 fn object(shape: ShapeDesc, pattern: PigmentPattern, finish: FinishDesc, transform: Transform) -> ObjectDesc {
     ObjectDesc {
         shape,
-        transform,
+        transform: transform.into(),
         texture: TextureDesc {
             pigment: PigmentDesc { pattern, ..PigmentDesc::default() },
             normal: None,
             finish,
             uv_mapping: false,
             pattern: None,
-        },
+        }
+        .into(),
         interior_texture: None,
         interior: Default::default(),
         no_shadow: false,

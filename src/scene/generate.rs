@@ -151,7 +151,7 @@ fn object_with(texture: TextureDesc, index: usize) -> ObjectDesc {
     ObjectDesc {
         shape: ShapeDesc::Plane { normal: DVec3::Y, distance: 0.0 },
         transform: Default::default(),
-        texture,
+        texture: texture.into(),
         interior_texture: None,
         interior: Default::default(),
         no_shadow: false,
@@ -287,7 +287,7 @@ pub fn cloud(kind: Kind, n: usize) -> impl Iterator<Item = ObjectDesc> {
         };
         let (shape, transform) = shape(kind, i, center);
         let mut o = object(shape, PigmentPattern::Solid(Color::rgb(r, g, b)), finish, i as usize + 1);
-        o.transform = transform;
+        o.transform = transform.into();
         o
     })
 }

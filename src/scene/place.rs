@@ -7,7 +7,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat4, DVec3};
 
 use crate::camera::frame::RenderFrame;
-use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, ShapeDesc, TextGlyph, Transform};
+use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, Placement, ShapeDesc, TextGlyph};
 use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
 
@@ -138,7 +138,8 @@ pub(crate) enum RenderShape {
 /// Placing shapes: the frame of `camera::frame` carries a description's shape into render space.
 impl RenderFrame {
     /// `shape` under the object transform `t`, in render space.
-    pub(crate) fn place(&self, shape: &ShapeDesc, t: &Transform) -> RenderShape {
+    pub(crate) fn place(&self, shape: &ShapeDesc, t: &Placement) -> RenderShape {
+        let t = &t.transform();
         let point = |p: DVec3| self.point(t.matrix.transform_point3(p));
         let render_from_object = || DAffine3::from_mat4(self.render_from_world() * t.matrix);
         match shape {
@@ -218,11 +219,11 @@ impl RenderFrame {
             }
             ShapeDesc::Julia { param, function, max_iteration, precision, slice } => RenderShape::Julia {
                 render_from_object: render_from_object(),
-                param: *param,
+                param: **param,
                 function: *function,
                 max_iteration: *max_iteration,
                 precision: *precision,
-                slice: *slice,
+                slice: **slice,
             },
             ShapeDesc::Blob { components, threshold } => RenderShape::Blob {
                 render_from_object: render_from_object(),
@@ -231,15 +232,15 @@ impl RenderFrame {
             },
             ShapeDesc::Isosurface { function, container, params } => RenderShape::Isosurface {
                 render_from_object: render_from_object(),
-                function: function.clone(),
+                function: (**function).clone(),
                 container: *container,
-                params: *params,
+                params: **params,
             },
             ShapeDesc::Parametric { functions, container, params } => RenderShape::Parametric {
                 render_from_object: render_from_object(),
-                functions: functions.clone(),
+                functions: (**functions).clone(),
                 container: *container,
-                params: *params,
+                params: **params,
             },
             ShapeDesc::Text { thickness, glyphs, .. } => {
                 // A prism sweeps its (x, z) outline along y; a glyph's (x, y) outline is swept

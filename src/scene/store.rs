@@ -163,8 +163,8 @@ impl Scene {
     /// `bounded_by` box, in render space: the accelerator then skips it for rays that miss
     /// the box, as POV-Ray does. Other kinds' own bounds are tight already.
     pub(super) fn bound_by(&mut self, kind: ShapeKind, index: u32, object: &ObjectDesc) {
-        let (Some([lo, hi]), ShapeKind::Poly) = (object.bounded_by, kind) else { return };
-        let [lo, hi] = box_through(&(self.frame.render_from_world() * object.transform.matrix), lo, hi);
+        let (Some(&[lo, hi]), ShapeKind::Poly) = (object.bounded_by.as_deref(), kind) else { return };
+        let [lo, hi] = box_through(&(self.frame.render_from_world() * object.transform.matrix()), lo, hi);
         let b = Aabb::new(lo.as_vec3(), hi.as_vec3());
         let poly = &mut self.polys[index as usize];
         // Rounded outwards by a part in a million of the box: the f32 corners must not cut
@@ -212,5 +212,8 @@ impl Scene {
 fn mesh_data(mesh: &MeshDesc) -> MeshData {
     let v = |i: u32| mesh.vertices[i as usize].as_vec3();
     let n = |i: u32| mesh.normals[i as usize].as_vec3();
-    MeshData::new(mesh.faces.iter().map(|f| (f.vertices.map(v), f.normals.map(|k| k.map(n)))))
+    MeshData::from_faces(mesh.faces.len(), |i| {
+        let f = &mesh.faces[i];
+        (f.vertices.map(v), f.normals.map(|k| k.map(n)))
+    })
 }

@@ -355,7 +355,7 @@ plane {{ y, -1 pigment {{ color rgb 0.7 }} }}
         let rotated =
             load_src("rot_a", &scene(&format!("box {{ <-1, 0, -0.5>, <2, 1.5, 1> {pigment} rotate {rot} }}")));
         let written = load_src("rot_b", &scene(&format!("box {{ {corners} {pigment} }}")));
-        let m = rotated.objects[1].transform.matrix;
+        let m = rotated.objects[1].transform.matrix();
         let exact = m.to_cols_array().iter().all(|v| [0.0, 1.0, -1.0].contains(v));
         let a = render_clean(rot, &rotated, W, H);
         let b = render_clean(rot, &written, W, H);
@@ -377,7 +377,7 @@ plane {{ y, -1 pigment {{ color rgb 0.7 }} }}
 fn right_angle_rotation_matrices_are_exact() {
     for rot in ["y*90", "y*180", "y*270", "y*360", "y*-90", "x*90", "z*90", "<90, 180, 270>"] {
         let d = load_src("rot_exact", &format!("box {{ <-1, 0, -0.5>, <2, 1.5, 1> rotate {rot} }}"));
-        let m = d.objects[0].transform.matrix;
+        let m = d.objects[0].transform.matrix();
         assert!(m.to_cols_array().iter().all(|v| [0.0, 1.0, -1.0].contains(v)), "rotate {rot}: {m:?}");
     }
 }
@@ -445,7 +445,8 @@ fn ior_one_transmit_one_is_invisible() {
     let mut desc = load(&root().join("tests/extremes/scene.pov"));
     for o in &mut desc.objects {
         if matches!(o.shape, strahl::desc::ShapeDesc::Plane { .. }) {
-            o.texture.pigment.pattern = strahl::desc::PigmentPattern::Solid(strahl::desc::Color::rgb(0.7, 0.7, 0.6));
+            o.texture_mut().pigment.pattern =
+                strahl::desc::PigmentPattern::Solid(strahl::desc::Color::rgb(0.7, 0.7, 0.6));
         }
     }
     let ghost = load_src(

@@ -346,7 +346,7 @@ fn transforms_as_values_and_matrices() {
          sphere { 0, 1 matrix <1, 0, 0, 0.5, 1, 0, 0, 0, 1, 0, 0, 3> }",
     )
     .unwrap();
-    let at = |i: usize, p: DVec3| s.objects[i].transform.matrix.transform_point3(p);
+    let at = |i: usize, p: DVec3| s.objects[i].transform.matrix().transform_point3(p);
     assert!((at(0, DVec3::X) - DVec3::new(3.0, 0.0, 0.0)).length() < 1e-12);
     assert!((at(1, DVec3::X) - DVec3::new(3.0, 1.0, 0.0)).length() < 1e-12);
     assert!((at(2, DVec3::new(3.0, 0.0, 0.0)) - DVec3::X).length() < 1e-12);
@@ -512,7 +512,7 @@ fn a_declared_light_placed_as_an_object_moves_with_its_transforms_and_looks_like
     // Each placement brings the looks_like sphere, centred on its light and casting no shadow.
     assert_eq!(s.objects.len(), 3);
     for (o, (p, _)) in s.objects.iter().zip(&at) {
-        assert!(close(o.transform.matrix.transform_point3(DVec3::ZERO), *p), "{:?} vs {p}", o.transform);
+        assert!(close(o.transform.matrix().transform_point3(DVec3::ZERO), *p), "{:?} vs {p}", o.transform);
         assert!(o.no_shadow);
     }
 }

@@ -344,8 +344,8 @@ fn random_scene(seed: u64, objects: usize) -> SceneDesc {
             let source = SourceRef { file: "generated".into(), line: i as u32 + 1, col: 1 };
             ObjectDesc {
                 shape,
-                transform,
-                texture,
+                transform: transform.into(),
+                texture: texture.into(),
                 interior_texture: None,
                 interior: InteriorDesc { ior, fade: None },
                 no_shadow: r.pick(5) == 0,
@@ -592,7 +592,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
             ShapeDesc::Julia { param: p2, function: f2, max_iteration: m2, precision: q2, slice: s2 },
         ) => {
             let close4 = |a: glam::DVec4, b: glam::DVec4| (0..4).all(|i| close(a[i], b[i]));
-            f1 == f2 && m1 == m2 && close(*q1, *q2) && close4(*p1, *p2) && close4(s1.0, s2.0) && close(s1.1, s2.1)
+            f1 == f2 && m1 == m2 && close(*q1, *q2) && close4(**p1, **p2) && close4(s1.0, s2.0) && close(s1.1, s2.1)
         }
         (ShapeDesc::Sor { points: p1, open: o1 }, ShapeDesc::Sor { points: p2, open: o2 }) => {
             o1 == o2 && p1.len() == p2.len() && p1.iter().zip(p2).all(|(p, q)| close(p.x, q.x) && close(p.y, q.y))
@@ -600,7 +600,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
         (
             ShapeDesc::Text { font: f1, string: s1, thickness: t1, offset: o1, .. },
             ShapeDesc::Text { font: f2, string: s2, thickness: t2, offset: o2, .. },
-        ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(*o1, *o2),
+        ) => f1 == f2 && s1 == s2 && close(*t1, *t2) && close3(**o1, **o2),
         // Vertices are written in shortest round-trip form and stay in object space: exact.
         (ShapeDesc::Mesh { mesh: m1, inside_vector: i1 }, ShapeDesc::Mesh { mesh: m2, inside_vector: i2 }) => {
             m1 == m2 && i1 == i2
@@ -620,7 +620,7 @@ fn same_object(label: &str, oa: &ObjectDesc, ob: &ObjectDesc) -> Result<(), Stri
     };
     check(oa.inverse == ob.inverse, format!("{label}: inverse"))?;
     check(shape_ok, format!("{label}: shape {:?} vs {:?}", oa.shape, ob.shape))?;
-    check(close_xf(&oa.transform, &ob.transform), format!("{label}: transform"))?;
+    check(close_xf(&oa.transform.transform(), &ob.transform.transform()), format!("{label}: transform"))?;
     check(close(oa.interior.ior, ob.interior.ior), format!("{label}: ior"))?;
     let (ta, tb) = (&oa.texture, &ob.texture);
     let pattern_ok = match (&ta.pigment.pattern, &tb.pigment.pattern) {
@@ -877,8 +877,8 @@ fn fuzzer_regressions_do_not_panic() {
 fn csg_leaf(r: &mut Rng) -> ObjectDesc {
     ObjectDesc {
         shape: random_shape(r),
-        transform: random_transform(r),
-        texture: TextureDesc::default(),
+        transform: random_transform(r).into(),
+        texture: TextureDesc::default().into(),
         interior_texture: None,
         interior: InteriorDesc::default(),
         no_shadow: false,
@@ -918,7 +918,7 @@ fn inside_agrees_with_crossing_parity() {
     for _ in 0..400 {
         let leaf = csg_leaf(r);
         let leaf_shape = leaf.shape.clone();
-        let leaf_transform = leaf.transform;
+        let leaf_transform = leaf.transform.transform();
         let flat = matches!(
             leaf.shape,
             ShapeDesc::Triangle { .. }
@@ -1142,7 +1142,7 @@ fn csg_of_convex_solids_matches_the_inside_test_reference() {
                     _ if r.pick(2) == 0 => xf(DMat4::from_rotation_x(r.f(-3.2, 3.2))),
                     _ => Transform::default(),
                 };
-                ObjectDesc { shape, transform, inverse: r.pick(10) == 0, ..csg_leaf(r) }
+                ObjectDesc { shape, transform: transform.into(), inverse: r.pick(10) == 0, ..csg_leaf(r) }
             })
             .collect();
         let op = [CsgOp::Intersection, CsgOp::Difference, CsgOp::Clip][r.pick(3) as usize];
@@ -1255,7 +1255,7 @@ fn mesh_packets_single_rays_and_brute_force_agree() {
             mesh.faces.push(MeshFace { vertices: [k, k + 1, k + 2], normals: None });
         }
         let transform = random_transform(r);
-        let object = |shape| ObjectDesc { shape, transform, ..csg_leaf(&mut Rng(case)) };
+        let object = |shape| ObjectDesc { shape, transform: transform.into(), ..csg_leaf(&mut Rng(case)) };
         let triangles: Vec<ObjectDesc> = mesh
             .faces
             .iter()

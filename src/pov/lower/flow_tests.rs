@@ -146,7 +146,7 @@ fn union_applies_transforms_and_texture_to_children() {
     assert_eq!(s.objects.len(), 3);
     let t = DMat4::from_translation(DVec3::Z);
     for o in &s.objects {
-        assert_eq!(o.transform.matrix, t);
+        assert_eq!(o.transform.matrix(), t);
     }
     let solid = |i: usize| match &s.objects[i].texture.pigment.pattern {
         PigmentPattern::Solid(c) => *c,
@@ -171,7 +171,7 @@ fn nested_and_declared_unions() {
     // The union flattens into its four spheres; the merge is one object over its two.
     assert_eq!(s.objects.len(), 5);
     assert!(matches!(&s.objects[4].shape, crate::desc::ShapeDesc::Csg { children, .. } if children.len() == 2));
-    let inner = s.objects[1].transform.matrix;
+    let inner = s.objects[1].transform.matrix();
     assert_eq!(
         inner,
         DMat4::from_translation(DVec3::Y) * DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0))

@@ -84,7 +84,7 @@ impl Lowerer<'_> {
                 other => return Err(Diag::new(at, format!("parametric: unknown item `{other}`"))),
             }
         }
-        Ok(ShapeDesc::Parametric { functions, container, params })
+        Ok(ShapeDesc::Parametric { functions: Box::new(functions), container, params: Box::new(params) })
     }
 
     pub(super) fn isosurface(&mut self, args: &[Expr], span: Span) -> PResult<ShapeDesc> {
@@ -155,6 +155,6 @@ impl Lowerer<'_> {
                 other => return Err(Diag::new(at, format!("isosurface: unknown item `{other}`"))),
             }
         }
-        Ok(ShapeDesc::Isosurface { function, container, params })
+        Ok(ShapeDesc::Isosurface { function: Box::new(function), container, params: Box::new(params) })
     }
 }

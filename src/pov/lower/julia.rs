@@ -62,6 +62,6 @@ impl Lowerer<'_> {
                 ))
             }
         };
-        Ok(ShapeDesc::Julia { param, function, max_iteration, precision, slice })
+        Ok(ShapeDesc::Julia { param: Box::new(param), function, max_iteration, precision, slice: Box::new(slice) })
     }
 }

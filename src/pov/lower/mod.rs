@@ -16,6 +16,7 @@ mod images;
 mod isosurface;
 mod julia;
 mod lights;
+mod looks;
 mod material;
 mod objects;
 mod shape_args;
@@ -25,10 +26,10 @@ mod texture_block;
 mod textures;
 
 use std::rc::Rc;
+use std::sync::Arc;
 
 use crate::desc::{CsgOp, LightDesc, SceneDesc, SourceRef, TextureDesc, UnmodelledFeature};
 use crate::pov::ast::{DeclValue, DefaultItem, GlobalItem, Stmt};
-use crate::pov::lexer::Token;
 use crate::pov::names::NameMap;
 use crate::pov::source::{Diag, FileId, PResult, Span};
 use crate::pov::value::{Part, Value};
@@ -41,9 +42,10 @@ pub(crate) use images::ImageOptions;
 /// seconds.
 pub const MAX_LOOP_ITERATIONS: u64 = 10_000_000;
 
-/// Objects allowed in the scene, and children in one union: an `ObjectDesc` is about 1 KiB, so
-/// this bounds memory near 2 GiB even for a union that doubles itself in a loop.
-pub const MAX_OBJECTS: usize = 2_000_000;
+/// Objects allowed in the scene, and children in one union: an `ObjectDesc` is under 200 bytes
+/// (`desc::tests` holds it), so this bounds the descriptions near 3 GiB even for a union that
+/// doubles itself in a loop, and lets the ten million objects of a generated cloud load.
+pub const MAX_OBJECTS: usize = 16_000_000;
 
 /// Most bytes of `#debug` text and warnings one scene may print (a runaway loop that prints
 /// stops here instead of filling memory).
@@ -70,7 +72,7 @@ pub enum MessageKind {
 pub trait Files {
     /// Resolves, reads and lexes `#include "path"`; errors (not found, cycle, too deep) are
     /// located at `path_span`/`directive`.
-    fn enter_include(&mut self, path: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)>;
+    fn enter_include(&mut self, path: &str, directive: Span, path_span: Span) -> PResult<(FileId, Rc<str>)>;
     /// Called when the include entered last has been run.
     fn leave_include(&mut self);
     fn source_ref(&self, span: Span) -> SourceRef;
@@ -112,8 +114,12 @@ pub struct Lowerer<'f> {
     /// Loop iterations so far, against `MAX_LOOP_ITERATIONS`.
     loop_iterations: u64,
     /// The texture `#default` last set (POV-Ray's own until then): where every texture, pigment,
-    /// finish and normal block starts, and what objects without one get when placed.
-    default_texture: TextureDesc,
+    /// finish and normal block starts, and what objects without one get when placed (shared
+    /// by all of them).
+    default_texture: Arc<TextureDesc>,
+    /// The distinct textures of the objects placed last, for objects that look alike to share
+    /// one copy (`share_looks`).
+    looks: Vec<Arc<TextureDesc>>,
     /// `seed()`'s streams for `rand()`.
     random: functions::RandomStreams,
     /// Files `#fopen` opened.
@@ -135,7 +141,8 @@ impl<'f> Lowerer<'f> {
             child_lights: Vec::new(),
             csg_whole_unions: Vec::new(),
             loop_iterations: 0,
-            default_texture: TextureDesc::default(),
+            default_texture: Arc::default(),
+            looks: Vec::new(),
             random: Default::default(),
             open_files: Default::default(),
             output_bytes: 0,
@@ -336,10 +343,10 @@ impl<'f> Lowerer<'f> {
     pub(crate) fn set_default(&mut self, items: &[DefaultItem]) -> PResult<()> {
         for item in items {
             match item {
-                DefaultItem::Texture(t) => self.default_texture = self.texture(t)?,
-                DefaultItem::Pigment(p) => self.default_texture.pigment = self.pigment(p)?,
-                DefaultItem::Normal(n) => self.default_texture.normal = self.default_normal(n)?,
-                DefaultItem::Finish(f) => self.default_texture.finish = self.finish_block(f)?,
+                DefaultItem::Texture(t) => self.default_texture = Arc::new(self.texture(t)?),
+                DefaultItem::Pigment(p) => Arc::make_mut(&mut self.default_texture).pigment = self.pigment(p)?,
+                DefaultItem::Normal(n) => Arc::make_mut(&mut self.default_texture).normal = self.default_normal(n)?,
+                DefaultItem::Finish(f) => Arc::make_mut(&mut self.default_texture).finish = self.finish_block(f)?,
             }
         }
         Ok(())
@@ -458,16 +465,20 @@ impl<'f> Lowerer<'f> {
                     self.child_lights.extend(group.lights.iter().copied());
                 }
                 let whole = group.csg && self.csg_whole_unions.last() == Some(&true);
-                let source = self.files.source_ref(o.span);
                 match self.csg_stack.last_mut() {
-                    Some(children) if whole => children.push(Part::node(CsgOp::Union, group.parts, source)),
+                    Some(children) if whole => {
+                        let source = self.files.source_ref(o.span);
+                        children.push(Part::node(CsgOp::Union, group.parts, source))
+                    }
                     Some(children) => children.extend(group.parts),
                     None => {
                         // POV-Ray gives an object without a texture the default in effect where
                         // it is placed, not moved by the object's transforms (checked by rendering
                         // a declared sphere placed after a `#default`, and a scaled plane).
                         for part in group.parts {
-                            self.scene.objects.push(part.into_desc(&self.default_texture));
+                            let mut desc = part.into_desc(&self.default_texture);
+                            self.share_looks(&mut desc);
+                            self.scene.objects.push(desc);
                         }
                     }
                 }

@@ -6,7 +6,9 @@
 
 use super::texture_block::{layer_over, texture_uv_span, transform_texture, uv_span};
 use super::Lowerer;
-use crate::desc::{InteriorDesc, ObjectDesc, PolyForm, ShapeDesc, TextureDesc, Transform};
+use std::sync::Arc;
+
+use crate::desc::{InteriorDesc, ObjectDesc, Placement, PolyForm, ShapeDesc, TextureDesc};
 use crate::pov::ast::{Clip, CsgOp, Expr, ExprKind, Modifier, Object, ObjectKind, Stmt};
 use crate::pov::source::{Diag, PResult, Span};
 use crate::pov::value::{Group, MaterialValue, Part, Value};
@@ -27,8 +29,8 @@ impl Lowerer<'_> {
             ObjectKind::Shape(..) | ObjectKind::Blob(_) | ObjectKind::Julia(_) | ObjectKind::Built(_) => Group {
                 parts: vec![Part::leaf(ObjectDesc {
                     shape: shape.expect("a shape was lowered above"),
-                    transform: Transform::default(),
-                    texture: TextureDesc::default(),
+                    transform: Placement::Identity,
+                    texture: Arc::default(),
                     interior_texture: None,
                     interior: InteriorDesc::default(),
                     no_shadow: false,
@@ -163,27 +165,30 @@ impl Lowerer<'_> {
             // object's `uv_mapping` before it stays).
             let uv = part.desc.texture.uv_mapping;
             part.desc.texture = self.default_texture.clone();
-            part.desc.texture.uv_mapping |= uv;
+            part.desc.texture_mut().uv_mapping |= uv;
         }
         let obj = &mut part.desc;
         // An object's `uv_mapping` holds for the textures given after it too.
         let object_uv = obj.texture.uv_mapping;
         match m {
             Modifier::Pigment(p) => {
-                obj.texture.pigment = self.pigment(p)?;
-                obj.texture.uv_mapping |= uv_span(p).is_some();
+                let pigment = self.pigment(p)?;
+                let texture = obj.texture_mut();
+                texture.pigment = pigment;
+                texture.uv_mapping |= uv_span(p).is_some();
             }
-            Modifier::UvMapping(_) => obj.texture.uv_mapping = true,
-            Modifier::Normal(n) => obj.texture.normal = Some(self.normal(n)?),
-            Modifier::Finish(f) => obj.texture.finish = self.finish_block(f)?,
+            Modifier::UvMapping(_) => obj.texture_mut().uv_mapping = true,
+            Modifier::Normal(n) => obj.texture_mut().normal = Some(self.normal(n)?),
+            Modifier::Finish(f) => obj.texture_mut().finish = self.finish_block(f)?,
             // A second texture on an object lies over the first as a layer (POV-Ray 3.4.6.6).
             Modifier::Texture(t) if part.textured => {
                 let upper = self.texture(t)?;
-                layer_over(&mut part.desc.texture, upper);
+                layer_over(part.desc.texture_mut(), upper);
             }
             Modifier::Texture(t) => {
-                obj.texture = self.texture(t)?;
-                obj.texture.uv_mapping |= object_uv;
+                let mut texture = self.texture(t)?;
+                texture.uv_mapping |= object_uv;
+                obj.texture = Arc::new(texture);
             }
             Modifier::Interior(i) => {
                 obj.interior = self.interior(i)?;
@@ -196,8 +201,8 @@ impl Lowerer<'_> {
                 let obj = &mut part.desc;
                 if let Some(tex) = texture {
                     match part.textured {
-                        true => layer_over(&mut obj.texture, tex),
-                        false => obj.texture = tex,
+                        true => layer_over(obj.texture_mut(), tex),
+                        false => obj.texture = Arc::new(tex),
                     }
                     part.textured = true;
                 }
@@ -211,7 +216,7 @@ impl Lowerer<'_> {
             Modifier::Transform(t) => {
                 let t = self.transform(t)?;
                 obj.transform = obj.transform.then(&t);
-                transform_texture(&mut obj.texture, &t);
+                transform_texture(obj.texture_mut(), &t);
                 if let Some(inner) = &mut obj.interior_texture {
                     transform_texture(inner, &t);
                 }
@@ -342,11 +347,11 @@ impl Lowerer<'_> {
     /// objects bound nothing.
     fn bounded_by(&mut self, parts: &mut [Part], children: &[Stmt], span: Span) -> PResult<()> {
         let bound = self.children(children, "bounded_by", span)?;
-        let objects: Vec<ObjectDesc> = bound.into_iter().map(|p| p.into_desc(&TextureDesc::default())).collect();
+        let objects: Vec<ObjectDesc> = bound.into_iter().map(|p| p.into_desc(&Arc::default())).collect();
         let Some((lo, hi)) = crate::render::probe::bounds(&objects) else { return Ok(()) };
         for part in parts {
             part.for_each_leaf(&mut |leaf: &mut Part| {
-                leaf.desc.bounded_by = Some(crate::desc::box_through(&leaf.desc.transform.inverse, lo, hi));
+                leaf.desc.bounded_by = Some(Box::new(crate::desc::box_through(&leaf.desc.transform.inverse(), lo, hi)));
             });
         }
         Ok(())
@@ -362,23 +367,23 @@ impl Lowerer<'_> {
         match m {
             Modifier::Pigment(p) => {
                 let pigment = self.pigment(p)?;
-                let texture = pending.texture.get_or_insert_with(|| self.default_texture.clone());
+                let texture = pending.texture.get_or_insert_with(|| (*self.default_texture).clone());
                 texture.pigment = pigment;
                 texture.uv_mapping |= uv_span(p).is_some();
             }
             Modifier::UvMapping(_) => {
-                each(parts, &mut |leaf| leaf.desc.texture.uv_mapping = true);
+                each(parts, &mut |leaf| leaf.desc.texture_mut().uv_mapping = true);
                 if let Some(t) = &mut pending.texture {
                     t.uv_mapping = true;
                 }
             }
             Modifier::Normal(n) => {
                 let normal = self.normal(n)?;
-                pending.texture.get_or_insert_with(|| self.default_texture.clone()).normal = Some(normal);
+                pending.texture.get_or_insert_with(|| (*self.default_texture).clone()).normal = Some(normal);
             }
             Modifier::Finish(f) => {
                 let finish = self.finish_block(f)?;
-                pending.texture.get_or_insert_with(|| self.default_texture.clone()).finish = finish;
+                pending.texture.get_or_insert_with(|| (*self.default_texture).clone()).finish = finish;
             }
             Modifier::Texture(t) => {
                 let tex = self.texture(t)?;
@@ -413,7 +418,7 @@ impl Lowerer<'_> {
                 let t = self.transform(t)?;
                 each(parts, &mut |leaf| {
                     leaf.desc.transform = leaf.desc.transform.then(&t);
-                    transform_texture(&mut leaf.desc.texture, &t);
+                    transform_texture(leaf.desc.texture_mut(), &t);
                     if let Some(inner) = &mut leaf.desc.interior_texture {
                         transform_texture(inner, &t);
                     }
@@ -447,6 +452,8 @@ impl Lowerer<'_> {
         if texture.is_none() && interior.is_none() {
             return;
         }
+        // One copy for all the children: a union of a million spheres shares it.
+        let texture = texture.map(Arc::new);
         for p in parts.iter_mut() {
             p.for_each_leaf(&mut |leaf| {
                 if let (false, Some(tex)) = (leaf.textured, &texture) {

@@ -6,14 +6,13 @@ use std::rc::Rc;
 
 use super::{Files, Lowerer, Output};
 use crate::desc::{Color, SceneDesc, SourceRef};
-use crate::pov::lexer::{lex, Token};
 use crate::pov::source::{Diag, FileId, PResult, Span};
 
 /// No includes: these tests lower one string.
 struct NoFiles(String);
 
 impl Files for NoFiles {
-    fn enter_include(&mut self, _: &str, _: Span, path_span: Span) -> PResult<(FileId, Rc<[Token]>)> {
+    fn enter_include(&mut self, _: &str, _: Span, path_span: Span) -> PResult<(FileId, Rc<str>)> {
         Err(Diag::new(path_span, "no includes in unit tests"))
     }
     fn leave_include(&mut self) {}
@@ -25,7 +24,7 @@ impl Files for NoFiles {
     }
     fn source_ref(&self, span: Span) -> SourceRef {
         let e = crate::error::LocatedError::at_offset("test", &self.0, span.start as usize, "");
-        SourceRef { file: String::new(), line: e.line, col: e.col }
+        SourceRef { file: "".into(), line: e.line, col: e.col }
     }
 }
 
@@ -44,10 +43,9 @@ pub(crate) fn lower(text: &str) -> Result<(SceneDesc, Vec<Diag>), String> {
 
 /// Lowers `text`, returning the scene and everything it printed (`#debug` text too).
 pub(crate) fn lower_with_output(text: &str) -> Result<(SceneDesc, Vec<Output>), String> {
-    let tokens = lex(0, text).map_err(|d| d.message)?;
     let mut files = NoFiles(text.to_string());
     let mut low = Lowerer::new(&mut files, &crate::pov::ParseOptions::default());
-    let (result, _) = crate::pov::parser::run(&mut low, Rc::from(tokens));
+    let (result, _) = crate::pov::parser::run(&mut low, 0, Rc::from(text));
     result.map_err(|d| d.message)?;
     Ok(low.finish())
 }
@@ -101,7 +99,7 @@ fn color_with_base_and_override() {
 #[test]
 fn rotate_order_is_x_then_y_then_z() {
     let (s, _) = lower("sphere { 0, 1 rotate <90, 0, 90> }").unwrap();
-    let m = s.objects[0].transform.matrix;
+    let m = s.objects[0].transform.matrix();
     // +y → (x 90°) +z → (z 90°) +z.
     assert!(m.transform_point3(DVec3::Y).abs_diff_eq(DVec3::Z, 1e-12));
     // +x → (x 90°) +x → (z 90°) +y.
@@ -111,7 +109,7 @@ fn rotate_order_is_x_then_y_then_z() {
 #[test]
 fn transforms_compose_left_to_right() {
     let (s, _) = lower("sphere { 0, 1 scale 2 translate x }").unwrap();
-    let m = s.objects[0].transform.matrix;
+    let m = s.objects[0].transform.matrix();
     assert_eq!(m, DMat4::from_translation(DVec3::X) * DMat4::from_scale(DVec3::splat(2.0)));
     assert_eq!(m.transform_point3(DVec3::X), DVec3::new(3.0, 0.0, 0.0));
 }
@@ -119,14 +117,14 @@ fn transforms_compose_left_to_right() {
 #[test]
 fn scale_by_zero_warns_and_keeps_the_axis() {
     let (s, w) = lower("sphere { 0, 1 scale <2, 0, 1> }").unwrap();
-    assert_eq!(s.objects[0].transform.matrix, DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0)));
+    assert_eq!(s.objects[0].transform.matrix(), DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0)));
     assert_eq!(w.len(), 1);
 }
 
 #[test]
 fn scale_0_warns_once_not_once_per_axis() {
     let (s, w) = lower("sphere { 0, 1 scale 0 }").unwrap();
-    assert_eq!(s.objects[0].transform.matrix, DMat4::IDENTITY);
+    assert_eq!(s.objects[0].transform.matrix(), DMat4::IDENTITY);
     assert_eq!(w.len(), 1, "{w:?}");
     assert_eq!(w[0].message, "Illegal Value: Scale by 0.0 (x, y, z). Changed to 1.0.");
     let (_, w) = lower("sphere { 0, 1 scale <2, 0, 1> }").unwrap();

@@ -117,7 +117,13 @@ impl Lowerer<'_> {
         let face = ttf_parser::Face::parse(&data, 0)
             .map_err(|e| Diag::new(font_expr.span, format!("\"{}\" is not a TrueType font: {e}", path.display())))?;
         let glyphs = layout(&face, &string, offset);
-        Ok(ShapeDesc::Text { font: path.display().to_string(), string, thickness, offset, glyphs })
+        Ok(ShapeDesc::Text {
+            font: path.display().to_string().into(),
+            string,
+            thickness,
+            offset: Box::new(offset),
+            glyphs: glyphs.into(),
+        })
     }
 }
 

@@ -13,7 +13,7 @@ use glam::DVec3;
 
 impl Lowerer<'_> {
     pub(super) fn texture(&mut self, t: &Texture) -> PResult<TextureDesc> {
-        let mut out = self.default_texture.clone();
+        let mut out = (*self.default_texture).clone();
         let mut pattern: Option<PatternDesc> = None;
         // The textures of a list pattern (`checker texture {..} texture {..}`), or of a map.
         let mut list: Vec<TextureDesc> = Vec::new();

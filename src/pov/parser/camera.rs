@@ -241,7 +241,7 @@ impl Parser<'_, '_> {
         let (mesh, mut transform) = match self.low.eval(&e)? {
             Value::Object(group) => match group.parts.as_slice() {
                 [part] => match &part.desc.shape {
-                    ShapeDesc::Mesh { mesh, .. } => (mesh.clone(), part.desc.transform),
+                    ShapeDesc::Mesh { mesh, .. } => (mesh.clone(), part.desc.transform.transform()),
                     other => return Err(not_mesh(&format!("a {}", other.keyword()))),
                 },
                 _ => return Err(not_mesh("a union")),

@@ -214,8 +214,7 @@ impl Parser<'_, '_> {
     /// Where the cursor's token stands, to come back to it (the token must be from the top
     /// frame, as it is right after a directive's own token).
     fn cursor_mark(&self) -> Mark {
-        let m = self.stream.mark();
-        Mark { frame: m.frame, pos: m.pos.saturating_sub(1) }
+        self.stream.cursor_mark()
     }
 
     /// Continues at `mark` in the top frame.
@@ -484,14 +483,14 @@ impl Parser<'_, '_> {
     /// `#include "file"` (a string expression): the file's tokens run next.
     fn include(&mut self, start: Span) -> PResult<()> {
         let (name, name_span) = self.string_arg("include")?;
-        let (_, tokens) = self.low.files.enter_include(&name, start, name_span)?;
+        let (file, text) = self.low.files.enter_include(&name, start, name_span)?;
         // The token after the name was read already (from the top frame: frames end only
         // when read past): it is read again when the file is done.
         if !matches!(self.cur.kind, TokenKind::Eof | TokenKind::FrameEnd) {
             self.stream.unread();
         }
-        let end = tokens.len().saturating_sub(1);
-        self.stream.push(tokens, 0..end, FrameKind::Include, 0);
+        let end = text.len();
+        self.stream.push(super::Text { file, text }, 0..end, FrameKind::Include, 0);
         self.low.push_scope();
         self.advance_raw();
         Ok(())

@@ -5,7 +5,7 @@
 
 use std::rc::Rc;
 
-use super::stream::FrameKind;
+use super::stream::{FrameKind, Text};
 use super::Parser;
 use crate::pov::lexer::TokenKind;
 use crate::pov::source::{Diag, Expansion, PResult, Span};
@@ -50,16 +50,16 @@ impl Parser<'_, '_> {
             }
         }
         // The body starts at the token after `)`, in the frame the definition is written in.
-        let tokens = self.stream.tokens().unwrap_or_else(|| Rc::from(Vec::new()));
+        let source = self.stream.text().unwrap_or_else(|| Text { file: name_span.file, text: Rc::from("") });
         let body_start = self.stream.mark().pos;
         self.take_raw();
         self.skip_to(&["end"], "#macro", start)?;
-        let body_end = self.stream.mark().pos.saturating_sub(1);
+        let body_end = self.stream.cursor_mark().pos;
         self.take_raw();
         let m = Macro {
             name: name.clone(),
             params,
-            tokens,
+            source,
             body: body_start..body_end.max(body_start),
             defined: name_span,
         };
@@ -143,7 +143,7 @@ impl Parser<'_, '_> {
         let expansion = self.expansion(Expansion { name: m.name.to_string(), defined: m.defined, called });
         self.low.push_macro_scope(by_value, m.params.iter().map(|(p, _)| p.clone()).collect());
         self.calls.push(MacroCall { by_ref });
-        self.stream.push(m.tokens.clone(), m.body.clone(), FrameKind::Macro, expansion);
+        self.stream.push(m.source.clone(), m.body.clone(), FrameKind::Macro, expansion);
         // The `)` is dropped; the body's first token comes next.
         self.consumed += 1;
         self.advance_raw();

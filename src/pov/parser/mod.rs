@@ -37,10 +37,11 @@ use std::rc::Rc;
 use super::ast::Stmt;
 use super::lexer::{Token, TokenKind};
 use super::lower::Lowerer;
-use super::source::{Diag, Expansion, PResult, Span};
+use super::source::{Diag, Expansion, FileId, PResult, Span};
 use directives::Cond;
 pub(crate) use keywords::{is_pov_keyword, is_reserved, UNSUPPORTED_SHAPES};
 use macros::MacroCall;
+pub(crate) use stream::Text;
 use stream::{FrameKind, Next, Stream};
 
 /// Deepest nesting of blocks, parentheses and vectors; deeper input is rejected so that hostile
@@ -51,12 +52,12 @@ pub const MAX_DEPTH: usize = 128;
 pub(crate) const LAYERED: &str =
     "layered textures (a `texture` over another one) are not supported yet; use one `texture`";
 
-/// Runs a scene file's tokens (ending with the lexer's `Eof`), lowering each item into `low`.
+/// Runs a scene file's text, lowering each item into `low` as soon as it is read.
 /// Returns the macro expansions that spans refer to, for locating errors, also on failure.
-pub fn run(low: &mut Lowerer<'_>, tokens: Rc<[Token]>) -> (PResult<()>, Vec<Expansion>) {
+pub fn run(low: &mut Lowerer<'_>, file: FileId, text: Rc<str>) -> (PResult<()>, Vec<Expansion>) {
     let mut stream = Stream::default();
-    let end = tokens.len().saturating_sub(1);
-    stream.push(tokens, 0..end, FrameKind::Main, 0);
+    let end = text.len();
+    stream.push(Text { file, text }, 0..end, FrameKind::Main, 0);
     let mut p = Parser {
         stream,
         cur: Token { kind: TokenKind::Eof, span: Span::default() },
@@ -136,6 +137,7 @@ impl Parser<'_, '_> {
                 self.cur = Token { kind: TokenKind::Eof, span };
                 self.ready = true;
             }
+            Next::Error(e) => self.fail(e),
         }
     }
 

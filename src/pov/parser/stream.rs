@@ -1,12 +1,14 @@
-//! The token source the parser reads: a stack of frames, each a run of tokens with a cursor
-//! (the scene file, an included file, a macro body). Loops rewind a frame; a frame that runs out
-//! is popped and reported, so the interpreter can close the scope it opened.
+//! The token source the parser reads: a stack of frames, each a stretch of source text with a
+//! cursor (the scene file, an included file, a macro body). Tokens are lexed as the parser asks
+//! for them, never held for a whole file; loops rewind a frame to a remembered byte offset and
+//! read the text again, as POV-Ray does. A frame that runs out is popped and reported, so the
+//! interpreter can close the scope it opened.
 
 use std::ops::Range;
 use std::rc::Rc;
 
-use crate::pov::lexer::{Token, TokenKind};
-use crate::pov::source::Span;
+use crate::pov::lexer::{next_token, Token, TokenKind};
+use crate::pov::source::{Diag, FileId, Span};
 
 /// Why a frame is on the stack, and what must happen when it runs out.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -19,10 +21,34 @@ pub enum FrameKind {
     Macro,
 }
 
+/// One file's text, shared by the frames reading it and the macros written in it.
+#[derive(Clone)]
+pub struct Text {
+    pub file: FileId,
+    pub text: Rc<str>,
+}
+
+impl PartialEq for Text {
+    /// The same file: texts are shared, never copied.
+    fn eq(&self, other: &Text) -> bool {
+        self.file == other.file && Rc::ptr_eq(&self.text, &other.text)
+    }
+}
+
+impl std::fmt::Debug for Text {
+    /// The file and its length: a scene's text may be a hundred megabytes.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Text(file {}, {} bytes)", self.file, self.text.len())
+    }
+}
+
 #[derive(Debug)]
 struct Frame {
-    tokens: Rc<[Token]>,
+    source: Text,
+    /// Byte offset just past the token last returned.
     pos: usize,
+    /// Byte offset where the token last returned starts (`unread`, `cursor_mark`).
+    last: usize,
     end: usize,
     kind: FrameKind,
     /// Unique over the whole load: loops remember it to rewind only the frame they began in.
@@ -31,7 +57,7 @@ struct Frame {
     expansion: u32,
 }
 
-/// A place in the stream a loop can return to.
+/// A place in the stream a loop can return to: a byte offset in a frame's text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Mark {
     pub frame: u64,
@@ -45,6 +71,8 @@ pub enum Next {
     FrameEnd,
     /// Every frame has run out: `Eof` at this span.
     End(Span),
+    /// The text at the cursor is no token (an unclosed comment, a stray character).
+    Error(Diag),
 }
 
 #[derive(Debug, Default)]
@@ -56,15 +84,15 @@ pub struct Stream {
 }
 
 impl Stream {
-    /// Pushes `tokens[range]` (the lexer's final `Eof` excluded by the caller).
-    pub fn push(&mut self, tokens: Rc<[Token]>, range: Range<usize>, kind: FrameKind, expansion: u32) {
-        if let Some(last) = tokens.last() {
-            if self.frames.is_empty() {
-                self.eof = last.span;
-            }
+    /// Pushes the bytes `range` of `source` to be read next.
+    pub fn push(&mut self, source: Text, range: Range<usize>, kind: FrameKind, expansion: u32) {
+        if self.frames.is_empty() {
+            let len = source.text.len();
+            self.eof = Span::new(source.file, len, len);
         }
         self.next_id += 1;
-        self.frames.push(Frame { tokens, pos: range.start, end: range.end, kind, id: self.next_id, expansion });
+        let (pos, end) = (range.start, range.end);
+        self.frames.push(Frame { source, pos, last: pos, end, kind, id: self.next_id, expansion });
     }
 
     /// Number of frames of `kind` on the stack.
@@ -75,16 +103,24 @@ impl Stream {
     /// The next token of the top frame, or what ended.
     pub fn next(&mut self) -> Next {
         let Some(f) = self.frames.last_mut() else { return Next::End(self.eof) };
-        if f.pos < f.end {
-            let mut t = f.tokens[f.pos].clone();
-            f.pos += 1;
-            t.span.expansion = f.expansion;
-            return Next::Token(t);
+        match next_token(f.source.file, &f.source.text, f.pos, f.end) {
+            Ok(Some((mut t, after))) => {
+                f.last = t.span.start as usize;
+                f.pos = after;
+                t.span.expansion = f.expansion;
+                Next::Token(t)
+            }
+            Ok(None) if f.kind == FrameKind::Main => Next::End(Span::new(f.source.file, f.end, f.end)),
+            Ok(None) => {
+                f.last = f.end;
+                f.pos = f.end;
+                Next::FrameEnd
+            }
+            Err(mut e) => {
+                e.span.expansion = f.expansion;
+                Next::Error(e)
+            }
         }
-        if f.kind == FrameKind::Main {
-            return Next::End(f.tokens.get(f.end).map_or(self.eof, |t| t.span));
-        }
-        Next::FrameEnd
     }
 
     /// Removes the top frame, which ran out; returns its kind and id.
@@ -94,9 +130,9 @@ impl Stream {
 
     /// The kind of the token after the one last returned, without taking it (within the top
     /// frame; `None` at its end).
-    pub fn peek_kind(&self) -> Option<&TokenKind> {
+    pub fn peek_kind(&self) -> Option<TokenKind> {
         let f = self.frames.last()?;
-        (f.pos < f.end).then(|| &f.tokens[f.pos].kind)
+        next_token(f.source.file, &f.source.text, f.pos, f.end).ok().flatten().map(|(t, _)| t.kind)
     }
 
     /// The place just after the token last returned.
@@ -104,17 +140,22 @@ impl Stream {
         self.frames.last().map_or(Mark { frame: 0, pos: 0 }, |f| Mark { frame: f.id, pos: f.pos })
     }
 
+    /// The place where the token last returned starts (to read it again from there).
+    pub fn cursor_mark(&self) -> Mark {
+        self.frames.last().map_or(Mark { frame: 0, pos: 0 }, |f| Mark { frame: f.id, pos: f.last })
+    }
+
     /// Hands the token last read back to the top frame, to be read again (after the frames
     /// pushed above it are done).
     pub fn unread(&mut self) {
         if let Some(f) = self.frames.last_mut() {
-            f.pos = f.pos.saturating_sub(1);
+            f.pos = f.last;
         }
     }
 
-    /// The top frame's tokens (a macro body is a range of them).
-    pub fn tokens(&self) -> Option<Rc<[Token]>> {
-        self.frames.last().map(|f| f.tokens.clone())
+    /// The top frame's text (a macro body is a stretch of it).
+    pub fn text(&self) -> Option<Text> {
+        self.frames.last().map(|f| f.source.clone())
     }
 
     /// The id of the top frame.
@@ -127,6 +168,7 @@ impl Stream {
         match self.frames.last_mut() {
             Some(f) if f.id == mark.frame => {
                 f.pos = mark.pos;
+                f.last = mark.pos;
                 true
             }
             _ => false,

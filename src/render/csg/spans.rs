@@ -341,7 +341,7 @@ mod tests {
 
     use crate::accel::packet::Ray8;
     use crate::accel::AccelKind;
-    use crate::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, SourceRef, TextureDesc, Transform};
+    use crate::desc::{CsgOp, InteriorDesc, ObjectDesc, SceneDesc, ShapeDesc, SourceRef, Transform};
     use crate::lanes::{Lane, F8};
     use crate::ray::{Ray, MISS};
     use crate::scene::build::{Scene, ShapeKind};
@@ -368,8 +368,8 @@ mod tests {
     fn object(shape: ShapeDesc, m: DMat4) -> ObjectDesc {
         ObjectDesc {
             shape,
-            transform: Transform { matrix: m, inverse: m.inverse() },
-            texture: TextureDesc::default(),
+            transform: Transform { matrix: m, inverse: m.inverse() }.into(),
+            texture: Default::default(),
             interior_texture: None,
             interior: InteriorDesc::default(),
             no_shadow: false,

@@ -159,7 +159,7 @@ pub fn write_mesh2(
 fn write_object(o: &mut impl fmt::Write, obj: &ObjectDesc) -> Result<(), String> {
     // A torus may be turned by one of TORUS_TURNS and moved; nothing else is transformed.
     let placed = match obj.shape {
-        ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform),
+        ShapeDesc::Torus { .. } => torus_modifiers(&obj.transform.transform()),
         _ => obj.transform.is_identity().then(String::new),
     };
     let Some(placed) = placed.filter(|_| obj.texture.pigment.transform.is_identity()) else {

@@ -113,7 +113,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
             write!(
                 s,
                 "julia_fractal {{ {} {f} max_iteration {max_iteration} precision {} slice {}, {}",
-                v4(*param),
+                v4(**param),
                 num(*precision),
                 v4(slice.0),
                 num(slice.1)
@@ -182,14 +182,14 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
         }
         ShapeDesc::Text { font, string, thickness, offset, .. } => {
             let quote = |t: &str| t.replace('\\', "\\\\").replace('"', "\\\"");
-            write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(*offset))
+            write!(s, "text {{ ttf \"{}\" \"{}\" {}, {}", quote(font), quote(string), num(*thickness), vec(**offset))
         }
     };
     if let Some(src) = (!o.source.file.is_empty()).then_some(&o.source) {
         let _ = write!(s, " // {}:{}:{}", src.file.replace(['\n', '\r'], " "), src.line, src.col);
     }
     if let Some(d) = d {
-        texture_blocks(s, &o.texture, &o.transform.inverse, d);
+        texture_blocks(s, &o.texture, &o.transform.inverse(), d);
         let _ = write!(s, "\n  interior {{ ior {}", num(o.interior.ior));
         if let Some(f) = &o.interior.fade {
             let (distance, power, color) = (num(f.distance), num(f.power), vec(f.color));
@@ -198,7 +198,7 @@ fn write_object(s: &mut String, o: &ObjectDesc, mut d: Option<&mut Declarations>
         let _ = write!(s, " }}");
     }
     let _ = writeln!(s);
-    let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix).trim_start());
+    let _ = writeln!(s, "  {}\n{inverse}}}", modifiers(&o.transform.matrix()).trim_start());
 }
 
 /// A mesh as `mesh2` when its faces are all flat or all smooth (its indices as they are), else

@@ -30,8 +30,9 @@ pub fn transform_scene(desc: &SceneDesc, m: DMat4) -> SceneDesc {
     }
     for o in &mut out.objects {
         o.transform = o.transform.then(&t);
-        o.texture.pigment.transform = o.texture.pigment.transform.then(&t);
-        if let Some(n) = &mut o.texture.normal {
+        let texture = o.texture_mut();
+        texture.pigment.transform = texture.pigment.transform.then(&t);
+        if let Some(n) = &mut texture.normal {
             n.transform = n.transform.then(&t);
         }
     }

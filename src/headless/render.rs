@@ -94,9 +94,12 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
     let (desc, parse) =
         load_with_clock(&args.scene, &args.include, args.settings.width, args.settings.height, args.clock)?;
     let build_start = Instant::now();
-    let scene = Scene::build(&desc, desc.camera.location, args.accel);
-    let build = build_start.elapsed();
     let camera = Camera::from_desc(&desc.camera);
+    let (origin, included) = (desc.camera.location, included_files(&desc.included));
+    // The description is dropped while building (`Scene::build_owned`): a scene of millions of
+    // objects never holds both at once.
+    let scene = Scene::build_owned(desc, origin, args.accel);
+    let build = build_start.elapsed();
     let (mut low, mut image) = (Image::default(), Image::default());
     let trace_start = Instant::now();
     let (stats, trace) = match &rows {
@@ -136,7 +139,7 @@ pub fn run(args: &RenderArgs) -> Result<(), CliError> {
                 peak_memory_bytes()
             )
         );
-        print!("{}", included_files(&desc.included));
+        print!("{included}");
         match &rows {
             None => println!("wrote {} ({}x{})", args.output.display(), image.width, image.height),
             Some((f, rows, part)) => println!(

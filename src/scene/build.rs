@@ -161,6 +161,25 @@ pub struct Scene {
 impl Scene {
     /// Builds render data with render space centred on `origin` (world space).
     pub fn build(desc: &SceneDesc, origin: DVec3, accel: AccelKind) -> Scene {
+        let mut scene = Scene::lower(desc, origin);
+        scene.accel = Accel::build(accel, &scene.prim_bounds());
+        scene
+    }
+
+    /// `build` for a description the caller no longer needs: its objects are dropped once they
+    /// are lowered, before the accelerator is built, so the two are never held at once (at a
+    /// million spheres the descriptions are about 190 MB and the tree build about 120 MB). The
+    /// scene is the one `build` makes, bit for bit.
+    pub fn build_owned(mut desc: SceneDesc, origin: DVec3, accel: AccelKind) -> Scene {
+        let mut scene = Scene::lower(&desc, origin);
+        desc.objects = Vec::new();
+        drop(desc);
+        scene.accel = Accel::build(accel, &scene.prim_bounds());
+        scene
+    }
+
+    /// Everything of `build` but the accelerator (left `Accel::None`).
+    fn lower(desc: &SceneDesc, origin: DVec3) -> Scene {
         let frame = RenderFrame::for_scene(desc, origin);
         let mut scene = Scene {
             frame,
@@ -232,7 +251,6 @@ impl Scene {
         scene.mesh_cache.clear();
         scene.material_cache = Vec::new();
         scene.light_masks.clear();
-        scene.accel = Accel::build(accel, &scene.prim_bounds());
         scene
     }
 

@@ -456,14 +456,13 @@ fn lane_rays(gen: &RayGen, raster: &Raster, xs: F8, ys: F8, (sx, sy): (u32, u32)
 
 /// Traces one block's rays as packets and adds each valid lane's output sample to `acc`
 /// (non-finite samples are counted, not added), as `render_pixel` adds one ray's: eight lanes
-/// at a time, with the same clamp and power per lane. A non-finite lane adds +0, which leaves
-/// its sum's bits as skipping it would (every sum starts at +0 and gains no -0: `+0 + -0` is
-/// `+0`), so a clamp that keeps a -0 where glam's keeps +0 changes nothing either.
+/// at a time through the same `output_sample`. A non-finite lane adds +0, which leaves its
+/// sum's bits as skipping it would (every sum starts at +0, and `+0 + -0` is `+0`).
 #[inline(always)]
 fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [V3<F8>; 8]) {
     let colors = packet::trace_block(tracer, rays, b.h as usize, b.w as usize);
     let gamma = tracer.scene.gamma;
-    let (zero, one, inf) = (F8::splat(0.0), F8::splat(1.0), F8::splat(f32::INFINITY));
+    let inf = F8::splat(f32::INFINITY);
     let in_block = M8::from_fn(|i| i < b.w as usize);
     for r in 0..b.h as usize {
         let c = colors[r];
@@ -472,11 +471,7 @@ fn add_traced(tracer: &mut Tracer, rays: &[Ray8; 8], b: &Block, acc: &mut [V3<F8
         if bad.any() {
             tracer.stats.bad_samples += bad.count() as u64;
         }
-        let mut s = V3 { x: c.x.max(zero).min(one), y: c.y.max(zero).min(one), z: c.z.max(zero).min(one) };
-        if gamma != 1.0 {
-            s = V3 { x: s.x.map(|v| v.powf(gamma)), y: s.y.map(|v| v.powf(gamma)), z: s.z.map(|v| v.powf(gamma)) };
-        }
-        acc[r] = acc[r].add(V3::select(finite, s, V3::splat(Vec3::ZERO)));
+        acc[r] = acc[r].add(V3::select(finite, output_sample(c, gamma), V3::splat(Vec3::ZERO)));
     }
 }
 
@@ -547,13 +542,16 @@ fn render_block_lens(
 /// One sample as it enters the pixel average: clipped to [0, 1] as POV-Ray does before
 /// averaging, and raised to the scene's `assumed_gamma` (POV-Ray 3.7 encodes `v^gamma` as sRGB;
 /// measured: `assumed_gamma 2.2` turns a linear 13/255 into 5/255 where 1.0 gives 63/255).
-#[inline]
-fn output_sample(c: Vec3, gamma: f32) -> Vec3 {
-    let c = c.clamp(Vec3::ZERO, Vec3::ONE);
+/// Written once for one colour and for eight (`add_traced`), so packets and single rays clip
+/// and raise with the same operations.
+#[inline(always)]
+fn output_sample<L: Lane>(c: V3<L>, gamma: f32) -> V3<L> {
+    let (zero, one) = (L::splat(0.0), L::splat(1.0));
+    let c = V3 { x: c.x.max(zero).min(one), y: c.y.max(zero).min(one), z: c.z.max(zero).min(one) };
     if gamma == 1.0 {
         c
     } else {
-        Vec3::new(c.x.powf(gamma), c.y.powf(gamma), c.z.powf(gamma))
+        V3 { x: c.x.map(|v| v.powf(gamma)), y: c.y.map(|v| v.powf(gamma)), z: c.z.map(|v| v.powf(gamma)) }
     }
 }
 
@@ -575,7 +573,7 @@ fn render_pixel(tracer: &mut Tracer, gen: &RayGen, x: u32, y: u32, raster: Raste
         let v = (y as f32 + (sy as f32 + 0.5) / aa as f32) / h as f32;
         let c = tracer.trace(&gen.ray(u, v), 1, 1.0, RayKind::Primary);
         if c.is_finite() {
-            output_sample(c, gamma)
+            output_sample(V3::from_vec3(c), gamma).vec3()
         } else {
             tracer.stats.bad_samples += 1;
             Vec3::ZERO
@@ -631,7 +629,7 @@ fn lens_sample(tracer: &mut Tracer, gen: &RayGen, p: &PixelSample) -> Vec3 {
 #[inline]
 fn checked_sample(tracer: &mut Tracer, c: Vec3, gamma: f32) -> Vec3 {
     if c.is_finite() {
-        output_sample(c, gamma)
+        output_sample(V3::from_vec3(c), gamma).vec3()
     } else {
         tracer.stats.bad_samples += 1;
         Vec3::ZERO

@@ -372,24 +372,9 @@ impl Mesh {
     #[inline(always)]
     pub fn normal<L: Lane>(&self, face: u32, p: V3<L>) -> V3<L> {
         let tri = &self.data.triangles[face as usize];
-        let geometric = V3::splat(tri.normal);
         let n = match self.data.smooth_of[face as usize] {
-            FLAT => geometric,
-            k => {
-                let [n0, n1, n2] = self.data.smooth[k as usize];
-                let q = p.transform_point(&self.frame.object_from_render).sub(V3::splat(tri.v0));
-                let (e1, e2) = (V3::splat(tri.e1), V3::splat(tri.e2));
-                let (d00, d01, d11) = (tri.e1.dot(tri.e1), tri.e1.dot(tri.e2), tri.e2.dot(tri.e2));
-                let inv = 1.0 / (d00 * d11 - d01 * d01);
-                let (d20, d21) = (q.dot(e1), q.dot(e2));
-                let u = (L::splat(d11) * d20 - L::splat(d01) * d21) * L::splat(inv);
-                let v = (L::splat(d00) * d21 - L::splat(d01) * d20) * L::splat(inv);
-                let w = L::splat(1.0) - u - v;
-                let n = V3::splat(n0).scale(w).add(V3::splat(n1).scale(u)).add(V3::splat(n2).scale(v));
-                let n = V3::select(n.dot(geometric).lt(L::splat(0.0)), n.neg(), n);
-                // A zero interpolated normal (opposite vertex normals) falls back to the face's.
-                V3::select(L::lt(L::splat(0.0), n.dot(n)), n, geometric)
-            }
+            FLAT => V3::splat(tri.normal),
+            k => tri.interpolate(&self.data.smooth[k as usize], p.transform_point(&self.frame.object_from_render)),
         };
         n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }

@@ -50,14 +50,20 @@ impl RenderStats {
         self.hits[kind as usize] += hit as u64;
     }
 
-    /// Tests and hits for a kind as the user sees it (ellipsoids count as spheres).
+    /// Tests and hits for a kind as the user sees it (ellipsoids count as spheres, smooth
+    /// triangles as triangles).
     pub fn by_kind(&self, kind: ShapeKind) -> (u64, u64) {
         let i = kind as usize;
         let mut t = self.tests[i];
         let mut h = self.hits[i];
-        if kind == ShapeKind::Sphere {
-            t += self.tests[ShapeKind::Ellipsoid as usize];
-            h += self.hits[ShapeKind::Ellipsoid as usize];
+        let twin = match kind {
+            ShapeKind::Sphere => Some(ShapeKind::Ellipsoid),
+            ShapeKind::Triangle => Some(ShapeKind::SmoothTriangle),
+            _ => None,
+        };
+        if let Some(twin) = twin {
+            t += self.tests[twin as usize];
+            h += self.hits[twin as usize];
         }
         (t, h)
     }

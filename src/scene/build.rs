@@ -45,7 +45,7 @@ use crate::geometry::sor::Sor;
 use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
-use crate::geometry::triangle::Triangle;
+use crate::geometry::triangle::{SmoothTriangle, Triangle};
 use crate::scene::atmosphere::Atmosphere;
 use crate::scene::csg::{
     group_children, has_span, is_unbounded, ChildBounds, CsgChild, CsgGroup, CsgNode, CsgRule, CsgTarget, EVERYWHERE,
@@ -92,6 +92,7 @@ pub struct Scene {
     pub ellipsoids: Vec<Ellipsoid>,
     pub boxes: Vec<Cuboid>,
     pub triangles: Vec<Triangle>,
+    pub smooth_triangles: Vec<SmoothTriangle>,
     pub polygons: Vec<Polygon>,
     pub cones: Vec<Cone>,
     pub discs: Vec<Disc>,
@@ -187,6 +188,7 @@ impl Scene {
             ellipsoids: Vec::new(),
             boxes: Vec::new(),
             triangles: Vec::new(),
+            smooth_triangles: Vec::new(),
             polygons: Vec::new(),
             cones: Vec::new(),
             discs: Vec::new(),

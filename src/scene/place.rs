@@ -7,7 +7,7 @@ use std::sync::Arc;
 use glam::{DAffine3, DMat4, DVec3};
 
 use crate::camera::frame::RenderFrame;
-use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, Placement, ShapeDesc, TextGlyph};
+use crate::desc::{BlobComponent, BlobShape, HeightFieldDesc, MeshDesc, MeshFace, Placement, ShapeDesc, TextGlyph};
 use crate::geometry::blob;
 use crate::geometry::spline::{closed_pieces, open_pieces, Piece};
 
@@ -32,6 +32,12 @@ pub(crate) enum RenderShape {
         frame: Option<DAffine3>,
     },
     Triangle([DVec3; 3]),
+    /// A `smooth_triangle` outside a mesh: corners and vertex normals in render space (the
+    /// normals carried by the inverse transpose, not normalised again).
+    SmoothTriangle {
+        corners: [DVec3; 3],
+        normals: [DVec3; 3],
+    },
     Polygon(Vec<DVec3>),
     /// The canonical cone (axis z from 0 to 1, radii `r0` and `r1`) under `render_from_object`.
     Cone {
@@ -133,6 +139,17 @@ pub(crate) enum RenderShape {
         normal: DVec3,
         distance: f64,
     },
+}
+
+/// A mesh of one smooth face and nothing else (what `smooth_triangle` outside a mesh is
+/// parsed as): its corners and vertex normals in object space.
+fn lone_smooth_face(mesh: &MeshDesc) -> Option<([DVec3; 3], [DVec3; 3])> {
+    match mesh.faces[..] {
+        [MeshFace { vertices, normals: Some(normals) }] if mesh.uv_faces.is_empty() => {
+            Some((vertices.map(|i| mesh.vertices[i as usize]), normals.map(|i| mesh.normals[i as usize])))
+        }
+        _ => None,
+    }
 }
 
 /// Placing shapes: the frame of `camera::frame` carries a description's shape into render space.
@@ -264,6 +281,14 @@ impl RenderFrame {
                     render_from_object: render_from_object() * swap,
                     glyphs: glyphs.iter().map(pieces).collect(),
                     thickness: *thickness,
+                }
+            }
+            ShapeDesc::Mesh { mesh, inside_vector: None } if lone_smooth_face(mesh).is_some() => {
+                let (corners, normals) = lone_smooth_face(mesh).expect("checked by the guard");
+                let to_render = render_from_object().matrix3.inverse().transpose();
+                RenderShape::SmoothTriangle {
+                    corners: corners.map(point),
+                    normals: normals.map(|n| to_render * n.normalize_or_zero()),
                 }
             }
             ShapeDesc::Mesh { mesh, inside_vector } => RenderShape::Mesh {

@@ -32,6 +32,8 @@ pub enum ShapeKind {
     HeightField = 17,
     Isosurface = 18,
     Parametric = 19,
+    /// A `smooth_triangle` outside a mesh; reported as a triangle (as POV-Ray does).
+    SmoothTriangle = 21,
 }
 
 impl ShapeKind {
@@ -59,7 +61,7 @@ impl ShapeKind {
         ShapeKind::Triangle,
     ];
     /// Size of per-kind tables (`ShapeKind as usize` indexes them).
-    pub const COUNT: usize = 21;
+    pub const COUNT: usize = 22;
 
     /// Whether this kind works out each point's normal on its own (in f64, or by a search),
     /// whatever the width it is asked at: a packet then asks for its own lanes only, not all
@@ -84,7 +86,7 @@ impl ShapeKind {
         match self {
             ShapeKind::Sphere | ShapeKind::Ellipsoid => "Sphere",
             ShapeKind::Box => "Box",
-            ShapeKind::Triangle => "Triangle",
+            ShapeKind::Triangle | ShapeKind::SmoothTriangle => "Triangle",
             ShapeKind::Polygon => "Polygon",
             ShapeKind::Plane => "Plane",
             ShapeKind::Cone => "Cone/Cylinder",

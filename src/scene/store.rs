@@ -28,7 +28,7 @@ use crate::geometry::sphere::{Ellipsoid, Sphere};
 use crate::geometry::spline::Piece;
 use crate::geometry::superellipsoid::Superellipsoid;
 use crate::geometry::torus::Torus;
-use crate::geometry::triangle::Triangle;
+use crate::geometry::triangle::{SmoothTriangle, Triangle};
 use crate::scene::csg::EVERYWHERE;
 use crate::scene::place::RenderShape;
 
@@ -75,6 +75,11 @@ impl Scene {
             RenderShape::Triangle([a, b, c]) => {
                 self.triangles.push(Triangle::new(a.as_vec3(), b.as_vec3(), c.as_vec3()));
                 (ShapeKind::Triangle, at(self.triangles.len()))
+            }
+            RenderShape::SmoothTriangle { corners: [a, b, c], normals } => {
+                let tri = Triangle::new(a.as_vec3(), b.as_vec3(), c.as_vec3());
+                self.smooth_triangles.push(SmoothTriangle { tri, normals: normals.map(|n| n.as_vec3()) });
+                (ShapeKind::SmoothTriangle, at(self.smooth_triangles.len()))
             }
             RenderShape::Polygon(points) => {
                 self.polygons.push(Polygon::new(&points));
@@ -187,6 +192,7 @@ impl Scene {
             ShapeKind::Ellipsoid => (self.ellipsoids[i].min, self.ellipsoids[i].max),
             ShapeKind::Box => self.boxes[i].bounds(),
             ShapeKind::Triangle => self.triangles[i].bounds(),
+            ShapeKind::SmoothTriangle => self.smooth_triangles[i].tri.bounds(),
             ShapeKind::Polygon => (self.polygons[i].min, self.polygons[i].max),
             ShapeKind::Cone => self.cones[i].bounds(),
             ShapeKind::Disc => self.discs[i].bounds(),

@@ -24,7 +24,6 @@ use crate::render::shade::{self, LightSample, LocalHit};
 use crate::render::stats::RenderStats;
 use crate::render::trace::{Shadows, Surface, Tracer};
 use crate::scene::build::{Scene, ShapeKind};
-use crate::scene::material::Material;
 use crate::shading::normal::perturb_normal_lanes;
 use crate::shading::pattern::{Rgbft, RgbftLanes};
 use crate::shading::pigment::eval_surface_pigment_lanes;
@@ -233,12 +232,13 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // none, and a `Vec` costs nothing until pushed to (a 64-entry array was set to `None` per
     // block).
     let mut surfaces: Vec<(usize, usize, Surface)> = Vec::new();
+    let in_block = M8::from_fn(|i| i < lanes);
     for r in 0..rows {
         // Lanes whose material the local model below covers go eight wide, a group per material
         // (OSPRay's `foreach_unique`); the rest (reflection, transparency, uv mapping, layers,
         // interior textures) go through `Tracer::shade_surface` one by one. A material is looked
         // up once per object of the row, not per lane (a face does not change it).
-        let hit = M8::from_fn(|i| i < lanes && ids[r][i] != NO_HIT);
+        let hit = F8::and(in_block, F8::not(M8::equal(&ids[r], NO_HIT)));
         let mut row_materials = [NO_HIT; 8];
         for (id, group) in Groups::of(&ids[r], hit) {
             let Some(shape) = hit_shape(id, NO_HIT) else { continue };
@@ -249,11 +249,15 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         }
         let mut in_lanes = M8::default();
         for (m, group) in Groups::of(&row_materials, hit) {
-            if shades_in_lanes(&scene.materials[m as usize]) {
+            if scene.local[m as usize] {
                 in_lanes = F8::or(in_lanes, group);
             }
         }
-        materials[r] = std::array::from_fn(|i| if in_lanes.lane(i) { row_materials[i] } else { NO_HIT });
+        // Branch-free per lane, so it vectorises.
+        for i in 0..8 {
+            let keep = in_lanes.0[i] as u32;
+            materials[r][i] = (row_materials[i] & keep) | (NO_HIT & !keep);
+        }
         if in_lanes.any() {
             // `Tracer::surface`, eight lanes at a time; other lanes sit at the ray origin.
             let ray = &rays[r];
@@ -379,17 +383,6 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     }
     tracer.block = Some(block);
     colors
-}
-
-/// Whether the packet's local model shades this material eight lanes wide: no reflection or
-/// transparency (recursive rays), no uv mapping, layers or interior texture.
-#[inline(always)]
-fn shades_in_lanes(material: &Material) -> bool {
-    !material.finish.reflects()
-        && !material.may_be_transparent()
-        && material.uv.is_none()
-        && material.blend.is_none()
-        && material.inside.is_none()
 }
 
 /// The distinct values of `values` among the lanes of `mask`, each with the lanes that hold it,

@@ -141,6 +141,8 @@ pub struct Scene {
     /// Planes inside CSG nodes, as half-spaces (`ShapeKind::Plane` primitives index this).
     pub half_spaces: Vec<Plane>,
     pub materials: Vec<Material>,
+    /// Per material: `Material::is_local`, asked per row of every packet, so answered once.
+    pub local: Vec<bool>,
     pub lights: Vec<Light>,
     pub background: Rgbft,
     /// `sky_sphere`, `fog`, `rainbow` (empty in most scenes).
@@ -221,6 +223,7 @@ impl Scene {
             half_spaces: Vec::new(),
             unbounded: 0..0,
             materials: Vec::with_capacity(desc.objects.len()),
+            local: Vec::new(),
             lights: desc.lights.iter().map(|l| Light::from_desc(l, &frame)).collect(),
             background: Rgbft::from_desc(&desc.background),
             atmosphere: Atmosphere::build(desc, &frame),
@@ -280,6 +283,7 @@ impl Scene {
             let mut m = Material::from_desc(inner, &object.interior, &world_from_render);
             m.place(uv.clone(), lights.clone());
             self.note_material(&m);
+            self.local.push(m.is_local());
             self.materials.push(m);
             self.materials.len() as u32 - 1
         });
@@ -287,6 +291,7 @@ impl Scene {
         m.place(uv, lights);
         m.inside = inside;
         self.note_material(&m);
+        self.local.push(m.is_local());
         self.materials.push(m);
         let index = self.materials.len() as u32 - 1;
         // A bounded list: a scene of a million different looks compares each object with

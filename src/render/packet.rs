@@ -200,12 +200,13 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
 
     // Transparent blockers tint shadow rays, which only single rays model; so do lights other
     // than plain point lights (`shading::light`: spot, cylinder, parallel, fading, area), and
-    // the sky sphere, fog and rainbows (`scene::atmosphere`) are applied per ray too. Checked
-    // once per block, so the seed scene pays nothing per pixel for them.
+    // fog and rainbows (`scene::atmosphere`), which change every ray's colour, are applied per
+    // ray too. Checked once per block, so the seed scene pays nothing per pixel for them. A sky
+    // sphere colours only the rays that miss: those lanes ask it one by one, below.
     if scene.features.transparency
         || scene.lights.len() > MAX_PACKET_LIGHTS
         || scene.features.complex_lights
-        || !scene.atmosphere.is_empty()
+        || scene.atmosphere.along_rays()
     {
         let mut colors = [V3::splat(background); 8];
         for r in 0..rows {
@@ -367,6 +368,15 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 color = shade::add_light(finish, &hit, reflected, color, &sample);
             }
             colors[r] = V3::select(group, color, colors[r]);
+        }
+    }
+    if scene.atmosphere.sky.is_some() {
+        for r in 0..rows {
+            for i in 0..lanes {
+                if ids[r][i] == NO_HIT {
+                    colors[r].set_lane(i, tracer.shade_hit(&lane_ray(&rays[r], i), None, 1, 1.0));
+                }
+            }
         }
     }
     for (r, i, s) in &surfaces {

@@ -504,8 +504,18 @@ fn focal_blur_matches_povray() {
 fn packets_and_single_rays_give_identical_images() {
     // Rows whose lanes hit several materials and shapes (an object's edge against the floor, a
     // bump-mapped material beside a plain one) are shaded a material group at a time.
-    let mixed =
-        ["materials", "meshes", "csg", "bump_maps", "lathes", "noise_pigments", "normals_warped", "heightfields"];
+    // A sky sphere colours the lanes that miss, one by one, beside the lanes shaded together.
+    let mixed = [
+        "materials",
+        "meshes",
+        "csg",
+        "bump_maps",
+        "lathes",
+        "noise_pigments",
+        "normals_warped",
+        "heightfields",
+        "sky_sphere",
+    ];
     let mut scenes: Vec<PathBuf> = ["flat", "reflection", "refraction", "shadows", "legacy"]
         .iter()
         .chain(&mixed)

@@ -272,11 +272,17 @@ fn isolate_all(c: &[f64], mut b: [f64; MAX + 1], lo: f64, hi: f64, rel: f64, out
     if b[..=n].iter().any(|x| x.is_nan()) {
         return 0;
     }
+    let span = Span { c, n, lo, hi, w: hi - lo, rel };
+    // One sign change and nonzero ends (most rays that meet a piece): its one root, as
+    // `Span::isolate` finds it, without the recursion's setup.
+    if changes == 1 && f_lo != 0.0 && f_hi != 0.0 {
+        out[0] = span.single(0.0, 1.0, &b);
+        return 1;
+    }
     let mut found = Found { out, count: 0 };
     if f_lo == 0.0 {
         found.push(lo);
     }
-    let span = Span { c, n, lo, hi, w: hi - lo, rel };
     span.isolate(&mut found, 0.0, 1.0, 0, &b);
     found.count
 }
@@ -320,6 +326,20 @@ impl Span<'_> {
         }
     }
 
+    /// The one root in `[u0, u1]`, whose Bernstein coefficients `b` change sign once, between
+    /// nonzero ends: the control polygon crosses zero once, near the root, and Newton starts
+    /// there (`polish`).
+    #[inline]
+    fn single(&self, u0: f64, u1: f64, b: &[f64; MAX + 1]) -> f64 {
+        let n = self.n;
+        let i = (0..n).find(|&i| (b[i] < 0.0) != (b[i + 1] < 0.0) && b[i + 1] != 0.0).unwrap_or(0);
+        let k = (0..=i).rev().find(|&k| b[k] != 0.0).unwrap_or(0);
+        let (p, q) = (b[k], b[i + 1]);
+        let u = (k as f64 + (i + 1 - k) as f64 * p / (p - q)) / n as f64;
+        let guess = self.at(u0 + (u1 - u0) * u);
+        polish(self.c, self.at(u0), self.at(u1), b[0] < 0.0, guess, self.rel)
+    }
+
     /// The inner roots of the span `[u0, u1]` with Bernstein coefficients `b`, then its upper
     /// end if the polynomial is zero there.
     fn isolate(&self, found: &mut Found, u0: f64, u1: f64, depth: u32, b: &[f64; MAX + 1]) {
@@ -327,13 +347,7 @@ impl Span<'_> {
         let (b0, bn) = (b[0], b[n]);
         let changes = sign_changes(&b[..=n]);
         if changes == 1 && b0 != 0.0 && bn != 0.0 {
-            // The control polygon crosses zero once, near the root: Newton starts there.
-            let i = (0..n).find(|&i| (b[i] < 0.0) != (b[i + 1] < 0.0) && b[i + 1] != 0.0).unwrap_or(0);
-            let k = (0..=i).rev().find(|&k| b[k] != 0.0).unwrap_or(0);
-            let (p, q) = (b[k], b[i + 1]);
-            let u = (k as f64 + (i + 1 - k) as f64 * p / (p - q)) / n as f64;
-            let guess = self.at(u0 + (u1 - u0) * u);
-            found.push(polish(c, self.at(u0), self.at(u1), b0 < 0.0, guess, self.rel));
+            found.push(self.single(u0, u1, b));
         } else if changes >= 1 && depth < MAX_DEPTH {
             let (left, right) = halve(b, n);
             let m = 0.5 * (u0 + u1);

@@ -11,7 +11,7 @@ use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX 
 use super::cuboid::{frame_for, BoxFrame};
 use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
-use super::spline::{closest_t, even_odd, Piece};
+use super::spline::{along_monotone, closest_t, even_odd, Piece};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::RayLanes;
@@ -19,7 +19,12 @@ use crate::ray::RayLanes;
 #[derive(Clone, Debug)]
 pub struct Lathe {
     pub frame: BoxFrame,
-    /// (r, y) pieces, scaled to unit size.
+    /// The outline's (r, y) pieces, scaled to unit size: what `inside` tests (even-odd).
+    outline: Vec<Piece>,
+    /// The outline cut where `r` or `y` turns (`Piece::monotone_parts`): what rays are solved
+    /// on and normals found on. The box of a part's ends holds it, so its band (`revolved`) is
+    /// as tight as a box can be, and far fewer rays reach a part than reached its bulging
+    /// piece's control-point box (POV-Ray bounds each piece by its own cylinder).
     pieces: Vec<Piece>,
     /// Per piece, what every ray's polynomial is made of (`Squares`).
     squares: Vec<Squares>,
@@ -96,7 +101,8 @@ impl Lathe {
         let s = r.max(0.5 * (yhi - ylo));
         let s = if s > 0.0 && s.is_finite() { s } else { 1.0 };
         let local = DAffine3::from_translation(DVec3::new(0.0, cy, 0.0)) * DAffine3::from_scale(DVec3::splat(s));
-        let pieces: Vec<Piece> = pieces.iter().map(|p| p.map(|q| DVec2::new(q.x / s, (q.y - cy) / s))).collect();
+        let outline: Vec<Piece> = pieces.iter().map(|p| p.map(|q| DVec2::new(q.x / s, (q.y - cy) / s))).collect();
+        let pieces: Vec<Piece> = outline.iter().flat_map(Piece::monotone_parts).collect();
         let squares: Vec<Squares> = pieces.iter().map(Squares::of).collect();
         let bands: Vec<Band> =
             pieces.iter().zip(&squares).map(|(p, q)| Band::new(p.lo.y, p.hi.y, q.r2_min, q.r2_max)).collect();
@@ -107,6 +113,7 @@ impl Lathe {
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
         Lathe {
             frame: frame_for(xf),
+            outline,
             pieces,
             squares,
             whole: Band::around(&bands),
@@ -217,6 +224,28 @@ impl Lathe {
         // solved: a third of the lathe_quadratic kernel scene's frame was these solves).
         let gap = |p: &Piece| (p.lo.abs().min(p.lo) - w).max(w - p.hi.abs().max(p.hi)).max(DVec2::ZERO).length();
         let mut best: Option<(f64, usize, f64)> = None;
+        // First the parts whose (padded) box holds `w`, each by one monotone solve
+        // (`along_monotone`): a hit point lies on one of them to its rounding, far below
+        // `ON`. Where exactly one part passes that near, it is the nearest (every other lies
+        // farther than `ON`); a point near a joint, where two pass and the nearest decides
+        // which piece's normal it gets (a quadratic spline's tangent turns there), and a point
+        // no part passes near, are given the nearest-point solves below.
+        const ON: f64 = 1e-4;
+        let mut near = 0;
+        for (i, p) in self.pieces.iter().enumerate() {
+            if (p.lo - w).max(w - p.hi).max_element() > ON {
+                continue;
+            }
+            let (t, off) = along_monotone(p, w);
+            if off <= ON {
+                near += 1;
+                best = Some((off, i, t));
+            }
+        }
+        if near == 1 {
+            return self.oriented(q, w, best);
+        }
+        best = None;
         for holds in [true, false] {
             for (i, p) in self.pieces.iter().enumerate() {
                 let g = gap(p);
@@ -233,13 +262,18 @@ impl Lathe {
                 }
             }
         }
+        self.oriented(q, w, best)
+    }
+
+    /// The outward normal at `q` (profile point `w`) from the tangent of piece `i` at `t`.
+    fn oriented(&self, q: DVec3, w: DVec2, best: Option<(f64, usize, f64)>) -> DVec3 {
         let Some((_, i, t)) = best else { return DVec3::Y };
         let p = &self.pieces[i];
         let tan = p.tangent(t);
         let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
         let at = p.at(t);
         let eps = 1e-6 * (1.0 + at.abs().max_element());
-        if even_odd(&self.pieces, at + eps * n2) {
+        if even_odd(&self.outline, at + eps * n2) {
             n2 = -n2;
         }
         let (ux, uz) = if w.x > 0.0 { (q.x / w.x, q.z / w.x) } else { (1.0, 0.0) };
@@ -260,7 +294,7 @@ impl Shape for Lathe {
     }
 
     fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask {
-        super::inside_lanes_f64(&self.frame, p, |q| even_odd(&self.pieces, Lathe::profile(q)))
+        super::inside_lanes_f64(&self.frame, p, |q| even_odd(&self.outline, Lathe::profile(q)))
     }
 }
 

@@ -284,7 +284,9 @@ impl Sor {
 }
 
 impl Shape for Sor {
-    #[inline(never)]
+    // Inlined into the renderer's AVX2 loops, as the lathe's: out of line, the eight-lane cull
+    // (`revolved::candidates`) was compiled without AVX2.
+    #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
             self.solve(m, o, d, lo, hi)

@@ -14,7 +14,7 @@
 use glam::{DAffine3, DVec3, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::isosurface_search::Search;
+use super::isosurface_search::{Search, STACK};
 use super::{affine_f32, transformed_bounds, Shape};
 use crate::desc::{Container, IsoParams};
 use crate::function::Program;
@@ -130,9 +130,12 @@ impl Isosurface {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
         let v = |v: V3<L>, i: usize| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+        let mut stacks = [[(0.0, 0.0); STACK]; N];
+        let mut stack = stacks.iter_mut();
         let mut lanes: [Search; N] = std::array::from_fn(|i| {
             let (lo, hi) = if i < L::WIDTH { (t_min.get_f64(i), t_max.get_f64(i)) } else { (0.0, f64::NAN) };
-            Search::new(&self.container, &self.params, L::round_f64, v(o, i), v(d, i), lo, hi)
+            let stack = stack.next().expect("one stack per lane");
+            Search::new(&self.container, &self.params, L::round_f64, v(o, i), v(d, i), lo, hi, stack)
         });
         loop {
             let mut args = [[0.0; N]; 3];

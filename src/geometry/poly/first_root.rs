@@ -12,7 +12,7 @@
 //! stops at the first root. A span still undecided after `MAX_DEPTH` halvings (near a double
 //! root: a grazing ray) goes to the critical points, which do not lose double roots.
 
-use super::super::roots::{certainly_no_root, monotonic_root, on_unit, MAX_DEGREE};
+use super::super::roots::{certainly_no_root, monotonic_root, on_unit, root_bound, MAX_DEGREE};
 
 /// Halvings before a span goes to the critical points: 2⁻¹⁶ of the span.
 const MAX_DEPTH: u32 = 16;
@@ -22,7 +22,7 @@ const MAX_DEPTH: u32 = 16;
 /// sextic whose roots are of size 2, where the critical points found a spurious root at −1.3e9
 /// for a sextic with roots of size 5e3).
 pub(super) fn first_root_within_bound(c: &[f64], lo: f64, hi: f64) -> Option<f64> {
-    let bound = root_bound_by_constants(c);
+    let bound = root_bound(c);
     let (a, b) = (lo.max(-bound), hi.min(bound));
     if a.is_nan() || b.is_nan() || a >= b {
         return None;
@@ -48,47 +48,6 @@ fn search_from<const K: usize>(c: &[f64], n: usize, a: f64, b: f64, lo: f64, hi:
     };
     let search = Search { c, tol, lo, hi, a, w: b - a };
     search.first(&bern, n, 0.0, 1.0, 0)
-}
-
-/// `roots::root_bound(c)`, the same bits, with its divisions of the exponent bits by the
-/// term's degree written as divisions by constants (a multiply and shifts): the six 64-bit
-/// `idiv`s of a sextic's bound were 8 % of scenes/kernels/poly.pov's time.
-#[inline]
-fn root_bound_by_constants(c: &[f64]) -> f64 {
-    const ONE: i64 = 0x3ff0_0000_0000_0000;
-    let n = c.len() - 1;
-    let mut m = 0.0f64;
-    for (i, &k) in c.iter().enumerate().skip(1) {
-        let v = (k / c[0]).abs() * if i == n { 0.5 } else { 1.0 };
-        if v == 0.0 {
-            continue;
-        }
-        if !v.is_finite() {
-            return v;
-        }
-        let e = v.to_bits() as i64 - ONE;
-        let e = match i {
-            1 => e,
-            2 => e / 2,
-            3 => e / 3,
-            4 => e / 4,
-            5 => e / 5,
-            6 => e / 6,
-            7 => e / 7,
-            8 => e / 8,
-            9 => e / 9,
-            10 => e / 10,
-            11 => e / 11,
-            12 => e / 12,
-            13 => e / 13,
-            14 => e / 14,
-            15 => e / 15,
-            16 => e / 16,
-            _ => e / i as i64,
-        };
-        m = m.max(f64::from_bits((e + ONE) as u64));
-    }
-    2.2 * m
 }
 
 /// The Bernstein coefficients of `c` (highest degree first, degree at most `MAX_DEGREE`) on
@@ -313,9 +272,8 @@ fn roots_pruned(c: &[f64], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> usi
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::roots::root_bound;
 
-    /// The bound by constant divisors is `roots::root_bound` to the bit, on seeded random
+    /// `roots::root_bound`'s divisions by constants are the plain divisions to the bit, on seeded random
     /// polynomials of every degree with coefficients from 1e-30 to 1e30, some zero, some
     /// negative, some infinite.
     #[test]
@@ -330,8 +288,27 @@ mod tests {
                     _ => (2.0 * r() - 1.0) * 10f64.powf(r() * 60.0 - 30.0),
                 })
                 .collect();
-            let (a, b) = (root_bound_by_constants(&c), root_bound(&c));
+            let (a, b) = (root_bound(&c), bound_by_division(&c));
             assert!(a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()), "{c:?}: {a} vs {b}");
         }
+    }
+
+    /// `roots::root_bound` as first written: the exponent bits divided by the degree at run
+    /// time.
+    fn bound_by_division(c: &[f64]) -> f64 {
+        const ONE: i64 = 0x3ff0_0000_0000_0000;
+        let n = c.len() - 1;
+        let mut m = 0.0f64;
+        for (i, &k) in c.iter().enumerate().skip(1) {
+            let v = (k / c[0]).abs() * if i == n { 0.5 } else { 1.0 };
+            if v == 0.0 {
+                continue;
+            }
+            if !v.is_finite() {
+                return v;
+            }
+            m = m.max(f64::from_bits(((v.to_bits() as i64 - ONE) / i as i64 + ONE) as u64));
+        }
+        2.2 * m
     }
 }

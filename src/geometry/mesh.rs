@@ -29,6 +29,26 @@ use lanes::LaneNode;
 /// Meshes of fewer faces are walked row by row (`Mesh::walks_rows`).
 const ROWS_MIN_FACES: usize = 32;
 
+/// How far beyond the best distance so far (relative) the walks still enter boxes
+/// (`cull_limit`).
+const CULL_SLACK: f32 = 1.0 / 4096.0;
+
+/// The box-culling limit of a walk that accepts hits up to `bound`: a little beyond it. A face
+/// hit at exactly `bound` (coincident faces, a shared edge) lies in a box whose entry distance,
+/// rounded, may come out a few ulps beyond its `t`; culling at `bound` itself would test that
+/// face or not depending on whether the other was found first, and single rays and packets,
+/// walking in different orders, would name different faces (objects/chesmsh.pov's knight).
+#[inline(always)]
+fn cull_limit<L: Lane>(bound: L) -> L {
+    bound + bound.abs() * L::splat(CULL_SLACK)
+}
+
+/// The greatest float below `x` (lane by lane: `-next_up(-x)`).
+#[inline(always)]
+fn next_down(x: f32) -> f32 {
+    -next_up(-x)
+}
+
 /// `MeshData::smooth_of` for a flat face.
 const FLAT: u32 = u32::MAX;
 
@@ -143,18 +163,20 @@ impl MeshData {
             return cells.nearest(&self.triangles, ray, t_min, t_max);
         }
         let lanes = ray.lanes();
-        let mut best: Option<(f32, u32)> = None;
-        self.bvh.traverse(ray, t_max, |f, limit| {
-            // Up to the best distance itself, for a tie with a lower index.
-            let reach = if best.is_some() { limit.next_up() } else { limit };
-            let t = self.triangles[f as usize].hit(&lanes, t_min, reach);
-            let wins = t != MISS && best.is_none_or(|(b, g)| t < b || f < g);
+        // The greatest distance still accepted (the best so far, else just below `t_max`) and
+        // its face (`u32::MAX` before a hit): a face at exactly `bound` wins with a lower index.
+        let (mut bound, mut face) = (next_down(t_max), u32::MAX);
+        // Boxes are culled a little beyond `bound` (`cull_limit`), so that every face at the
+        // final distance is tested whatever order the walk meets them in.
+        self.bvh.traverse(ray, cull_limit(bound), |f, _| {
+            let t = self.triangles[f as usize].hit(&lanes, t_min, next_up(bound));
+            let wins = t != MISS && (t < bound || f < face);
             (wins && self.above_floor(ray, t)).then(|| {
-                best = Some((t, f));
-                t
+                (bound, face) = (t, f);
+                cull_limit(t)
             })
         });
-        best
+        (face != u32::MAX).then_some((bound, face))
     }
 
     /// A face hit by the object-space `ray` in `(t_min, t_max)`, the first found: `nearest`
@@ -551,6 +573,73 @@ mod tests {
             }
         }
         best
+    }
+
+    /// Coincident faces (each face twice, the copy wound the other way, as on
+    /// objects/chesmsh.pov's knight): every path names the same face, the lowest index at the
+    /// nearest distance, as brute force does: a packet's walk (`hit_faces` on eight lanes), rows
+    /// walked together (`rows`), the single-ray walk (`hit_face`) and `Scene::resolve`'s search
+    /// again around the hit. The faces lie in planes z = const, so their boxes are flat in z and
+    /// a box's entry distance, rounded, falls on either side of the face's `t` by an ulp: with
+    /// boxes culled at the best distance itself, whether the second copy was tested depended on
+    /// the order the walk met them (the packet and single-ray walks disagreed).
+    #[test]
+    fn coincident_faces_resolve_alike_on_every_path() {
+        let r = &mut Rng(0xC0FFEE);
+        let mut faces = Vec::new();
+        for _ in 0..40 {
+            let z = (r.f(-4.0, 4.0) * 8.0).round() / 8.0;
+            let c = Vec3::new(r.f(-1.0, 1.0), r.f(-1.0, 1.0), z);
+            let v = [
+                c,
+                c + Vec3::new(r.f(0.3, 1.0), r.f(-0.2, 0.2), 0.0),
+                c + Vec3::new(r.f(-0.2, 0.2), r.f(0.3, 1.0), 0.0),
+            ];
+            let n = r.f(0.0, 1.0) < 0.5;
+            let smooth = n.then_some([Vec3::Z, Vec3::X + Vec3::Z, Vec3::Y + Vec3::Z]);
+            faces.push((v, smooth));
+            faces.push(([v[0], v[2], v[1]], smooth.map(|n| [n[0], n[2], n[1]])));
+        }
+        let surface: Vec<[Vec3; 3]> = faces.iter().map(|f| f.0).collect();
+        let xf = Affine3A::from_rotation_x(0.2) * Affine3A::from_translation(Vec3::new(0.1, -0.2, 0.3));
+        let m = Mesh::new(Arc::new(MeshData::new(faces)), xf, None);
+        let (mut hits, mut lanes) = (0, 0);
+        for block in 0..400 {
+            let eye = Vec3::new(r.f(-3.0, 3.0), r.f(-3.0, 3.0), if block % 2 == 0 { -9.0 } else { 9.0 });
+            let mut rows = [RayLanes::<F8>::new(V3::splat(Vec3::ZERO), V3::splat(Vec3::X)); 8];
+            let mut dirs = [[Vec3::X; 8]; 8];
+            for k in 0..8 {
+                for i in 0..8 {
+                    let v = surface[(block * 64 + k * 8 + i) * 7 % surface.len()];
+                    let (a, b) = (r.f(0.0, 1.0), r.f(0.0, 1.0));
+                    let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+                    let target = xf.transform_point3(v[0] + a * (v[1] - v[0]) + b * (v[2] - v[0]));
+                    dirs[k][i] = target - eye;
+                }
+                rows[k] = RayLanes::new(V3::splat(eye), V3::from_lanes(|i| dirs[k][i]));
+            }
+            let t_max = [F8::splat(MISS); 8];
+            let together = m.rows::<false>(&rows, &t_max);
+            for k in 0..8 {
+                let (t8, faces8) = m.hit_faces(&rows[k], F8::splat(0.0), t_max[k]);
+                for i in 0..8 {
+                    let what = format!("block {block} row {k} lane {i}");
+                    let ray = RayLanes::<f32>::new(V3::from_vec3(eye), V3::from_vec3(dirs[k][i]));
+                    let single = m.hit_face(&ray, 0.0, MISS);
+                    let lane = (t8.0[i] != MISS).then_some((t8.0[i], faces8[i]));
+                    assert_eq!(lane, single, "{what}: packet, single ray");
+                    let rows_lane = (together[k].0 .0[i] != MISS).then_some((together[k].0 .0[i], together[k].1[i]));
+                    assert_eq!(rows_lane, single, "{what}: rows together, single ray");
+                    if let Some((t, _)) = single {
+                        assert_eq!(m.hit_face(&ray, t.next_down(), t.next_up()), single, "{what}: found again");
+                        assert_eq!(brute_force(&m, eye, dirs[k][i], MISS), single, "{what}: brute force");
+                        hits += 1;
+                    }
+                    lanes += 1;
+                }
+            }
+        }
+        assert!(hits > lanes / 2, "{hits} of {lanes}");
     }
 
     /// Rows walked together (`Mesh::rows`) answer what each row's own walk (`hit_faces`,

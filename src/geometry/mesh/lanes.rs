@@ -84,7 +84,7 @@ impl MeshData {
         test: &T,
         skip_root: bool,
     ) -> (L, [u32; 8]) {
-        let mut row = RowState::new(active, t_max);
+        let mut row = RowState::new::<FIRST>(active, t_max);
         let down = test.down();
         let mut stack = [0u32; 64];
         let mut sp = 0usize;
@@ -148,13 +148,11 @@ impl MeshData {
                 }
                 continue;
             }
-            // As `nearest`: up to a lane's best distance itself, where a face of lower index
-            // wins a tie.
-            let found = row.best.lt(L::splat(MISS));
-            let reach = L::select(found, row.limit.map(next_up), row.limit);
+            // As `nearest`: up to a lane's bound itself, where a face of lower index wins a tie.
+            let reach = row.bound.map(next_up);
             let t = self.triangles[f as usize].hit(ray, t_min, reach);
             let lower = L::mask_from_fn(|i| f < row.faces[i]);
-            let mut hit = L::and(t.lt(reach), L::or(t.lt(row.limit), lower));
+            let mut hit = L::and(t.lt(reach), L::or(t.lt(row.bound), lower));
             if self.floor != f32::NEG_INFINITY {
                 let y = ray.o.y + t * ray.d.y;
                 hit = L::and(hit, L::splat(self.floor).le(y));
@@ -164,7 +162,8 @@ impl MeshData {
             for (i, face) in row.faces.iter_mut().enumerate().take(L::WIDTH) {
                 *face = if L::mask_lane(hit, i) { f } else { *face };
             }
-            row.limit = L::select(hit, t, row.limit);
+            row.bound = L::select(hit, t, row.bound);
+            row.limit = L::select(hit, cull_limit(t), row.limit);
         }
         true
     }
@@ -229,12 +228,12 @@ impl MeshData {
         let down = [signs[0] < 0, signs[1] < 0, signs[2] < 0];
         // Loops, not `array::from_fn`: closures are compiled out of line, without AVX2.
         let mut tests = [SignedSlabs::new(&rays[0], active[0], down); 8];
-        let mut state = [RowState::new(active[0], t_max[0]); 8];
+        let mut state = [RowState::new::<FIRST>(active[0], t_max[0]); 8];
         // Rows with lanes still to find a hit (bit per row), for shadow rows' early end.
         let mut left = 0u32;
         for r in 1..rows {
             tests[r] = SignedSlabs::new(&rays[r], active[r], down);
-            state[r] = RowState::new(active[r], t_max[r]);
+            state[r] = RowState::new::<FIRST>(active[r], t_max[r]);
         }
         for r in 0..rows {
             if L::any(active[r]) {
@@ -319,23 +318,25 @@ fn axis_sign<L: Lane>(inv: L, active: L::Mask) -> i8 {
     }
 }
 
-/// One row's progress in a walk: each lane's limit (-inf for idle lanes and, in shadow walks,
-/// for lanes that have hit: no node or face accepts it), best distance and face.
+/// One row's progress in a walk: each lane's limit for boxes (-inf for idle lanes and, in
+/// shadow walks, for lanes that have hit: no node or face accepts it), best distance and face,
+/// and (nearest walks) the greatest distance still accepted, as in `nearest`: the best so far,
+/// else just below `t_max`; boxes are culled at `cull_limit` of it.
 #[derive(Clone, Copy)]
 struct RowState<L: Lane> {
     limit: L,
     best: L,
     faces: [u32; 8],
+    bound: L,
 }
 
 impl<L: Lane> RowState<L> {
     #[inline(always)]
-    fn new(active: L::Mask, t_max: L) -> RowState<L> {
-        RowState {
-            limit: L::select(active, t_max, L::splat(f32::NEG_INFINITY)),
-            best: L::splat(MISS),
-            faces: [u32::MAX; 8],
-        }
+    fn new<const FIRST: bool>(active: L::Mask, t_max: L) -> RowState<L> {
+        let idle = L::splat(f32::NEG_INFINITY);
+        let bound = L::select(active, t_max.map(|t| -next_up(-t)), idle);
+        let limit = if FIRST { t_max } else { cull_limit(bound) };
+        RowState { limit: L::select(active, limit, idle), best: L::splat(MISS), faces: [u32::MAX; 8], bound }
     }
 }
 

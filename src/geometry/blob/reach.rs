@@ -141,6 +141,8 @@ fn may_reach_in<L: Lane>(reach: &Reach, threshold: f32, o: V3<L>, d: V3<L>, t_mi
     // Lanes with an empty interval (a packet's idle lanes, `t_max` −inf) hold no root, nor does
     // a ray from a point at infinity or NaN: the f64 solve finds no piece of any component on
     // it. Each is a miss, not kept as unsure for its NaNs.
+    // x - x is zero exactly where x is finite (NaN for ±inf and NaN).
+    #[allow(clippy::eq_op)]
     let finite = ((o.x - o.x) + (o.y - o.y) + (o.z - o.z)).le(zero);
     L::and(L::and(t_min.lt(t_max), finite), reaches)
 }

@@ -219,6 +219,19 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
         return colors;
     }
 
+    // A block of sky (nothing hit): no surfaces, no shadow rays; each lane's miss colour.
+    if ids[..rows].iter().all(|row| row[..lanes].iter().all(|&id| id == NO_HIT)) {
+        let mut colors = [V3::splat(background); 8];
+        if scene.atmosphere.sky.is_some() {
+            for r in 0..rows {
+                for i in 0..lanes {
+                    colors[r].set_lane(i, tracer.shade_hit(&lane_ray(&rays[r], i), None, 1, 1.0));
+                }
+            }
+        }
+        return colors;
+    }
+
     // Surfaces first, so all shadow rays of the block can be traced together.
     let q = tracer.pattern_quality();
     // The block's rows, reused (`render::block_rows`): only `valid` starts afresh.
@@ -461,6 +474,13 @@ fn shadow_setup_generic(s: &SurfaceRows, rows: usize, light: Vec3, shadowless: b
     let light8 = V3::splat(light);
     let light_magnitude = F8::splat(V3::from_vec3(light).max_abs());
     for r in 0..rows {
+        // A row with no surface (all sky) has no shadow rays: its lanes are neither lit nor
+        // traced, as `lit` below would find.
+        if !s.valid[r].any() {
+            (out.active[r], out.lit[r]) = (M8::default(), M8::default());
+            out.t_max[r] = F8::splat(f32::NEG_INFINITY);
+            continue;
+        }
         let (p, facing, normal) = (s.p[r].v(), s.facing[r].v(), s.normal[r].v());
         // trace::light_direction
         let to_light = light8.sub(p);

@@ -222,13 +222,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     // A block of sky (nothing hit): no surfaces, no shadow rays; each lane's miss colour.
     if ids[..rows].iter().all(|row| row[..lanes].iter().all(|&id| id == NO_HIT)) {
         let mut colors = [V3::splat(background); 8];
-        if scene.atmosphere.sky.is_some() {
-            for r in 0..rows {
-                for i in 0..lanes {
-                    colors[r].set_lane(i, tracer.shade_hit(&lane_ray(&rays[r], i), None, 1, 1.0));
-                }
-            }
-        }
+        sky_lanes(tracer, rays, &ids, rows, lanes, &mut colors);
         return colors;
     }
 
@@ -383,15 +377,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             colors[r] = V3::select(group, color, colors[r]);
         }
     }
-    if scene.atmosphere.sky.is_some() {
-        for r in 0..rows {
-            for i in 0..lanes {
-                if ids[r][i] == NO_HIT {
-                    colors[r].set_lane(i, tracer.shade_hit(&lane_ray(&rays[r], i), None, 1, 1.0));
-                }
-            }
-        }
-    }
+    sky_lanes(tracer, rays, &ids, rows, lanes, &mut colors);
     for (r, i, s) in &surfaces {
         let (r, i) = (*r, *i);
         let lit: [Vec3; MAX_PACKET_LIGHTS] = std::array::from_fn(|l| {
@@ -406,6 +392,26 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
     }
     tracer.block = Some(block);
     colors
+}
+
+/// The lanes that hit nothing (`NO_HIT`) take the sky sphere's colour, one by one as the
+/// single-ray path gives it; without a sky sphere they keep the background.
+fn sky_lanes(
+    tracer: &mut Tracer,
+    rays: &[Ray8; 8],
+    ids: &[[u32; 8]; 8],
+    rows: usize,
+    lanes: usize,
+    colors: &mut [V3<F8>; 8],
+) {
+    if tracer.scene.atmosphere.sky.is_none() {
+        return;
+    }
+    for r in 0..rows {
+        for i in (0..lanes).filter(|&i| ids[r][i] == NO_HIT) {
+            colors[r].set_lane(i, tracer.shade_hit(&lane_ray(&rays[r], i), None, 1, 1.0));
+        }
+    }
 }
 
 /// The distinct values of `values` among the lanes of `mask`, each with the lanes that hold it,

@@ -59,16 +59,20 @@ impl Shape for Cone {
         let b = p.x * d.x + p.y * d.y - rp * kd;
         let c = p.x * p.x + p.y * p.y - rp * rp;
         let disc = b * b - a * c;
-        let q = -(b + b.sign_or_one() * disc.max(zero).sqrt());
         let solvable = L::and(L::le(zero, disc), L::not(L::and(L::le(a, zero), L::le(zero, a))));
-        let q_zero = L::and(L::le(q, zero), L::le(zero, q));
-        let s0 = q / L::select(solvable, a, one);
-        let s1 = L::select(q_zero, s0, c / L::select(q_zero, one, q));
         let mut best = L::splat(MISS);
-        for s in [s0, s1] {
-            let t = t_c + s;
-            let z = o.z + t * d.z;
-            take(&mut best, t, L::and(solvable, L::and(L::le(zero, z), L::le(z, one))), t_min, t_max);
+        // Where no lane meets the side, its roots would all be dropped: their square root and
+        // two divisions are skipped (the result is the same, lane by lane).
+        if L::any(solvable) {
+            let q = -(b + b.sign_or_one() * disc.max(zero).sqrt());
+            let q_zero = L::and(L::le(q, zero), L::le(zero, q));
+            let s0 = q / L::select(solvable, a, one);
+            let s1 = L::select(q_zero, s0, c / L::select(q_zero, one, q));
+            for s in [s0, s1] {
+                let t = t_c + s;
+                let z = o.z + t * d.z;
+                take(&mut best, t, L::and(solvable, L::and(L::le(zero, z), L::le(z, one))), t_min, t_max);
+            }
         }
         if !self.open {
             for (plane, r) in [(zero, r0), (one, r1)] {

@@ -112,12 +112,17 @@ impl QuadricForm {
         (v.dot(self.times(v)) + self.linear(v)).0[0] + self.k
     }
 
-    /// The polynomial's gradient at `q`: `2·A·q + g`.
+    /// The polynomial's gradient at `q`, lane by lane: `2·A·q + g`. The same operations on one
+    /// lane or eight, so a packet's normals are a single ray's bit for bit.
     #[inline(always)]
-    pub(super) fn gradient(&self, q: [f64; 3]) -> [f64; 3] {
-        let v = WV { x: W([q[0]]), y: W([q[1]]), z: W([q[2]]) };
-        let a = self.times(v);
-        [2.0 * a.x.0[0] + self.g[0], 2.0 * a.y.0[0] + self.g[1], 2.0 * a.z.0[0] + self.g[2]]
+    pub(super) fn gradient<const N: usize>(&self, q: WV<N>) -> WV<N> {
+        let a = self.times(q);
+        let two = W::splat(2.0);
+        WV {
+            x: two * a.x + W::splat(self.g[0]),
+            y: two * a.y + W::splat(self.g[1]),
+            z: two * a.z + W::splat(self.g[2]),
+        }
     }
 }
 
@@ -233,7 +238,8 @@ mod tests {
                     // A graze: the hit (whichever found it) is where the ray is nearly tangent.
                     let t = if new.is_finite() { new } else { old };
                     let x = [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]];
-                    let g = form.gradient(x);
+                    let g = form.gradient(wv(x));
+                    let g = [g.x.0[0], g.y.0[0], g.z.0[0]];
                     let dl = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
                     let gl = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();
                     let cos = (g[0] * d[0] + g[1] * d[1] + g[2] * d[2]).abs() / (gl * dl);

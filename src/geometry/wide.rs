@@ -177,6 +177,12 @@ pub fn lane_f64<L: Lane, const N: usize>(v: L) -> W<N> {
     W(std::array::from_fn(|i| v.get_f64(i)))
 }
 
+/// `v` as lanes of `L` (`N == L::WIDTH`), each lane rounded as `L` holds it.
+#[inline(always)]
+pub fn to_lanes<L: Lane, const N: usize>(v: WV<N>) -> V3<L> {
+    V3 { x: to_lane(v.x), y: to_lane(v.y), z: to_lane(v.z) }
+}
+
 /// `w` as the lane type `L` (`N == L::WIDTH`), each lane rounded as `L` holds it.
 #[inline(always)]
 pub fn to_lane<L: Lane, const N: usize>(w: W<N>) -> L {

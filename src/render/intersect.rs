@@ -308,7 +308,11 @@ impl Scene {
     #[inline]
     pub fn normal_per_lane(&self, shape: HitShape) -> bool {
         match shape {
-            HitShape::Prim(i) => self.prims[i as usize].kind.normal_per_lane(),
+            HitShape::Prim(i) => {
+                let p = &self.prims[i as usize];
+                p.kind.normal_per_lane()
+                    && (p.kind != ShapeKind::Poly || self.polys[p.index as usize].normal_per_lane())
+            }
             HitShape::Face { .. } | HitShape::Plane(_) => false,
         }
     }

@@ -25,7 +25,7 @@ use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
 use super::quartic::{first_root, Ill};
 use super::roots::{root_bound, smallest_root_by, Solver, MAX_DEGREE};
-use super::wide::{hit_wide, lanes_f64};
+use super::wide::{hit_wide, lanes_f64, to_lanes};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
@@ -130,6 +130,12 @@ impl Poly {
         };
         let quadric = (order == 2).then(|| QuadricForm::of(&terms));
         Poly { frame: frame_for(render_from_object), order, solver, terms, min, max, quadric }
+    }
+
+    /// Whether the packet path must ask for normals one lane at a time (`Shape::normal` works
+    /// them out point by point): all but a quadric, whose gradient is computed eight lanes wide.
+    pub fn normal_per_lane(&self) -> bool {
+        self.quadric.is_none()
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -334,15 +340,20 @@ impl Shape for Poly {
     #[inline(always)]
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
         let q = p.transform_point(&self.frame.object_from_render);
-        let mut g = [[0.0; 3]; 8];
-        for (i, slot) in g.iter_mut().enumerate().take(L::WIDTH) {
-            let at = [q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)];
-            *slot = match &self.quadric {
-                Some(f) => f.gradient(at),
-                None => self.gradient(at),
-            };
-        }
-        let n = V3 { x: L::from_fn_f64(|i| g[i][0]), y: L::from_fn_f64(|i| g[i][1]), z: L::from_fn_f64(|i| g[i][2]) };
+        let n = if let Some(f) = &self.quadric {
+            // All lanes at once (`Poly::normal_per_lane` is false for a quadric).
+            if L::WIDTH == 8 {
+                to_lanes(f.gradient::<8>(lanes_f64(q)))
+            } else {
+                to_lanes(f.gradient::<1>(lanes_f64(q)))
+            }
+        } else {
+            let mut g = [[0.0; 3]; 8];
+            for (i, slot) in g.iter_mut().enumerate().take(L::WIDTH) {
+                *slot = self.gradient([q.x.get_f64(i), q.y.get_f64(i), q.z.get_f64(i)]);
+            }
+            V3 { x: L::from_fn_f64(|i| g[i][0]), y: L::from_fn_f64(|i| g[i][1]), z: L::from_fn_f64(|i| g[i][2]) }
+        };
         n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
 

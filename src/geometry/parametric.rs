@@ -7,9 +7,13 @@
 //! half the cell's (u, v) size, as POV-Ray's documentation defines the gradient), and the
 //! cells are grouped four by four into a quadtree of boxes. A ray walks the tree to the cells
 //! it meets, nearest first, and solves `P(u, v) = o + t·d` there by Newton's method in f64,
-//! derivatives by central differences; a solution must stay inside the (u, v) rectangle, the
+//! derivatives by forward differences, its first step taken on the cell's tangent plane kept
+//! from the build: a cell whose plane puts the crossing outside it (by more than `OWN`) is
+//! passed over, as its neighbour holding the root is a candidate too; a solution must stay inside the (u, v) rectangle, the
 //! container and within `accuracy`. The normal at a point finds its (u, v) again the same
 //! way (by least squares from the cells whose boxes hold the point).
+
+use std::sync::{Arc, Mutex};
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
@@ -28,6 +32,13 @@ const NEWTON_STEPS: usize = 8;
 /// solution belongs to another candidate.
 const WANDER: f64 = 2.0;
 
+/// How far (in cells) past its own cell the ray's crossing of a cell's tangent plane may lie
+/// for Newton's method to be started there. A root lies in some cell, whose box the ray meets
+/// before it (the boxes bound the surface), and that cell's tangent plane puts the crossing
+/// within it up to the plane's error; the neighbours, which would converge to the same root,
+/// are passed over.
+const OWN: f64 = 0.5;
+
 #[derive(Clone, Copy, Debug)]
 struct Node {
     min: DVec3,
@@ -40,10 +51,41 @@ pub struct Parametric {
     functions: [Program; 3],
     container: Container,
     uv: ParametricParams,
-    /// Quadtree levels, coarsest first: level `k` has `2^k × 2^k` boxes, row-major in v.
-    levels: Vec<Vec<Node>>,
+    tree: Arc<Tree>,
     pub min: Vec3,
     pub max: Vec3,
+}
+
+/// What a parametric builds once from its functions and (u, v) rectangle: shared by every
+/// copy of it (`shared_tree`; scenes/kernels/parametric.pov places 64).
+#[derive(Debug)]
+struct Tree {
+    /// Quadtree levels, coarsest first: level `k` has `2^k × 2^k` boxes, row-major in v.
+    levels: Vec<Vec<Node>>,
+    /// Each leaf cell's point at its centre and the tangents there (`point_and_tangents`): its
+    /// tangent plane, the first step of Newton's method from the centre.
+    planes: Vec<[DVec3; 3]>,
+}
+
+/// The tree of `functions` over `uv`, built by `build` unless a parametric with the same ones
+/// built it before. Built under the lock: a copy waits for the first rather than build it again
+/// (`build` runs no parallel work that could need the waiting thread).
+fn shared_tree(functions: &[Program; 3], uv: ParametricParams, build: impl FnOnce() -> Tree) -> Arc<Tree> {
+    type Entry = ([Program; 3], ParametricParams, Arc<Tree>);
+    /// Distinct trees kept; the oldest goes first.
+    const KEPT: usize = 16;
+    static CACHE: Mutex<Vec<Entry>> = Mutex::new(Vec::new());
+    // A poisoned lock only means another build panicked: the entries are whole.
+    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, _, tree)) = cache.iter().find(|(f, p, _)| f == functions && *p == uv) {
+        return tree.clone();
+    }
+    let tree = Arc::new(build());
+    if cache.len() >= KEPT {
+        cache.remove(0);
+    }
+    cache.push((functions.clone(), uv, tree.clone()));
+    tree
 }
 
 impl Parametric {
@@ -58,18 +100,37 @@ impl Parametric {
             functions,
             container,
             uv,
-            levels: Vec::new(),
+            tree: Arc::new(Tree { levels: Vec::new(), planes: Vec::new() }),
             min: Vec3::ZERO,
             max: Vec3::ZERO,
         };
+        p.tree = shared_tree(&p.functions, uv, || p.build_tree());
+        // The surface's box, cut to the container's.
+        let (clo, chi) = container.bounds();
+        let root = p.tree.levels[0][0];
+        let (lo, hi) = (root.min.max(clo), root.max.min(chi));
+        let (lo, hi) = if lo.cmple(hi).all() { (lo, hi) } else { (DVec3::ZERO, DVec3::ZERO) };
+        let xf = affine_f32(&render_from_object);
+        let (min, max) = transformed_bounds(&xf, lo.as_vec3(), hi.as_vec3());
+        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
+        p.min = min - pad;
+        p.max = max + pad;
+        p
+    }
+
+    /// The cells' boxes and tangent planes, from the functions and the (u, v) rectangle alone.
+    fn build_tree(&self) -> Tree {
+        let uv = self.uv;
         let cell = (uv.hi - uv.lo) / GRID as f64;
         let mut leaves = Vec::with_capacity(GRID * GRID);
+        let planes =
+            (0..GRID * GRID).map(|k| <[DVec3; 3]>::from(self.point_and_tangents(self.cell_centre(k)))).collect();
         for j in 0..GRID {
             for i in 0..GRID {
                 let base = uv.lo + cell * DVec2::new(i as f64, j as f64);
                 let (mut min, mut max) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
                 for (a, b) in (0..9).map(|k| (k % 3, k / 3)) {
-                    let q = p.point(base + cell * DVec2::new(a as f64, b as f64) * 0.5);
+                    let q = self.point(base + cell * DVec2::new(a as f64, b as f64) * 0.5);
                     min = min.min(q);
                     max = max.max(q);
                 }
@@ -101,18 +162,7 @@ impl Parametric {
             n = half;
         }
         levels.reverse();
-        // The surface's box, cut to the container's.
-        let (clo, chi) = container.bounds();
-        let root = levels[0][0];
-        let (lo, hi) = (root.min.max(clo), root.max.min(chi));
-        let (lo, hi) = if lo.cmple(hi).all() { (lo, hi) } else { (DVec3::ZERO, DVec3::ZERO) };
-        let xf = affine_f32(&render_from_object);
-        let (min, max) = transformed_bounds(&xf, lo.as_vec3(), hi.as_vec3());
-        let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
-        p.levels = levels;
-        p.min = min - pad;
-        p.max = max + pad;
-        p
+        Tree { levels, planes }
     }
 
     pub fn bounds(&self) -> (Vec3, Vec3) {
@@ -167,9 +217,9 @@ impl Parametric {
         };
         let mut out = Vec::new();
         let mut stack = vec![(0usize, 0usize)];
-        let last = self.levels.len() - 1;
+        let last = self.tree.levels.len() - 1;
         while let Some((level, k)) = stack.pop() {
-            let Some(t) = slab(&self.levels[level][k]) else { continue };
+            let Some(t) = slab(&self.tree.levels[level][k]) else { continue };
             if level == last {
                 out.push((t, k));
                 continue;
@@ -193,11 +243,29 @@ impl Parametric {
         let len = d.length();
         let mut best = t_hi;
         let mut found = false;
+        let cell = ((self.uv.hi - self.uv.lo) / GRID as f64).abs();
         for (t_enter, k) in self.candidates(o, d, t_lo, t_hi) {
             if t_enter >= best {
                 break;
             }
-            let Some((t, _)) = self.newton(o, d, self.cell_centre(k), t_enter, WANDER) else { continue };
+            let centre = self.cell_centre(k);
+            // Newton's first step from the centre: where the ray crosses the tangent plane.
+            let [p, du, dv] = self.tree.planes[k];
+            let m = glam::DMat3::from_cols(du, dv, -d);
+            let det = m.determinant();
+            let first = if det.abs() < 1e-300 || !det.is_finite() {
+                None
+            } else {
+                let s = m.inverse() * (o - p);
+                let uv = centre + DVec2::new(s.x, s.y);
+                // Past its own cell (and the plane's error): another candidate's root.
+                if !uv.is_finite() || !s.z.is_finite() || (uv - centre).abs().cmpgt(cell * (0.5 + OWN)).any() {
+                    continue;
+                }
+                Some((uv, s.z))
+            };
+            let (uv, t) = first.unwrap_or((centre, t_enter));
+            let Some((t, _)) = self.newton(o, d, centre, uv, t, WANDER) else { continue };
             // Past the ray's own start by more than the accuracy: not the surface it left.
             if t > t_lo && t < best && (t - t_min) * len > self.uv.accuracy * 0.5 {
                 best = t;
@@ -225,8 +293,8 @@ impl Parametric {
     }
 
     /// Newton's method on `P(u, v) − (o + t·d) = 0` from `(uv, t)`.
-    fn newton(&self, o: DVec3, d: DVec3, mut uv: DVec2, mut t: f64, wander: f64) -> Option<(f64, DVec2)> {
-        let start = uv;
+    /// `start` is the centre of the cell it began in, the one it may not wander far from.
+    fn newton(&self, o: DVec3, d: DVec3, start: DVec2, mut uv: DVec2, mut t: f64, wander: f64) -> Option<(f64, DVec2)> {
         let reach = ((self.uv.hi - self.uv.lo) / GRID as f64).abs() * (0.5 + wander);
         for _ in 0..NEWTON_STEPS {
             let (p, du, dv) = self.point_and_tangents(uv);
@@ -257,10 +325,10 @@ impl Parametric {
     fn uv_at(&self, q: DVec3) -> DVec2 {
         let holds = |n: &Node| q.cmpge(n.min).all() && q.cmple(n.max).all();
         let mut best = (f64::INFINITY, self.cell_centre(0));
-        let last = self.levels.len() - 1;
+        let last = self.tree.levels.len() - 1;
         let mut stack = vec![(0usize, 0usize)];
         while let Some((level, k)) = stack.pop() {
-            if !holds(&self.levels[level][k]) {
+            if !holds(&self.tree.levels[level][k]) {
                 continue;
             }
             if level < last {
@@ -357,5 +425,39 @@ mod tests {
         let t = s.intersect(&Ray::new(Vec3::new(0.0, 0.0, -5.0), Vec3::Z), 4.01, f32::INFINITY);
         assert!((t.expect("far side") - 6.0).abs() < 1e-4);
         assert_eq!(s.intersect(&Ray::new(Vec3::new(0.0, 1.2, -5.0), Vec3::Z), 0.0, f32::INFINITY), None);
+    }
+
+    /// Seeded random rays, many of them grazing: the cells passed over for their tangent
+    /// planes lose no hit. Each ray meets the parametric sphere where the analytic one does,
+    /// but within the accuracy of its silhouette; and two copies share one tree.
+    #[test]
+    fn random_rays_hit_where_the_sphere_is() {
+        let s = sphere();
+        assert!(Arc::ptr_eq(&s.tree, &sphere().tree), "copies share the tree");
+        let mut seed = 7u64;
+        let mut rnd = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let mut hits = 0;
+        for _ in 0..3000 {
+            let o = DVec3::new(rnd(), rnd(), rnd()).normalize() * 4.0;
+            // Aimed within a radius of 1.05 of the centre: a fifth of the rays pass near the rim.
+            let aim = DVec3::new(rnd(), rnd(), rnd()).normalize() * (rnd().abs().sqrt() * 1.05);
+            let d = (aim - o).normalize();
+            let (b, c) = (o.dot(d), o.dot(o) - 1.0);
+            let disc = b * b - c;
+            let want = (disc >= 0.0).then(|| -b - disc.sqrt());
+            let got = s.solve(o, d, 0.0, 100.0);
+            // How far the ray passes from the sphere: near the rim either answer is right.
+            let miss = (o - o.dot(d) * d).length() - 1.0;
+            match (got, want) {
+                (Some(g), Some(w)) => assert!((g - w).abs() < 2e-3 || miss.abs() < 2e-3, "{o} {d}: {g} vs {w}"),
+                (None, None) => {}
+                _ => assert!(miss.abs() < 2e-3, "{o} {d}: {got:?} vs {want:?}, {miss} from the rim"),
+            }
+            hits += got.is_some() as usize;
+        }
+        assert!(hits > 2000, "{hits}");
     }
 }

@@ -52,6 +52,11 @@ pub(super) fn first_root<T>(
             // Far past the span (a polish moves a root by much less): so is every later one.
             return Ok(None);
         }
+        if x < lo - 1e-6 * (lo.abs() + 1.0) {
+            // Far before the span: no polish brings it in. A shadow ray leaving the torus has
+            // up to three roots behind it, each polished for nothing before.
+            continue;
+        }
         let s = polish(c, x, tol).ok_or(Ill)?;
         if s >= lo && s <= hi {
             if let Some(found) = accept(s) {

@@ -8,12 +8,13 @@
 //!   most one root, found where the sign changes by Newton steps kept inside a shrinking
 //!   bracket. It does not lose double roots (grazing rays) or small roots to cancellation.
 //! - **Closed form** (`Solver::Fast` for degrees 2 to 4: quadric, cubic and quartic without
-//!   `sturm`, as POV-Ray solves them): the stable quadratic, Cardano/Viète for cubics and
-//!   Ferrari's resolvent for quartics, each root polished by two Newton steps. Fast, but a
-//!   double root (a ray grazing the surface) may come out as a pair of complex roots and be
-//!   lost, and a quartic whose coefficients span many orders of magnitude loses its small roots
-//!   to cancellation in the resolvent: specks along silhouettes, exactly POV-Ray's failure mode
-//!   that its `sturm` keyword exists for.
+//!   `sturm`, as POV-Ray solves them): the stable quadratic, Cardano/Viète for cubics, and
+//!   Ferrari's resolvent for quartics (`quartic::ferrari`, the torus's), each root polished by
+//!   two Newton steps. Fast, but a cubic's double root (a ray grazing the surface) may come
+//!   out as a pair of complex roots and be lost, and a quartic whose coefficients span many
+//!   orders of magnitude loses its small roots to cancellation in the resolvent: specks along
+//!   silhouettes, POV-Ray's failure mode that its `sturm` keyword exists for. A quartic near a
+//!   double root, which Ferrari's form declines, goes to the critical points.
 //! - **Sturm sequences** (`Solver::Sturm`, POV-Ray's `sturm`; in `sturm`): bisection by counts
 //!   of roots until each piece holds one. It counts double roots too, so grazing hits are kept;
 //!   it costs a chain of `degree` polynomials per ray and a few dozen chain evaluations per root.
@@ -21,6 +22,7 @@
 //! The tests at the bottom pit the three against each other at the extremes (double roots,
 //! roots 1e-6 apart, coefficient ratios of 1e12).
 
+use super::quartic::ferrari;
 use super::sturm::sturm_roots;
 
 /// Highest degree handled (POV-Ray's `poly` takes orders 2 to 15 here).
@@ -53,7 +55,12 @@ pub fn smallest_root_by(solver: Solver, c: &[f64], lo: f64, hi: f64) -> Option<f
     let mut roots = [0.0; MAX_DEGREE];
     let n = match (solver, degree) {
         (_, 0) => 0,
-        (Solver::Fast, 1..=4) => closed_form(c, &mut roots),
+        (Solver::Fast, 1..=4) => match closed_form(c, &mut roots) {
+            Some(n) => n,
+            // A quartic near a double root, where Ferrari's form declines: the critical points
+            // do not lose it.
+            None => return smallest_root(c, lo, hi),
+        },
         (Solver::Fast, _) => return smallest_root(c, lo, hi),
         (Solver::Sturm, _) => sturm_roots(c, lo, hi, &mut roots),
     };
@@ -291,8 +298,9 @@ pub(super) fn monotonic_root(c: &[f64], a: f64, b: f64) -> Option<f64> {
 }
 
 /// Real roots of `c` (degree 1 to 4, leading coefficient non-zero) by closed formulas, each
-/// polished by Newton steps; returns how many, in no particular order.
-fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> usize {
+/// polished by Newton steps; returns how many, in no particular order, or `None` for a quartic
+/// that Ferrari's form (`quartic::ferrari`, the torus's) declines as ill-conditioned.
+fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> Option<usize> {
     let degree = c.len() - 1;
     let a = c[0];
     let n = match degree {
@@ -302,7 +310,12 @@ fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> usize {
         }
         2 => quadratic(c[1] / a, c[2] / a, out),
         3 => cubic(c[1] / a, c[2] / a, c[3] / a, out),
-        _ => quartic(c[1] / a, c[2] / a, c[3] / a, c[4] / a, out),
+        _ => {
+            let (mut four, mut tol) = ([0.0; 4], 0.0);
+            let n = ferrari(&[1.0, c[1] / a, c[2] / a, c[3] / a, c[4] / a], &mut four, &mut tol)?;
+            out[..n].copy_from_slice(&four[..n]);
+            n
+        }
     };
     for r in &mut out[..n] {
         for _ in 0..2 {
@@ -312,7 +325,7 @@ fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> usize {
             }
         }
     }
-    n
+    Some(n)
 }
 
 /// `p(x)` and `p'(x)` together (Horner).
@@ -366,50 +379,6 @@ fn cubic(a: f64, b: f64, c: f64, out: &mut [f64]) -> usize {
         out[0] = y - shift;
         1
     }
-}
-
-/// x⁴ + a·x³ + b·x² + c·x + d = 0 by Ferrari: the depressed quartic as a difference of squares,
-/// with the square's parameter from the resolvent cubic.
-fn quartic(a: f64, b: f64, c: f64, d: f64, out: &mut [f64]) -> usize {
-    // x = y − a/4: y⁴ + p·y² + q·y + r = 0.
-    let shift = a / 4.0;
-    let s2 = shift * shift;
-    let p = b - 6.0 * s2;
-    let q = c - 2.0 * b * shift + 8.0 * s2 * shift;
-    let r = d - c * shift + b * s2 - 3.0 * s2 * s2;
-    let mut n = 0;
-    if q.abs() <= 1e-14 * (p.abs() + r.abs().sqrt() + 1e-300) {
-        // Biquadratic: y² = z with z² + p·z + r = 0.
-        let mut zs = [0.0; 2];
-        let k = quadratic(p, r, &mut zs);
-        for &z in &zs[..k] {
-            if z >= 0.0 {
-                out[n] = z.sqrt() - shift;
-                out[n + 1] = -z.sqrt() - shift;
-                n += 2;
-            }
-        }
-        return n;
-    }
-    // (y² + p/2 + m)² = 2m·y² − q·y + (m² + m·p + p²/4 − r), a square when
-    // 8m³ + 8p·m² + (2p² − 8r)·m − q² = 0 with m > 0.
-    let mut ms = [0.0; 3];
-    let k = cubic(p, (p * p / 4.0) - r, -q * q / 8.0, &mut ms);
-    let m = ms[..k].iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    if m.is_nan() || m <= 0.0 {
-        return 0;
-    }
-    let w = (2.0 * m).sqrt();
-    for sign in [1.0, -1.0] {
-        // y² ∓ w·y + (p/2 + m ± q/(2w)) = 0.
-        let mut y = [0.0; 2];
-        let k = quadratic(-sign * w, p / 2.0 + m + sign * q / (2.0 * w), &mut y);
-        for &y in &y[..k] {
-            out[n] = y - shift;
-            n += 1;
-        }
-    }
-    n
 }
 
 #[cfg(test)]

@@ -53,21 +53,17 @@ pub fn term_count(order: usize) -> usize {
     (order + 1) * (order + 2) * (order + 3) / 6
 }
 
-/// `q[axis].powi(e)` for every axis and `e` up to an order, each by the repeated squaring of
-/// the runtime's `powi` (so the same bits), computed once per point instead of by a call per
-/// factor: the calls were 6 % of scenes/kernels/cubic.pov's time (normals and inside tests).
-struct Powers([[f64; MAX_DEGREE + 1]; 3]);
+/// `q[axis].powi(e)` for every axis and `e` below `K` (`K > order`), each by the repeated
+/// squaring of the runtime's `powi` (so the same bits), computed once per point instead of by a
+/// call per factor: the calls were 6 % of scenes/kernels/cubic.pov's time (normals and inside
+/// tests). Sized for the order (as `hit_lanes`' tables are): a table for degree 16, filled and
+/// then copied out by `memmove` on every inside test, was another 8 % of that scene's time.
+struct Powers<const K: usize>([[f64; K]; 3]);
 
-impl Powers {
-    #[inline]
-    fn of(q: [f64; 3], order: usize) -> Powers {
-        let mut t = [[1.0; MAX_DEGREE + 1]; 3];
-        for (row, &x) in t.iter_mut().zip(&q) {
-            for (e, slot) in row.iter_mut().enumerate().take(order + 1) {
-                *slot = powi(x, e as u32);
-            }
-        }
-        Powers(t)
+impl<const K: usize> Powers<K> {
+    #[inline(always)]
+    fn of(q: [f64; 3]) -> Powers<K> {
+        Powers(q.map(|x| std::array::from_fn(|e| powi(x, e as u32))))
     }
 
     #[inline(always)]
@@ -144,13 +140,29 @@ impl Poly {
 
     /// The polynomial at object-space `q`.
     pub fn eval(&self, q: [f64; 3]) -> f64 {
-        let pw = Powers::of(q, self.order);
+        match self.order {
+            0..=4 => self.eval_with(&Powers::<5>::of(q)),
+            5..=8 => self.eval_with(&Powers::<9>::of(q)),
+            _ => self.eval_with(&Powers::<{ MAX_DEGREE + 1 }>::of(q)),
+        }
+    }
+
+    #[inline(always)]
+    fn eval_with<const K: usize>(&self, pw: &Powers<K>) -> f64 {
         self.terms.iter().map(|&(c, [i, j, k])| c * pw.get(0, i) * pw.get(1, j) * pw.get(2, k)).sum()
     }
 
     /// The polynomial's gradient at object-space `q`.
     pub fn gradient(&self, q: [f64; 3]) -> [f64; 3] {
-        let pw = Powers::of(q, self.order);
+        match self.order {
+            0..=4 => self.gradient_with(&Powers::<5>::of(q)),
+            5..=8 => self.gradient_with(&Powers::<9>::of(q)),
+            _ => self.gradient_with(&Powers::<{ MAX_DEGREE + 1 }>::of(q)),
+        }
+    }
+
+    #[inline(always)]
+    fn gradient_with<const K: usize>(&self, pw: &Powers<K>) -> [f64; 3] {
         let mut g = [0.0; 3];
         for &(c, e) in &self.terms {
             for (axis, slot) in g.iter_mut().enumerate() {

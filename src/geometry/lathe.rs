@@ -1,7 +1,8 @@
 //! POV-Ray's `lathe` (3.4.6.x Lathe): a 2-D spline (`spline` pieces in (r, y)) revolved around
 //! the y axis. Per piece the ray meets the surface where `x² + z² = r(t)²` at height `y(t)`:
 //! with `s = (y(t) − o.y) / d.y` that is one polynomial in `t` of degree up to 6, solved in f64
-//! per lane by `bernstein` (no 8-wide arithmetic, as the torus). A ray level with the axis
+//! per lane by `bernstein` (no 8-wide arithmetic, as the torus), or, where every piece is
+//! straight (a quadratic in `t`), eight lanes at once by `lathe_linear`. A ray level with the axis
 //! (`d.y ≈ 0`) meets it where `y(t) = o.y` instead, then the circle there. Inside is even-odd of
 //! (√(x² + z²), y) against the outline, as POV-Ray's parity test; `sturm` changes nothing.
 
@@ -9,12 +10,14 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 
 use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
-use super::revolved::{along, hit_lanes, Band, LaneCandidates};
+use super::lathe_linear::{self, Cone};
+use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{along_monotone, closest_t, even_odd, Piece};
+use super::wide::{lane_f64, lanes_f64, to_lane};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
-use crate::ray::RayLanes;
+use crate::ray::{RayLanes, MISS};
 
 #[derive(Clone, Debug)]
 pub struct Lathe {
@@ -32,6 +35,9 @@ pub struct Lathe {
     bands: Vec<Band>,
     /// The band of all of `bands`.
     whole: Band,
+    /// Where every piece is straight, each as a cone (`lathe_linear`, eight lanes at once);
+    /// empty otherwise.
+    cones: Vec<Cone>,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -106,6 +112,16 @@ impl Lathe {
         let squares: Vec<Squares> = pieces.iter().map(Squares::of).collect();
         let bands: Vec<Band> =
             pieces.iter().zip(&squares).map(|(p, q)| Band::new(p.lo.y, p.hi.y, q.r2_min, q.r2_max)).collect();
+        let cones = if pieces.iter().all(|p| p.degree == 1) {
+            let first3 = |c: &[f64; 7]| [c[0], c[1], c[2]];
+            pieces
+                .iter()
+                .zip(&squares)
+                .map(|(p, q)| Cone { y: first3(&q.y), y2: first3(&q.y2), r2: first3(&q.r2), v: p.v })
+                .collect()
+        } else {
+            Vec::new()
+        };
         let xf = render_from_object * local;
         let xf = affine_f32(&xf);
         let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
@@ -118,6 +134,7 @@ impl Lathe {
             squares,
             whole: Band::around(&bands),
             bands,
+            cones,
             min: min - pad,
             max: max + pad,
         }
@@ -211,6 +228,26 @@ impl Lathe {
         (best < s_max).then_some(best)
     }
 
+    /// Every lane not level with the axis answered at once (`lathe_linear`), with the lanes
+    /// left to `solve` (level: `solve`'s test). A method, not a closure: as a closure it was
+    /// compiled out of line, without AVX2.
+    #[inline(always)]
+    fn hit_cones<L: Lane>(&self, c: &Candidates, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
+        let level = (0..L::WIDTH).fold(0u8, |m, i| {
+            let (x, y, z) = (d.x.get_f64(i), d.y.get_f64(i), d.z.get_f64(i));
+            m | u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i
+        });
+        let t = if L::WIDTH == 8 {
+            let skip = std::array::from_fn(|i| level >> i & 1 != 0);
+            let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
+            to_lane(lathe_linear::hit::<8>(&self.cones, c, skip, o, d, lo, hi, L::round_f64))
+        } else {
+            let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
+            to_lane(lathe_linear::hit::<1>(&self.cones, c, [level != 0], o, d, lo, hi, L::round_f64))
+        };
+        (t, level)
+    }
+
     fn profile(q: DVec3) -> DVec2 {
         DVec2::new((q.x * q.x + q.z * q.z).sqrt(), q.y)
     }
@@ -284,9 +321,13 @@ impl Lathe {
 impl Shape for Lathe {
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
-            self.solve(m, o, d, lo, hi)
-        })
+        let (o, d) = object_ray(&self.frame, ray);
+        let Some((c, any)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
+            return L::splat(MISS);
+        };
+        let (answers, left) =
+            if self.cones.is_empty() { (L::splat(MISS), any) } else { self.hit_cones(&c, o, d, t_min, t_max) };
+        solve_left(&c, left & any, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi))
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
@@ -341,6 +382,54 @@ mod tests {
             let want = 4.0 * s as f32;
             assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
         }
+    }
+
+    /// The straight pieces solved eight lanes at once (`lathe_linear`) give the scalar solve's
+    /// bits, in packets and single rays, over seeded random rays at the kernel vase (scaled,
+    /// moved, seen from near and far), some level with the axis (left to the scalar solve),
+    /// some nearly so, some along it.
+    #[test]
+    fn cones_give_the_scalar_solves_bits() {
+        use crate::lanes::F8;
+        use crate::ray::MISS;
+        let p = |r: f64, y: f64| DVec2::new(r, y);
+        let vase = [p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
+        let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1)) * DAffine3::from_scale(DVec3::splat(2.0));
+        let wide = Lathe::new(xf, &open_pieces(SplineKind::Linear, &vase).expect("lathe"));
+        assert_eq!(wide.cones.len(), wide.pieces.len());
+        let scalar = Lathe { cones: Vec::new(), ..wide.clone() };
+        let mut rand = crate::geometry::test_support::uniform(0x94d0_49bb_1331_11ebu64);
+        let (lo, hi) = wide.bounds();
+        let mut hits = 0;
+        for case in 0..2000 {
+            let rays: [Ray; 8] = std::array::from_fn(|i| {
+                let at = |a: f64, b: f64, c: f64| lo + (hi - lo) * Vec3::new(a as f32, b as f32, c as f32);
+                let far = [1.0, 30.0][case % 2];
+                let o = at(rand() * 1.4 - 0.2, rand() * 1.4 - 0.2, rand() * 1.4 - 0.2 - far);
+                let mut d = (at(rand(), rand(), rand()) - o).normalize();
+                match (case + i) % 7 {
+                    0 => d.y = 0.0,
+                    1 => d.y *= 1e-9,
+                    2 => d = Vec3::new(0.0, -1.0, 0.0),
+                    _ => {}
+                }
+                Ray::new(o, d.normalize())
+            });
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| rays[i].origin),
+                d: V3::from_lanes(|i| rays[i].dir),
+                inv: V3::from_lanes(|i| rays[i].inv_dir),
+            };
+            let t_min = F8::from_fn(|i| [0.0, 0.5, 2.0][(case + i) % 3]);
+            let (a, b) = (wide.hit(&packet, t_min, F8::splat(MISS)), scalar.hit(&packet, t_min, F8::splat(MISS)));
+            for (i, r) in rays.iter().enumerate() {
+                let one = wide.hit(&r.lanes(), t_min.get(i), MISS);
+                assert_eq!(a.get(i).to_bits(), b.get(i).to_bits(), "case {case} lane {i}: {r:?}");
+                assert_eq!(one.to_bits(), b.get(i).to_bits(), "case {case} lane {i}: {r:?}");
+                hits += usize::from(one != MISS);
+            }
+        }
+        assert!(hits > 2000, "{hits}");
     }
 
     /// Every spline kind of the kernel vase (each outline closed by the axis), seeded random rays from around it: eight-lane

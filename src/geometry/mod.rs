@@ -71,6 +71,7 @@ mod isosurface_search;
 pub mod julia;
 mod julia_cells;
 pub mod lathe;
+pub mod lathe_linear;
 pub mod mesh;
 pub mod parametric;
 pub mod plane;

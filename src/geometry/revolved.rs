@@ -78,6 +78,14 @@ pub struct LaneCandidates<'a> {
     lane: usize,
 }
 
+impl Candidates {
+    /// The lanes (bit `i` for lane `i`) that may meet piece `k`.
+    #[inline(always)]
+    pub fn lanes(&self, k: usize) -> u8 {
+        self.by_piece[k.min(63)]
+    }
+}
+
 impl LaneCandidates<'_> {
     /// Whether the lane may meet piece `k`.
     #[inline(always)]
@@ -239,15 +247,41 @@ pub fn hit_lanes<L: Lane>(
     bands: &[Band],
     solve: impl Fn(LaneCandidates, DVec3, DVec3, f64, f64) -> Option<f64>,
 ) -> L {
-    let o = ray.o.transform_point(&frame.object_from_render);
-    let d = ray.d.transform_vector(&frame.object_from_render);
+    let (o, d) = object_ray(frame, ray);
     let Some((c, any)) = candidates(whole, bands, o, d, t_min, t_max) else {
         return L::splat(MISS);
     };
+    solve_left(&c, any, L::splat(MISS), o, d, t_min, t_max, solve)
+}
+
+/// The ray in object space.
+#[inline(always)]
+pub fn object_ray<L: Lane>(frame: &BoxFrame, ray: &RayLanes<L>) -> (V3<L>, V3<L>) {
+    (ray.o.transform_point(&frame.object_from_render), ray.d.transform_vector(&frame.object_from_render))
+}
+
+/// `answers`, but for the lanes `left` (bit `i` for lane `i`), which `solve` answers one by one
+/// in f64 (as `hit_lanes`): for a shape that answers its other lanes all at once.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub fn solve_left<L: Lane>(
+    c: &Candidates,
+    left: u8,
+    answers: L,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+    solve: impl Fn(LaneCandidates, DVec3, DVec3, f64, f64) -> Option<f64>,
+) -> L {
+    if left == 0 {
+        return answers;
+    }
     // A lane no piece can hold misses at once (no solve: `None` is a miss).
-    super::solve_lanes_f64(o, d, t_min, t_max, |i, o, d, lo, hi| {
-        (any >> i & 1 != 0).then(|| solve(LaneCandidates { of: &c, lane: i }, o, d, lo, hi)).flatten()
-    })
+    let solved = super::solve_lanes_f64(o, d, t_min, t_max, |i, o, d, lo, hi| {
+        (left >> i & 1 != 0).then(|| solve(LaneCandidates { of: c, lane: i }, o, d, lo, hi)).flatten()
+    });
+    L::select(L::mask_from_fn(|i| left >> i & 1 != 0), solved, answers)
 }
 
 #[cfg(test)]

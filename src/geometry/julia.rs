@@ -257,6 +257,61 @@ impl Julia {
     /// take little longer than one (julia_fractal.pov's frame took half as long when the
     /// march and the bisection went two and three samples at a time).
     fn escape_all<const N: usize>(&self, ps: [DVec3; N]) -> [Option<u32>; N] {
+        let cube = match self.function {
+            JuliaFunction::QuaternionSqr => false,
+            JuliaFunction::QuaternionCube => true,
+            JuliaFunction::Hypercomplex(_) => return self.escape_hypercomplex(ps),
+        };
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.escape_quaternion_avx2(ps, cube) };
+        }
+        self.escape_quaternion(ps, cube)
+    }
+
+    /// `escape_quaternion` with 256-bit vectors: the same operations (no FMA), so the same bits.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn escape_quaternion_avx2<const N: usize>(&self, ps: [DVec3; N], cube: bool) -> [Option<u32>; N] {
+        self.escape_quaternion(ps, cube)
+    }
+
+    /// The quaternion orbits with each component of the points in an array of its own, so that
+    /// one vector instruction steps several orbits: `step`'s arithmetic, operation for
+    /// operation, and `length_squared`'s sum in its order, so every lane's bits are `step`'s.
+    #[inline(always)]
+    fn escape_quaternion<const N: usize>(&self, ps: [DVec3; N], cube: bool) -> [Option<u32>; N] {
+        const STAYS: u32 = u32::MAX;
+        let h = ps.map(|p| self.lift(p));
+        let (mut x, mut y, mut z, mut w) = (h.map(|h| h.x), h.map(|h| h.y), h.map(|h| h.z), h.map(|h| h.w));
+        let mut at = h.map(|h| if h.length_squared() > BAILOUT2 { 0 } else { STAYS });
+        let q = self.param;
+        for k in 1..=self.steps() {
+            if at.iter().all(|&a| a != STAYS) {
+                break;
+            }
+            for i in 0..N {
+                let (a, b, c, d) = (x[i], y[i], z[i], w[i]);
+                let (na, nb, nc, nd) = if cube {
+                    let v2 = b * b + c * c + d * d;
+                    let s = 3.0 * a * a - v2;
+                    (a * a * a - 3.0 * a * v2, s * b, s * c, s * d)
+                } else {
+                    (a * a - b * b - c * c - d * d, 2.0 * a * b, 2.0 * a * c, 2.0 * a * d)
+                };
+                (x[i], y[i], z[i], w[i]) = (na + q.x, nb + q.y, nc + q.z, nd + q.w);
+                let n2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i] + w[i] * w[i];
+                // NaN (a function's pole) counts as escaped.
+                let escaped = n2.is_nan() || n2 > BAILOUT2;
+                at[i] = if at[i] == STAYS && escaped { k } else { at[i] };
+            }
+        }
+        at.map(|a| (a != STAYS).then_some(a))
+    }
+
+    /// `escape_all` for hypercomplex functions, one `step` per orbit.
+    fn escape_hypercomplex<const N: usize>(&self, ps: [DVec3; N]) -> [Option<u32>; N] {
         let mut h = ps.map(|p| self.lift(p));
         let mut at = h.map(|h| (h.length_squared() > BAILOUT2).then_some(0));
         for k in 1..=self.steps() {
@@ -360,10 +415,11 @@ impl Julia {
         let start = !self.cells.as_ref().is_some_and(|c| c.empty(p)) && self.inside_object(p);
         let mut t0 = lo;
         loop {
-            // The next two samples (and the ones before them) whose side is not known:
-            // marching through the outside, a sample in an empty cell is known outside.
-            let (mut pending, mut n, mut end) = ([(0.0, 0.0); 2], 0, false);
-            while n < 2 && !end {
+            // The next four samples (and the ones before them) whose side is not known:
+            // marching through the outside, a sample in an empty cell is known outside. Four
+            // orbits fill one vector (`escape_all`).
+            let (mut pending, mut n, mut end) = ([(0.0, 0.0); 4], 0, false);
+            while n < 4 && !end {
                 let t1 = (t0 + dt).min(hi);
                 if start || !self.cells.as_ref().is_some_and(|c| c.empty(o + t1 * d)) {
                     pending[n] = (t0, t1);
@@ -372,11 +428,11 @@ impl Julia {
                 (t0, end) = (t1, t1 >= hi);
             }
             let sides = match n {
-                0 => [start; 2],
-                1 => [self.inside_object(o + pending[0].1 * d), start],
-                _ => self.inside_all([o + pending[0].1 * d, o + pending[1].1 * d]),
+                0 => [start; 4],
+                1 => [self.inside_object(o + pending[0].1 * d), start, start, start],
+                _ => self.inside_all(std::array::from_fn(|i| o + pending[i.min(n - 1)].1 * d)),
             };
-            if let Some(i) = sides.iter().position(|&s| s != start) {
+            if let Some(i) = sides[..n.max(1)].iter().position(|&s| s != start) {
                 let b = self.crossing(o, d, start, pending[i].0, pending[i].1, round);
                 return (b > t_min && b < t_max).then_some(b);
             }
@@ -399,32 +455,42 @@ impl Julia {
     /// still (julia_fractal.pov's frame a quarter shorter), but where a march step holds
     /// several crossings they may land on another than bisection does: the image changed.
     ///
-    /// Two halvings are taken per round: the middle and both middles of its halves are
-    /// iterated side by side (`inside_all`), and the second halving uses the one of those that
-    /// the first leaves in the bracket, so the steps and the answer are the plain bisection's.
+    /// Three halvings are taken per round: every middle the next three could need (seven
+    /// points, a heap: node `n`'s halves have the middles `2n` and `2n + 1`) is iterated side
+    /// by side (`inside_all`, eight lanes), and the halvings then walk down the heap, so the
+    /// steps and the answer are the plain bisection's.
     fn crossing(&self, o: DVec3, d: DVec3, start: bool, mut a: f64, mut b: f64, round: fn(f64) -> f64) -> f64 {
         loop {
-            let m = 0.5 * (a + b);
+            // Node n's bracket is lo..hi; its middle is 0.5 · (lo + hi), as the loop takes it.
+            let mut mid = [0.0f64; 8];
+            let mut ends = [(a, b); 8];
+            for n in 1..8 {
+                let (lo, hi) = ends[n];
+                mid[n] = 0.5 * (lo + hi);
+                if n < 4 {
+                    (ends[2 * n], ends[2 * n + 1]) = ((lo, mid[n]), (mid[n], hi));
+                }
+            }
+            let m = mid[1];
             if round(a) == round(b) || m <= a || m >= b {
                 return b;
             }
-            let (l, r) = (0.5 * (a + m), 0.5 * (m + b));
-            let [at_m, at_l, at_r] = self.inside_all([o + m * d, o + l * d, o + r * d]);
-            let (second, at_second) = if at_m == start {
-                a = m;
-                (r, at_r)
-            } else {
-                b = m;
-                (l, at_l)
-            };
-            // The second halving, as the loop would take it: its middle is `second`.
-            if round(a) == round(b) || second <= a || second >= b {
-                return b;
-            }
-            if at_second == start {
-                a = second;
-            } else {
-                b = second;
+            // Lane 0 repeats the first middle: eight lanes fill two vectors.
+            mid[0] = m;
+            let side = self.inside_all(mid.map(|t| o + t * d));
+            let mut n = 1;
+            while n < 8 {
+                let m = mid[n];
+                if n > 1 && (round(a) == round(b) || m <= a || m >= b) {
+                    return b;
+                }
+                if side[n] == start {
+                    a = m;
+                    n = 2 * n + 1;
+                } else {
+                    b = m;
+                    n *= 2;
+                }
             }
         }
     }
@@ -460,181 +526,4 @@ impl Julia {
 shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object, solve: rounded);
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::geometry::Shape;
-    use crate::ray::Ray;
-
-    fn q(a: f64, b: f64, c: f64, d: f64) -> DVec4 {
-        DVec4::new(a, b, c, d)
-    }
-
-    /// Hamilton's product, written out from ij = k, jk = i, ki = j.
-    fn hamilton(p: DVec4, r: DVec4) -> DVec4 {
-        q(
-            p.x * r.x - p.y * r.y - p.z * r.z - p.w * r.w,
-            p.x * r.y + p.y * r.x + p.z * r.w - p.w * r.z,
-            p.x * r.z - p.y * r.w + p.z * r.x + p.w * r.y,
-            p.x * r.w + p.y * r.z - p.z * r.y + p.w * r.x,
-        )
-    }
-
-    /// The hypercomplex product from its basis rules: ij = k, jk = −i, ki = −j, k² = 1.
-    fn hyper(p: DVec4, r: DVec4) -> DVec4 {
-        q(
-            p.x * r.x - p.y * r.y - p.z * r.z + p.w * r.w,
-            p.x * r.y + p.y * r.x - p.z * r.w - p.w * r.z,
-            p.x * r.z + p.z * r.x - p.y * r.w - p.w * r.y,
-            p.x * r.w + p.w * r.x + p.y * r.z + p.z * r.y,
-        )
-    }
-
-    #[test]
-    fn steps_are_the_algebras_products() {
-        let h = q(0.3, -0.7, 0.2, 0.5);
-        let close = |a: DVec4, b: DVec4| (a - b).length() < 1e-12;
-        assert!(close(step(JuliaFunction::QuaternionSqr, h), hamilton(h, h)));
-        assert!(close(step(JuliaFunction::QuaternionCube, h), hamilton(hamilton(h, h), h)));
-        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Sqr), h), hyper(h, h)));
-        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Cube), h), hyper(hyper(h, h), h)));
-        // reciprocal(h)·h = 1, and pwr(2, 0) is sqr.
-        let r = step(JuliaFunction::Hypercomplex(ComplexFn::Reciprocal), h);
-        assert!(close(hyper(r, h), q(1.0, 0.0, 0.0, 0.0)));
-        assert!(close(step(JuliaFunction::Hypercomplex(ComplexFn::Pwr(2.0, 0.0)), h), hyper(h, h)));
-        // The inverse functions undo their functions near 0.
-        let small = q(0.1, 0.05, -0.02, 0.03);
-        for (f, g) in [
-            (ComplexFn::Sin, ComplexFn::Asin),
-            (ComplexFn::Cos, ComplexFn::Acos),
-            (ComplexFn::Tan, ComplexFn::Atan),
-            (ComplexFn::Sinh, ComplexFn::Asinh),
-            (ComplexFn::Tanh, ComplexFn::Atanh),
-            (ComplexFn::Exp, ComplexFn::Ln),
-        ] {
-            let back = step(JuliaFunction::Hypercomplex(g), step(JuliaFunction::Hypercomplex(f), small));
-            assert!(close(back, small), "{f:?} then {g:?}: {back}");
-        }
-        let z = C(1.5, 0.4);
-        let w = z.apply(ComplexFn::Acosh).apply(ComplexFn::Cosh);
-        assert!((w.0 - z.0).abs() < 1e-12 && (w.1 - z.1).abs() < 1e-12);
-    }
-
-    /// The march with every sample iterated and the crossing bisected to f64 rounding: what
-    /// `solve` did before it skipped empty cells and stopped at the lane's rounding, the
-    /// reference it must agree with.
-    fn bisected(j: &Julia, o: DVec3, d: DVec3) -> Option<f64> {
-        let (a, b, c) = (d.dot(d), o.dot(d), o.dot(o) - j.radius * j.radius);
-        let disc = b * b - a * c;
-        // From t = 0, as `solve` is asked below.
-        let (lo, hi) = (((-b - disc.sqrt()) / a).max(0.0), (-b + disc.sqrt()) / a);
-        if !(disc > 0.0) {
-            return None;
-        }
-        let (dt, start) = (j.step / a.sqrt(), j.inside_object(o + lo * d));
-        let mut t0 = lo;
-        loop {
-            let t1 = (t0 + dt).min(hi);
-            if j.inside_object(o + t1 * d) != start {
-                let (mut a, mut b) = (t0, t1);
-                loop {
-                    let m = 0.5 * (a + b);
-                    if m <= a || m >= b {
-                        return Some(b);
-                    }
-                    if j.inside_object(o + m * d) == start {
-                        a = m;
-                    } else {
-                        b = m;
-                    }
-                }
-            }
-            if t1 >= hi {
-                return None;
-            }
-            t0 = t1;
-        }
-    }
-
-    /// Seeded random rays through julias of both algebras: the march over empty cells, bisected
-    /// to the lane's rounding, rounds to the f32 that bisecting to f64 rounding does, and for
-    /// f64 lanes gives its answer.
-    #[test]
-    fn crossings_round_as_bisection_does() {
-        let param = q(-0.083, 0.0, -0.83, -0.025);
-        let mut seed = 11u64;
-        let mut rnd = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        let to_f32: fn(f64) -> f64 = |v| v as f32 as f64;
-        let exact: fn(f64) -> f64 = |v| v;
-        for f in
-            [JuliaFunction::QuaternionSqr, JuliaFunction::QuaternionCube, JuliaFunction::Hypercomplex(ComplexFn::Sqr)]
-        {
-            let j = Julia::new(DAffine3::IDENTITY, param, f, 8, 15.0, (DVec4::W, 0.0));
-            let mut hits = 0;
-            for _ in 0..300 {
-                let o = DVec3::new(rnd(), rnd(), rnd()).normalize() * 3.0;
-                let d = DVec3::new(rnd(), rnd(), rnd()) * 0.8 - o;
-                let want = bisected(&j, o, d);
-                let got = j.solve(o, d, 0.0, 100.0, to_f32);
-                assert_eq!(got.map(to_f32), want.map(to_f32), "{f:?} from {o} along {d}");
-                assert_eq!(j.solve(o, d, 0.0, 100.0, exact), want, "{f:?} from {o} along {d}");
-                hits += want.is_some() as usize;
-            }
-            assert!(hits > 50, "{f:?}: {hits}");
-        }
-    }
-
-    /// Seeded random points in the cells marked empty are outside, for both quaternion
-    /// functions (hypercomplex ones get no cells), and the cells mark some space empty.
-    #[test]
-    fn empty_cells_hold_no_inside_point() {
-        let mut seed = 5u64;
-        let mut rnd = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
-        for f in [JuliaFunction::QuaternionSqr, JuliaFunction::QuaternionCube] {
-            let j = Julia::new(DAffine3::IDENTITY, q(-0.083, 0.0, -0.83, -0.025), f, 8, 15.0, (DVec4::W, 0.0));
-            let cells = j.cells.clone().expect("quaternions get cells");
-            let mut empty = 0;
-            for _ in 0..100_000 {
-                let p = DVec3::new(rnd(), rnd(), rnd()) * j.radius;
-                if cells.empty(p) {
-                    empty += 1;
-                    assert!(!j.inside_object(p), "{f:?}: {p} is inside an empty cell");
-                }
-            }
-            assert!(empty > 20_000, "{f:?}: {empty}");
-        }
-        let h = Julia::new(
-            DAffine3::IDENTITY,
-            q(0.2, 0.1, 0.59, -0.2),
-            JuliaFunction::Hypercomplex(ComplexFn::Sqr),
-            7,
-            15.0,
-            (DVec4::W, 0.0),
-        );
-        assert!(h.cells.is_none());
-    }
-
-    #[test]
-    fn with_no_parameter_the_sqr_set_is_the_unit_ball() {
-        // h → h² stays bounded exactly for |h| ≤ 1 (a slow escape just outside needs many
-        // iterations, so the edge is at 1 to within max_iteration's reach).
-        let j = Julia::new(DAffine3::IDENTITY, DVec4::ZERO, JuliaFunction::QuaternionSqr, 40, 50.0, (DVec4::W, 0.0));
-        let t = j.intersect(&Ray::new(Vec3::new(0.0, 0.0, -3.0), Vec3::Z), 1e-4, 100.0).unwrap();
-        assert!((t - 2.0).abs() < 2e-3, "{t}");
-        let n = j.normal_at(Vec3::new(0.0, 0.0, -(3.0 - t)));
-        assert!((n - Vec3::new(0.0, 0.0, -1.0)).length() < 1e-3, "{n}");
-        assert!(j.inside_object(DVec3::new(0.5, 0.2, 0.1)) && !j.inside_object(DVec3::new(0.9, 0.5, 0.0)));
-        // Leaving it from inside.
-        let t = j.intersect(&Ray::new(Vec3::ZERO, Vec3::Y), 1e-4, 100.0).unwrap();
-        assert!((t - 1.0).abs() < 2e-3, "{t}");
-        // The slice moves through the fourth dimension: at w = 0.6 the ball's radius is 0.8.
-        let s = Julia::new(DAffine3::IDENTITY, DVec4::ZERO, JuliaFunction::QuaternionSqr, 40, 50.0, (DVec4::W, 0.6));
-        let t = s.intersect(&Ray::new(Vec3::ZERO, Vec3::X), 1e-4, 100.0).unwrap();
-        assert!((t - 0.8).abs() < 2e-3, "{t}");
-    }
-}
+mod tests;

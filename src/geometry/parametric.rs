@@ -434,11 +434,8 @@ mod tests {
     fn random_rays_hit_where_the_sphere_is() {
         let s = sphere();
         assert!(Arc::ptr_eq(&s.tree, &sphere().tree), "copies share the tree");
-        let mut seed = 7u64;
-        let mut rnd = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::geometry::test_support::uniform(7);
+        let mut rnd = || uniform() * 2.0 - 1.0;
         let mut hits = 0;
         for _ in 0..3000 {
             let o = DVec3::new(rnd(), rnd(), rnd()).normalize() * 4.0;

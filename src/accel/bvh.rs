@@ -83,14 +83,6 @@ impl Bvh {
         build::build(bounds, grain)
     }
 
-    /// `build` whose surface-area heuristic counts a node visit as `traversal_cost` primitive
-    /// tests (the scene's tree: 1). A mesh's packet walk tests a box in about a third of a
-    /// triangle's time, so its trees are built with a lower cost: deeper, smaller leaves.
-    pub fn build_weighing(bounds: &[Aabb], traversal_cost: f32) -> Bvh {
-        let grain = if rayon::current_num_threads() > 1 { build::Grain::PARALLEL } else { build::Grain::SERIAL };
-        build::build(bounds, build::Grain { traversal_cost, ..grain })
-    }
-
     /// `build` on the calling thread alone.
     pub fn build_serial(bounds: &[Aabb]) -> Bvh {
         build::build(bounds, build::Grain::SERIAL)

@@ -53,11 +53,6 @@ fn next_down(x: f32) -> f32 {
     -next_up(-x)
 }
 
-/// A node visit's cost in triangle tests for a mesh's tree (`Bvh::build_weighing`). On
-/// scenes/kernels/mesh, mesh2 and bicubic_patch (1 thread, 640×480, alternated runs) 0.5 gave
-/// frames 10–12 % shorter than the scene tree's 1.0; 0.25 and 2.0 were slower than 0.5.
-const TRAVERSAL_COST: f32 = 0.5;
-
 /// `MeshData::smooth_of` for a flat face.
 const FLAT: u32 = u32::MAX;
 
@@ -102,7 +97,7 @@ impl MeshData {
                 Aabb::new(v[0].min(v[1]).min(v[2]), v[0].max(v[1]).max(v[2]))
             })
             .collect();
-        let mut bvh = Bvh::build_weighing(&bounds, TRAVERSAL_COST);
+        let mut bvh = Bvh::build(&bounds);
         let mut triangles = Vec::with_capacity(count);
         let mut smooth_of = Vec::with_capacity(count);
         let mut smooth = Vec::new();

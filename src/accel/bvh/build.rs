@@ -25,28 +25,24 @@ use crate::accel::aabb::Aabb;
 const BINS: usize = 16;
 /// Leaves stop splitting at this size; larger leaves only when no split is cheaper.
 const MAX_LEAF: usize = 4;
-/// Relative cost of one node visit against one primitive test, for the scene's tree
-/// (`Grain::traversal_cost`).
+/// Relative cost of one node visit against one primitive test.
 const TRAVERSAL_COST: f32 = 1.0;
 
-/// How a build runs: when it goes parallel (a task or a chunk costs a few microseconds to hand
-/// out, so work is split only where it is worth hundreds of them), and what a node visit costs
-/// against a primitive test in its surface-area heuristic.
+/// When the build goes parallel. A task or a chunk costs a few microseconds to hand out, so
+/// work is split only where it is worth hundreds of them.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Grain {
     /// Subtrees of at least this many primitives build their two children at once.
     pub join_min: usize,
     /// Nodes of at least this many primitives bin and bound in chunks of this size on the pool.
     pub chunk: usize,
-    /// A node visit's cost in primitive tests (`TRAVERSAL_COST` unless the caller says).
-    pub traversal_cost: f32,
 }
 
 impl Grain {
     /// On rayon's pool: a million primitives make about a hundred subtree tasks.
-    pub const PARALLEL: Grain = Grain { join_min: 8192, chunk: 32768, traversal_cost: TRAVERSAL_COST };
+    pub const PARALLEL: Grain = Grain { join_min: 8192, chunk: 32768 };
     /// Everything on the calling thread: the reference the parallel build must match.
-    pub const SERIAL: Grain = Grain { join_min: usize::MAX, chunk: usize::MAX, traversal_cost: TRAVERSAL_COST };
+    pub const SERIAL: Grain = Grain { join_min: usize::MAX, chunk: usize::MAX };
 }
 
 /// A primitive as the build moves it: its box and its index. The build partitions these, not
@@ -115,13 +111,13 @@ struct Bins {
 }
 
 /// Best binned-SAH split: (axis, plane position, cost in primitive-test units).
-fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, grain: Grain) -> Option<(usize, f32, f32)> {
+fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, chunk: usize) -> Option<(usize, f32, f32)> {
     // Axes along which the centres spread; the others cannot be split.
     let live: [bool; 3] = std::array::from_fn(|a| centers.max[a] > centers.min[a]);
     let scale: [f32; 3] = std::array::from_fn(|a| BINS as f32 / (centers.max[a] - centers.min[a]));
     let bins = fold_range(
         order,
-        grain.chunk,
+        chunk,
         || Bins { bounds: [[Aabb::EMPTY; BINS]; 3], count: [[0; BINS]; 3] },
         |bins, prim| {
             let c = center(prim);
@@ -159,7 +155,7 @@ fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, grain: Grain) ->
         for i in (1..BINS).rev() {
             acc.grow(&bin_bounds[i]);
             n += bin_count[i];
-            let cost = grain.traversal_cost
+            let cost = TRAVERSAL_COST
                 + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32)
                     / parent_area.max(f32::MIN_POSITIVE);
             if left_count[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
@@ -172,13 +168,13 @@ fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, grain: Grain) ->
 
 /// One node over the primitives `order` at depth `depth`: its box, and how many of them go to
 /// the left child (`order` partitioned so they come first), or None for a leaf.
-fn split_node(order: &mut [Prim], depth: usize, grain: Grain) -> (Aabb, Option<usize>) {
+fn split_node(order: &mut [Prim], depth: usize, chunk: usize) -> (Aabb, Option<usize>) {
     let count = order.len();
-    let (node, centers) = node_bounds(order, grain.chunk);
+    let (node, centers) = node_bounds(order, chunk);
     if count <= 1 || depth >= MAX_DEPTH {
         return (node, None);
     }
-    let Some((axis, position, cost)) = best_split(order, &centers, node.half_area(), grain) else {
+    let Some((axis, position, cost)) = best_split(order, &centers, node.half_area(), chunk) else {
         return (node, None);
     };
     if cost >= count as f32 && count <= MAX_LEAF {
@@ -206,11 +202,11 @@ fn leaf(first: usize, count: usize) -> BvhNode {
 /// Builds the subtree whose root is `nodes[0]` (a leaf over `order`, which starts at
 /// primitive `base` of the whole range) on this thread, appending its nodes; an interior node's `first` indexes
 /// `nodes`. An explicit stack: a million primitives must not recurse a million deep on bad splits.
-fn grow_serial(order: &mut [Prim], base: usize, depth: usize, nodes: &mut Vec<BvhNode>, grain: Grain) {
+fn grow_serial(order: &mut [Prim], base: usize, depth: usize, nodes: &mut Vec<BvhNode>, chunk: usize) {
     let mut stack = vec![(0usize, depth)];
     while let Some((node_index, depth)) = stack.pop() {
         let (first, count) = (nodes[node_index].first as usize, nodes[node_index].count as usize);
-        let (node_bounds, split) = split_node(&mut order[first - base..first - base + count], depth, grain);
+        let (node_bounds, split) = split_node(&mut order[first - base..first - base + count], depth, chunk);
         nodes[node_index].min = node_bounds.min.to_array();
         nodes[node_index].max = node_bounds.max.to_array();
         let Some(left) = split else { continue };
@@ -244,7 +240,7 @@ fn subtree(order: &mut [Prim], base: usize, depth: usize, grain: Grain) -> (BvhN
     if count < grain.join_min {
         let mut nodes = Vec::with_capacity(2 * count);
         nodes.push(leaf(base, count));
-        grow_serial(order, base, depth, &mut nodes, grain);
+        grow_serial(order, base, depth, &mut nodes, grain.chunk);
         let mut root = nodes[0];
         if root.is_leaf() {
             return (root, Vec::new());
@@ -253,7 +249,7 @@ fn subtree(order: &mut [Prim], base: usize, depth: usize, grain: Grain) -> (BvhN
         root.first -= 1;
         return (root, vec![Chunk { nodes, skip: 1 }]);
     }
-    let (node_bounds, split) = split_node(order, depth, grain);
+    let (node_bounds, split) = split_node(order, depth, grain.chunk);
     let mut root = leaf(base, count);
     root.min = node_bounds.min.to_array();
     root.max = node_bounds.max.to_array();
@@ -353,7 +349,7 @@ mod tests {
     fn parallel_build_is_the_serial_build_bit_for_bit() {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(4).build().unwrap();
         // Small grains so that a test-sized input goes through joins and chunked folds many levels deep.
-        let fine = Grain { join_min: 64, chunk: 50, traversal_cost: TRAVERSAL_COST };
+        let fine = Grain { join_min: 64, chunk: 50 };
         for (n, seed) in [(0, 1), (1, 2), (2, 3), (63, 4), (1000, 5), (20_000, 6), (150_000, 7)] {
             let boxes = random_boxes(n, seed);
             let serial = build(&boxes, Grain::SERIAL);

@@ -488,6 +488,45 @@ mod tests {
         assert!(certainly_no_root(&from_roots(&[3.0, 5.0], 1.0), 0.0, 2.0));
         assert!(!certainly_no_root(&from_roots(&[3.0, 5.0], 1.0), 0.0, f64::INFINITY));
     }
+
+    /// `roots::root_bound`'s divisions by constants are the plain divisions to the bit, on seeded random
+    /// polynomials of every degree with coefficients from 1e-30 to 1e30, some zero, some
+    /// negative, some infinite.
+    #[test]
+    fn bound_is_the_roots_bound_to_the_bit() {
+        let mut r = crate::geometry::test_support::uniform(0x0b0d_5eed);
+        for case in 0..20_000 {
+            let n = 1 + case % MAX_DEGREE;
+            let c: Vec<f64> = (0..=n)
+                .map(|i| match (r() * 10.0) as u32 {
+                    0 if i > 0 => 0.0,
+                    1 if case % 97 == 0 => f64::INFINITY,
+                    _ => (2.0 * r() - 1.0) * 10f64.powf(r() * 60.0 - 30.0),
+                })
+                .collect();
+            let (a, b) = (root_bound(&c), bound_by_division(&c));
+            assert!(a.to_bits() == b.to_bits() || (a.is_nan() && b.is_nan()), "{c:?}: {a} vs {b}");
+        }
+    }
+
+    /// `roots::root_bound` as first written: the exponent bits divided by the degree at run
+    /// time.
+    fn bound_by_division(c: &[f64]) -> f64 {
+        const ONE: i64 = 0x3ff0_0000_0000_0000;
+        let n = c.len() - 1;
+        let mut m = 0.0f64;
+        for (i, &k) in c.iter().enumerate().skip(1) {
+            let v = (k / c[0]).abs() * if i == n { 0.5 } else { 1.0 };
+            if v == 0.0 {
+                continue;
+            }
+            if !v.is_finite() {
+                return v;
+            }
+            m = m.max(f64::from_bits(((v.to_bits() as i64 - ONE) / i as i64 + ONE) as u64));
+        }
+        2.2 * m
+    }
 }
 
 #[cfg(test)]

@@ -79,13 +79,19 @@ impl Bvh {
     /// one thread it is `build_serial`: the parallel build holds its subtrees' nodes twice for
     /// a moment (once in pieces, once laid end to end), which buys nothing there.
     pub fn build(bounds: &[Aabb]) -> Bvh {
+        Bvh::build_weighted(bounds, None)
+    }
+
+    /// `build` with each primitive's test weighed at `weights[i]` node visits (all 1 where
+    /// None: the tree `build` makes): costly primitives are split into smaller leaves.
+    pub fn build_weighted(bounds: &[Aabb], weights: Option<&[u32]>) -> Bvh {
         let grain = if rayon::current_num_threads() > 1 { build::Grain::PARALLEL } else { build::Grain::SERIAL };
-        build::build(bounds, grain)
+        build::build(bounds, weights, grain)
     }
 
     /// `build` on the calling thread alone.
     pub fn build_serial(bounds: &[Aabb]) -> Bvh {
-        build::build(bounds, build::Grain::SERIAL)
+        build::build(bounds, None, build::Grain::SERIAL)
     }
 
     /// Whether `other` has the same nodes, bit for bit, in the same order, over the same

@@ -44,9 +44,12 @@ pub enum Accel {
 }
 
 impl Accel {
-    pub fn build(kind: AccelKind, bounds: &[Aabb]) -> Accel {
+    /// The accelerator over primitives with these bounds, each test weighed at `weights[i]`
+    /// node visits (the BVH splits costly primitives into smaller leaves; the grid and brute
+    /// force ignore weights).
+    pub fn build(kind: AccelKind, bounds: &[Aabb], weights: &[u32]) -> Accel {
         match kind {
-            AccelKind::Bvh => Accel::Bvh(Bvh::build(bounds)),
+            AccelKind::Bvh => Accel::Bvh(Bvh::build_weighted(bounds, Some(weights))),
             AccelKind::Grid => Accel::Grid(Grid::build(bounds)),
             AccelKind::None => Accel::None { count: bounds.len() as u32 },
         }

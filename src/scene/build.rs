@@ -165,7 +165,7 @@ impl Scene {
     /// Builds render data with render space centred on `origin` (world space).
     pub fn build(desc: &SceneDesc, origin: DVec3, accel: AccelKind) -> Scene {
         let mut scene = Scene::lower(desc, origin);
-        scene.accel = Accel::build(accel, &scene.prim_bounds());
+        scene.accel = Accel::build(accel, &scene.prim_bounds(), &scene.prim_weights());
         scene
     }
 
@@ -177,7 +177,7 @@ impl Scene {
         let mut scene = Scene::lower(&desc, origin);
         desc.objects = Vec::new();
         drop(desc);
-        scene.accel = Accel::build(accel, &scene.prim_bounds());
+        scene.accel = Accel::build(accel, &scene.prim_bounds(), &scene.prim_weights());
         scene
     }
 

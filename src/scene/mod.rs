@@ -15,3 +15,4 @@ pub mod place;
 pub mod print;
 pub mod shape_kind;
 mod store;
+mod test_cost;

@@ -9,8 +9,14 @@
 //! blocks of its own with indices relative to the block, and the blocks are laid end to end
 //! once the whole tree is known (`assemble`), which gives the serial array exactly.
 //!
+//! A primitive carries a weight: what its test costs, in node visits (1 for a sphere or a box,
+//! more for a shape that walks its own tree or solves a quartic). The surface-area heuristic
+//! weighs each side of a split by its primitives' weights instead of their number, so a tree
+//! over costly shapes splits down to one per leaf where one over spheres keeps two to four.
+//! With every weight 1 the tree is the unweighted one, bit for bit.
+//!
 //! Within a node nothing depends on the thread count either: bins and bounds are folds of `min`,
-//! `max` and integer counts, which give the same bits in any grouping, and the parallel folds
+//! `max` and integer sums, which give the same bits in any grouping, and the parallel folds
 //! cut the range into fixed-size chunks merged left to right. The partition, the one step whose
 //! result depends on the order it runs in, always runs on one thread.
 
@@ -52,6 +58,7 @@ impl Grain {
 struct Prim {
     bounds: Aabb,
     index: u32,
+    weight: u32,
 }
 
 #[inline(always)]
@@ -87,27 +94,29 @@ fn fold_range<T: Send>(
     acc
 }
 
-/// A node's box and the box of its primitives' centres.
-fn node_bounds(order: &[Prim], chunk: usize) -> (Aabb, Aabb) {
+/// A node's box, the box of its primitives' centres, and their total weight.
+fn node_bounds(order: &[Prim], chunk: usize) -> (Aabb, Aabb, u64) {
     fold_range(
         order,
         chunk,
-        || (Aabb::EMPTY, Aabb::EMPTY),
-        |(b, c), prim| {
+        || (Aabb::EMPTY, Aabb::EMPTY, 0),
+        |(b, c, w), prim| {
             b.grow(&prim.bounds);
             c.grow_point(center(prim));
+            *w += prim.weight as u64;
         },
-        |(b, c), (pb, pc)| {
+        |(b, c, w), (pb, pc, pw)| {
             b.grow(pb);
             c.grow(pc);
+            *w += pw;
         },
     )
 }
 
-/// Per axis: the bins' boxes and primitive counts.
+/// Per axis: the bins' boxes and the total weight of their primitives.
 struct Bins {
     bounds: [[Aabb; BINS]; 3],
-    count: [[u32; BINS]; 3],
+    weight: [[u64; BINS]; 3],
 }
 
 /// Best binned-SAH split: (axis, plane position, cost in primitive-test units).
@@ -118,47 +127,48 @@ fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, chunk: usize) ->
     let bins = fold_range(
         order,
         chunk,
-        || Bins { bounds: [[Aabb::EMPTY; BINS]; 3], count: [[0; BINS]; 3] },
+        || Bins { bounds: [[Aabb::EMPTY; BINS]; 3], weight: [[0; BINS]; 3] },
         |bins, prim| {
             let c = center(prim);
             for axis in (0..3).filter(|&a| live[a]) {
                 let b = (((c[axis] - centers.min[axis]) * scale[axis]) as usize).min(BINS - 1);
                 bins.bounds[axis][b].grow(&prim.bounds);
-                bins.count[axis][b] += 1;
+                bins.weight[axis][b] += prim.weight as u64;
             }
         },
         |bins, part| {
             for axis in 0..3 {
                 for b in 0..BINS {
                     bins.bounds[axis][b].grow(&part.bounds[axis][b]);
-                    bins.count[axis][b] += part.count[axis][b];
+                    bins.weight[axis][b] += part.weight[axis][b];
                 }
             }
         },
     );
     let mut best: Option<(usize, f32, f32)> = None;
     for axis in (0..3).filter(|&a| live[a]) {
-        let (bin_bounds, bin_count) = (&bins.bounds[axis], &bins.count[axis]);
-        // Sweep from the left and from the right to get the area and count on each side.
+        let (bin_bounds, bin_weight) = (&bins.bounds[axis], &bins.weight[axis]);
+        // Sweep from the left and from the right to get the area and weight on each side.
+        // Every weight is at least 1, so a side of weight 0 is an empty side.
         let mut left_area = [0.0f32; BINS - 1];
-        let mut left_count = [0u32; BINS - 1];
+        let mut left_weight = [0u64; BINS - 1];
         let mut acc = Aabb::EMPTY;
         let mut n = 0;
         for i in 0..BINS - 1 {
             acc.grow(&bin_bounds[i]);
-            n += bin_count[i];
+            n += bin_weight[i];
             left_area[i] = acc.half_area();
-            left_count[i] = n;
+            left_weight[i] = n;
         }
         let mut acc = Aabb::EMPTY;
         let mut n = 0;
         for i in (1..BINS).rev() {
             acc.grow(&bin_bounds[i]);
-            n += bin_count[i];
+            n += bin_weight[i];
             let cost = TRAVERSAL_COST
-                + (left_area[i - 1] * left_count[i - 1] as f32 + acc.half_area() * n as f32)
+                + (left_area[i - 1] * left_weight[i - 1] as f32 + acc.half_area() * n as f32)
                     / parent_area.max(f32::MIN_POSITIVE);
-            if left_count[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
+            if left_weight[i - 1] > 0 && n > 0 && best.is_none_or(|b| cost < b.2) {
                 best = Some((axis, centers.min[axis] + i as f32 / scale[axis], cost));
             }
         }
@@ -170,14 +180,14 @@ fn best_split(order: &[Prim], centers: &Aabb, parent_area: f32, chunk: usize) ->
 /// the left child (`order` partitioned so they come first), or None for a leaf.
 fn split_node(order: &mut [Prim], depth: usize, chunk: usize) -> (Aabb, Option<usize>) {
     let count = order.len();
-    let (node, centers) = node_bounds(order, chunk);
+    let (node, centers, weight) = node_bounds(order, chunk);
     if count <= 1 || depth >= MAX_DEPTH {
         return (node, None);
     }
     let Some((axis, position, cost)) = best_split(order, &centers, node.half_area(), chunk) else {
         return (node, None);
     };
-    if cost >= count as f32 && count <= MAX_LEAF {
+    if cost >= weight as f32 && count <= MAX_LEAF {
         return (node, None);
     }
     // Partition in place around the chosen plane.
@@ -305,9 +315,12 @@ fn assemble(mut root: BvhNode, chunks: Vec<Chunk>) -> Vec<BvhNode> {
     nodes
 }
 
-/// Builds over primitives with the given bounds; index `i` of `bounds` is primitive `i`.
-pub(super) fn build(bounds: &[Aabb], grain: Grain) -> Bvh {
-    let mut prims: Vec<Prim> = bounds.iter().enumerate().map(|(i, b)| Prim { bounds: *b, index: i as u32 }).collect();
+/// Builds over primitives with the given bounds and weights (each at least 1; all 1 where
+/// `weights` is None); index `i` of `bounds` is primitive `i`.
+pub(super) fn build(bounds: &[Aabb], weights: Option<&[u32]>, grain: Grain) -> Bvh {
+    let weight = |i: usize| weights.map_or(1, |w| w[i].max(1));
+    let mut prims: Vec<Prim> =
+        bounds.iter().enumerate().map(|(i, b)| Prim { bounds: *b, index: i as u32, weight: weight(i) }).collect();
     if prims.is_empty() {
         return Bvh::default();
     }
@@ -352,12 +365,31 @@ mod tests {
         let fine = Grain { join_min: 64, chunk: 50 };
         for (n, seed) in [(0, 1), (1, 2), (2, 3), (63, 4), (1000, 5), (20_000, 6), (150_000, 7)] {
             let boxes = random_boxes(n, seed);
-            let serial = build(&boxes, Grain::SERIAL);
+            let serial = build(&boxes, None, Grain::SERIAL);
+            let weights: Vec<u32> = (0..n as u32).map(|i| i * 7 % 13 + 1).collect();
+            let weighted = build(&boxes, Some(&weights), Grain::SERIAL);
             for grain in [fine, Grain::PARALLEL] {
-                let parallel = pool.install(|| build(&boxes, grain));
+                let parallel = pool.install(|| build(&boxes, None, grain));
                 assert!(serial.same_as(&parallel), "{n} boxes, {grain:?}");
+                let parallel = pool.install(|| build(&boxes, Some(&weights), grain));
+                assert!(weighted.same_as(&parallel), "{n} weighted boxes, {grain:?}");
             }
         }
+    }
+
+    #[test]
+    fn heavy_primitives_get_leaves_of_their_own() {
+        // Four unit cubes in a row. Weighed 1 each, two share a leaf: a split costs a node
+        // visit more than it saves. Weighed 16 each, every one is a leaf of its own.
+        let boxes: Vec<Aabb> = (0..4)
+            .map(|i| Aabb::new(Vec3::new(i as f32 * 1.1, 0.0, 0.0), Vec3::new(i as f32 * 1.1 + 1.0, 1.0, 1.0)))
+            .collect();
+        let largest_leaf = |b: &Bvh| b.nodes.iter().filter(|n| n.is_leaf()).map(|n| n.count).max().unwrap();
+        let light = build(&boxes, None, Grain::SERIAL);
+        assert_eq!(largest_leaf(&light), 2);
+        assert_eq!(largest_leaf(&build(&boxes, Some(&[16; 4]), Grain::SERIAL)), 1);
+        // Weights of 1 are the unweighted tree, bit for bit.
+        assert!(build(&boxes, Some(&[1; 4]), Grain::SERIAL).same_as(&light));
     }
 
     #[test]
@@ -365,13 +397,13 @@ mod tests {
         // `same_as` must be able to fail: the same boxes in another order build another tree,
         // and one bit of one box changes a node.
         let boxes = random_boxes(5000, 9);
-        let tree = build(&boxes, Grain::SERIAL);
+        let tree = build(&boxes, None, Grain::SERIAL);
         let mut reversed = boxes.clone();
         reversed.reverse();
-        assert!(!tree.same_as(&build(&reversed, Grain::SERIAL)));
+        assert!(!tree.same_as(&build(&reversed, None, Grain::SERIAL)));
         let mut nudged = boxes.clone();
         nudged[1234].max.x = nudged[1234].max.x.next_up();
-        let other = build(&nudged, Grain::SERIAL);
+        let other = build(&nudged, None, Grain::SERIAL);
         assert!(tree.prim_order == other.prim_order && !tree.same_as(&other));
     }
 }

@@ -180,24 +180,35 @@ pub fn solve_lanes_f64<L: Lane>(
     t_max: L,
     solve: impl Fn(usize, glam::DVec3, glam::DVec3, f64, f64) -> Option<f64>,
 ) -> L {
-    L::from_fn_f64(|i| {
-        let v = |v: V3<L>| glam::DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
-        let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
-        // An empty interval holds no root: lanes a packet does not trace (a blocked shadow
-        // ray, a lane culled by its box) cost no solve.
-        if !(lo < hi) {
-            return MISS as f64;
+    L::from_fn_f64(|i| solve_lane_f64(i, o, d, t_min, t_max, &solve))
+}
+
+/// Lane `i` of `solve_lanes_f64`, as f64.
+#[inline(always)]
+pub fn solve_lane_f64<L: Lane>(
+    i: usize,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+    solve: &impl Fn(usize, glam::DVec3, glam::DVec3, f64, f64) -> Option<f64>,
+) -> f64 {
+    let v = |v: V3<L>| glam::DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
+    let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
+    // An empty interval holds no root: lanes a packet does not trace (a blocked shadow
+    // ray, a lane culled by its box) cost no solve.
+    if !(lo < hi) {
+        return MISS as f64;
+    }
+    let mut from = lo;
+    for _ in 0..4 {
+        let Some(t) = solve(i, v(o), v(d), from, hi) else { break };
+        if L::round_f64(t) > lo {
+            return L::round_f64(t).min(hi);
         }
-        let mut from = lo;
-        for _ in 0..4 {
-            let Some(t) = solve(i, v(o), v(d), from, hi) else { break };
-            if L::round_f64(t) > lo {
-                return L::round_f64(t).min(hi);
-            }
-            from = t;
-        }
-        MISS as f64
-    })
+        from = t;
+    }
+    MISS as f64
 }
 
 /// `normal` of a shape that computes its object-space normal per point in f64.

@@ -1,7 +1,7 @@
 //! POV-Ray's `torus { major, minor }`: the ring of radius `major` in the xz-plane around the
-//! y axis, swept by a circle of radius `minor`. A quartic surface, solved per lane in f64 (this
-//! shape has no 8-wide arithmetic: packets run its f64 solve lane by lane, so packets and single
-//! rays agree bit for bit): cheap rejections, then Ferrari's closed form with Newton polish, and
+//! y axis, swept by a circle of radius `minor`. A quartic surface, solved in f64 eight lanes at
+//! once for a packet (`wide::W`; one lane for a single ray, the same arithmetic, so packets and
+//! single rays agree bit for bit): cheap rejections, then Ferrari's closed form with Newton polish, and
 //! `roots`' critical-point isolation only where the closed form is ill-conditioned (issue 38:
 //! the isolation alone made this 2.4x slower on scenes/kernels/torus.pov).
 //!
@@ -12,8 +12,9 @@
 use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
-use super::quartic::{first_root, Ill};
+use super::quartic::first_root_lanes;
 use super::roots::{roots_in, MAX_DEGREE};
+use super::wide::{and, lane_f64, lanes_f64, not, to_lane, CentredLanes, Mask, W, WV};
 use super::{transformed_bounds, CullBox, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
@@ -43,14 +44,9 @@ impl Torus {
     }
 }
 
-/// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the torus.
-/// `round` is the lane's rounding (`Lane::round_f64`): roots are compared with the interval as
-/// the lane will hold them.
-///
-/// Cheap rejections first (the sphere through the outer equator, the slab `|y| ≤ minor`, a
-/// span wholly inside the hole's cylinder), then the quartic in closed form (`quartic::first_root`),
-/// each root polished by Newton steps; where the closed form is ill-conditioned (a double root:
-/// a grazing ray) it answers `None` and the critical-point isolation `roots_in` decides.
+/// The nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the torus, or
+/// `None`: one lane of [`solve_lanes`].
+#[cfg(test)]
 fn solve(
     o: [f64; 3],
     d: [f64; 3],
@@ -59,43 +55,51 @@ fn solve(
     t_max: f64,
     round: impl Fn(f64) -> f64 + Copy,
 ) -> Option<f64> {
-    let (c, lo, hi, t_c, len) = setup(o, d, minor, t_min, t_max)?;
-    let accept = |s: f64| {
-        let t = round(t_c + s / len);
-        (t > t_min && t < t_max).then_some(t)
-    };
-    first_root(&c, lo, hi, accept).unwrap_or_else(|Ill| isolate(&c, lo, hi, t_c, len, t_min, t_max, round))
+    let v = |v: [f64; 3]| WV { x: W([v[0]]), y: W([v[1]]), z: W([v[2]]) };
+    let t = solve_lanes::<1>(v(o), v(d), minor, W([t_min]), W([t_max]), round).0[0];
+    (t != MISS as f64).then_some(t)
 }
 
-/// The quartic in `s` (distance along the unit direction from the ray's point nearest the
-/// centre; `t = t_c + s / len`), monic, highest power first, and the span `[lo, hi]` of `s` that
-/// can hold a hit, or `None` where the ray certainly misses.
+/// Per lane, the nearest `t` in `(t_min, t_max)` where `o + t·d` (object space) meets the
+/// torus, `MISS` for none. `round` is the lane type's rounding (`Lane::round_f64`): roots are
+/// compared with the interval as the lane will hold them.
+///
+/// Cheap rejections first (the sphere through the outer equator, the slab `|y| ≤ minor`, a
+/// span wholly inside the hole's cylinder), then the quartic in closed form
+/// (`quartic::first_root_lanes`), each root polished by Newton steps, all `N` lanes at once;
+/// where the closed form is ill-conditioned (a double root: a grazing ray) it declines, and the
+/// critical-point isolation `roots_in` decides for that lane alone. Each lane does the
+/// arithmetic of a single ray (`N = 1`), so packets and single rays agree bit for bit.
 #[inline(always)]
-fn setup(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option<([f64; 5], f64, f64, f64, f64)> {
-    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let super::CentredRay { p, u, t_c, len } = super::centred_ray(o, d)?;
+fn solve_lanes<const N: usize>(
+    o: WV<N>,
+    d: WV<N>,
+    minor: f64,
+    t_min: W<N>,
+    t_max: W<N>,
+    round: impl Fn(f64) -> f64 + Copy,
+) -> W<N> {
+    let k = W::<N>::splat;
+    let miss = k(MISS as f64);
+    let dot = |a: [W<N>; 3], b: [W<N>; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let CentredLanes { p, u, t_c, len, valid } = CentredLanes::new(o, d);
+    let mut live = and(valid, t_min.lt(t_max));
     let outer = 1.0 + minor;
-    let reach2 = outer * outer - dot(p, p);
-    if reach2.is_nan() || reach2 < 0.0 {
-        return None;
-    }
+    let reach2 = k(outer * outer) - dot(p, p);
+    live = and(live, k(0.0).le(reach2));
     // Padded: the outer equator lies on this sphere, and a root there must not be cut off.
-    let reach = reach2.sqrt() * (1.0 + 1e-9) + 1e-12;
-    let mut lo = (-reach).max((t_min - t_c) * len);
-    let mut hi = reach.min((t_max - t_c) * len);
+    let reach = reach2.sqrt() * k(1.0 + 1e-9) + k(1e-12);
+    let mut lo = (-reach).zip((t_min - t_c) * len, f64::max);
+    let mut hi = reach.zip((t_max - t_c) * len, f64::min);
     // The slab |y| ≤ minor, padded alike (the tube's top and bottom circles lie on it).
     let slab = minor * (1.0 + 1e-9) + 1e-12;
-    if u[1] != 0.0 {
-        let inv = 1.0 / u[1];
-        let (a, b) = ((-slab - p[1]) * inv, (slab - p[1]) * inv);
-        lo = lo.max(a.min(b));
-        hi = hi.min(a.max(b));
-    } else if !(p[1].abs() <= slab) {
-        return None;
-    }
-    if lo.is_nan() || hi.is_nan() || lo >= hi {
-        return None;
-    }
+    let level = u[1].0.map(|v| v == 0.0);
+    let inv = k(1.0) / u[1];
+    let (a, b) = ((k(-slab) - p[1]) * inv, (k(slab) - p[1]) * inv);
+    lo = W::select(level, lo, lo.zip(a.zip(b, f64::min), f64::max));
+    hi = W::select(level, hi, hi.zip(a.zip(b, f64::max), f64::min));
+    live = and(live, not(and(level, not(p[1].abs().le(k(slab))))));
+    live = and(live, lo.lt(hi));
     let a2 = u[0] * u[0] + u[2] * u[2];
     let b2 = p[0] * u[0] + p[2] * u[2];
     let c2 = p[0] * p[0] + p[2] * p[2];
@@ -103,16 +107,96 @@ fn setup(o: [f64; 3], d: [f64; 3], minor: f64, t_min: f64, t_max: f64) -> Option
     // hole's cylinder (radius 1 − minor, padded) lies inside it throughout, and misses.
     let hole = 1.0 - minor;
     if hole > 0.0 {
-        let hole2 = hole * hole * (1.0 - 1e-9);
-        let rho2 = |s: f64| (a2 * s + 2.0 * b2) * s + c2;
-        if rho2(lo) < hole2 && rho2(hi) < hole2 {
-            return None;
+        let hole2 = k(hole * hole * (1.0 - 1e-9));
+        let rho2 = |s: W<N>| (a2 * s + k(2.0) * b2) * s + c2;
+        live = and(live, not(and(rho2(lo).lt(hole2), rho2(hi).lt(hole2))));
+    }
+    if !live.iter().any(|&l| l) {
+        return miss;
+    }
+    let e = dot(p, p) + k(1.0) - k(minor * minor);
+    let f = dot(p, u);
+    let c = [
+        k(1.0),
+        k(4.0) * f,
+        k(4.0) * f * f + k(2.0) * e - k(4.0) * a2,
+        k(4.0) * f * e - k(8.0) * b2,
+        e * e - k(4.0) * c2,
+    ];
+    let quartic = Quartic { c, lo, hi, t_c, len, t_min, t_max };
+    // Most packets reach the closed form with a few lanes: up to four are gathered into one
+    // 256-bit register's worth (the same arithmetic per lane, so the same bits).
+    match live.iter().filter(|&&l| l).count() {
+        n if N > 2 && n <= 2 => quartic.solve_few::<2>(live, round),
+        n if N > 4 && n <= 4 => quartic.solve_few::<4>(live, round),
+        _ => quartic.solve(live, round),
+    }
+}
+
+/// The torus's quartic along `N` rays, in `s` (`t = t_c + s / len`), and each lane's span.
+struct Quartic<const N: usize> {
+    c: [W<N>; 5],
+    lo: W<N>,
+    hi: W<N>,
+    t_c: W<N>,
+    len: W<N>,
+    t_min: W<N>,
+    t_max: W<N>,
+}
+
+impl<const N: usize> Quartic<N> {
+    /// Lanes `at` of these, as `M` lanes.
+    #[inline(always)]
+    fn gather<const M: usize>(&self, at: [usize; M]) -> Quartic<M> {
+        let g = |w: W<N>| W(at.map(|i| w.0[i]));
+        Quartic {
+            c: self.c.map(g),
+            lo: g(self.lo),
+            hi: g(self.hi),
+            t_c: g(self.t_c),
+            len: g(self.len),
+            t_min: g(self.t_min),
+            t_max: g(self.t_max),
         }
     }
-    let e = dot(p, p) + 1.0 - minor * minor;
-    let f = dot(p, u);
-    let c = [1.0, 4.0 * f, 4.0 * f * f + 2.0 * e - 4.0 * a2, 4.0 * f * e - 8.0 * b2, e * e - 4.0 * c2];
-    Some((c, lo, hi, t_c, len))
+
+    /// `solve` for at most `M` live lanes, gathered into `M` lanes and scattered back.
+    #[inline(always)]
+    fn solve_few<const M: usize>(&self, live: Mask<N>, round: impl Fn(f64) -> f64 + Copy) -> W<N> {
+        let (mut at, mut n) = ([0usize; M], 0);
+        for i in (0..N).filter(|&i| live[i]) {
+            at[n] = i;
+            n += 1;
+        }
+        for slot in n..M {
+            at[slot] = at[0];
+        }
+        let few = self.gather(at).solve(std::array::from_fn(|slot| slot < n), round);
+        let mut t = W::splat(MISS as f64);
+        for slot in 0..n {
+            t.0[at[slot]] = few.0[slot];
+        }
+        t
+    }
+
+    /// Each `live` lane's first root whose `t` lies in `(t_min, t_max)`, `MISS` for none: the
+    /// closed form, and the isolation for a lane where that declines.
+    #[inline(always)]
+    fn solve(&self, live: Mask<N>, round: impl Fn(f64) -> f64 + Copy) -> W<N> {
+        let Quartic { c, lo, hi, t_c, len, t_min, t_max } = *self;
+        let accept = |s: W<N>| {
+            let t = (t_c + s / len).map(round);
+            (and(t_min.lt(t), t.lt(t_max)), t)
+        };
+        let (t, found, ill) = first_root_lanes(&c, lo, hi, live, accept);
+        let mut t = W::select(found, t, W::splat(MISS as f64));
+        for i in (0..N).filter(|&i| ill[i]) {
+            let c = c.map(|c| c.0[i]);
+            t.0[i] =
+                isolate(&c, lo.0[i], hi.0[i], t_c.0[i], len.0[i], t_min.0[i], t_max.0[i], round).unwrap_or(MISS as f64);
+        }
+        t
+    }
 }
 
 /// The first root of `c` in `[lo, hi]` whose `t` lies in `(t_min, t_max)`, by the critical-point
@@ -143,14 +227,12 @@ impl Shape for Torus {
         // Lanes that miss the box, or trace nothing (a blocked shadow ray), are not solved: on
         // the kernel scene a solve was asked of half again as many lanes as could hit.
         let Some(t_max) = self.cull.live(o, d, t_min, t_max) else { return L::splat(MISS) };
-        L::from_fn_f64(|i| {
-            let v = |v: V3<L>| [v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i)];
-            let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
-            if !(lo < hi) {
-                return MISS as f64;
-            }
-            solve(v(o), v(d), self.minor as f64, lo, hi, L::round_f64).unwrap_or(MISS as f64)
-        })
+        let minor = self.minor as f64;
+        if L::WIDTH == 8 {
+            to_lane(solve_lanes::<8>(lanes_f64(o), lanes_f64(d), minor, lane_f64(t_min), lane_f64(t_max), L::round_f64))
+        } else {
+            to_lane(solve_lanes::<1>(lanes_f64(o), lanes_f64(d), minor, lane_f64(t_min), lane_f64(t_max), L::round_f64))
+        }
     }
 
     /// Away from the nearest point of the ring.

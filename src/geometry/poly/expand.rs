@@ -7,36 +7,7 @@
 //! Expanding lane by lane was 56 % of POV-Ray's sample quartic/torus.pov: the table of powers
 //! and the term loops' bookkeeping were paid once per lane; here once per packet.
 
-use super::super::wide::{W, WV};
-
-/// The ray `o + t·d` about its point `p` nearest the object origin with unit direction `u`, for
-/// `N` lanes: a distance `s` along `u` from `p` is at `t = t_c + s / len`. The arithmetic of
-/// `geometry::centred_ray` lane by lane; `valid` is false where that answers `None` (a zero,
-/// infinite or NaN direction).
-#[derive(Clone, Copy, Debug)]
-pub(super) struct CentredLanes<const N: usize> {
-    pub p: [W<N>; 3],
-    pub u: [W<N>; 3],
-    pub t_c: W<N>,
-    pub len: W<N>,
-    pub valid: [bool; N],
-}
-
-impl<const N: usize> CentredLanes<N> {
-    #[inline(always)]
-    pub(super) fn new(o: WV<N>, d: WV<N>) -> CentredLanes<N> {
-        let len2 = d.x * d.x + d.y * d.y + d.z * d.z;
-        let valid = std::array::from_fn(|i| {
-            let l = len2.0[i];
-            !(l.is_nan() || l <= 0.0 || !l.is_finite())
-        });
-        let len = len2.sqrt();
-        let u = [d.x / len, d.y / len, d.z / len];
-        let t_c = -(o.x * d.x + o.y * d.y + o.z * d.z) / len2;
-        let p = [o.x + t_c * d.x, o.y + t_c * d.y, o.z + t_c * d.z];
-        CentredLanes { p, u, t_c, len, valid }
-    }
-}
+use super::super::wide::W;
 
 /// Index of `s^m` of `(p + s·u)^e` in a triangular table of rows `e = 0, 1, ...`.
 #[inline(always)]

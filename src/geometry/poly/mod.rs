@@ -15,7 +15,7 @@
 //! of the accelerator, testing them for every ray as planes (see `scene::build`). A quadric
 //! whose quadratic part is definite (an ellipsoid written as a quadric) gets its finite box.
 
-use glam::{Affine3A, Vec3};
+use glam::{Affine3A, DVec3, Vec3};
 
 mod bounds;
 mod expand;
@@ -23,14 +23,14 @@ mod first_root;
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
-use super::quartic::{first_root, Ill};
+use super::quartic::{first_root, first_root_lanes, Ill};
 use super::roots::{root_bound, smallest_root_by, Solver, MAX_DEGREE};
-use super::wide::{hit_wide, lanes_f64, to_lanes};
+use super::wide::{and, hit_wide, lane_f64, lanes_f64, to_lanes, CentredLanes, W};
 use super::{transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 use bounds::quadric_box;
-use expand::{along_ray, CentredLanes};
+use expand::along_ray;
 use first_root::first_root_within_bound;
 
 /// The exponents (of x, y, z) of POV-Ray's coefficients for a polynomial of `order`, in the
@@ -287,12 +287,69 @@ impl Poly {
         t_max: L,
     ) -> L {
         let along = along_ray::<N, K, T>(&self.terms, self.order, ray.p, ray.u);
-        super::solve_lanes_f64(o, d, t_min, t_max, |i, _, _, lo, hi| {
+        let lane = |i: usize, _: DVec3, _: DVec3, lo: f64, hi: f64| {
             if !ray.valid[i] {
                 return None;
             }
             let c: [f64; K] = std::array::from_fn(|k| along[k].0[i]);
             self.solve_along(&c[..=self.order], ray.t_c.0[i], ray.len.0[i], lo, hi)
+        };
+        if N > 1 && self.order == 4 && self.solver == Solver::Sturm {
+            return self.quartic_lanes(ray, &along, o, d, t_min, t_max, lane);
+        }
+        super::solve_lanes_f64(o, d, t_min, t_max, lane)
+    }
+
+    /// `solve_expanded` for a quartic under `sturm`, all lanes at once: Ferrari's closed form
+    /// as `solve_along` takes it (`quartic::first_root_lanes`), for every lane whose quartic
+    /// has its leading term and whose root, if any, is the answer at once. A lane where the
+    /// closed form declines, or that must search on past `t_min` (CSG), is solved by `lane`
+    /// alone, from the start: the same arithmetic, so the same bits either way.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn quartic_lanes<L: Lane, const N: usize, const K: usize>(
+        &self,
+        ray: &CentredLanes<N>,
+        along: &[W<N>; K],
+        o: V3<L>,
+        d: V3<L>,
+        t_min: L,
+        t_max: L,
+        lane: impl Fn(usize, DVec3, DVec3, f64, f64) -> Option<f64>,
+    ) -> L {
+        let k = W::<N>::splat;
+        let (lo, hi): (W<N>, W<N>) = (lane_f64(t_min), lane_f64(t_max));
+        // As `solve_along`: the coefficients' size, and the leading term above its noise.
+        let scale = along[..5].iter().fold(k(0.0), |m, c| m.zip(c.abs(), f64::max));
+        let lead = along[4];
+        let mut fast = and(ray.valid, lo.lt(hi));
+        fast = and(fast, and(scale.0.map(|v| !v.is_nan() && v != 0.0), (k(1e-14) * scale).lt(lead.abs())));
+        let (s_lo, s_hi) = ((lo - ray.t_c) * ray.len, (hi - ray.t_c) * ray.len);
+        let monic = [k(1.0), along[3] / lead, along[2] / lead, along[1] / lead, along[0] / lead];
+        let accept = |s: W<N>| (and(s_lo.lt(s), s.lt(s_hi)), s);
+        let (s, found, ill) = first_root_lanes(&monic, s_lo, s_hi, fast, accept);
+        let t = ray.t_c + s / ray.len;
+        L::from_fn_f64(|i| {
+            if !fast[i] || ill[i] {
+                return super::solve_lane_f64(i, o, d, t_min, t_max, &lane);
+            }
+            if !found[i] {
+                return MISS as f64;
+            }
+            let t = t.0[i];
+            // A root on the near side of `t_min` (rounded back onto it) is searched past.
+            if !(t > lo.0[i]) || !(L::round_f64(t) > lo.0[i]) {
+                return if t > lo.0[i] && t >= hi.0[i] {
+                    MISS as f64
+                } else {
+                    super::solve_lane_f64(i, o, d, t_min, t_max, &lane)
+                };
+            }
+            if t < hi.0[i] {
+                L::round_f64(t).min(hi.0[i])
+            } else {
+                MISS as f64
+            }
         })
     }
 }

@@ -54,9 +54,10 @@ impl Cells {
         // Widened by 10⁻⁶ so that points on the outline (normals) fall in the grid.
         let widen = 1e-6 * size;
         let (lo, hi) = (lo - widen, hi + widen);
-        // About four cells per arc along a side: 16 for prism_linear's star (a fifth of its
-        // cells crossed), more for a glyph's dozens of arcs.
-        let n = ((4.0 * (arcs.len() as f64).sqrt()).ceil() as usize).clamp(16, 64);
+        // 2.5·√arcs cells a side, at least 16 (prism_linear's star: a fifth of its cells
+        // crossed). Four·√arcs made text's 128 glyph grids cost 5M instructions more to build
+        // and rendered no faster (394.1M against 396.7M at 640x480).
+        let n = ((2.5 * (arcs.len() as f64).sqrt()).ceil() as usize).clamp(16, 64);
         let scale = n as f64 / (hi - lo);
         let pad = 1e-9 * size.max(lo.abs().max(hi.abs()).max_element());
         let mut cells = Cells {

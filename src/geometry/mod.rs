@@ -142,14 +142,22 @@ impl CullBox {
     #[inline(always)]
     pub fn live<L: Lane>(&self, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> Option<L> {
         let (near, far) = crate::accel::aabb::node_slabs(V3::splat(self.lo), V3::splat(self.hi), o, d.recip());
-        let margin = (near.abs() + far.abs()) * L::splat(1e-5);
-        let (near, far) = (near - margin, far + margin);
-        let live = L::and(near.le(far), L::and(near.le(t_max), t_min.le(far)));
-        if !L::any(live) {
-            return None;
-        }
-        Some(L::select(live, t_max, L::splat(f32::NEG_INFINITY)))
+        live_between(near, far, t_min, t_max)
     }
+}
+
+/// `t_max`, or −inf for the lanes whose slab entry `near` and exit `far`, widened by 10⁻⁵ of
+/// the distances, leave nothing of `(t_min, t_max)`; `None` when every lane does. What
+/// `CullBox::live` answers, for culls with other slabs (the prism's turned box).
+#[inline(always)]
+pub fn live_between<L: Lane>(near: L, far: L, t_min: L, t_max: L) -> Option<L> {
+    let margin = (near.abs() + far.abs()) * L::splat(1e-5);
+    let (near, far) = (near - margin, far + margin);
+    let live = L::and(near.le(far), L::and(near.le(t_max), t_min.le(far)));
+    if !L::any(live) {
+        return None;
+    }
+    Some(L::select(live, t_max, L::splat(f32::NEG_INFINITY)))
 }
 
 /// The hit of a shape solved lane by lane in f64 in its object space (`frame`): `solve(o, d,

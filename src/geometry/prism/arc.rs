@@ -48,6 +48,15 @@ impl Slab {
         let off = self.n.dot(w);
         (off - self.hi).max(self.lo - off).max(0.0)
     }
+
+    /// Whether the slab meets the box `[lo, hi]` (its corners' offsets along the normal reach
+    /// the slab's).
+    #[inline]
+    pub fn meets_box(&self, lo: DVec2, hi: DVec2) -> bool {
+        let offs = [lo, DVec2::new(hi.x, lo.y), DVec2::new(lo.x, hi.y), hi].map(|c| self.n.dot(c));
+        let (min, max) = offs.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &o| (a.min(o), b.max(o)));
+        max >= self.lo && min <= self.hi
+    }
 }
 
 /// Whether the ray from `q` towards +u crosses the monotone arc `p` (counted half-open in `v`,
@@ -141,7 +150,7 @@ pub fn nearest_t(p: &Piece, w: DVec2) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub mod tests {
     use super::*;
     use crate::desc::SplineKind;
     use crate::geometry::spline::{closed_pieces, even_odd};
@@ -180,6 +189,16 @@ mod tests {
         ]
     }
 
+    /// Every fourth point within 10⁻⁶ of the curve `pieces`, the others in [−0.5, 0.5]².
+    pub fn sample_point(rand: &mut impl FnMut() -> f64, pieces: &[Piece], i: usize) -> DVec2 {
+        if i % 4 == 0 {
+            let p = &pieces[(rand() * pieces.len() as f64) as usize];
+            p.at(rand()) + 1e-6 * DVec2::new(rand() - 0.5, rand() - 0.5)
+        } else {
+            DVec2::new(rand() - 0.5, rand() - 0.5)
+        }
+    }
+
     /// Over seeded random points (some within 10⁻⁶ of the curve) the arcs' crossings give the
     /// pieces' even-odd answer.
     #[test]
@@ -189,13 +208,7 @@ mod tests {
             let arcs: Vec<Piece> = pieces.iter().flat_map(Piece::monotone_parts).collect();
             let mut inside = 0;
             for i in 0..20_000 {
-                let w = if i % 4 == 0 {
-                    // Near the curve, off by up to 10⁻⁶.
-                    let p = &pieces[(rand() * pieces.len() as f64) as usize];
-                    p.at(rand()) + 1e-6 * DVec2::new(rand() - 0.5, rand() - 0.5)
-                } else {
-                    DVec2::new(rand() - 0.5, rand() - 0.5)
-                };
+                let w = sample_point(&mut rand, &pieces, i);
                 let want = even_odd(&pieces, w);
                 let got = arcs.iter().filter(|a| crosses_right(a, w)).count() % 2 == 1;
                 assert_eq!(got, want, "{w}");

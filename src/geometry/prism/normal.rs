@@ -1,0 +1,109 @@
+//! The prism's normal: the nearest of its caps and sides to a surface point, found among the
+//! arcs of the point's cell (`cells::Cells`) where that settles it, among all arcs otherwise.
+
+use glam::{DVec2, DVec3};
+
+use super::{arc, Prism};
+use crate::geometry::spline::Piece;
+
+impl Prism {
+    /// Takes arc `p`'s nearest point to `w` as `side` where it is nearer than `best`.
+    fn nearer<'a>(&self, p: &'a Piece, w: DVec2, scale: f64, best: &mut f64, side: &mut Option<(&'a Piece, f64)>) {
+        let t = arc::nearest_t(p, w);
+        let dist = (p.at(t) - w).length() * scale;
+        if dist < *best {
+            *best = dist;
+            *side = Some((p, t));
+        }
+    }
+
+    /// Takes the nearest to `w` of the arcs `arcs` as `side` where it is nearer than `best`.
+    /// Only the arcs whose boxes and slabs lie nearer than `best` are solved, the nearest
+    /// first: the point lies on that arc or a neighbour, and the distance to it then rules out
+    /// the arcs that lie farther. Up to `N` are queued (the rest are solved as found): a cell
+    /// lists a few, and a longer queue costs its clearing on every normal.
+    fn nearest_of<'a, const N: usize>(
+        &'a self,
+        arcs: impl Iterator<Item = u32>,
+        w: DVec2,
+        scale: f64,
+        best: &mut f64,
+        side: &mut Option<(&'a Piece, f64)>,
+    ) {
+        let mut near = [(0.0, 0u32); N];
+        let mut count = 0;
+        for i in arcs {
+            let (p, slab) = (&self.arcs[i as usize], &self.slabs[i as usize]);
+            let g = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length().max(slab.gap(w)) * scale;
+            if g < *best {
+                if count == near.len() {
+                    self.nearer(p, w, scale, best, side);
+                } else {
+                    near[count] = (g, i);
+                    count += 1;
+                }
+            }
+        }
+        let near = &mut near[..count];
+        if let Some(first) = (0..count).min_by(|&i, &j| near[i].0.total_cmp(&near[j].0)) {
+            near.swap(0, first);
+        }
+        for &(g, i) in near.iter() {
+            if g < *best {
+                self.nearer(&self.arcs[i as usize], w, scale, best, side);
+            }
+        }
+    }
+
+    /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
+    pub(super) fn normal_object(&self, q: DVec3) -> DVec3 {
+        let w = self.section(q);
+        // Cap distance in object units.
+        let mut best = f64::INFINITY;
+        let mut normal = DVec3::Y;
+        if !self.open {
+            for (h, n) in [(self.h1, -DVec3::Y), (self.h2, DVec3::Y)] {
+                let dist = (q.y - h).abs();
+                if dist < best {
+                    best = dist;
+                    normal = n;
+                }
+            }
+        }
+        // Side distances are measured in the section, scaled back to object units for a cone.
+        let scale = if self.conic { q.y.abs() } else { 1.0 };
+        let mut side: Option<(&Piece, f64)> = None;
+        // The arcs of `w`'s cell first (none for most points on a cap): any other arc lies
+        // farther from `w` than its margin in the cell, so when the nearest found lies nearer,
+        // that is the nearest of all.
+        let settled = match self.cells.near(w) {
+            Some((list, margin)) => {
+                self.nearest_of::<8>(list.iter().copied(), w, scale, &mut best, &mut side);
+                best < margin * scale
+            }
+            None => false,
+        };
+        if !settled {
+            self.nearest_of::<32>(0..self.arcs.len() as u32, w, scale, &mut best, &mut side);
+        }
+        if let Some((p, t)) = side {
+            let tan = p.tangent(t);
+            let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
+            if n2 == DVec2::ZERO {
+                return normal;
+            }
+            // Outward: the side of the curve where the section is not inside.
+            let at = p.at(t);
+            let eps = 1e-6 * (1.0 + at.abs().max_element());
+            if self.inside_2d(at + eps * n2) {
+                n2 = -n2;
+            }
+            normal = if self.conic {
+                DVec3::new(n2.x, -n2.dot(at), n2.y) * q.y.signum()
+            } else {
+                DVec3::new(n2.x, 0.0, n2.y)
+            };
+        }
+        normal
+    }
+}

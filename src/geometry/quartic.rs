@@ -302,7 +302,13 @@ mod tests {
         };
         let from_roots = |r: [f64; 4]| {
             let (a, b, c, d) = (r[0], r[1], r[2], r[3]);
-            [1.0, -(a + b + c + d), a * b + a * c + a * d + b * c + b * d + c * d, -(a * b * c + a * b * d + a * c * d + b * c * d), a * b * c * d]
+            [
+                1.0,
+                -(a + b + c + d),
+                a * b + a * c + a * d + b * c + b * d + c * d,
+                -(a * b * c + a * b * d + a * c * d + b * c * d),
+                a * b * c * d,
+            ]
         };
         let mut quartics = vec![
             from_roots([1.0, 2.0, 3.0, 4.0]),

@@ -78,6 +78,33 @@ pub fn smallest_root_by(solver: Solver, c: &[f64], lo: f64, hi: f64) -> Option<f
 /// (within 7 %) and padded by 10 %, so the bound stays a bound without `powf`. Infinite or NaN
 /// where a coefficient is.
 pub fn root_bound(c: &[f64]) -> f64 {
+    // v^(1/i) from log2 v ≈ the exponent bits read as a fixed-point number, divided by `i` as
+    // by a constant (a multiply and shifts): six 64-bit `idiv`s per sextic's bound were 8 % of
+    // scenes/kernels/poly.pov's time.
+    bound_dividing(c, |e, i| match i {
+        1 => e,
+        2 => e / 2,
+        3 => e / 3,
+        4 => e / 4,
+        5 => e / 5,
+        6 => e / 6,
+        7 => e / 7,
+        8 => e / 8,
+        9 => e / 9,
+        10 => e / 10,
+        11 => e / 11,
+        12 => e / 12,
+        13 => e / 13,
+        14 => e / 14,
+        15 => e / 15,
+        16 => e / 16,
+        _ => e / i as i64,
+    })
+}
+
+/// `root_bound` with the exponent bits `e` of `|cᵢ/c₀|` divided by `i` by `divide(e, i)`.
+#[inline(always)]
+fn bound_dividing(c: &[f64], divide: impl Fn(i64, usize) -> i64) -> f64 {
     const ONE: i64 = 0x3ff0_0000_0000_0000;
     let n = c.len() - 1;
     let mut m = 0.0f64;
@@ -89,30 +116,7 @@ pub fn root_bound(c: &[f64]) -> f64 {
         if !v.is_finite() {
             return v;
         }
-        // v^(1/i) from log2 v ≈ the exponent bits read as a fixed-point number, divided by
-        // `i` as by a constant (a multiply and shifts): six 64-bit `idiv`s per sextic's bound
-        // were 8 % of scenes/kernels/poly.pov's time.
-        let e = v.to_bits() as i64 - ONE;
-        let e = match i {
-            1 => e,
-            2 => e / 2,
-            3 => e / 3,
-            4 => e / 4,
-            5 => e / 5,
-            6 => e / 6,
-            7 => e / 7,
-            8 => e / 8,
-            9 => e / 9,
-            10 => e / 10,
-            11 => e / 11,
-            12 => e / 12,
-            13 => e / 13,
-            14 => e / 14,
-            15 => e / 15,
-            16 => e / 16,
-            _ => e / i as i64,
-        };
-        m = m.max(f64::from_bits((e + ONE) as u64));
+        m = m.max(f64::from_bits((divide(v.to_bits() as i64 - ONE, i) + ONE) as u64));
     }
     2.2 * m
 }
@@ -512,20 +516,7 @@ mod tests {
     /// `roots::root_bound` as first written: the exponent bits divided by the degree at run
     /// time.
     fn bound_by_division(c: &[f64]) -> f64 {
-        const ONE: i64 = 0x3ff0_0000_0000_0000;
-        let n = c.len() - 1;
-        let mut m = 0.0f64;
-        for (i, &k) in c.iter().enumerate().skip(1) {
-            let v = (k / c[0]).abs() * if i == n { 0.5 } else { 1.0 };
-            if v == 0.0 {
-                continue;
-            }
-            if !v.is_finite() {
-                return v;
-            }
-            m = m.max(f64::from_bits(((v.to_bits() as i64 - ONE) / i as i64 + ONE) as u64));
-        }
-        2.2 * m
+        bound_dividing(c, |e, i| e / i as i64)
     }
 }
 

@@ -336,20 +336,19 @@ impl Poly {
             if !found[i] {
                 return MISS as f64;
             }
-            let t = t.0[i];
-            // A root on the near side of `t_min` (rounded back onto it) is searched past.
-            if !(t > lo.0[i]) || !(L::round_f64(t) > lo.0[i]) {
-                return if t > lo.0[i] && t >= hi.0[i] {
-                    MISS as f64
-                } else {
-                    super::solve_lane_f64(i, o, d, t_min, t_max, &lane)
-                };
+            let (t, lo, hi) = (t.0[i], lo.0[i], hi.0[i]);
+            if !(t > lo) {
+                // Before `t_min` (CSG searching on from a crossing): searched past, alone.
+                return super::solve_lane_f64(i, o, d, t_min, t_max, &lane);
             }
-            if t < hi.0[i] {
-                L::round_f64(t).min(hi.0[i])
-            } else {
-                MISS as f64
+            if !(t < hi) {
+                return MISS as f64;
             }
+            if !(L::round_f64(t) > lo) {
+                // Rounded back onto `t_min`: searched past, alone.
+                return super::solve_lane_f64(i, o, d, t_min, t_max, &lane);
+            }
+            L::round_f64(t).min(hi)
         })
     }
 }

@@ -61,6 +61,7 @@ pub mod bands;
 pub mod bernstein;
 pub mod blob;
 pub mod cone;
+mod cubic;
 pub mod cuboid;
 pub mod disc;
 mod halley;

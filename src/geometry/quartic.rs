@@ -1,9 +1,9 @@
 //! Quartics in closed form, for the torus (`torus::solve`) and quartic polynomials
-//! (`poly::Poly`): Ferrari's method through the resolvent cubic, a Newton polish of each root,
-//! and a cube root that is not the library's software routine. Each gives up where it is
-//! ill-conditioned, near a double root, so that the caller can fall back on `roots`'
-//! isolation.
+//! (`poly::Poly`): Ferrari's method through the resolvent cubic (`cubic`), and a Newton polish
+//! of each root. Each gives up where it is ill-conditioned, near a double root, so that the
+//! caller can fall back on `roots`' isolation.
 
+use super::cubic::{finite, largest_root_lanes, rough_cbrt};
 use super::wide::{and, not, or, Mask, W};
 
 /// `x` after two Newton steps on the quartic `c`, or `None` where the last step is above `tol`:
@@ -180,7 +180,7 @@ fn ferrari_lanes<const N: usize>(c: &[W<N>; 5]) -> ([W<N>; 4], W<N>, Mask<N>) {
     let mut res = [none; 4];
     let mut res_ill = [false; N];
     if !biquadratic.iter().all(|&b| b) {
-        let (m, m_nan) = resolvent_lanes(p, k(0.25) * p * p - r, k(-0.125) * q * q);
+        let (m, m_nan) = largest_root_lanes(p, k(0.25) * p * p - r, k(-0.125) * q * q);
         res_ill = or(or(m_nan, not((k(1e-6) * size).lt(m))), not(finite(m)));
         let w = (k(2.0) * m).sqrt();
         let half = k(0.5) * p + m;
@@ -206,82 +206,6 @@ fn ferrari_lanes<const N: usize>(c: &[W<N>; 5]) -> ([W<N>; 4], W<N>, Mask<N>) {
     }
     let tol = k(1e-10) * (size.sqrt() + shift.abs());
     (roots, tol, ill)
-}
-
-/// Lane-wise `v.is_finite()`.
-#[inline(always)]
-fn finite<const N: usize>(v: W<N>) -> Mask<N> {
-    v.0.map(f64::is_finite)
-}
-
-/// ∛x to within a few per cent (x finite, ≥ 0): the exponent divided by three in the bits.
-#[inline(always)]
-fn rough_cbrt(x: f64) -> f64 {
-    f64::from_bits(x.to_bits() / 3 + 0x2a9f_7893_782d_a1ce)
-}
-
-/// ∛x to a few ulps per lane: [`rough_cbrt`] and three Halley steps (each triples the digits);
-/// the library's `cbrt` is a software routine here that cost 14 % of the torus benchmark.
-#[inline(always)]
-fn cbrt<const N: usize>(x: W<N>) -> W<N> {
-    let a = x.abs();
-    let mut y = a.map(rough_cbrt);
-    for _ in 0..3 {
-        let y3 = y * y * y;
-        y = y * ((y3 + W::splat(2.0) * a) / (W::splat(2.0) * y3 + a));
-    }
-    let plain = or(a.0.map(|v| v == 0.0), not(finite(a)));
-    W::select(plain, x, y.copysign(x))
-}
-
-/// Per lane, the largest real root of m³ + a·m² + b·m + c (Viète's three real roots found by
-/// Halley's steps, Cardano's form for one), polished by a Newton step; and the lanes where it
-/// is NaN from the start.
-#[inline(always)]
-fn resolvent_lanes<const N: usize>(a: W<N>, b: W<N>, c: W<N>) -> (W<N>, Mask<N>) {
-    // m = y − a/3: y³ + p·y + q = 0.
-    const THIRD: f64 = 1.0 / 3.0;
-    let k = W::<N>::splat;
-    let shift = a * k(THIRD);
-    let p = b - a * shift;
-    let q = c - b * shift + k(2.0) * shift * shift * shift;
-    let p3 = p * k(THIRD);
-    let h = k(0.25) * q * q + p3 * p3 * p3;
-    let nan = h.0.map(f64::is_nan);
-    let three = and(h.le(k(0.0)), p.lt(k(0.0)));
-    let mut m = k(0.0);
-    if !three.iter().all(|&t| t) {
-        // One real root: Cardano.
-        let s = h.max(k(0.0)).sqrt();
-        let v = cbrt(k(-0.5) * q + s.copysign(-q));
-        let zero: Mask<N> = v.0.map(|v| v == 0.0);
-        m = W::select(zero, k(0.0), v - p3 / v) - shift;
-    }
-    if three.iter().any(|&t| t) {
-        // Three real roots, all within ±r; the largest lies in [r/2, r]. Halley's steps from r
-        // come down onto it (the cubic is convex there) and triple the digits each, so three
-        // or four reach the rounding: cheaper than Viète's `acos` and `cos` (libm's, a tenth
-        // of the quartic kernel's frame).
-        let r = k(2.0) * (-p3).sqrt();
-        let mut y = r;
-        let mut running = three;
-        for _ in 0..6 {
-            let g = (y * y + p) * y + q;
-            let dg = k(3.0) * y * y + p;
-            let step = k(2.0) * g * dg / (k(2.0) * dg * dg - k(6.0) * y * g);
-            let moving = and(running, finite(step));
-            y = W::select(moving, y - step, y);
-            running = and(moving, not(step.abs().le(k(1e-15) * r)));
-            if !running.iter().any(|&b| b) {
-                break;
-            }
-        }
-        m = W::select(three, y - shift, m);
-    }
-    let g = ((m + a) * m + b) * m + c;
-    let dg = (k(3.0) * m + k(2.0) * a) * m + b;
-    let step = g / dg;
-    (W::select(finite(step), m - step, m), nan)
 }
 
 #[cfg(test)]
@@ -342,27 +266,6 @@ mod tests {
             }
         }
         assert!(declined > 0, "a double root is declined");
-    }
-
-    #[test]
-    fn cube_root_is_accurate() {
-        let cbrt = |x: f64| cbrt(W([x])).0[0];
-        let mut state = 77u64;
-        let mut range = |a: f64, b: f64| {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            a + (b - a) * ((state >> 11) as f64 / (1u64 << 53) as f64)
-        };
-        for _ in 0..100_000 {
-            let x = range(-1.0, 1.0) * 10f64.powf(range(-30.0, 30.0));
-            let y = cbrt(x);
-            assert!((y - x.cbrt()).abs() <= 4.0 * f64::EPSILON * x.cbrt().abs(), "{x}: {y} vs {}", x.cbrt());
-            let r = rough_cbrt(x.abs());
-            assert!((r / x.abs().cbrt() - 1.0).abs() < 0.05, "{x}: {r}");
-        }
-        assert_eq!(cbrt(0.0), 0.0);
-        assert_eq!(cbrt(-8.0), -2.0);
     }
 
     #[test]

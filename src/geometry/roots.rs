@@ -8,7 +8,8 @@
 //!   most one root, found where the sign changes by Newton steps kept inside a shrinking
 //!   bracket. It does not lose double roots (grazing rays) or small roots to cancellation.
 //! - **Closed form** (`Solver::Fast` for degrees 2 to 4: quadric, cubic and quartic without
-//!   `sturm`, as POV-Ray solves them): the stable quadratic, Cardano/Viète for cubics, and
+//!   `sturm`, as POV-Ray solves them): the stable quadratic, Cardano's form or Halley's steps and deflation for
+//!   cubics (`cubic`, eight lanes at once for packets), and
 //!   Ferrari's resolvent for quartics (`quartic::ferrari`, the torus's), each root polished by
 //!   two Newton steps. Fast, but a cubic's double root (a ray grazing the surface) may come
 //!   out as a pair of complex roots and be lost, and a quartic whose coefficients span many
@@ -22,8 +23,10 @@
 //! The tests at the bottom pit the three against each other at the extremes (double roots,
 //! roots 1e-6 apart, coefficient ratios of 1e12).
 
+use super::cubic::smallest_root_lanes;
 use super::quartic::ferrari;
 use super::sturm::sturm_roots;
+use super::wide::W;
 
 /// Highest degree handled (POV-Ray's `poly` takes orders 2 to 15 here).
 pub const MAX_DEGREE: usize = 16;
@@ -45,6 +48,10 @@ pub fn smallest_root_by(solver: Solver, c: &[f64], lo: f64, hi: f64) -> Option<f
     let degree = c.len().saturating_sub(1);
     if degree == 0 {
         return None;
+    }
+    if solver == Solver::Fast && degree == 3 {
+        let s = smallest_root_lanes(&[W([c[0]]), W([c[1]]), W([c[2]]), W([c[3]])], W([lo]), W([hi])).0[0];
+        return (!s.is_nan()).then_some(s);
     }
     // Cauchy's bound: every root lies within it, so infinite ends become finite ones.
     let bound = 1.0 + c[1..].iter().fold(0.0f64, |m, k| m.max((k / c[0]).abs()));
@@ -301,7 +308,7 @@ pub(super) fn monotonic_root(c: &[f64], a: f64, b: f64) -> Option<f64> {
     Some(x)
 }
 
-/// Real roots of `c` (degree 1 to 4, leading coefficient non-zero) by closed formulas, each
+/// Real roots of `c` (degree 1, 2 or 4, leading coefficient non-zero; cubics go to `cubic`) by closed formulas, each
 /// polished by Newton steps; returns how many, in no particular order, or `None` for a quartic
 /// that Ferrari's form (`quartic::ferrari`, the torus's) declines as ill-conditioned.
 fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> Option<usize> {
@@ -313,7 +320,6 @@ fn closed_form(c: &[f64], out: &mut [f64; MAX_DEGREE]) -> Option<usize> {
             1
         }
         2 => quadratic(c[1] / a, c[2] / a, out),
-        3 => cubic(c[1] / a, c[2] / a, c[3] / a, out),
         _ => {
             let (mut four, mut tol) = ([0.0; 4], 0.0);
             let n = ferrari(&[1.0, c[1] / a, c[2] / a, c[3] / a, c[4] / a], &mut four, &mut tol)?;
@@ -357,32 +363,6 @@ fn quadratic(b: f64, c: f64, out: &mut [f64]) -> usize {
     out[0] = q;
     out[1] = c / q;
     2
-}
-
-/// x³ + a·x² + b·x + c = 0: Viète's trigonometric form for three real roots, Cardano's for one.
-fn cubic(a: f64, b: f64, c: f64, out: &mut [f64]) -> usize {
-    // x = y − a/3: y³ + p·y + q = 0.
-    let shift = a / 3.0;
-    let p = b - a * shift;
-    let q = c - b * shift + 2.0 * shift * shift * shift;
-    let h = (q / 2.0) * (q / 2.0) + (p / 3.0) * (p / 3.0) * (p / 3.0);
-    if h.is_nan() {
-        return 0;
-    }
-    if h <= 0.0 && p < 0.0 {
-        let m = 2.0 * (-p / 3.0).sqrt();
-        let theta = ((3.0 * q) / (p * m)).clamp(-1.0, 1.0).acos() / 3.0;
-        for (k, slot) in out[..3].iter_mut().enumerate() {
-            *slot = m * (theta - 2.0 * std::f64::consts::PI * k as f64 / 3.0).cos() - shift;
-        }
-        3
-    } else {
-        let s = h.max(0.0).sqrt();
-        let u = (-q / 2.0 + s.copysign(-q)).cbrt();
-        let y = if u == 0.0 { 0.0 } else { u - p / (3.0 * u) };
-        out[0] = y - shift;
-        1
-    }
 }
 
 #[cfg(test)]

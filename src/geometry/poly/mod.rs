@@ -21,6 +21,7 @@ mod bounds;
 mod expand;
 mod first_root;
 
+use super::cubic::smallest_root_lanes;
 use super::cuboid::{frame_for, BoxFrame};
 use super::quadric::QuadricForm;
 use super::quartic::{first_root, first_root_lanes, Ill};
@@ -294,20 +295,24 @@ impl Poly {
             let c: [f64; K] = std::array::from_fn(|k| along[k].0[i]);
             self.solve_along(&c[..=self.order], ray.t_c.0[i], ray.len.0[i], lo, hi)
         };
-        if N > 1 && self.order == 4 && self.solver == Solver::Sturm {
-            return self.quartic_lanes(ray, &along, o, d, t_min, t_max, lane);
+        // The closed forms that take all lanes at once.
+        if N > 1
+            && ((self.order == 4 && self.solver == Solver::Sturm) || (self.order == 3 && self.solver == Solver::Fast))
+        {
+            return self.closed_lanes(ray, &along, o, d, t_min, t_max, lane);
         }
         super::solve_lanes_f64(o, d, t_min, t_max, lane)
     }
 
-    /// `solve_expanded` for a quartic under `sturm`, all lanes at once: Ferrari's closed form
-    /// as `solve_along` takes it (`quartic::first_root_lanes`), for every lane whose quartic
-    /// has its leading term and whose root, if any, is the answer at once. A lane where the
-    /// closed form declines, or that must search on past `t_min` (CSG), is solved by `lane`
-    /// alone, from the start: the same arithmetic, so the same bits either way.
+    /// `solve_expanded` for a quartic under `sturm` or a cubic without it, all lanes at once:
+    /// the closed form as `solve_along` takes it (`quartic::first_root_lanes`,
+    /// `cubic::smallest_root_lanes`), for every lane whose polynomial has its leading term and
+    /// whose root, if any, is the answer at once. A lane where the closed form declines, or
+    /// that must search on past `t_min` (CSG), is solved by `lane` alone, from the start: the
+    /// same arithmetic, so the same bits either way.
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn quartic_lanes<L: Lane, const N: usize, const K: usize>(
+    fn closed_lanes<L: Lane, const N: usize, const K: usize>(
         &self,
         ray: &CentredLanes<N>,
         along: &[W<N>; K],
@@ -318,16 +323,23 @@ impl Poly {
         lane: impl Fn(usize, DVec3, DVec3, f64, f64) -> Option<f64>,
     ) -> L {
         let k = W::<N>::splat;
+        let n = self.order;
         let (lo, hi): (W<N>, W<N>) = (lane_f64(t_min), lane_f64(t_max));
         // As `solve_along`: the coefficients' size, and the leading term above its noise.
-        let scale = along[..5].iter().fold(k(0.0), |m, c| m.zip(c.abs(), f64::max));
-        let lead = along[4];
+        let scale = along[..=n].iter().fold(k(0.0), |m, c| m.zip(c.abs(), f64::max));
+        let lead = along[n];
         let mut fast = and(ray.valid, lo.lt(hi));
         fast = and(fast, and(scale.0.map(|v| !v.is_nan() && v != 0.0), (k(1e-14) * scale).lt(lead.abs())));
         let (s_lo, s_hi) = ((lo - ray.t_c) * ray.len, (hi - ray.t_c) * ray.len);
-        let monic = [k(1.0), along[3] / lead, along[2] / lead, along[1] / lead, along[0] / lead];
-        let accept = |s: W<N>| (and(s_lo.lt(s), s.lt(s_hi)), s);
-        let (s, found, ill) = first_root_lanes(&monic, s_lo, s_hi, fast, accept);
+        let c = along;
+        let (s, found, ill) = if n == 4 {
+            let monic = [k(1.0), c[3] / c[4], c[2] / c[4], c[1] / c[4], c[0] / c[4]];
+            let accept = |s: W<N>| (and(s_lo.lt(s), s.lt(s_hi)), s);
+            first_root_lanes(&monic, s_lo, s_hi, fast, accept)
+        } else {
+            let s = smallest_root_lanes(&[c[3], c[2], c[1], c[0]], s_lo, s_hi);
+            (s, s.0.map(|v| !v.is_nan()), [false; N])
+        };
         let t = ray.t_c + s / ray.len;
         L::from_fn_f64(|i| {
             if !fast[i] || ill[i] {

@@ -14,7 +14,7 @@ use super::lathe_linear::{self, Cone};
 use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{along_monotone, closest_t, even_odd, Piece};
-use super::wide::{lane_f64, lanes_f64, to_lane};
+use super::wide::{lane_f64, lanes_f64, to_lane, W};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
@@ -38,6 +38,10 @@ pub struct Lathe {
     /// Where every piece is straight, each as a cone (`lathe_linear`, eight lanes at once);
     /// empty otherwise.
     cones: Vec<Cone>,
+    /// For a straight outline that bounds a simple polygon, whether each piece's right-hand
+    /// normal points out (`lathe_linear::outward_right`): the normal's orientation without an
+    /// even-odd test.
+    outward_right: Option<bool>,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -129,6 +133,7 @@ impl Lathe {
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
         Lathe {
             frame: frame_for(xf),
+            outward_right: lathe_linear::outward_right(&outline),
             outline,
             pieces,
             squares,
@@ -206,7 +211,18 @@ impl Lathe {
                 }
                 c[len - 1] += k_1;
                 let m = if len <= 3 {
-                    roots_between(&c[..len], 0.0, 1.0, &mut roots)
+                    // As the eight-lane solve skips and solves it (`lathe_linear`), for its bits.
+                    if !lathe_linear::may_cross(c[0], c[1], c[2]) {
+                        continue;
+                    }
+                    let mut m = 0;
+                    for (t, ok) in lathe_linear::roots_unit(W([c[0]]), W([c[1]]), W([c[2]])) {
+                        if ok[0] {
+                            roots[m] = t.0[0];
+                            m += 1;
+                        }
+                    }
+                    m
                 } else {
                     let mut b = [0.0; MAX_B + 1];
                     for (k, slot) in b[..len].iter_mut().enumerate() {
@@ -215,7 +231,7 @@ impl Lathe {
                     roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
                 };
                 for &t in &roots[..m] {
-                    hits[n] = (p.at(t).y - o.y) / d.y;
+                    hits[n] = (p.at(t).y - o.y) * inv_dy;
                     n += 1;
                 }
             }
@@ -233,10 +249,12 @@ impl Lathe {
     /// compiled out of line, without AVX2.
     #[inline(always)]
     fn hit_cones<L: Lane>(&self, c: &Candidates, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
-        let level = (0..L::WIDTH).fold(0u8, |m, i| {
+        // A loop, not a fold's closure (compiled out of line, without AVX2).
+        let mut level = 0u8;
+        for i in 0..L::WIDTH {
             let (x, y, z) = (d.x.get_f64(i), d.y.get_f64(i), d.z.get_f64(i));
-            m | u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i
-        });
+            level |= u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i;
+        }
         let t = if L::WIDTH == 8 {
             let skip = std::array::from_fn(|i| level >> i & 1 != 0);
             let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
@@ -308,12 +326,23 @@ impl Lathe {
         let p = &self.pieces[i];
         let tan = p.tangent(t);
         let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
-        let at = p.at(t);
-        let eps = 1e-6 * (1.0 + at.abs().max_element());
-        if even_odd(&self.outline, at + eps * n2) {
+        let inward = match self.outward_right {
+            Some(out) => !out,
+            None => {
+                let at = p.at(t);
+                let eps = 1e-6 * (1.0 + at.abs().max_element());
+                even_odd(&self.outline, at + eps * n2)
+            }
+        };
+        if inward {
             n2 = -n2;
         }
-        let (ux, uz) = if w.x > 0.0 { (q.x / w.x, q.z / w.x) } else { (1.0, 0.0) };
+        let (ux, uz) = if w.x > 0.0 {
+            let inv = 1.0 / w.x;
+            (q.x * inv, q.z * inv)
+        } else {
+            (1.0, 0.0)
+        };
         DVec3::new(n2.x * ux, n2.y, n2.x * uz)
     }
 }

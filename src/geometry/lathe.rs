@@ -38,10 +38,10 @@ pub struct Lathe {
     /// Where every piece is straight, each as a cone (`lathe_linear`, eight lanes at once);
     /// empty otherwise.
     cones: Vec<Cone>,
-    /// For a straight outline that bounds a simple polygon, whether each piece's right-hand
-    /// normal points out (`lathe_linear::outward_right`): the normal's orientation without an
-    /// even-odd test.
-    outward_right: Option<bool>,
+    /// For a straight outline that bounds a simple polygon (`lathe_linear::outward_right`),
+    /// each piece's outward unit normal in `(r, y)`: the normal without a tangent, a square
+    /// root or an even-odd test. Empty otherwise.
+    outward: Vec<DVec2>,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -133,7 +133,13 @@ impl Lathe {
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
         Lathe {
             frame: frame_for(xf),
-            outward_right: lathe_linear::outward_right(&outline),
+            outward: match lathe_linear::outward_right(&outline) {
+                // A line's tangent is the same at every `t`: these are `oriented`'s bits.
+                Some(out) => {
+                    pieces.iter().map(|p| Lathe::right_normal(p, 0.0) * if out { 1.0 } else { -1.0 }).collect()
+                }
+                None => Vec::new(),
+            },
             outline,
             pieces,
             squares,
@@ -320,23 +326,28 @@ impl Lathe {
         self.oriented(q, w, best)
     }
 
+    /// The unit right-hand normal `(tan.y, −tan.x)` of piece `p` at `t`.
+    fn right_normal(p: &Piece, t: f64) -> DVec2 {
+        let tan = p.tangent(t);
+        DVec2::new(tan.y, -tan.x).normalize_or_zero()
+    }
+
     /// The outward normal at `q` (profile point `w`) from the tangent of piece `i` at `t`.
     fn oriented(&self, q: DVec3, w: DVec2, best: Option<(f64, usize, f64)>) -> DVec3 {
         let Some((_, i, t)) = best else { return DVec3::Y };
-        let p = &self.pieces[i];
-        let tan = p.tangent(t);
-        let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
-        let inward = match self.outward_right {
-            Some(out) => !out,
-            None => {
-                let at = p.at(t);
-                let eps = 1e-6 * (1.0 + at.abs().max_element());
-                even_odd(&self.outline, at + eps * n2)
+        let n2 = if let Some(&n2) = self.outward.get(i) {
+            n2
+        } else {
+            let p = &self.pieces[i];
+            let n2 = Lathe::right_normal(p, t);
+            let at = p.at(t);
+            let eps = 1e-6 * (1.0 + at.abs().max_element());
+            if even_odd(&self.outline, at + eps * n2) {
+                -n2
+            } else {
+                n2
             }
         };
-        if inward {
-            n2 = -n2;
-        }
         let (ux, uz) = if w.x > 0.0 {
             let inv = 1.0 / w.x;
             (q.x * inv, q.z * inv)

@@ -14,7 +14,7 @@ use super::lathe_linear::{self, Cone};
 use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{along_monotone, closest_t, even_odd, Piece};
-use super::wide::{lane_f64, lanes_f64, to_lane};
+use super::wide::{lane_f64, lanes_f64, to_lane, W};
 use super::{affine_f32, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
@@ -38,6 +38,10 @@ pub struct Lathe {
     /// Where every piece is straight, each as a cone (`lathe_linear`, eight lanes at once);
     /// empty otherwise.
     cones: Vec<Cone>,
+    /// For a straight outline that bounds a simple polygon (`lathe_linear::outward_right`),
+    /// each piece's outward unit normal in `(r, y)`: the normal without a tangent, a square
+    /// root or an even-odd test. Empty otherwise.
+    outward: Vec<DVec2>,
     pub min: Vec3,
     pub max: Vec3,
 }
@@ -129,6 +133,13 @@ impl Lathe {
         let pad = (max - min).max(min.abs().max(max.abs())) * 4.0 * f32::EPSILON;
         Lathe {
             frame: frame_for(xf),
+            outward: match lathe_linear::outward_right(&outline) {
+                // A line's tangent is the same at every `t`: these are `oriented`'s bits.
+                Some(out) => {
+                    pieces.iter().map(|p| Lathe::right_normal(p, 0.0) * if out { 1.0 } else { -1.0 }).collect()
+                }
+                None => Vec::new(),
+            },
             outline,
             pieces,
             squares,
@@ -206,7 +217,18 @@ impl Lathe {
                 }
                 c[len - 1] += k_1;
                 let m = if len <= 3 {
-                    roots_between(&c[..len], 0.0, 1.0, &mut roots)
+                    // As the eight-lane solve skips and solves it (`lathe_linear`), for its bits.
+                    if !lathe_linear::may_cross(c[0], c[1], c[2]) {
+                        continue;
+                    }
+                    let mut m = 0;
+                    for (t, ok) in lathe_linear::roots_unit(W([c[0]]), W([c[1]]), W([c[2]])) {
+                        if ok[0] {
+                            roots[m] = t.0[0];
+                            m += 1;
+                        }
+                    }
+                    m
                 } else {
                     let mut b = [0.0; MAX_B + 1];
                     for (k, slot) in b[..len].iter_mut().enumerate() {
@@ -215,7 +237,7 @@ impl Lathe {
                     roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
                 };
                 for &t in &roots[..m] {
-                    hits[n] = (p.at(t).y - o.y) / d.y;
+                    hits[n] = (p.at(t).y - o.y) * inv_dy;
                     n += 1;
                 }
             }
@@ -233,10 +255,12 @@ impl Lathe {
     /// compiled out of line, without AVX2.
     #[inline(always)]
     fn hit_cones<L: Lane>(&self, c: &Candidates, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
-        let level = (0..L::WIDTH).fold(0u8, |m, i| {
+        // A loop, not a fold's closure (compiled out of line, without AVX2).
+        let mut level = 0u8;
+        for i in 0..L::WIDTH {
             let (x, y, z) = (d.x.get_f64(i), d.y.get_f64(i), d.z.get_f64(i));
-            m | u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i
-        });
+            level |= u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i;
+        }
         let t = if L::WIDTH == 8 {
             let skip = std::array::from_fn(|i| level >> i & 1 != 0);
             let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
@@ -302,18 +326,34 @@ impl Lathe {
         self.oriented(q, w, best)
     }
 
+    /// The unit right-hand normal `(tan.y, −tan.x)` of piece `p` at `t`.
+    fn right_normal(p: &Piece, t: f64) -> DVec2 {
+        let tan = p.tangent(t);
+        DVec2::new(tan.y, -tan.x).normalize_or_zero()
+    }
+
     /// The outward normal at `q` (profile point `w`) from the tangent of piece `i` at `t`.
     fn oriented(&self, q: DVec3, w: DVec2, best: Option<(f64, usize, f64)>) -> DVec3 {
         let Some((_, i, t)) = best else { return DVec3::Y };
-        let p = &self.pieces[i];
-        let tan = p.tangent(t);
-        let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
-        let at = p.at(t);
-        let eps = 1e-6 * (1.0 + at.abs().max_element());
-        if even_odd(&self.outline, at + eps * n2) {
-            n2 = -n2;
-        }
-        let (ux, uz) = if w.x > 0.0 { (q.x / w.x, q.z / w.x) } else { (1.0, 0.0) };
+        let n2 = if let Some(&n2) = self.outward.get(i) {
+            n2
+        } else {
+            let p = &self.pieces[i];
+            let n2 = Lathe::right_normal(p, t);
+            let at = p.at(t);
+            let eps = 1e-6 * (1.0 + at.abs().max_element());
+            if even_odd(&self.outline, at + eps * n2) {
+                -n2
+            } else {
+                n2
+            }
+        };
+        let (ux, uz) = if w.x > 0.0 {
+            let inv = 1.0 / w.x;
+            (q.x * inv, q.z * inv)
+        } else {
+            (1.0, 0.0)
+        };
         DVec3::new(n2.x * ux, n2.y, n2.x * uz)
     }
 }

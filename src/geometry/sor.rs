@@ -11,7 +11,7 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::{roots_between, roots_between_to, FOR_F32};
+use super::bernstein::{roots_between, roots_between_to, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
 use super::revolved::{along, hit_lanes, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
@@ -29,9 +29,72 @@ struct Segment {
     /// misses the segment (`RadialRay::misses`).
     r2_min: f64,
     r2_max: f64,
+    /// `f(lo + u·(hi − lo))` for `u` in `[0, 1]`: its power coefficients, highest first, and
+    /// its Bernstein coefficients (`with_unit`). A ray's cubic over the segment is this less a
+    /// quadratic in `u`, so its Bernstein form costs four subtractions, not a change of basis.
+    g: [f64; 4],
+    g_b: [f64; 4],
 }
 
 impl Segment {
+    /// The nearest crossing in `(t_min, best)` of a steep ray (`Sor::solve`) with the side,
+    /// solved in `u`, `y = lo + u·(hi − lo)`, `t = t_lo + u·w`: `g(u) − |p + u·w·d_h|²`, with
+    /// `p` the ray's horizontal point at `t_lo`, whose Bernstein form is `g_b` less the
+    /// quadratic's (degree-elevated), without a Taylor shift and change of basis per ray. Solved
+    /// on the whole segment, not on the part inside `(t_min, best)`: its roots do not depend on
+    /// `t_min`, so a root just below an f32 `t_min` comes out at the same bits again and is
+    /// passed over when `hit_lanes_f64` asks past it.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    fn steep_hit(
+        &self,
+        band: &RadialRay,
+        o: DVec3,
+        d: DVec3,
+        inv_dy: f64,
+        t_min: f64,
+        best: f64,
+        roots: &mut [f64; MAX_DEGREE],
+    ) -> Option<f64> {
+        let (t_lo, t_hi) = ((self.lo - o.y) * inv_dy, (self.hi - o.y) * inv_dy);
+        let (near, far) = (t_lo.min(t_hi).max(t_min), t_lo.max(t_hi).min(best));
+        // NaN compares false: not solved.
+        if !(near < far) || band.misses(near, far, self.r2_min, self.r2_max) {
+            return None;
+        }
+        let w = t_hi - t_lo;
+        let (px, pz) = (o.x + t_lo * d.x, o.z + t_lo * d.z);
+        let (qa, qb, qc) = (px * px + pz * pz, 2.0 * w * (px * d.x + pz * d.z), w * w * band.dh2);
+        let g = &self.g;
+        let poly = [g[0], g[1] - qc, g[2] - qb, g[3] - qa];
+        let third = 1.0 / 3.0;
+        let q_b = [qa, qa + third * qb, qa + 2.0 * third * qb + third * qc, qa + qb + qc];
+        let mut b = [0.0; MAX_B + 1];
+        for (i, slot) in b[..4].iter_mut().enumerate() {
+            *slot = self.g_b[i] - q_b[i];
+        }
+        let n = roots_unit_to(&poly, b, FOR_F32, roots);
+        let mut hit = None;
+        for &u in &roots[..n] {
+            let t = t_lo + u * w;
+            if t > t_min && t < hit.unwrap_or(best) {
+                hit = Some(t);
+            }
+        }
+        hit
+    }
+
+    /// The segment with `g` and `g_b` filled in (Taylor's expansion of `f` about `lo`).
+    fn with_unit(mut self) -> Segment {
+        let (h, [a, b, _, _]) = (self.hi - self.lo, self.k);
+        let g = [a * h * h * h, (3.0 * a * self.lo + b) * h * h, self.slope(self.lo) * h, self.f(self.lo)];
+        let low_first = [g[3], g[2], g[1], g[0]];
+        let b = to_bernstein(&low_first);
+        self.g = g;
+        self.g_b = [b[0], b[1], b[2], b[3]];
+        self
+    }
+
     fn f(&self, y: f64) -> f64 {
         ((self.k[0] * y + self.k[1]) * y + self.k[2]) * y + self.k[3]
     }
@@ -99,9 +162,17 @@ fn segments(p: &[DVec2]) -> Vec<Segment> {
             let row = |y: f64| [y * y * y, y * y, y, 1.0];
             let slope = |y: f64| [3.0 * y * y, 2.0 * y, 1.0, 0.0];
             let m = [row(h(j)), row(h(j + 1)), slope(h(j)), slope(h(j + 1))];
-            let mut seg = Segment { lo: h(j), hi: h(j + 1), k: solve4(m, b), r2_min: 0.0, r2_max: 0.0 };
+            let mut seg = Segment {
+                lo: h(j),
+                hi: h(j + 1),
+                k: solve4(m, b),
+                r2_min: 0.0,
+                r2_max: 0.0,
+                g: [0.0; 4],
+                g_b: [0.0; 4],
+            };
             (seg.r2_min, seg.r2_max) = r2_range(&seg);
-            seg
+            seg.with_unit()
         })
         .collect()
 }
@@ -187,11 +258,23 @@ impl Sor {
         let band = RadialRay::new(o, d);
         let (dh2, odh, oh2) = (band.dh2, band.odh, band.oh2);
         let mut roots = [0.0; MAX_DEGREE];
+        // A ray that climbs or falls by at least a tenth of its horizontal run crosses a
+        // segment's heights within a few widths of the axis: it is solved in the segments' own
+        // parameter (`Segment::steep_hit`); a flatter one in `t`, on the part of its span near
+        // the segment's radius, where `u` would resolve `t` too coarsely.
+        let steep = d.y != 0.0 && d.y * d.y >= 0.01 * dh2;
+        let inv_dy = 1.0 / d.y;
         for k in along(self.segments.len(), d.y) {
             if !may.may_meet(k) {
                 continue;
             }
             let s = &self.segments[k];
+            if steep {
+                if let Some(t) = s.steep_hit(&band, o, d, inv_dy, t_min, best, &mut roots) {
+                    best = t;
+                }
+                continue;
+            }
             // The span of t where the ray is within the segment's heights and its widest radius
             // (a root lies in both). The cubic is solved on all of it, not on the part inside
             // (t_min, best): its roots then do not depend on t_min, so a root just below an f32

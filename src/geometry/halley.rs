@@ -7,27 +7,50 @@
 //! Halley's step converges cubically: the root lies within `K·step³` of the step's end, with
 //! `K = p''²/(4p'²) − p'''/(6p')`, so the search stops once that bound is below 10⁻¹⁵: two or
 //! three evaluations, each of `p` and its first three derivatives together.
+//!
+//! The coefficients come as fixed-size arrays (the sign scan unrolls), and the derivatives'
+//! coefficients are formed once per root, so a step evaluates four short Horner chains rather
+//! than the nested one that carried all four derivatives through every coefficient.
 
-/// `p(x)`, `p'(x)`, `p''(x)` and `p'''(x)` for coefficients highest degree first (Horner).
-#[inline]
-fn eval3(c: &[f64], x: f64) -> (f64, f64, f64, f64) {
-    let (mut f, mut df, mut ddf, mut dddf) = (0.0, 0.0, 0.0, 0.0);
-    for &k in c {
-        dddf = dddf * x + 3.0 * ddf;
-        ddf = ddf * x + 2.0 * df;
-        df = df * x + f;
-        f = f * x + k;
+/// A polynomial of degree at most 3 with its derivatives' coefficients, highest power first.
+struct Derivatives {
+    c: [f64; 4],
+    d1: [f64; 3],
+    d2: [f64; 2],
+    d3: f64,
+}
+
+impl Derivatives {
+    /// Those of `c` (highest power first, 1 to 4 coefficients).
+    #[inline]
+    fn of<const N: usize>(c: &[f64; N]) -> Derivatives {
+        let mut p = [0.0; 4];
+        p[4 - N..].copy_from_slice(c);
+        Derivatives { c: p, d1: [3.0 * p[0], 2.0 * p[1], p[2]], d2: [6.0 * p[0], 2.0 * p[1]], d3: 6.0 * p[0] }
     }
-    (f, df, ddf, dddf)
+
+    /// `p(x)`, `p'(x)`, `p''(x)` and `p'''(x)`.
+    #[inline]
+    fn at(&self, x: f64) -> (f64, f64, f64, f64) {
+        let (c, d1, d2) = (&self.c, &self.d1, &self.d2);
+        let f = ((c[0] * x + c[1]) * x + c[2]) * x + c[3];
+        (f, (d1[0] * x + d1[1]) * x + d1[2], d2[0] * x + d2[1], self.d3)
+    }
+}
+
+/// `p(x)`, `p'(x)`, `p''(x)` and `p'''(x)` for coefficients highest degree first.
+#[cfg(test)]
+fn eval3<const N: usize>(c: &[f64; N], x: f64) -> (f64, f64, f64, f64) {
+    Derivatives::of(c).at(x)
 }
 
 /// Where the Bernstein coefficients `b` change sign once, with nonzero ends and no zero between
 /// them; `None` for any other sign pattern (no change, several, or a zero), which the caller
 /// solves the general way.
 #[inline]
-pub fn single_change(b: &[f64]) -> Option<usize> {
+pub fn single_change<const N: usize>(b: &[f64; N]) -> Option<usize> {
     let mut at = None;
-    for i in 0..b.len() - 1 {
+    for i in 0..N - 1 {
         if b[i] == 0.0 || b[i + 1] == 0.0 || b[i].is_nan() || b[i + 1].is_nan() {
             return None;
         }
@@ -45,14 +68,15 @@ pub fn single_change(b: &[f64]) -> Option<usize> {
 /// are `b` (as many), where `single_change(b)` is `Some(i)`: `p` then has exactly one root
 /// there, with `b[0]`'s sign at 0 and `b[n]`'s at 1 (the coefficients' ends are the
 /// polynomial's end values).
-pub fn single_root(c: &[f64], b: &[f64], i: usize) -> f64 {
-    let n = b.len() - 1;
+pub fn single_root<const N: usize>(c: &[f64; N], b: &[f64; N], i: usize) -> f64 {
+    let n = N - 1;
     // The control polygon crosses zero between its points i and i + 1, near the root.
     let mut x = (i as f64 + b[i] / (b[i] - b[i + 1])) / n as f64;
     let neg_at_0 = b[0] < 0.0;
     let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    let p = Derivatives::of(c);
     for _ in 0..100 {
-        let (f, df, ddf, dddf) = eval3(c, x);
+        let (f, df, ddf, dddf) = p.at(x);
         if f == 0.0 {
             return x;
         }
@@ -65,9 +89,11 @@ pub fn single_root(c: &[f64], b: &[f64], i: usize) -> f64 {
         let step = 2.0 * f * df / (2.0 * df * df - f * ddf);
         let next = x - step;
         let (l, h) = (lo.min(hi), lo.max(hi));
-        // Cubic convergence: the root is within about K·step³ of `next`.
-        let k = (ddf * ddf / (4.0 * df * df)).abs() + (dddf / (6.0 * df)).abs();
-        if k * step.abs().powi(3) <= 1e-15 {
+        // Cubic convergence: the root is within about K·step³ of `next`, K·p'² compared with
+        // p'² here rather than K divided out (one division a step instead of three: they were
+        // most of a step's time).
+        let k_df2 = 0.25 * ddf * ddf + (dddf * df / 6.0).abs();
+        if df != 0.0 && k_df2 * step.abs().powi(3) <= 1e-15 * (df * df) {
             return next.clamp(l, h);
         }
         x = if next > l && next < h { next } else { 0.5 * (lo + hi) };
@@ -80,7 +106,7 @@ pub fn single_root(c: &[f64], b: &[f64], i: usize) -> f64 {
 
 /// How many times the coefficients `b` change sign; `None` where one is zero or NaN.
 #[inline]
-fn changes(b: &[f64]) -> Option<usize> {
+fn changes(b: &[f64; 4]) -> Option<usize> {
     if b.iter().any(|&x| x == 0.0 || x.is_nan()) {
         return None;
     }
@@ -123,6 +149,11 @@ mod tests {
     use crate::geometry::roots::MAX_DEGREE;
     use crate::geometry::test_support::uniform;
 
+    /// The first `N` of `v` as an array.
+    fn fixed<const N: usize>(v: &[f64]) -> [f64; N] {
+        std::array::from_fn(|i| v[i])
+    }
+
     /// Seeded random cubics and quadratics (roots spread over [0, 1], some 10⁻⁶ from an end or
     /// from a second root outside, coefficients scaled by 10⁻⁸ to 10⁸) whose Bernstein
     /// coefficients change sign once: the root agrees with `roots_unit`'s to 10⁻¹² (or to the
@@ -156,7 +187,9 @@ mod tests {
             }
             let b = to_bernstein(&low);
             let b = &b[..=n];
-            let Some(i) = single_change(b) else { continue };
+            let Some(i) = (if n == 3 { single_change(&fixed::<4>(b)) } else { single_change(&fixed::<3>(b)) }) else {
+                continue;
+            };
             let c: Vec<f64> = low.iter().rev().copied().collect();
             let mut roots = [0.0; MAX_DEGREE];
             let m = if n == 3 {
@@ -167,9 +200,14 @@ mod tests {
                 roots_between(&c, 0.0, 1.0, &mut roots)
             };
             assert_eq!(m, 1, "{c:?}: {:?}", &roots[..m]);
-            let t = single_root(&c, b, i);
+            let t = if n == 3 {
+                single_root(&fixed::<4>(&c), &fixed::<4>(b), i)
+            } else {
+                single_root(&fixed::<3>(&c), &fixed::<3>(b), i)
+            };
             // To 10⁻¹², or to what rounding the coefficients moves a root near a double one.
-            let (_, slope, _, _) = eval3(&c, roots[0]);
+            let (_, slope, _, _) =
+                if n == 3 { eval3(&fixed::<4>(&c), roots[0]) } else { eval3(&fixed::<3>(&c), roots[0]) };
             let tol = 1e-12 + 8.0 * f64::EPSILON * c.iter().map(|k| k.abs()).sum::<f64>() / slope.abs();
             assert!((t - roots[0]).abs() <= tol, "{c:?}: {t} against {}", roots[0]);
             tested += 1;
@@ -213,7 +251,7 @@ mod tests {
             // coefficients' only at a root within rounding of an end: none here.
             assert_eq!(m, n, "{c:?}: {:?} against {:?}", &got[..m], &want[..n]);
             for (g, w) in got[..m].iter().zip(&want[..n]) {
-                let (_, slope, _, _) = eval3(&c, *w);
+                let (_, slope, _, _) = eval3(&fixed::<4>(&c), *w);
                 let tol = 1e-12 + 8.0 * f64::EPSILON * c.iter().map(|k| k.abs()).sum::<f64>() / slope.abs();
                 assert!((g - w).abs() <= tol, "{c:?}: {g} against {w}");
             }

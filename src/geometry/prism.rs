@@ -20,6 +20,7 @@ mod arc;
 mod cells;
 mod diamond;
 mod normal;
+mod outward;
 mod sides;
 
 use super::bands::Bands;
@@ -42,6 +43,8 @@ pub struct Prism {
     bands: Bands,
     /// The section's grid: inside or outside for most points, and the arcs near them.
     cells: cells::Cells,
+    /// Each arc's outward side where it is settled (`outward`), for the normal.
+    outward: Vec<u8>,
     /// The straight arcs apart (`sides::Line`), and the curved ones' boxes (`sides::Curve`).
     lines: Vec<sides::Line>,
     curves: Vec<sides::Curve>,
@@ -106,18 +109,15 @@ impl Prism {
         let bands = Bands::new(&arcs);
         let slabs: Vec<arc::Slab> = arcs.iter().map(arc::Slab::of).collect();
         let cells = cells::Cells::new(&arcs, &slabs, |q| Self::crossings(&bands, &arcs, q));
+        let outward = outward::sides(&arcs, cells.lists(), |q| Self::crossings(&bands, &arcs, q));
         Prism {
             frame: frame_for(xf),
-            lines: arcs.iter().filter(|p| p.degree == 1).map(sides::Line::of).collect(),
+            lines: sides::Line::all(&arcs),
             diamond: (!conic).then(|| diamond::Diamond::new(&arcs, h1, h2)),
-            curves: arcs
-                .iter()
-                .enumerate()
-                .filter(|(_, p)| p.degree > 1)
-                .map(|(i, p)| sides::Curve::of(i, p))
-                .collect(),
+            curves: sides::Curve::all(&arcs),
             bands,
             cells,
+            outward,
             slabs,
             arcs,
             #[cfg(test)]
@@ -259,7 +259,8 @@ impl Shape for Prism {
             },
             None => t_max,
         };
-        super::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+        // The object-space ray as `hit_lanes_f64` would transform it again.
+        super::solve_lanes_f64(o, d, t_min, t_max, |_, o, d, lo, hi| self.solve(o, d, lo, hi))
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

@@ -156,6 +156,11 @@ impl Cells {
         }
     }
 
+    /// Every cell's arc list; `None` without a grid.
+    pub fn lists(&self) -> Option<impl Iterator<Item = &[u32]>> {
+        (self.n > 0).then(|| self.start.windows(2).map(|w| &self.index[w[0] as usize..w[1] as usize]))
+    }
+
     /// The arcs listed in `q`'s cell and how far `q` lies inside the cell: every other arc lies
     /// at least that far from `q`. `None` outside the grid.
     #[inline]

@@ -3,17 +3,17 @@
 
 use glam::{DVec2, DVec3};
 
-use super::{arc, Prism};
-use crate::geometry::spline::Piece;
+use super::{arc, outward, Prism};
 
 impl Prism {
-    /// Takes arc `p`'s nearest point to `w` as `side` where it is nearer than `best`.
-    fn nearer<'a>(&self, p: &'a Piece, w: DVec2, scale: f64, best: &mut f64, side: &mut Option<(&'a Piece, f64)>) {
+    /// Takes arc `i`'s nearest point to `w` as `side` where it is nearer than `best`.
+    fn nearer(&self, i: u32, w: DVec2, scale: f64, best: &mut f64, side: &mut Option<(u32, f64)>) {
+        let p = &self.arcs[i as usize];
         let t = arc::nearest_t(p, w);
         let dist = (p.at(t) - w).length() * scale;
         if dist < *best {
             *best = dist;
-            *side = Some((p, t));
+            *side = Some((i, t));
         }
     }
 
@@ -22,13 +22,13 @@ impl Prism {
     /// first: the point lies on that arc or a neighbour, and the distance to it then rules out
     /// the arcs that lie farther. Up to `N` are queued (the rest are solved as found): a cell
     /// lists a few, and a longer queue costs its clearing on every normal.
-    fn nearest_of<'a, const N: usize>(
-        &'a self,
+    fn nearest_of<const N: usize>(
+        &self,
         arcs: impl Iterator<Item = u32>,
         w: DVec2,
         scale: f64,
         best: &mut f64,
-        side: &mut Option<(&'a Piece, f64)>,
+        side: &mut Option<(u32, f64)>,
     ) {
         let mut near = [(0.0, 0u32); N];
         let mut count = 0;
@@ -37,7 +37,7 @@ impl Prism {
             let g = (p.lo - w).max(w - p.hi).max(DVec2::ZERO).length().max(slab.gap(w)) * scale;
             if g < *best {
                 if count == near.len() {
-                    self.nearer(p, w, scale, best, side);
+                    self.nearer(i, w, scale, best, side);
                 } else {
                     near[count] = (g, i);
                     count += 1;
@@ -50,7 +50,7 @@ impl Prism {
         }
         for &(g, i) in near.iter() {
             if g < *best {
-                self.nearer(&self.arcs[i as usize], w, scale, best, side);
+                self.nearer(i, w, scale, best, side);
             }
         }
     }
@@ -72,7 +72,7 @@ impl Prism {
         }
         // Side distances are measured in the section, scaled back to object units for a cone.
         let scale = if self.conic { q.y.abs() } else { 1.0 };
-        let mut side: Option<(&Piece, f64)> = None;
+        let mut side: Option<(u32, f64)> = None;
         // The arcs of `w`'s cell first (none for most points on a cap): any other arc lies
         // farther from `w` than its margin in the cell, so when the nearest found lies nearer,
         // that is the nearest of all.
@@ -86,16 +86,25 @@ impl Prism {
         if !settled {
             self.nearest_of::<32>(0..self.arcs.len() as u32, w, scale, &mut best, &mut side);
         }
-        if let Some((p, t)) = side {
+        if let Some((i, t)) = side {
+            let p = &self.arcs[i as usize];
             let tan = p.tangent(t);
             let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
             if n2 == DVec2::ZERO {
                 return normal;
             }
-            // Outward: the side of the curve where the section is not inside.
+            // Outward: the side of the curve where the section is not inside, settled for the
+            // arc when the prism was built, or tested beside the point.
             let at = p.at(t);
-            let eps = 1e-6 * (1.0 + at.abs().max_element());
-            if self.inside_2d(at + eps * n2) {
+            let flip = match self.outward[i as usize] {
+                outward::KEEP => false,
+                outward::FLIP => true,
+                _ => {
+                    let eps = 1e-6 * (1.0 + at.abs().max_element());
+                    self.inside_2d(at + eps * n2)
+                }
+            };
+            if flip {
                 n2 = -n2;
             }
             normal = if self.conic {

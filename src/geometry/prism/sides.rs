@@ -6,6 +6,11 @@
 //! no degree dispatch and no queue costs a fraction of the general one (prism_linear: the
 //! side loop was a third of the frame). Curved arcs are bounded along the ray and solved
 //! nearest first.
+//!
+//! Both lists are sorted by their boxes' least `u`, so a footprint test stops at the first box
+//! that starts past the footprint (a standing glyph's footprints are narrow in `u`: its box
+//! loop was a third of its `solve`, most of it mispredicted jumps). The nearest crossing is the
+//! least whatever the order, so the bits are those of the arcs' own order.
 
 use glam::{DVec2, DVec3};
 
@@ -29,8 +34,15 @@ pub struct Line {
 }
 
 impl Line {
+    /// The lines of the straight arcs of `arcs`, by their boxes' least `u`.
+    pub fn all(arcs: &[Piece]) -> Vec<Line> {
+        let mut lines: Vec<Line> = arcs.iter().filter(|p| p.degree == 1).map(Line::of).collect();
+        lines.sort_by(|a, b| a.lo.x.total_cmp(&b.lo.x));
+        lines
+    }
+
     /// The line of a degree-1 piece.
-    pub fn of(p: &Piece) -> Line {
+    fn of(p: &Piece) -> Line {
         Line {
             lo: p.lo,
             hi: p.hi,
@@ -51,8 +63,14 @@ pub struct Curve {
 }
 
 impl Curve {
-    pub fn of(index: usize, p: &Piece) -> Curve {
-        Curve { lo: p.lo, hi: p.hi, index: index as u32 }
+    /// The curved arcs of `arcs`, by their boxes' least `u`.
+    pub fn all(arcs: &[Piece]) -> Vec<Curve> {
+        let mut curves: Vec<Curve> = (arcs.iter().enumerate())
+            .filter(|(_, p)| p.degree > 1)
+            .map(|(i, p)| Curve { lo: p.lo, hi: p.hi, index: i as u32 })
+            .collect();
+        curves.sort_by(|a, b| a.lo.x.total_cmp(&b.lo.x));
+        curves
     }
 }
 
@@ -78,7 +96,11 @@ impl Prism {
     pub(super) fn cross_lines(&self, r: &SideRay, hi: &mut f64) {
         let ((a, b, k), f_lo, f_hi) = (r.plane, r.f_lo, r.f_hi);
         for l in &self.lines {
-            if f_lo.x > l.hi.x || f_hi.x < l.lo.x || f_lo.y > l.hi.y || f_hi.y < l.lo.y {
+            // Sorted by `lo.x`: the rest start past the footprint too.
+            if l.lo.x > f_hi.x {
+                break;
+            }
+            if f_lo.x > l.hi.x || f_lo.y > l.hi.y || f_hi.y < l.lo.y {
                 continue;
             }
             // The Bernstein coefficients of the line's `a·u + b·v + k`: its end values.
@@ -105,7 +127,10 @@ impl Prism {
         let mut queue = [(0.0, 0u32); 16];
         let mut queued = 0;
         for c in &self.curves {
-            if f_lo.x > c.hi.x || f_hi.x < c.lo.x || f_lo.y > c.hi.y || f_hi.y < c.lo.y {
+            if c.lo.x > f_hi.x {
+                break;
+            }
+            if f_lo.x > c.hi.x || f_lo.y > c.hi.y || f_hi.y < c.lo.y {
                 continue;
             }
             let (i, p) = (c.index, &self.arcs[c.index as usize]);
@@ -152,33 +177,27 @@ impl Prism {
     /// Lowers `hi` to the nearest crossing in `(lo, hi)` of the side over curved arc `p` by the ray
     /// `o + s·d`, whose plane through the sweep axis is `a·u + b·v + k = 0` in the section
     /// (`dd = d.x² + d.z²`, for a linear sweep).
-    #[allow(clippy::too_many_arguments)]
     fn cross(&self, p: &Piece, r: &SideRay, hi: &mut f64) {
         let (a, b, k) = r.plane;
         let hull = p.combine_bernstein(a, b, k);
         let mut roots = [0.0; MAX_DEGREE];
+        let (c, n) = p.combine(a, b, k);
         // Lines are `cross_lines`'s.
         let m = match p.degree {
-            2 => {
-                let (c, n) = p.combine(a, b, k);
-                roots_between(&c[..n], 0.0, 1.0, &mut roots)
-            }
+            2 => roots_between(&c[..n], 0.0, 1.0, &mut roots),
             // A cubic whose hull crosses the line once: its one root, by Halley's steps; else on
             // each half where that holds there.
             _ => {
-                let (c, n) = p.combine(a, b, k);
-                match single_change(&hull[..n]) {
+                let bz = [hull[0], hull[1], hull[2], hull[3]];
+                match single_change(&bz) {
                     Some(i) => {
-                        roots[0] = single_root(&c[..n], &hull[..n], i);
+                        roots[0] = single_root(&c, &bz, i);
                         1
                     }
-                    None => {
-                        let bz = [hull[0], hull[1], hull[2], hull[3]];
-                        match cubic_roots_by_halves(&bz, &mut roots) {
-                            Some(m) => m,
-                            None => roots_unit(&c[..n], hull, &mut roots),
-                        }
-                    }
+                    None => match cubic_roots_by_halves(&bz, &mut roots) {
+                        Some(m) => m,
+                        None => roots_unit(&c[..n], hull, &mut roots),
+                    },
                 }
             }
         };

@@ -156,8 +156,8 @@ pub(super) fn roots_lanes<const N: usize>(a: W<N>, b: W<N>, c: W<N>) -> [W<N>; 3
 
 /// Per lane, the smallest root in `(lo, hi)` of the cubic `c` (highest degree first, `c[0] ≠ 0`
 /// in every lane), NaN where there is none: [`roots_lanes`] of the monic cubic, each root
-/// polished by two Newton steps on `c` (each taken only where it lowers |c|), the span first
-/// cut to Cauchy's bound.
+/// polished by two Newton steps on `c` (each taken only where it lowers |c|; none for a root
+/// far outside the span), the span first cut to Cauchy's bound.
 #[inline(always)]
 pub(super) fn smallest_root_lanes<const N: usize>(c: &[W<N>; 4], lo: W<N>, hi: W<N>) -> W<N> {
     let k = W::<N>::splat;
@@ -167,17 +167,23 @@ pub(super) fn smallest_root_lanes<const N: usize>(c: &[W<N>; 4], lo: W<N>, hi: W
     let (lo, hi) = (lo.zip(-bound, f64::max), hi.zip(bound, f64::min));
     let mut best = k(f64::NAN);
     let eval = |x: W<N>| c.iter().fold(k(0.0), |f, &v| f * x + v);
+    // A root far outside the span stays out (a polish moves one by far less): it is not
+    // polished, and a slot no lane needs polished costs nothing.
+    let far = k(1e-6) * (lo.abs() + hi.abs() + k(1.0));
     for mut r in roots_lanes(monic[0], monic[1], monic[2]) {
-        let mut f = eval(r);
-        for _ in 0..2 {
-            let df = c[..3].iter().enumerate().fold(k(0.0), |d, (i, &v)| d * r + k((3 - i) as f64) * v);
-            let next = r - f / df;
-            // A step that does not lower |f| is not taken: near a double root, where the
-            // derivative vanishes, Newton's step leaves the root for another or for none.
-            let f_next = eval(next);
-            let take = and(finite(next), f_next.abs().le(f.abs()));
-            r = W::select(take, next, r);
-            f = W::select(take, f_next, f);
+        let near = and(finite(r), and((lo - far).lt(r), r.lt(hi + far)));
+        if near.iter().any(|&b| b) {
+            let mut f = eval(r);
+            for _ in 0..2 {
+                let df = c[..3].iter().enumerate().fold(k(0.0), |d, (i, &v)| d * r + k((3 - i) as f64) * v);
+                let next = r - f / df;
+                // A step that does not lower |f| is not taken: near a double root, where the
+                // derivative vanishes, Newton's step leaves the root for another or for none.
+                let f_next = eval(next);
+                let take = and(and(near, finite(next)), f_next.abs().le(f.abs()));
+                r = W::select(take, next, r);
+                f = W::select(take, f_next, f);
+            }
         }
         let inside = and(lo.lt(r), r.lt(hi));
         best = W::select(and(inside, not(best.le(r))), r, best);

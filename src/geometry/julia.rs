@@ -397,7 +397,10 @@ impl Julia {
         }
     }
 
-    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, round: fn(f64) -> f64) -> Option<f64> {
+    /// The nearest crossing in `(t_min, t_max)`; with `any` (a shadow ray), the far end of the
+    /// first march step that holds one, where that step lies inside the interval and rounds
+    /// above `t_min` (the bisection's answer could only lie in it, and be taken).
+    fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, round: fn(f64) -> f64, any: bool) -> Option<f64> {
         // The span of t within the bounding ball.
         let (a, b, c) = (d.dot(d), o.dot(d), o.dot(o) - self.radius * self.radius);
         let disc = b * b - a * c;
@@ -433,7 +436,11 @@ impl Julia {
                 _ => self.inside_all(std::array::from_fn(|i| o + pending[i.min(n - 1)].1 * d)),
             };
             if let Some(i) = sides[..n.max(1)].iter().position(|&s| s != start) {
-                let b = self.crossing(o, d, start, pending[i].0, pending[i].1, round);
+                let (a, b) = pending[i];
+                if any && round(a) > t_min && b < t_max {
+                    return Some(b);
+                }
+                let b = self.crossing(o, d, start, a, b, round);
                 return (b > t_min && b < t_max).then_some(b);
             }
             if end {
@@ -523,7 +530,7 @@ impl Julia {
     }
 }
 
-shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object, solve: rounded);
+shape_solved_in_f64!(Julia, normal: normal_object, inside: inside_object, solve: rounded, blocks: bracket);
 
 #[cfg(test)]
 mod tests;

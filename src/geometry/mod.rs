@@ -14,7 +14,9 @@
 /// `normal_lanes_f64`, and `inside` the named object-space test through `inside_lanes_f64`
 /// (`inside: none` for a shell with no inside). With `solve: rounded`, `solve` takes a fifth
 /// argument, the lane's rounding (`Lane::round_f64`), so that a search may stop once its answer
-/// is decided to the lane's precision. `hit` is not inlined into `Scene::hit_prim`:
+/// is decided to the lane's precision; with `blocks: bracket` also a sixth, `any`, and `blocks`
+/// is the solve with `any` set: it may answer any point of a bracket that certainly holds the
+/// nearest root (see `Shape::blocks`). `hit` is not inlined into `Scene::hit_prim`:
 /// the dispatch every shape shares stays small, so scenes without these kinds do not pay for
 /// their code.
 macro_rules! shape_solved_in_f64 {
@@ -26,12 +28,25 @@ macro_rules! shape_solved_in_f64 {
         shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q),
             |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, _round: fn(f64) -> f64| this.solve(o, d, lo, hi));
     };
-    ($ty:ty, normal: $normal:ident, inside: $inside:ident, solve: rounded) => {
+    ($ty:ty, normal: $normal:ident, inside: $inside:ident, solve: rounded, blocks: bracket) => {
         shape_solved_in_f64!(@impl $ty, $normal, |this: &$ty, q: glam::DVec3| this.$inside(q),
-            |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, round: fn(f64) -> f64| this.solve(o, d, lo, hi, round));
+            |this: &$ty, o: glam::DVec3, d: glam::DVec3, lo: f64, hi: f64, round: fn(f64) -> f64| this.solve(o, d, lo, hi, round, false),
+            fn blocks<L: $crate::lanes::Lane>(
+                &self,
+                ray: &$crate::ray::RayLanes<L>,
+                t_min: L,
+                t_max: L,
+            ) -> L {
+                $crate::geometry::hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| {
+                    self.solve(o, d, lo, hi, L::round_f64, true)
+                })
+            }
+        );
     };
-    (@impl $ty:ty, $normal:ident, $inside:expr, $solve:expr) => {
+    (@impl $ty:ty, $normal:ident, $inside:expr, $solve:expr $(, $blocks:item)?) => {
         impl $crate::geometry::Shape for $ty {
+            $(#[inline(never)] $blocks)?
+
             #[inline(never)]
             fn hit<L: $crate::lanes::Lane>(
                 &self,
@@ -344,6 +359,16 @@ pub trait Shape {
     /// Flat shapes (triangles, polygons, discs) have no inside and answer false everywhere;
     /// points on the surface may answer either way.
     fn inside<L: Lane>(&self, p: V3<L>) -> L::Mask;
+
+    /// For shadow rays: `MISS` exactly where `hit` answers `MISS`, and elsewhere a `t` in
+    /// `(t_min, t_max)` that need not be the nearest hit's. A shape whose nearest root costs a
+    /// refinement (a bisection, a polish) answers as soon as a bracket lying inside the interval
+    /// certainly holds the root `hit` would answer, so the decision, blocked or not, is `hit`'s
+    /// bit for bit and only its cost differs.
+    #[inline(always)]
+    fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.hit(ray, t_min, t_max)
+    }
 
     /// `hit` for one f32 ray, `None` for a miss.
     #[inline]

@@ -41,3 +41,31 @@ pub fn star_with_hole() -> Vec<Piece> {
     pieces.extend(closed_pieces(SplineKind::Cubic, &hole).expect("hole").0);
     pieces
 }
+
+/// Checks `Shape::blocks` against `Shape::hit` on `rays` (render space: origin, direction,
+/// `t_min`, `t_max`), one f32 ray at a time and eight to a packet: `MISS` exactly where `hit`
+/// misses, and elsewhere a `t` in `(t_min, t_max]`. Answers how many rays hit, so that a caller
+/// can check its rays tested something.
+pub fn check_blocks<S: crate::geometry::Shape>(shape: &S, rays: &[(glam::Vec3, glam::Vec3, f32, f32)]) -> usize {
+    use crate::lanes::{Lane, F8, V3};
+    use crate::ray::{Ray, RayLanes, MISS};
+    let mut hits = 0;
+    for (k, &(o, d, lo, hi)) in rays.iter().enumerate() {
+        let ray = Ray::new(o, d).lanes();
+        let (hit, blocks) = (shape.hit(&ray, lo, hi), shape.blocks(&ray, lo, hi));
+        assert_eq!(hit == MISS, blocks == MISS, "ray {k}: hit {hit}, blocks {blocks}, from {o} along {d}");
+        assert!(blocks == MISS || (blocks > lo && blocks <= hi), "ray {k}: blocks {blocks} outside ({lo}, {hi}]");
+        hits += (hit != MISS) as usize;
+    }
+    for chunk in rays.chunks_exact(8) {
+        let packet = RayLanes::<F8>::new(V3::from_lanes(|i| chunk[i].0), V3::from_lanes(|i| chunk[i].1));
+        let (lo, hi) = (F8::from_fn(|i| chunk[i].2), F8::from_fn(|i| chunk[i].3));
+        let (hit, blocks) = (shape.hit(&packet, lo, hi), shape.blocks(&packet, lo, hi));
+        for i in 0..8 {
+            let one = shape.blocks(&Ray::new(chunk[i].0, chunk[i].1).lanes(), chunk[i].2, chunk[i].3);
+            assert_eq!(hit.get(i) == MISS, blocks.get(i) == MISS, "packet lane {i}: {:?}", chunk[i]);
+            assert_eq!(blocks.get(i).to_bits(), one.to_bits(), "packet lane {i} against one ray: {:?}", chunk[i]);
+        }
+    }
+    hits
+}

@@ -66,14 +66,15 @@ impl Scene {
     }
 
     /// For shadow rays: a hit on `p` below `t_max` where there is one, `MISS` elsewhere, not
-    /// necessarily the nearest. Meshes stop at the first face found; every other kind answers
-    /// `hit_prim`.
+    /// necessarily the nearest. Meshes stop at the first face found, the kinds with a
+    /// `Shape::blocks` of their own answer that; every other kind answers `hit_prim`.
     #[inline(always)]
     pub fn blocks_prim<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> L {
         match p.kind {
             ShapeKind::Mesh | ShapeKind::HeightField => {
                 self.meshes[p.index as usize].first_hit(ray, L::splat(0.0), t_max)
             }
+            ShapeKind::Julia => self.julias[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             _ => self.hit_prim(p, ray, t_max),
         }
     }

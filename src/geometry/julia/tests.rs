@@ -115,9 +115,9 @@ fn crossings_round_as_bisection_does() {
             let o = DVec3::new(rnd(), rnd(), rnd()).normalize() * 3.0;
             let d = DVec3::new(rnd(), rnd(), rnd()) * 0.8 - o;
             let want = bisected(&j, o, d);
-            let got = j.solve(o, d, 0.0, 100.0, to_f32);
+            let got = j.solve(o, d, 0.0, 100.0, to_f32, false);
             assert_eq!(got.map(to_f32), want.map(to_f32), "{f:?} from {o} along {d}");
-            assert_eq!(j.solve(o, d, 0.0, 100.0, exact), want, "{f:?} from {o} along {d}");
+            assert_eq!(j.solve(o, d, 0.0, 100.0, exact, false), want, "{f:?} from {o} along {d}");
             hits += want.is_some() as usize;
         }
         assert!(hits > 50, "{f:?}: {hits}");
@@ -174,4 +174,34 @@ fn with_no_parameter_the_sqr_set_is_the_unit_ball() {
     let s = Julia::new(DAffine3::IDENTITY, DVec4::ZERO, JuliaFunction::QuaternionSqr, 40, 50.0, (DVec4::W, 0.6));
     let t = s.intersect(&Ray::new(Vec3::ZERO, Vec3::X), 1e-4, 100.0).unwrap();
     assert!((t - 0.8).abs() < 2e-3, "{t}");
+}
+
+/// `blocks` (shadow rays: stop at the first march step that holds a crossing) misses exactly
+/// where `hit` does, for seeded random rays through julias of both algebras, with limits that
+/// cut some crossings off, and for rays leaving the surface as shadow rays do.
+#[test]
+fn blocks_as_hit_does() {
+    use crate::geometry::test_support::{check_blocks, uniform};
+    let mut rnd = uniform(23);
+    let mut r = move || rnd() as f32 * 2.0 - 1.0;
+    let param = q(-0.083, 0.0, -0.83, -0.025);
+    for f in [JuliaFunction::QuaternionSqr, JuliaFunction::Hypercomplex(ComplexFn::Sqr)] {
+        let placed = DAffine3::from_scale_rotation_translation(DVec3::splat(0.35), Default::default(), DVec3::Y * 0.5);
+        let j = Julia::new(placed, param, f, 8, 15.0, (DVec4::W, 0.0));
+        let mut rays = Vec::new();
+        for k in 0..240 {
+            let o = Vec3::new(r(), r(), r()).normalize() * 2.0 + Vec3::Y * 0.5;
+            let d = Vec3::new(r(), r(), r()) * 0.3 + Vec3::Y * 0.5 - o;
+            // A third of the rays end near the julia (t = 1 is about its middle).
+            let t_max = if k % 3 == 0 { 0.8 + 0.4 * r().abs() } else { 100.0 };
+            rays.push((o, d, 0.0, t_max));
+            if let Some(t) = j.intersect(&Ray::new(o, d), 0.0, 100.0) {
+                // A shadow ray from the hit, every way.
+                let p = o + t * d;
+                rays.push((p, Vec3::new(r(), r(), r()), 1e-4, 100.0));
+            }
+        }
+        let hits = check_blocks(&j, &rays);
+        assert!(hits > 40 && hits < rays.len() - 40, "{f:?}: {hits} of {}", rays.len());
+    }
 }

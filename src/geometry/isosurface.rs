@@ -126,7 +126,7 @@ impl Isosurface {
     /// The nearest hit of each lane: the lanes' searches (`Search`) advanced side by side,
     /// the function evaluated for all of them in one pass per step.
     #[inline(always)]
-    fn hit_n<L: Lane, const N: usize>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+    fn hit_n<L: Lane, const N: usize>(&self, ray: &RayLanes<L>, t_min: L, t_max: L, any: bool) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
         let v = |v: V3<L>, i: usize| DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
@@ -135,7 +135,7 @@ impl Isosurface {
         let mut lanes: [Search; N] = std::array::from_fn(|i| {
             let (lo, hi) = if i < L::WIDTH { (t_min.get_f64(i), t_max.get_f64(i)) } else { (0.0, f64::NAN) };
             let stack = stack.next().expect("one stack per lane");
-            Search::new(&self.container, &self.params, L::round_f64, v(o, i), v(d, i), lo, hi, stack)
+            Search::new(&self.container, &self.params, L::round_f64, v(o, i), v(d, i), lo, hi, any, stack)
         });
         loop {
             let mut args = [[0.0; N]; 3];
@@ -181,9 +181,19 @@ impl Shape for Isosurface {
     #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
         if L::WIDTH == 1 {
-            self.hit_n::<L, 1>(ray, t_min, t_max)
+            self.hit_n::<L, 1>(ray, t_min, t_max, false)
         } else {
-            self.hit_n::<L, 8>(ray, t_min, t_max)
+            self.hit_n::<L, 8>(ray, t_min, t_max, false)
+        }
+    }
+
+    /// The search with `any`: a crossing bracketed inside the interval is not narrowed.
+    #[inline(never)]
+    fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        if L::WIDTH == 1 {
+            self.hit_n::<L, 1>(ray, t_min, t_max, true)
+        } else {
+            self.hit_n::<L, 8>(ray, t_min, t_max, true)
         }
     }
 
@@ -233,6 +243,44 @@ mod tests {
         let iso = Isosurface::new(xf, sphere_fn(1.0), unit_box(), IsoParams::default());
         let t = iso.intersect(&ray, 0.0, f32::INFINITY).expect("scaled");
         assert!((t - 13.0).abs() < 1e-4, "{t}");
+    }
+
+    /// `blocks` misses exactly where `hit` does: seeded random rays through a rippled sphere
+    /// (the kernel scene's function) cut by its box, some ending near it, and shadow rays leaving
+    /// its hits every way.
+    #[test]
+    fn blocks_as_hit_does() {
+        use crate::function::{Binary, Unary};
+        use crate::geometry::test_support::{check_blocks, uniform};
+        let (x, y, z) = (Node::Param(0), Node::Param(1), Node::Param(2));
+        let wave = |p: Node| Node::unary(Unary::Sin, Node::binary(Binary::Mul, Node::Const(20.0), p));
+        let ripple = Node::binary(
+            Binary::Mul,
+            Node::Const(0.03),
+            Node::binary(Binary::Mul, wave(x), Node::binary(Binary::Mul, wave(y), wave(z))),
+        );
+        let body = Node::binary(
+            Binary::Add,
+            Node::Internal(Internal::Sphere, vec![Node::Param(0), Node::Param(1), Node::Param(2), Node::Const(0.38)]),
+            ripple,
+        );
+        let container = Container::Box { min: DVec3::splat(-0.45), max: DVec3::splat(0.45) };
+        let params = IsoParams { max_gradient: 2.2, ..IsoParams::default() };
+        let iso = Isosurface::new(DAffine3::IDENTITY, Program::compile(&body, 3), container, params);
+        let mut rnd = uniform(5);
+        let mut r = move || rnd() as f32 * 2.0 - 1.0;
+        let mut rays = Vec::new();
+        for k in 0..240 {
+            let o = Vec3::new(r(), r(), r()).normalize() * 2.0;
+            let d = Vec3::new(r(), r(), r()) * 0.5 - o;
+            let t_max = if k % 3 == 0 { 0.7 + 0.2 * r().abs() } else { 100.0 };
+            rays.push((o, d, 0.0, t_max));
+            if let Some(t) = iso.intersect(&Ray::new(o, d), 0.0, 100.0) {
+                rays.push((o + t * d, Vec3::new(r(), r(), r()), 1e-4, 100.0));
+            }
+        }
+        let hits = check_blocks(&iso, &rays);
+        assert!(hits > 60 && hits < rays.len() - 60, "{hits} of {}", rays.len());
     }
 
     #[test]

@@ -8,7 +8,8 @@
 //! halved, nearer half first, down to `accuracy`; a bracketed crossing is then narrowed by
 //! secant steps (Illinois' variant) until the lane's rounding of the bracket's ends agrees. A
 //! root that rounds onto the ray's `t_min` is searched past, up to `TRIES` times (as
-//! `geometry::solve_lanes_f64` does for the shapes solved lane by lane).
+//! `geometry::solve_lanes_f64` does for the shapes solved lane by lane). A shadow ray's search
+//! (`any`) is not narrowed where its bracket's answer would certainly be taken.
 
 use glam::DVec3;
 
@@ -61,6 +62,9 @@ pub struct Search<'a> {
     /// The lane's own `t_min` and `t_max`.
     lo: f64,
     hi: f64,
+    /// A shadow ray's search (`Shape::blocks`): a bracket that certainly holds the answer is
+    /// answered by its far end, not narrowed.
+    any: bool,
     /// Where this try starts (`lo`, or a root that rounded onto it), and tries so far.
     from: f64,
     tries: usize,
@@ -93,6 +97,7 @@ impl<'a> Search<'a> {
         d: DVec3,
         lo: f64,
         hi: f64,
+        any: bool,
         stack: &'a mut Stack,
     ) -> Search<'a> {
         let mut s = Search {
@@ -103,6 +108,7 @@ impl<'a> Search<'a> {
             d,
             lo,
             hi,
+            any,
             from: lo,
             tries: 0,
             len: d.length(),
@@ -254,6 +260,11 @@ impl<'a> Search<'a> {
     /// The next secant cut of the bracket `a`, `b`, or its answer: narrowed until the lane's
     /// rounding of the ends agrees, then the secant through it.
     fn narrow(&mut self, a: Sample, b: Sample, last: i8, k: usize, coarse: bool) {
+        // Every answer the narrowing could give lies in [a, b]: past `skip` and rounding above
+        // `lo` when `a` does, so it would be taken.
+        if self.any && k == 0 && (coarse || a.0 > self.skip) && (self.round)(a.0) > self.lo {
+            return self.finish(Some(b.0));
+        }
         let m = 0.5 * (a.0 + b.0);
         if k < REFINE_STEPS && (self.round)(a.0) != (self.round)(b.0) && m > a.0 && m < b.0 {
             let w = b.0 - a.0;

@@ -257,6 +257,17 @@ pub fn roots_unit_to(c: &[f64], b: [f64; MAX + 1], rel: f64, out: &mut [f64; MAX
     isolate_all(c, b, 0.0, 1.0, rel, out)
 }
 
+/// Whether `roots_unit_to(c, b, ..)` finds exactly one root, known without solving: the ends'
+/// values (as `isolate_all` takes them) are nonzero and the Bernstein coefficients change sign
+/// once, the case it answers by `Span::single`. For shadow rays, which need a root, not where.
+pub fn one_root_unit(c: &[f64], mut b: [f64; MAX + 1]) -> bool {
+    let n = c.len() - 1;
+    let (f_lo, f_hi) = (eval(c, 0.0), eval(c, 1.0));
+    b[0] = f_lo;
+    b[n] = f_hi;
+    f_lo != 0.0 && f_hi != 0.0 && !b[..=n].iter().any(|x| x.is_nan()) && sign_changes(&b[..=n]) == 1
+}
+
 fn isolate_all(c: &[f64], mut b: [f64; MAX + 1], lo: f64, hi: f64, rel: f64, out: &mut [f64; MAX_DEGREE]) -> usize {
     let n = c.len() - 1;
     // The ends are the polynomial's values there, evaluated as `roots` evaluates them, so the

@@ -8,7 +8,7 @@
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
 
-use super::bernstein::{roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
+use super::bernstein::{one_root_unit, roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
 use super::lathe_linear::{self, Cone};
 use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
@@ -155,8 +155,19 @@ impl Lathe {
         (self.min, self.max)
     }
 
-    /// The nearest crossing in `(s_min, s_max)` with the pieces `may` holds (`revolved`).
-    fn solve(&self, may: LaneCandidates, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
+    /// The nearest crossing in `(s_min, s_max)` with the pieces `may` holds (`revolved`). With
+    /// `any` (a shadow ray: the lane's rounding), a piece whose polynomial certainly has one
+    /// root (`bernstein::one_root_unit`) within a height slab lying inside the interval, past
+    /// `s_min`'s rounding, answers the slab's far end unpolished (`Shape::blocks`).
+    fn solve(
+        &self,
+        may: LaneCandidates,
+        o: DVec3,
+        d: DVec3,
+        s_min: f64,
+        s_max: f64,
+        any: Option<fn(f64) -> f64>,
+    ) -> Option<f64> {
         let mut best = s_max;
         let dh2 = d.x * d.x + d.z * d.z;
         let level = d.y.abs() <= 1e-9 * dh2.sqrt();
@@ -172,6 +183,7 @@ impl Lathe {
             }
             let (p, sq) = (&self.pieces[k], &self.squares[k]);
             // The piece's height slab along the ray.
+            let mut slab = (f64::NEG_INFINITY, f64::INFINITY);
             if level {
                 if o.y < p.lo.y || o.y > p.hi.y {
                     continue;
@@ -187,6 +199,7 @@ impl Lathe {
                 if band.misses(a.max(s_min), b.min(best), sq.r2_min, sq.r2_max) {
                     continue;
                 }
+                slab = (a, b);
             }
             let mut hits = [f64::NAN; 2 * MAX_DEGREE];
             let mut n = 0;
@@ -233,6 +246,12 @@ impl Lathe {
                     let mut b = [0.0; MAX_B + 1];
                     for (k, slot) in b[..len].iter_mut().enumerate() {
                         *slot = k_y2 * sq.y2_b[k] + k_y * sq.y_b[k] - k_r2 * sq.r2_b[k] + k_1;
+                    }
+                    if let Some(round) = any {
+                        // The root's crossing lies in the slab, which lies in the interval.
+                        if round(slab.0) > s_min && slab.1 < s_max && one_root_unit(&c[..len], b) {
+                            return Some(slab.1);
+                        }
                     }
                     roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
                 };
@@ -358,16 +377,30 @@ impl Lathe {
     }
 }
 
-impl Shape for Lathe {
+impl Lathe {
+    /// `hit` (`any` false) or `blocks` (`solve`'s shadow-ray shortcut).
     #[inline(always)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+    fn hit_any<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L, any: bool) -> L {
         let (o, d) = object_ray(&self.frame, ray);
-        let Some((c, any)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
+        let Some((c, lanes)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
             return L::splat(MISS);
         };
         let (answers, left) =
-            if self.cones.is_empty() { (L::splat(MISS), any) } else { self.hit_cones(&c, o, d, t_min, t_max) };
-        solve_left(&c, left & any, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi))
+            if self.cones.is_empty() { (L::splat(MISS), lanes) } else { self.hit_cones(&c, o, d, t_min, t_max) };
+        let round: Option<fn(f64) -> f64> = if any { Some(L::round_f64) } else { None };
+        solve_left(&c, left & lanes, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi, round))
+    }
+}
+
+impl Shape for Lathe {
+    #[inline(always)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.hit_any(ray, t_min, t_max, false)
+    }
+
+    #[inline(always)]
+    fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.hit_any(ray, t_min, t_max, true)
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {
@@ -470,6 +503,35 @@ mod tests {
             }
         }
         assert!(hits > 2000, "{hits}");
+    }
+
+    /// `blocks` misses exactly where `hit` does for the curved kernel vases: seeded random rays
+    /// at them, a third ending inside their box, and shadow rays leaving their hits every way.
+    #[test]
+    fn blocks_as_hit_does() {
+        use crate::geometry::test_support::{check_blocks, uniform};
+        let p = |r: f64, y: f64| DVec2::new(r, y);
+        let vase = [p(0.0, -0.1), p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
+        let mut rnd = uniform(77);
+        let mut r = move || rnd() as f32;
+        for (kind, pts) in [(SplineKind::Quadratic, &vase[..6]), (SplineKind::Cubic, &vase[..])] {
+            let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1));
+            let l = Lathe::new(xf, &open_pieces(kind, pts).expect("lathe"));
+            let (lo, hi) = l.bounds();
+            let mut rays = Vec::new();
+            for k in 0..400 {
+                let at = |t: Vec3| lo + (hi - lo) * t;
+                let o = at(Vec3::new(r(), r(), r()) * 3.0 - Vec3::splat(1.0));
+                let d = at(Vec3::new(r(), r(), r())) - o;
+                let t_max = if k % 3 == 0 { r() } else { 100.0 };
+                rays.push((o, d, 0.0, t_max));
+                if let Some(t) = l.intersect(&Ray::new(o, d), 0.0, 100.0) {
+                    rays.push((o + t * d, Vec3::new(r(), r(), r()) * 2.0 - Vec3::ONE, 1e-4, 100.0));
+                }
+            }
+            let hits = check_blocks(&l, &rays);
+            assert!(hits > 100 && hits < rays.len() - 100, "{kind:?}: {hits} of {}", rays.len());
+        }
     }
 
     /// Every spline kind of the kernel vase (each outline closed by the axis), seeded random rays from around it: eight-lane

@@ -76,6 +76,8 @@ impl Scene {
             }
             ShapeKind::Julia => self.julias[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             ShapeKind::Isosurface => self.isosurfaces[p.index as usize].blocks(ray, L::splat(0.0), t_max),
+            ShapeKind::Lathe => self.lathes[p.index as usize].blocks(ray, L::splat(0.0), t_max),
+            ShapeKind::Sor => self.sors[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             _ => self.hit_prim(p, ray, t_max),
         }
     }

@@ -75,6 +75,7 @@ impl Scene {
                 self.meshes[p.index as usize].first_hit(ray, L::splat(0.0), t_max)
             }
             ShapeKind::Julia => self.julias[p.index as usize].blocks(ray, L::splat(0.0), t_max),
+            ShapeKind::Blob => self.blobs[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             _ => self.hit_prim(p, ray, t_max),
         }
     }

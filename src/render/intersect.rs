@@ -78,6 +78,7 @@ impl Scene {
             ShapeKind::Isosurface => self.isosurfaces[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             ShapeKind::Lathe => self.lathes[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             ShapeKind::Sor => self.sors[p.index as usize].blocks(ray, L::splat(0.0), t_max),
+            ShapeKind::Blob => self.blobs[p.index as usize].blocks(ray, L::splat(0.0), t_max),
             _ => self.hit_prim(p, ray, t_max),
         }
     }

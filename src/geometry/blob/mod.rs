@@ -10,7 +10,9 @@
 //! spans where the pieces' most cannot reach the threshold are skipped, the others solved in
 //! closed form (`quartic::ferrari`, polished) where that is well-conditioned, else by
 //! `roots::roots_in` (with a bisection where the ends' signs differ and the critical-point
-//! search returns nothing, so a crossing is never lost to rounding). The field and its
+//! search returns nothing, so a crossing is never lost to rounding). A shadow ray (`blocks`)
+//! stops, unsolved, at the first span whose ends the field crosses the threshold between,
+//! where the whole span lies inside its interval: the closed form would answer a root there. The field and its
 //! derivative are zero at every piece's edge, so the sum is continuous across span ends. Lanes
 //! are solved one by one, as the torus and lathe are, but only those that `reach`'s
 //! eight-lane f32 test cannot rule out (nine in ten of those reaching the box on the kernel
@@ -32,7 +34,7 @@ mod tests;
 use super::cuboid::{frame_for, BoxFrame};
 use super::quartic::{ferrari, polish};
 use super::roots::{roots_in, MAX_DEGREE};
-use super::{affine_f32, hit_lanes_f64, inside_lanes_f64, normal_lanes_f64, transformed_bounds, Shape};
+use super::{affine_f32, inside_lanes_f64, normal_lanes_f64, solve_lanes_f64, transformed_bounds, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 use reach::{may_reach, Component as ReachComponent, Reach};
@@ -66,6 +68,9 @@ pub struct Component {
 #[derive(Clone, Copy, Debug)]
 struct Field {
     component_from_unit: DAffine3,
+    /// `component_from_unit` is the previous field's (every field's, where no component has
+    /// its own transform): the ray is carried into that space once for all of them.
+    same_space: bool,
     base: DVec3,
     /// Unit axis (any unit vector for a sphere).
     axis: DVec3,
@@ -116,12 +121,27 @@ pub struct Blob {
     pub max: Vec3,
 }
 
-/// One ray's pieces, their span ends (position, 2·piece + 1 for an end) and the active set.
-type Scratch = (Vec<Piece>, Vec<(f64, u32)>, Vec<u32>);
+/// One ray's pieces, their span ends (`end_key`) and the active set.
+type Scratch = (Vec<Piece>, Vec<u128>, Vec<u32>);
 
 thread_local! {
     /// Reused for every ray a thread solves: no allocation per ray.
     static SCRATCH: RefCell<Scratch> = const { RefCell::new((Vec::new(), Vec::new(), Vec::new())) };
+}
+
+/// A span end as the sweep sorts it: its position `u` in `f64::total_cmp`'s order, then ends
+/// before starts, then `code` (2·piece, + 1 for an end). One integer compare per step of the
+/// sort, where a comparator chaining `total_cmp` and the kind took a tenth of the solve.
+fn end_key(u: f64, code: u32) -> u128 {
+    let bits = u.to_bits() as i64;
+    let ordered = (bits ^ ((((bits >> 63) as u64) >> 1) as i64)) as u64 ^ (1 << 63);
+    (ordered as u128) << 33 | (((code & 1) ^ 1) as u128) << 32 | code as u128
+}
+
+/// The position and code `end_key` was made from.
+fn end_of(key: u128) -> (f64, u32) {
+    let bits = ((key >> 33) as u64 ^ (1 << 63)) as i64;
+    (f64::from_bits((bits ^ ((((bits >> 63) as u64) >> 1) as i64)) as u64), key as u32)
 }
 
 /// The box of a component in blob space, if it adds to the field (positive strength), with
@@ -181,7 +201,7 @@ impl Field {
                 (base, axis, length, radius)
             }
         };
-        Field { component_from_unit, base, axis, length, r2: radius * radius, strength: c.strength }
+        Field { component_from_unit, same_space: false, base, axis, length, r2: radius * radius, strength: c.strength }
     }
 
     /// This field as `reach` tests it, if it adds to the field (positive strength).
@@ -208,10 +228,15 @@ impl Field {
         Piece { lo, hi, k, strength: s, q }
     }
 
-    /// The pieces of this component along `p0 + u·dir` (unit space), into `out`.
-    fn pieces(&self, p0: DVec3, dir: DVec3, out: &mut Vec<Piece>) {
-        let q0 = self.component_from_unit.transform_point3(p0) - self.base;
-        let qd = self.component_from_unit.transform_vector3(dir);
+    /// The point `p` and direction `dir` of unit space in this component's space.
+    fn carry(&self, (p, dir): (DVec3, DVec3)) -> (DVec3, DVec3) {
+        (self.component_from_unit.transform_point3(p), self.component_from_unit.transform_vector3(dir))
+    }
+
+    /// The pieces of this component along the ray `p0 + u·dir`, given in component space
+    /// (`carry`), into `out`.
+    fn pieces(&self, (p0, qd): (DVec3, DVec3), out: &mut Vec<Piece>) {
+        let q0 = p0 - self.base;
         let mut sphere = |w: DVec3, span: (f64, f64)| {
             let (a, b, c) = (qd.dot(qd), 2.0 * w.dot(qd), w.dot(w));
             if let Some((lo, hi)) = below_zero(a, b, c - self.r2) {
@@ -345,6 +370,19 @@ fn span_roots(k: &[f64; 5], lo: f64, hi: f64, out: &mut [f64; MAX_DEGREE]) -> us
     roots_above(k, lo, hi, out)
 }
 
+/// Where `span_roots(k, lo, hi)` certainly finds a root: `k`'s signs at the span's ends (finite)
+/// differ, as `span_roots` evaluates them, so it answers at least one root (the closed form's,
+/// or failing that `roots_above`'s), each within `[lo − eps, hi + eps]`, the range answered.
+/// Only the first root's position costs the closed form and its polish, which a shadow ray does
+/// not need.
+fn bracket(k: &[f64; 5], lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if !(lo.is_finite() && hi.is_finite() && eval(k, lo) * eval(k, hi) < 0.0) {
+        return None;
+    }
+    let eps = 1e-9 * (lo.abs() + hi.abs() + 1.0);
+    Some((lo - eps, hi + eps))
+}
+
 impl Blob {
     /// `components` (blob space) with their sum at `threshold` as the surface, under
     /// `render_from_object`. A blob without a positive component is empty.
@@ -368,7 +406,10 @@ impl Blob {
         let size = 0.5 * (hi - lo).max_element() as f64;
         let size = if size > 0.0 && size.is_finite() { size } else { 1.0 };
         let blob_from_unit = DAffine3::from_translation(center) * DAffine3::from_scale(DVec3::splat(size));
-        let fields: Vec<Field> = components.iter().map(|c| Field::of(c, &blob_from_unit)).collect();
+        let mut fields: Vec<Field> = components.iter().map(|c| Field::of(c, &blob_from_unit)).collect();
+        for i in 1..fields.len() {
+            fields[i].same_space = fields[i].component_from_unit == fields[i - 1].component_from_unit;
+        }
         let reach = Reach::new(fields.iter().filter_map(Field::reach));
         let xf = affine_f32(&(render_from_object * blob_from_unit));
         // In unit space (size 1), widened by far more than the rounding of the f32 blob-space
@@ -391,7 +432,17 @@ impl Blob {
         self.fields.iter().map(|f| f.at(p).0).sum()
     }
 
+    /// The first root along `o + t·d` (unit space) in `(t_min, t_max)`, as the tests ask it.
+    #[cfg(test)]
     fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
+        self.search(o, d, t_min, t_max, None)
+    }
+
+    /// `solve`, or with `any` (the lane's rounding, `Lane::round_f64`) a `t` inside a span that
+    /// certainly holds a root `solve` would answer, for `Shape::blocks`: the spans before it are
+    /// solved as `solve` solves them, so the first root `solve` finds there is answered as it
+    /// is, and where none is, `solve` would find one in this span (`bracket`).
+    fn search(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64, any: Option<fn(f64) -> f64>) -> Option<f64> {
         // An empty interval (a lane `reach` left out) holds no root.
         if !(t_min < t_max) {
             return None;
@@ -413,8 +464,12 @@ impl Blob {
             pieces.clear();
             ends.clear();
             active.clear();
+            let mut ray = (p0, dir);
             for f in &self.fields {
-                f.pieces(p0, dir, pieces);
+                if !f.same_space {
+                    ray = f.carry((p0, dir));
+                }
+                f.pieces(ray, pieces);
             }
             // Nowhere along the ray can the field reach the threshold if the pieces' most over
             // their spans together cannot (a part in 10⁹ to spare for rounding).
@@ -428,21 +483,21 @@ impl Blob {
             }
             for (i, p) in pieces.iter().enumerate() {
                 if p.hi > u_min && p.lo < u_max {
-                    ends.push((p.lo.max(u_min), 2 * i as u32));
-                    ends.push((p.hi.min(u_max), 2 * i as u32 + 1));
+                    ends.push(end_key(p.lo.max(u_min), 2 * i as u32));
+                    ends.push(end_key(p.hi.min(u_max), 2 * i as u32 + 1));
                 }
             }
             // Ends before starts at the same place: a piece is never active across no span.
-            ends.sort_unstable_by(|a, b| a.0.total_cmp(&b.0).then((b.1 & 1).cmp(&(a.1 & 1))));
+            ends.sort_unstable();
             for w in 0..ends.len() {
-                let (u, e) = ends[w];
+                let (u, e) = end_of(ends[w]);
                 let piece = e >> 1;
                 if e & 1 == 0 {
                     active.push(piece);
                 } else if let Some(at) = active.iter().position(|&p| p == piece) {
                     active.swap_remove(at);
                 }
-                let Some(&(next, _)) = ends.get(w + 1) else { break };
+                let Some(next) = ends.get(w + 1).map(|&k| end_of(k).0) else { break };
                 // The field cannot reach the threshold where the active pieces' most cannot
                 // (with a part in 10⁹ to spare for rounding): on blob_sphere.pov most spans.
                 let reach: f64 = active
@@ -461,10 +516,19 @@ impl Blob {
                     }
                 }
                 k[4] -= self.threshold;
+                let (lo, hi) = (u.max(u_min), next);
+                if let Some(round) = any {
+                    let (first, last) =
+                        bracket(&k, lo, hi).map_or((f64::NAN, f64::NAN), |(a, b)| ((a + s0) / len, (b + s0) / len));
+                    // NaN compares false.
+                    if first > t_min && last < t_max && round(first) > t_min {
+                        return Some(0.5 * (first + last));
+                    }
+                }
                 // Back in t, a root just above u_min may round onto t_min: take the first
                 // that does not, so searching on from a crossing finds the next one.
                 let mut roots = [0.0; MAX_DEGREE];
-                let n = span_roots(&k, u.max(u_min), next, &mut roots);
+                let n = span_roots(&k, lo, hi, &mut roots);
                 if let Some(t) = roots[..n].iter().map(|r| (r + s0) / len).find(|&t| t > t_min && t < t_max) {
                     return Some(t);
                 }
@@ -487,12 +551,16 @@ impl Blob {
         }
         let p = p0 + u_min * dir;
         let mut field = 0.0;
+        let mut ray = (p, dir);
         for f in &self.fields {
-            let q = f.component_from_unit.transform_point3(p) - f.base;
+            if !f.same_space {
+                ray = f.carry((p, dir));
+            }
+            let q = ray.0 - f.base;
             let h = q.dot(f.axis).clamp(0.0, f.length);
             let w = q - h * f.axis;
             // Half the derivative of the squared distance along the ray: NaN fails too.
-            if !(w.dot(f.component_from_unit.transform_vector3(dir)) >= 0.0) {
+            if !(w.dot(ray.1) >= 0.0) {
                 return false;
             }
             let d2 = w.dot(w) / f.r2;
@@ -518,9 +586,10 @@ impl Blob {
 /// lanes `reach` shows cannot meet the blob are not solved: they are given an empty
 /// interval (no root lies in `(t_min, t_min)`), and a packet none of whose lanes can meet it is
 /// a miss at once.
-impl Shape for Blob {
-    #[inline(never)]
-    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+impl Blob {
+    /// `hit` (`any` none) or `blocks` (`any` the lanes' rounding): see `search`.
+    #[inline(always)]
+    fn lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L, any: Option<fn(f64) -> f64>) -> L {
         let o = ray.o.transform_point(&self.frame.object_from_render);
         let d = ray.d.transform_vector(&self.frame.object_from_render);
         let near = may_reach(&self.reach, self.threshold as f32, o, d, t_min, t_max);
@@ -528,7 +597,21 @@ impl Shape for Blob {
             return L::splat(MISS);
         }
         let t_max = L::select(near, t_max, t_min);
-        hit_lanes_f64(&self.frame, ray, t_min, t_max, |o, d, lo, hi| self.solve(o, d, lo, hi))
+        solve_lanes_f64(o, d, t_min, t_max, |_, o, d, lo, hi| self.search(o, d, lo, hi, any))
+    }
+}
+
+impl Shape for Blob {
+    #[inline(never)]
+    fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.lanes(ray, t_min, t_max, None)
+    }
+
+    /// A shadow ray stops at the first span that certainly holds the root `hit` would answer
+    /// there (`search`), without the closed form and polish that place it.
+    #[inline(never)]
+    fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        self.lanes(ray, t_min, t_max, Some(L::round_f64))
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

@@ -154,6 +154,7 @@ fn may_reach_in<L: Lane>(reach: &Reach, threshold: f32, o: V3<L>, d: V3<L>, t_mi
 #[cfg(test)]
 mod tests {
     use super::super::*;
+    use crate::geometry::hit_lanes_f64;
     use crate::geometry::test_support::uniform;
     use crate::lanes::F8;
     use glam::DMat3;

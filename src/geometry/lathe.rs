@@ -509,26 +509,14 @@ mod tests {
     /// at them, a third ending inside their box, and shadow rays leaving their hits every way.
     #[test]
     fn blocks_as_hit_does() {
-        use crate::geometry::test_support::{check_blocks, uniform};
+        use crate::geometry::test_support::{blocks_rays, check_blocks};
         let p = |r: f64, y: f64| DVec2::new(r, y);
         let vase = [p(0.0, -0.1), p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
-        let mut rnd = uniform(77);
-        let mut r = move || rnd() as f32;
         for (kind, pts) in [(SplineKind::Quadratic, &vase[..6]), (SplineKind::Cubic, &vase[..])] {
             let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1));
             let l = Lathe::new(xf, &open_pieces(kind, pts).expect("lathe"));
             let (lo, hi) = l.bounds();
-            let mut rays = Vec::new();
-            for k in 0..400 {
-                let at = |t: Vec3| lo + (hi - lo) * t;
-                let o = at(Vec3::new(r(), r(), r()) * 3.0 - Vec3::splat(1.0));
-                let d = at(Vec3::new(r(), r(), r())) - o;
-                let t_max = if k % 3 == 0 { r() } else { 100.0 };
-                rays.push((o, d, 0.0, t_max));
-                if let Some(t) = l.intersect(&Ray::new(o, d), 0.0, 100.0) {
-                    rays.push((o + t * d, Vec3::new(r(), r(), r()) * 2.0 - Vec3::ONE, 1e-4, 100.0));
-                }
-            }
+            let rays = blocks_rays(&l, lo, hi, 400, 77);
             let hits = check_blocks(&l, &rays);
             assert!(hits > 100 && hits < rays.len() - 100, "{kind:?}: {hits} of {}", rays.len());
         }

@@ -495,25 +495,13 @@ mod tests {
     /// every way.
     #[test]
     fn blocks_as_hit_does() {
-        use crate::geometry::test_support::{check_blocks, uniform};
+        use crate::geometry::test_support::{blocks_rays, check_blocks};
         let p = DVec2::new;
         let pts = [p(0.0, -0.1), p(0.4, 0.0), p(0.25, 0.35), p(0.45, 0.7), p(0.3, 0.95), p(0.3, 1.05)];
-        let mut rnd = uniform(91);
-        let mut r = move || rnd() as f32;
         for open in [false, true] {
             let s = Sor::new(DAffine3::from_translation(DVec3::new(-0.2, 0.1, 0.3)), &pts, open);
             let (lo, hi) = s.bounds();
-            let mut rays = Vec::new();
-            for k in 0..400 {
-                let at = |t: Vec3| lo + (hi - lo) * t;
-                let o = at(Vec3::new(r(), r(), r()) * 3.0 - Vec3::splat(1.0));
-                let d = at(Vec3::new(r(), r(), r())) - o;
-                let t_max = if k % 3 == 0 { r() } else { 100.0 };
-                rays.push((o, d, 0.0, t_max));
-                if let Some(t) = s.intersect(&Ray::new(o, d), 0.0, 100.0) {
-                    rays.push((o + t * d, Vec3::new(r(), r(), r()) * 2.0 - Vec3::ONE, 1e-4, 100.0));
-                }
-            }
+            let rays = blocks_rays(&s, lo, hi, 400, 91);
             let hits = check_blocks(&s, &rays);
             assert!(hits > 100 && hits < rays.len() - 100, "open {open}: {hits} of {}", rays.len());
         }

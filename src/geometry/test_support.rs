@@ -69,3 +69,31 @@ pub fn check_blocks<S: crate::geometry::Shape>(shape: &S, rays: &[(glam::Vec3, g
     }
     hits
 }
+
+/// Rays for `check_blocks` at a shape with bounds `lo`, `hi` (render space): `count` seeded rays
+/// from around the box towards a point in it, every third ending somewhere inside its reach
+/// (`t_max` in (0, 1)), and from each of those rays' hits (`shape.intersect`) a shadow ray leaving
+/// every way.
+pub fn blocks_rays<S: crate::geometry::Shape>(
+    shape: &S,
+    lo: glam::Vec3,
+    hi: glam::Vec3,
+    count: usize,
+    seed: u64,
+) -> Vec<(glam::Vec3, glam::Vec3, f32, f32)> {
+    use glam::Vec3;
+    let mut rnd = uniform(seed);
+    let mut r = move || rnd() as f32;
+    let mut rays = Vec::new();
+    for k in 0..count {
+        let at = |t: Vec3| lo + (hi - lo) * t;
+        let o = at(Vec3::new(r(), r(), r()) * 3.0 - Vec3::splat(1.0));
+        let d = at(Vec3::new(r(), r(), r())) - o;
+        let t_max = if k % 3 == 0 { r() } else { 100.0 };
+        rays.push((o, d, 0.0, t_max));
+        if let Some(t) = shape.intersect(&crate::ray::Ray::new(o, d), 0.0, 100.0) {
+            rays.push((o + t * d, Vec3::new(r(), r(), r()) * 2.0 - Vec3::ONE, 1e-4, 100.0));
+        }
+    }
+    rays
+}

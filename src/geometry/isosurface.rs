@@ -160,6 +160,16 @@ impl Isosurface {
         L::from_fn_f64(|i| lanes[i].answer())
     }
 
+    /// `hit_n` with as many searches as the lanes.
+    #[inline(always)]
+    fn hit_lanes<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L, any: bool) -> L {
+        if L::WIDTH == 1 {
+            self.hit_n::<L, 1>(ray, t_min, t_max, any)
+        } else {
+            self.hit_n::<L, 8>(ray, t_min, t_max, any)
+        }
+    }
+
     fn normal_object(&self, q: DVec3) -> DVec3 {
         if !self.params.open {
             let (dist, n) = self.container.surface(q);
@@ -180,21 +190,13 @@ impl Isosurface {
 impl Shape for Isosurface {
     #[inline(never)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        if L::WIDTH == 1 {
-            self.hit_n::<L, 1>(ray, t_min, t_max, false)
-        } else {
-            self.hit_n::<L, 8>(ray, t_min, t_max, false)
-        }
+        self.hit_lanes(ray, t_min, t_max, false)
     }
 
     /// The search with `any`: a crossing bracketed inside the interval is not narrowed.
     #[inline(never)]
     fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        if L::WIDTH == 1 {
-            self.hit_n::<L, 1>(ray, t_min, t_max, true)
-        } else {
-            self.hit_n::<L, 8>(ray, t_min, t_max, true)
-        }
+        self.hit_lanes(ray, t_min, t_max, true)
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

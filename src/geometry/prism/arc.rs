@@ -122,6 +122,9 @@ pub fn nearest_t(p: &Piece, w: DVec2) -> f64 {
     let chord = b - a;
     let len2 = chord.length_squared();
     let mut t = if len2 > 0.0 { ((w - a).dot(chord) / len2).clamp(0.0, 1.0) } else { 0.5 };
+    if p.degree == 2 && len2 > 0.0 {
+        t = chord_level_quadratic(p, w, chord).unwrap_or(t);
+    }
     if p.degree > 1 {
         for _ in 0..16 {
             let (c, d1) = (p.at(t), p.tangent(t));
@@ -149,6 +152,27 @@ pub fn nearest_t(p: &Piece, w: DVec2) -> f64 {
         }
     }
     best
+}
+
+/// Where a quadratic arc meets the line through `w` across its chord: the root in `[0, 1]` of
+/// `(C(t) − w)·chord`, which increases along the arc (it runs one way in `u` and in `v`, as the
+/// chord does). For a `w` on the arc, as a surface point is to rounding, that is `w`'s own
+/// parameter, so Newton's steps toward the nearest point start within rounding of it and stop
+/// after two, where the chord's projection left four or five (prism_quadratic's normal was a
+/// fifth of its frame). `None` where there is no such root (the caller's start stays).
+fn chord_level_quadratic(p: &Piece, w: DVec2, chord: DVec2) -> Option<f64> {
+    let a = p.u[2] * chord.x + p.v[2] * chord.y;
+    let b = p.u[1] * chord.x + p.v[1] * chord.y;
+    let k = (p.u[0] - w.x) * chord.x + (p.v[0] - w.y) * chord.y;
+    let disc = b * b - 4.0 * a * k;
+    if !(disc >= 0.0) {
+        return None;
+    }
+    // The stable pair (no cancellation between −b and the root); the increasing branch's root
+    // is the one inside, as the function increases there.
+    let q = -0.5 * (b + disc.sqrt().copysign(b));
+    let candidates = [if a != 0.0 { q / a } else { f64::NAN }, if q != 0.0 { k / q } else { f64::NAN }];
+    candidates.into_iter().find(|t| (0.0..=1.0).contains(t))
 }
 
 #[cfg(test)]

@@ -53,12 +53,17 @@ impl Line {
     }
 }
 
-/// A curved arc's box and its index in `Prism::arcs`: the footprint test reads these 40 bytes
-/// a curve, not the 170 of its piece.
+/// A curved arc's box, its control points and its index in `Prism::arcs`: what the footprint,
+/// hull and projection tests read, 104 bytes a curve. The control points are padded to four
+/// with copies of the last, so those tests run over four values without a loop over the degree
+/// (its bounds and the zeroed array of `Piece::combine_bernstein` were a third of the curve
+/// loop), and a copy changes no minimum, maximum or sign.
 #[derive(Clone, Copy, Debug)]
 pub struct Curve {
     lo: DVec2,
     hi: DVec2,
+    cu: [f64; 4],
+    cv: [f64; 4],
     index: u32,
 }
 
@@ -67,10 +72,24 @@ impl Curve {
     pub fn all(arcs: &[Piece]) -> Vec<Curve> {
         let mut curves: Vec<Curve> = (arcs.iter().enumerate())
             .filter(|(_, p)| p.degree > 1)
-            .map(|(i, p)| Curve { lo: p.lo, hi: p.hi, index: i as u32 })
+            .map(|(i, p)| {
+                let pad = |c: &[f64; 4]| std::array::from_fn(|k| c[k.min(p.degree)]);
+                Curve { lo: p.lo, hi: p.hi, cu: pad(&p.cu), cv: pad(&p.cv), index: i as u32 }
+            })
             .collect();
         curves.sort_by(|a, b| a.lo.x.total_cmp(&b.lo.x));
         curves
+    }
+
+    /// `a·cu[i] + b·cv[i] + k` at the four control points: the arc's Bernstein coefficients
+    /// of the plane's polynomial (the last repeated), as `Piece::combine_bernstein` forms them.
+    #[inline(always)]
+    fn hull(&self, a: f64, b: f64, k: f64) -> [f64; 4] {
+        let mut h = [0.0; 4];
+        for i in 0..4 {
+            h[i] = a * self.cu[i] + b * self.cv[i] + k;
+        }
+        h
     }
 }
 
@@ -133,21 +152,21 @@ impl Prism {
             if f_lo.x > c.hi.x || f_lo.y > c.hi.y || f_hi.y < c.lo.y {
                 continue;
             }
-            let (i, p) = (c.index, &self.arcs[c.index as usize]);
             // The plane misses the arc's control points (all on one side): it misses the arc
             // (convex hull). These are the Bernstein coefficients of the arc's polynomial.
-            let hull = p.combine_bernstein(a, b, k);
-            let hull = &hull[..=p.degree];
-            if hull.iter().all(|&c| c > 0.0) || hull.iter().all(|&c| c < 0.0) {
+            let h = c.hull(a, b, k);
+            let (h_lo, h_hi) = (h[0].min(h[1]).min(h[2].min(h[3])), h[0].max(h[1]).max(h[2].max(h[3])));
+            if h_lo > 0.0 || h_hi < 0.0 {
                 continue;
             }
+            let i = c.index;
             if self.conic {
-                self.cross(p, r, hi);
+                self.cross(&self.arcs[i as usize], r, hi);
                 continue;
             }
             let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
-            for i in 0..=p.degree {
-                let (du, dv) = (p.cu[i] - o.x, p.cv[i] - o.z);
+            for j in 0..4 {
+                let (du, dv) = (c.cu[j] - o.x, c.cv[j] - o.z);
                 let q = du * d.x + dv * d.z;
                 (q_lo, q_hi) = (q_lo.min(q), q_hi.max(q));
                 size = size.max(du.abs() * d.x.abs() + dv.abs() * d.z.abs());
@@ -157,6 +176,7 @@ impl Prism {
             if q_hi + pad < lo * dd || q_lo - pad > *hi * dd {
                 continue;
             }
+            let p = &self.arcs[i as usize];
             if queued == queue.len() {
                 self.cross(p, r, hi);
             } else {

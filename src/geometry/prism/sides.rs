@@ -145,7 +145,7 @@ impl Prism {
         let (o, d, (a, b, k), f_lo, f_hi, dd, lo) = (r.o, r.d, r.plane, r.f_lo, r.f_hi, r.dd, r.lo);
         let mut queue = [(0.0, 0u32); 16];
         let mut queued = 0;
-        for c in &self.curves {
+        for (j, c) in self.curves.iter().enumerate() {
             if c.lo.x > f_hi.x {
                 break;
             }
@@ -159,9 +159,8 @@ impl Prism {
             if h_lo > 0.0 || h_hi < 0.0 {
                 continue;
             }
-            let i = c.index;
             if self.conic {
-                self.cross(&self.arcs[i as usize], r, hi);
+                self.cross(c, r, hi);
                 continue;
             }
             let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
@@ -176,30 +175,29 @@ impl Prism {
             if q_hi + pad < lo * dd || q_lo - pad > *hi * dd {
                 continue;
             }
-            let p = &self.arcs[i as usize];
             if queued == queue.len() {
-                self.cross(p, r, hi);
+                self.cross(c, r, hi);
             } else {
-                queue[queued] = (q_lo - pad, i);
+                queue[queued] = (q_lo - pad, j as u32);
                 queued += 1;
             }
         }
         let queue = &mut queue[..queued];
         queue.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
-        for &(start, i) in queue.iter() {
+        for &(start, j) in queue.iter() {
             if start > *hi * dd {
                 break;
             }
-            self.cross(&self.arcs[i as usize], r, hi);
+            self.cross(&self.curves[j as usize], r, hi);
         }
     }
 
-    /// Lowers `hi` to the nearest crossing in `(lo, hi)` of the side over curved arc `p` by the ray
-    /// `o + s·d`, whose plane through the sweep axis is `a·u + b·v + k = 0` in the section
-    /// (`dd = d.x² + d.z²`, for a linear sweep).
-    fn cross(&self, p: &Piece, r: &SideRay, hi: &mut f64) {
+    /// Lowers `hi` to the nearest crossing in `(lo, hi)` of the side over curved arc `curve` by
+    /// the ray `o + s·d`, whose plane through the sweep axis is `a·u + b·v + k = 0` in the
+    /// section (`dd = d.x² + d.z²`, for a linear sweep).
+    fn cross(&self, curve: &Curve, r: &SideRay, hi: &mut f64) {
         let (a, b, k) = r.plane;
-        let hull = p.combine_bernstein(a, b, k);
+        let p = &self.arcs[curve.index as usize];
         let mut roots = [0.0; MAX_DEGREE];
         let (c, n) = p.combine(a, b, k);
         // Lines are `cross_lines`'s.
@@ -208,7 +206,7 @@ impl Prism {
             // A cubic whose hull crosses the line once: its one root, by Halley's steps; else on
             // each half where that holds there.
             _ => {
-                let bz = [hull[0], hull[1], hull[2], hull[3]];
+                let bz = curve.hull(a, b, k);
                 match single_change(&bz) {
                     Some(i) => {
                         roots[0] = single_root(&c, &bz, i);
@@ -216,7 +214,7 @@ impl Prism {
                     }
                     None => match cubic_roots_by_halves(&bz, &mut roots) {
                         Some(m) => m,
-                        None => roots_unit(&c[..n], hull, &mut roots),
+                        None => roots_unit(&c[..n], p.combine_bernstein(a, b, k), &mut roots),
                     },
                 }
             }

@@ -13,6 +13,8 @@
 //! container and within `accuracy`. The normal at a point finds its (u, v) again the same
 //! way (by least squares from the cells whose boxes hold the point).
 
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 use std::sync::{Arc, Mutex};
 
 use glam::{DAffine3, DVec2, DVec3, Vec3};
@@ -206,32 +208,12 @@ impl Parametric {
         self.uv.lo + cell * DVec2::new((k % GRID) as f64 + 0.5, (k / GRID) as f64 + 0.5)
     }
 
-    /// The leaf cells whose boxes the ray meets in `(t_min, t_max)`, with the entry `t`.
-    fn candidates(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Vec<(f64, usize)> {
-        let inv = d.recip();
-        let slab = |n: &Node| {
-            let (a, b) = ((n.min - o) * inv, (n.max - o) * inv);
-            let lo = a.min(b).max_element().max(t_min);
-            let hi = a.max(b).min_element().min(t_max);
-            (lo <= hi).then_some(lo)
-        };
-        let mut out = Vec::new();
-        let mut stack = vec![(0usize, 0usize)];
-        let last = self.tree.levels.len() - 1;
-        while let Some((level, k)) = stack.pop() {
-            let Some(t) = slab(&self.tree.levels[level][k]) else { continue };
-            if level == last {
-                out.push((t, k));
-                continue;
-            }
-            let n = 1usize << level;
-            let (i, j) = (k % n, k / n);
-            for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-                stack.push((level + 1, (2 * j + b) * 2 * n + 2 * i + a));
-            }
-        }
-        out.sort_by(|a, b| a.0.total_cmp(&b.0));
-        out
+    /// The leaf cells whose boxes the ray meets in `(t_min, t_max)`, with the entry `t`,
+    /// nearest first (`Candidates`).
+    fn candidates(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Candidates<'_> {
+        let mut walk = Candidates { tree: &self.tree, o, inv: d.recip(), t_min, t_max, heap: BinaryHeap::new() };
+        walk.push(0, 0, 0);
+        walk
     }
 
     pub fn solve(&self, o: DVec3, d: DVec3, t_min: f64, t_max: f64) -> Option<f64> {
@@ -382,6 +364,77 @@ impl Parametric {
 
 shape_solved_in_f64!(Parametric, normal: normal_object, inside: none);
 
+/// The leaf cells a ray's box tests admit, in order of their entry `t`, found lazily: the
+/// quadtree is walked best first (a child's box lies within its parent's, so it is entered no
+/// sooner), and `solve` stops asking once a cell starts past its nearest root. Walking every
+/// admitted leaf and sorting them all first was more than half of
+/// scenes/kernels/parametric.pov's frame. Equal entries (every cell around a shadow ray's
+/// origin starts at `t_min`) come in the order that walk and its stable sort gave them (depth
+/// first, children (1, 1), (0, 1), (1, 0), (0, 0)), so `solve` takes the same roots.
+struct Candidates<'a> {
+    tree: &'a Tree,
+    o: DVec3,
+    inv: DVec3,
+    t_min: f64,
+    t_max: f64,
+    /// Boxes admitted and not yet opened: (entry `t` as an ordered key, rank in the depth-first
+    /// order of the first leaf below, level, index).
+    heap: BinaryHeap<Reverse<(u64, u32, u8, u32)>>,
+}
+
+impl Candidates<'_> {
+    /// Admits box `k` of `level` (rank `prefix` among its level's boxes in the depth-first
+    /// order) where the ray meets it.
+    fn push(&mut self, level: usize, k: usize, prefix: u32) {
+        let n = &self.tree.levels[level][k];
+        let (a, b) = ((n.min - self.o) * self.inv, (n.max - self.o) * self.inv);
+        let lo = a.min(b).max_element().max(self.t_min);
+        let hi = a.max(b).min_element().min(self.t_max);
+        if lo <= hi {
+            let last = self.tree.levels.len() - 1;
+            let rank = prefix << (2 * (last - level));
+            self.heap.push(Reverse((total_order_key(lo), rank, level as u8, k as u32)));
+        }
+    }
+}
+
+impl Iterator for Candidates<'_> {
+    type Item = (f64, usize);
+
+    fn next(&mut self) -> Option<(f64, usize)> {
+        let last = self.tree.levels.len() - 1;
+        while let Some(Reverse((key, rank, level, k))) = self.heap.pop() {
+            let (level, k) = (level as usize, k as usize);
+            if level == last {
+                return Some((from_total_order_key(key), k));
+            }
+            let prefix = rank >> (2 * (last - level));
+            let n = 1usize << level;
+            let (i, j) = (k % n, k / n);
+            for (a, b) in [(1, 1), (0, 1), (1, 0), (0, 0)] {
+                let digit = 3 - (a + 2 * b) as u32;
+                self.push(level + 1, (2 * j + b) * 2 * n + 2 * i + a, prefix * 4 + digit);
+            }
+        }
+        None
+    }
+}
+
+/// `x`'s bits as a key whose integer order is `f64::total_cmp`'s.
+fn total_order_key(x: f64) -> u64 {
+    let bits = x.to_bits();
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | 1 << 63
+    }
+}
+
+/// The `x` of `total_order_key(x)`.
+fn from_total_order_key(key: u64) -> f64 {
+    f64::from_bits(if key >> 63 == 1 { key & !(1 << 63) } else { !key })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -456,5 +509,71 @@ mod tests {
             hits += got.is_some() as usize;
         }
         assert!(hits > 2000, "{hits}");
+    }
+
+    /// The best-first walk gives the leaves of the depth-first walk of every admitted box,
+    /// stably sorted by entry, as `solve` took them before it was lazy: the same cells in the
+    /// same order, ties included (shadow rays from the surface, whose nearby cells all start
+    /// at `t_min`), so the same roots.
+    #[test]
+    fn candidates_come_in_the_order_of_a_full_walk_sorted() {
+        let s = sphere();
+        let full = |o: DVec3, d: DVec3, t_min: f64, t_max: f64| {
+            let inv = d.recip();
+            let mut out = Vec::new();
+            let mut stack = vec![(0usize, 0usize)];
+            let last = s.tree.levels.len() - 1;
+            while let Some((level, k)) = stack.pop() {
+                let n = &s.tree.levels[level][k];
+                let (a, b) = ((n.min - o) * inv, (n.max - o) * inv);
+                let (lo, hi) = (a.min(b).max_element().max(t_min), a.max(b).min_element().min(t_max));
+                if lo > hi {
+                    continue;
+                }
+                if level == last {
+                    out.push((lo, k));
+                    continue;
+                }
+                let w = 1usize << level;
+                let (i, j) = (k % w, k / w);
+                for (a, b) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    stack.push((level + 1, (2 * j + b) * 2 * w + 2 * i + a));
+                }
+            }
+            out.sort_by(|a, b| a.0.total_cmp(&b.0));
+            out
+        };
+        let mut uniform = crate::geometry::test_support::uniform(11);
+        let mut rnd = || uniform() * 2.0 - 1.0;
+        let (mut compared, mut ties) = (0, 0);
+        for i in 0..300 {
+            let d = DVec3::new(rnd(), rnd(), rnd()).normalize();
+            // From outside, and from points on the surface (every nearby cell starts at 0).
+            let o = if i % 2 == 0 {
+                DVec3::new(rnd(), rnd(), rnd()).normalize() * 3.0
+            } else {
+                DVec3::new(rnd(), rnd(), rnd()).normalize()
+            };
+            let want = full(o, d, 0.0, 10.0);
+            let got: Vec<(f64, usize)> = s.candidates(o, d, 0.0, 10.0).collect();
+            assert_eq!(got.len(), want.len(), "{o} {d}");
+            for (g, w) in got.iter().zip(&want) {
+                assert!(g.0.to_bits() == w.0.to_bits() && g.1 == w.1, "{o} {d}: {g:?} vs {w:?}");
+            }
+            compared += want.len();
+            ties += want.windows(2).filter(|w| w[0].0 == w[1].0).count();
+        }
+        assert!(compared > 2_000 && ties > 1_000, "{compared} cells, {ties} ties");
+    }
+
+    #[test]
+    fn total_order_keys_order_as_total_cmp() {
+        let xs = [f64::NEG_INFINITY, -3.5, -0.0, 0.0, 1e-300, 2.0, f64::INFINITY];
+        for w in xs.windows(2) {
+            assert!(total_order_key(w[0]) < total_order_key(w[1]), "{} {}", w[0], w[1]);
+        }
+        for x in xs {
+            assert_eq!(from_total_order_key(total_order_key(x)).to_bits(), x.to_bits());
+        }
     }
 }

@@ -23,11 +23,18 @@ pub(super) fn rough_cbrt(x: f64) -> f64 {
 
 /// ∛x to a few ulps per lane: [`rough_cbrt`] and three Halley steps (each triples the digits);
 /// the library's `cbrt` is a software routine here that cost 14 % of the torus benchmark.
+#[cfg(test)]
 #[inline(always)]
 pub(super) fn cbrt<const N: usize>(x: W<N>) -> W<N> {
+    cbrt_steps(x, 3)
+}
+
+/// [`cbrt`] with `steps` Halley steps: two give ten digits.
+#[inline(always)]
+fn cbrt_steps<const N: usize>(x: W<N>, steps: usize) -> W<N> {
     let a = x.abs();
     let mut y = a.map(rough_cbrt);
-    for _ in 0..3 {
+    for _ in 0..steps {
         let y3 = y * y * y;
         y = y * ((y3 + W::splat(2.0) * a) / (W::splat(2.0) * y3 + a));
     }
@@ -35,12 +42,26 @@ pub(super) fn cbrt<const N: usize>(x: W<N>) -> W<N> {
     W::select(plain, x, y.copysign(x))
 }
 
+/// How closely [`Depressed`] finds a root before its caller's Newton steps: to the rounding
+/// (`FULL`), or to ten digits (`ROUGH`), which one Newton step then takes to the rounding.
+#[derive(Clone, Copy)]
+struct Settle {
+    /// The last Halley step's size, relative to the roots' bound, that ends the iteration.
+    halley: f64,
+    cbrt_steps: usize,
+}
+
+const FULL: Settle = Settle { halley: 1e-15, cbrt_steps: 3 };
+const ROUGH: Settle = Settle { halley: 1e-9, cbrt_steps: 2 };
+
 /// m³ + a·m² + b·m + c = 0 moved to its depressed form y³ + p·y + q = 0 (m = y − shift), with
 /// the lanes that have three real roots (a double one counting) and those that are NaN.
 struct Depressed<const N: usize> {
     shift: W<N>,
     p: W<N>,
     q: W<N>,
+    /// q²/4 + (p/3)³: negative with three distinct real roots, zero at a double one.
+    h: W<N>,
     three: Mask<N>,
     nan: Mask<N>,
 }
@@ -58,13 +79,13 @@ impl<const N: usize> Depressed<N> {
         let h = k(0.25) * q * q + p3 * p3 * p3;
         let nan = h.0.map(f64::is_nan);
         let three = and(h.le(k(0.0)), p.lt(k(0.0)));
-        Depressed { shift, p, q, three, nan }
+        Depressed { shift, p, q, h, three, nan }
     }
 
     /// The largest real root `y` of y³ + p·y + q per lane (the only one where there is one).
     #[inline(always)]
     fn largest(&self) -> W<N> {
-        self.largest_of(self.q)
+        self.largest_of(self.q, FULL)
     }
 
     /// The real root of largest magnitude per lane: never one of a double pair (whose
@@ -72,15 +93,15 @@ impl<const N: usize> Depressed<N> {
     /// root of the cubic with `q` made non-positive (y ↦ −y where `q` is positive), its sign
     /// turned back.
     #[inline(always)]
-    fn farthest(&self) -> W<N> {
+    fn farthest(&self, settle: Settle) -> W<N> {
         let positive = W::<N>::splat(0.0).lt(self.q);
-        let z = self.largest_of(-self.q.abs());
+        let z = self.largest_of(-self.q.abs(), settle);
         W::select(positive, -z, z)
     }
 
     /// The largest real root of y³ + p·y + q per lane, for this cubic's `p` and `three`.
     #[inline(always)]
-    fn largest_of(&self, q: W<N>) -> W<N> {
+    fn largest_of(&self, q: W<N>, settle: Settle) -> W<N> {
         let k = W::<N>::splat;
         let (p, three) = (self.p, self.three);
         let p3 = p * k(THIRD);
@@ -89,7 +110,7 @@ impl<const N: usize> Depressed<N> {
             // One real root: Cardano.
             let h = k(0.25) * q * q + p3 * p3 * p3;
             let s = h.max(k(0.0)).sqrt();
-            let v = cbrt(k(-0.5) * q + s.copysign(-q));
+            let v = cbrt_steps(k(-0.5) * q + s.copysign(-q), settle.cbrt_steps);
             let zero: Mask<N> = v.0.map(|v| v == 0.0);
             y = W::select(zero, k(0.0), v - p3 / v);
         }
@@ -107,7 +128,7 @@ impl<const N: usize> Depressed<N> {
                 let step = k(2.0) * g * dg / (k(2.0) * dg * dg - k(6.0) * z * g);
                 let moving = and(running, finite(step));
                 z = W::select(moving, z - step, z);
-                running = and(moving, not(step.abs().le(k(1e-15) * r)));
+                running = and(moving, not(step.abs().le(k(settle.halley) * r)));
                 if !running.iter().any(|&b| b) {
                     break;
                 }
@@ -135,10 +156,29 @@ pub(super) fn largest_root_lanes<const N: usize>(a: W<N>, b: W<N>, c: W<N>) -> (
 /// the quadratic left when it is divided out. A double root comes twice.
 #[inline(always)]
 pub(super) fn roots_lanes<const N: usize>(a: W<N>, b: W<N>, c: W<N>) -> [W<N>; 3] {
+    roots_of(&Depressed::of(a, b, c), FULL)
+}
+
+/// [`roots_lanes`] to ten digits (for a caller that polishes each with two Newton steps), and
+/// the lanes where they are ill-conditioned: NaN, or near a double root,
+/// where `|h|` is below `ill` times its terms' size (`h` is −¾·δ²·r⁴ for a pair `δ` apart at
+/// `r` from the third root's mirror, so `ill` = 10⁻⁶ flags pairs closer than about a
+/// thousandth of their distance from the centre). There the pair is found to only the square
+/// root of the rounding, or the rounding decides whether it is real at all (a grazing ray).
+#[inline(always)]
+pub(super) fn roots_lanes_conditioned<const N: usize>(a: W<N>, b: W<N>, c: W<N>, ill: f64) -> ([W<N>; 3], Mask<N>) {
+    let d = Depressed::of(a, b, c);
+    let p3 = d.p * W::splat(THIRD);
+    let size = W::splat(0.25) * d.q * d.q + (p3 * p3 * p3).abs();
+    let near_double = d.h.abs().le(W::splat(ill) * size);
+    (roots_of(&d, ROUGH), or(d.nan, or(near_double, not(finite(size)))))
+}
+
+#[inline(always)]
+fn roots_of<const N: usize>(d: &Depressed<N>, settle: Settle) -> [W<N>; 3] {
     let k = W::<N>::splat;
     let none = k(f64::INFINITY);
-    let d = Depressed::of(a, b, c);
-    let y = d.farthest();
+    let y = d.farthest(settle);
     let mut roots = [W::select(d.nan, none, y - d.shift), none, none];
     if d.three.iter().any(|&t| t) {
         // y² + y₀·y + (y₀² + p) = 0, y₀ the farthest: the stable quadratic (no cancellation

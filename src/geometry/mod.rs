@@ -99,6 +99,7 @@ mod quartic;
 pub mod revolved;
 pub mod roots;
 pub mod sor;
+mod sor_lanes;
 pub mod sphere;
 pub mod spline;
 mod sturm;

@@ -15,18 +15,20 @@ use super::bernstein::{
     one_root_unit, roots_between, roots_between_to, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B,
 };
 use super::cuboid::{frame_for, BoxFrame};
-use super::revolved::{along, hit_lanes, Band, LaneCandidates};
+use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
 use super::roots::MAX_DEGREE;
+use super::sor_lanes::{self, Caps};
+use super::wide::{lane_f64, lanes_f64, to_lane, W, WV};
 use super::{affine_f32, inside_lanes_f64, normal_lanes_f64, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
-use crate::ray::RayLanes;
+use crate::ray::{RayLanes, MISS};
 
 /// One segment: `r² = a·y³ + b·y² + c·y + d` for `y` in `[lo, hi]`.
 #[derive(Clone, Copy, Debug)]
-struct Segment {
-    lo: f64,
-    hi: f64,
-    k: [f64; 4],
+pub(super) struct Segment {
+    pub(super) lo: f64,
+    pub(super) hi: f64,
+    pub(super) k: [f64; 4],
     /// The smallest and largest `r²` over `lo..=hi` (`r2_range`): a ray outside that band
     /// misses the segment (`RadialRay::misses`).
     r2_min: f64,
@@ -389,21 +391,172 @@ impl Sor {
     }
 }
 
+impl Sor {
+    /// The caps' heights and squared radii (`sor_lanes`), unless open.
+    fn caps(&self) -> Caps {
+        let (b, t) = (self.bottom(), self.top());
+        (!self.open).then(|| [(b.lo, b.f(b.lo)), (t.hi, t.f(t.hi))])
+    }
+
+    /// `Shape::hit`, or with `any` `Shape::blocks`: the eight-lane cull (`revolved`), the closed
+    /// form for every lane it keeps (`sor_lanes`), and `solve` for the lanes that declines.
+    #[inline(always)]
+    fn hit_any<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L, any: bool) -> L {
+        let (o, d) = object_ray(&self.frame, ray);
+        let Some((c, lanes)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
+            return L::splat(MISS);
+        };
+        let (answers, ill) = self.closed_form(&c, lanes, o, d, t_min, t_max);
+        let round: Option<fn(f64) -> f64> = if any { Some(L::round_f64) } else { None };
+        solve_left(&c, ill & lanes, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi, round))
+    }
+
+    /// `sor_lanes::hit` for the lanes `lanes`, and the lanes it declines (bit `i` for lane `i`).
+    /// Out of line, so that its code stays out of the renderer's loops (a wide sor solve
+    /// inlined there once slowed the lathe kernels, whose code was unchanged), with AVX2 where
+    /// the CPU has it (the same operations, so the same bits).
+    #[inline(never)]
+    fn closed_form<L: Lane>(&self, c: &Candidates, lanes: u8, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
+        #[cfg(target_arch = "x86_64")]
+        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { self.closed_form_avx2(c, lanes, o, d, t_min, t_max) };
+        }
+        self.closed_form_in(c, lanes, o, d, t_min, t_max)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn closed_form_avx2<L: Lane>(
+        &self,
+        c: &Candidates,
+        lanes: u8,
+        o: V3<L>,
+        d: V3<L>,
+        t_min: L,
+        t_max: L,
+    ) -> (L, u8) {
+        self.closed_form_in(c, lanes, o, d, t_min, t_max)
+    }
+
+    /// Most calls have few lanes the cull keeps (three or four of eight on the kernel scene):
+    /// those are gathered into two or four lanes (the same arithmetic per lane, so the same
+    /// bits) and solved in one or half the vector operations.
+    #[inline(always)]
+    fn closed_form_in<L: Lane>(&self, c: &Candidates, lanes: u8, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
+        if L::WIDTH == 1 {
+            let (o, d, lo, hi) = (lanes_f64::<L, 1>(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
+            let may = |k: usize| c.lanes(k) & 1;
+            let (t, ill) =
+                sor_lanes::hit::<1>(&self.segments, self.caps(), may, [lanes & 1 != 0], o, d, lo, hi, L::round_f64);
+            return (to_lane(t), ill[0] as u8);
+        }
+        match lanes.count_ones() {
+            0..=2 => self.closed_form_few::<L, 2>(c, lanes, o, d, t_min, t_max),
+            3..=4 => self.closed_form_few::<L, 4>(c, lanes, o, d, t_min, t_max),
+            _ => self.closed_form_few::<L, 8>(c, lanes, o, d, t_min, t_max),
+        }
+    }
+
+    /// `closed_form_in` for at most `M` lanes of eight, gathered into `M`.
+    #[inline(always)]
+    fn closed_form_few<L: Lane, const M: usize>(
+        &self,
+        c: &Candidates,
+        lanes: u8,
+        o: V3<L>,
+        d: V3<L>,
+        t_min: L,
+        t_max: L,
+    ) -> (L, u8) {
+        let (mut at, mut n) = ([0usize; M], 0);
+        for i in 0..L::WIDTH {
+            if lanes >> i & 1 != 0 && n < M {
+                at[n] = i;
+                n += 1;
+            }
+        }
+        let (o, d, lo, hi) =
+            (lanes_f64::<L, 8>(o), lanes_f64::<L, 8>(d), lane_f64::<L, 8>(t_min), lane_f64::<L, 8>(t_max));
+        let g = |w: W<8>| W(at.map(|i| w.0[i]));
+        let gv = |v: WV<8>| WV { x: g(v.x), y: g(v.y), z: g(v.z) };
+        let may = |k: usize| {
+            let all = c.lanes(k);
+            let mut m = 0u8;
+            for (slot, &i) in at.iter().enumerate() {
+                m |= (all >> i & 1) << slot;
+            }
+            m
+        };
+        let live = std::array::from_fn(|slot| slot < n);
+        let (t, ill) =
+            sor_lanes::hit::<M>(&self.segments, self.caps(), may, live, gv(o), gv(d), g(lo), g(hi), L::round_f64);
+        let (mut out, mut bad) = ([MISS as f64; 8], 0u8);
+        for slot in 0..n {
+            out[at[slot]] = t.0[slot];
+            bad |= (ill[slot] as u8) << at[slot];
+        }
+        (to_lane(W(out)), bad)
+    }
+}
+
+#[cfg(test)]
+impl Sor {
+    /// The hit as the Bernstein solve alone answers it, before the closed form (`sor_lanes`).
+    pub(super) fn scalar_hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
+        super::revolved::hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
+            self.solve(m, o, d, lo, hi, None)
+        })
+    }
+
+    /// Render-space `q` in object space.
+    fn object_point(&self, q: DVec3) -> DVec3 {
+        self.frame.object_from_render.transform_point3(q.as_vec3()).as_dvec3()
+    }
+
+    /// Whether render-space `q` is inside.
+    pub(super) fn inside_at(&self, q: DVec3) -> bool {
+        self.inside_object(self.object_point(q))
+    }
+
+    /// A ray (render space) through a point of the side along its tangent plane: the point at
+    /// height fraction `at` and angle `turn` (both in [0, 1)), the direction `d` made tangent.
+    pub(super) fn grazing_ray(&self, at: f64, turn: f64, d: DVec3) -> (Vec3, Vec3) {
+        let y = self.bottom().lo + (self.top().hi - self.bottom().lo) * at;
+        let s = self.segment_at(y);
+        let (rad, a) = (s.f(y).max(0.0).sqrt(), std::f64::consts::TAU * turn);
+        let q = DVec3::new(rad * a.cos(), y, rad * a.sin());
+        let n = DVec3::new(2.0 * q.x, -s.slope(y), 2.0 * q.z).normalize();
+        let d = (d - d.dot(n) * n).normalize();
+        let render_from_object = self.frame.object_from_render.inverse();
+        let o = render_from_object.transform_point3((q - 3.0 * d).as_vec3());
+        (o, render_from_object.transform_vector3(d.as_vec3()).normalize())
+    }
+
+    /// Whether render-space `q` lies within `tol` of the side (its `r²`) or of a cap, in object
+    /// space.
+    pub(super) fn on_surface(&self, q: DVec3, tol: f64) -> bool {
+        let q = self.object_point(q);
+        let w2 = q.x * q.x + q.z * q.z;
+        let (lo, hi) = (self.bottom().lo, self.top().hi);
+        let inside_heights = q.y >= lo - tol && q.y <= hi + tol;
+        let side = inside_heights && (w2 - self.segment_at(q.y).f(q.y)).abs() <= tol;
+        let cap = |h: f64, s: &Segment| (q.y - h).abs() <= tol && w2 <= s.f(h) + tol;
+        side || (!self.open && (cap(lo, self.bottom()) || cap(hi, self.top())))
+    }
+}
+
 impl Shape for Sor {
     // Inlined into the renderer's AVX2 loops, as the lathe's: out of line, the eight-lane cull
     // (`revolved::candidates`) was compiled without AVX2.
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
-            self.solve(m, o, d, lo, hi, None)
-        })
+        self.hit_any(ray, t_min, t_max, false)
     }
 
     #[inline(always)]
     fn blocks<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        hit_lanes(&self.frame, ray, t_min, t_max, &self.whole, &self.bands, |m, o, d, lo, hi| {
-            self.solve(m, o, d, lo, hi, Some(L::round_f64))
-        })
+        self.hit_any(ray, t_min, t_max, true)
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

@@ -15,10 +15,9 @@ use super::bernstein::{
     one_root_unit, roots_between, roots_between_to, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B,
 };
 use super::cuboid::{frame_for, BoxFrame};
-use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
+use super::revolved::{along, candidates, object_ray, solve_left, Band, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::sor_lanes::{self, Caps};
-use super::wide::{lane_f64, lanes_f64, to_lane, W, WV};
 use super::{affine_f32, inside_lanes_f64, normal_lanes_f64, transformed_bounds, RadialRay, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
@@ -406,97 +405,9 @@ impl Sor {
         let Some((c, lanes)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
             return L::splat(MISS);
         };
-        let (answers, ill) = self.closed_form(&c, lanes, o, d, t_min, t_max);
+        let (answers, ill) = sor_lanes::closed_form(&self.segments, self.caps(), &c, lanes, o, d, t_min, t_max);
         let round: Option<fn(f64) -> f64> = if any { Some(L::round_f64) } else { None };
         solve_left(&c, ill & lanes, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi, round))
-    }
-
-    /// `sor_lanes::hit` for the lanes `lanes`, and the lanes it declines (bit `i` for lane `i`).
-    /// Out of line, so that its code stays out of the renderer's loops (a wide sor solve
-    /// inlined there once slowed the lathe kernels, whose code was unchanged), with AVX2 where
-    /// the CPU has it (the same operations, so the same bits).
-    #[inline(never)]
-    fn closed_form<L: Lane>(&self, c: &Candidates, lanes: u8, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
-        #[cfg(target_arch = "x86_64")]
-        if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2, checked just above.
-            return unsafe { self.closed_form_avx2(c, lanes, o, d, t_min, t_max) };
-        }
-        self.closed_form_in(c, lanes, o, d, t_min, t_max)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn closed_form_avx2<L: Lane>(
-        &self,
-        c: &Candidates,
-        lanes: u8,
-        o: V3<L>,
-        d: V3<L>,
-        t_min: L,
-        t_max: L,
-    ) -> (L, u8) {
-        self.closed_form_in(c, lanes, o, d, t_min, t_max)
-    }
-
-    /// Most calls have few lanes the cull keeps (three or four of eight on the kernel scene):
-    /// those are gathered into two or four lanes (the same arithmetic per lane, so the same
-    /// bits) and solved in one or half the vector operations.
-    #[inline(always)]
-    fn closed_form_in<L: Lane>(&self, c: &Candidates, lanes: u8, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
-        if L::WIDTH == 1 {
-            let (o, d, lo, hi) = (lanes_f64::<L, 1>(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
-            let may = |k: usize| c.lanes(k) & 1;
-            let (t, ill) =
-                sor_lanes::hit::<1>(&self.segments, self.caps(), may, [lanes & 1 != 0], o, d, lo, hi, L::round_f64);
-            return (to_lane(t), ill[0] as u8);
-        }
-        match lanes.count_ones() {
-            0..=2 => self.closed_form_few::<L, 2>(c, lanes, o, d, t_min, t_max),
-            3..=4 => self.closed_form_few::<L, 4>(c, lanes, o, d, t_min, t_max),
-            _ => self.closed_form_few::<L, 8>(c, lanes, o, d, t_min, t_max),
-        }
-    }
-
-    /// `closed_form_in` for at most `M` lanes of eight, gathered into `M`.
-    #[inline(always)]
-    fn closed_form_few<L: Lane, const M: usize>(
-        &self,
-        c: &Candidates,
-        lanes: u8,
-        o: V3<L>,
-        d: V3<L>,
-        t_min: L,
-        t_max: L,
-    ) -> (L, u8) {
-        let (mut at, mut n) = ([0usize; M], 0);
-        for i in 0..L::WIDTH {
-            if lanes >> i & 1 != 0 && n < M {
-                at[n] = i;
-                n += 1;
-            }
-        }
-        let (o, d, lo, hi) =
-            (lanes_f64::<L, 8>(o), lanes_f64::<L, 8>(d), lane_f64::<L, 8>(t_min), lane_f64::<L, 8>(t_max));
-        let g = |w: W<8>| W(at.map(|i| w.0[i]));
-        let gv = |v: WV<8>| WV { x: g(v.x), y: g(v.y), z: g(v.z) };
-        let may = |k: usize| {
-            let all = c.lanes(k);
-            let mut m = 0u8;
-            for (slot, &i) in at.iter().enumerate() {
-                m |= (all >> i & 1) << slot;
-            }
-            m
-        };
-        let live = std::array::from_fn(|slot| slot < n);
-        let (t, ill) =
-            sor_lanes::hit::<M>(&self.segments, self.caps(), may, live, gv(o), gv(d), g(lo), g(hi), L::round_f64);
-        let (mut out, mut bad) = ([MISS as f64; 8], 0u8);
-        for slot in 0..n {
-            out[at[slot]] = t.0[slot];
-            bad |= (ill[slot] as u8) << at[slot];
-        }
-        (to_lane(W(out)), bad)
     }
 }
 

@@ -15,8 +15,10 @@
 //! and single rays agree bit for bit.
 
 use super::cubic::{finite, roots_lanes_conditioned};
+use super::revolved::Candidates;
 use super::sor::Segment;
-use super::wide::{and, not, or, CentredLanes, Mask, W, WV};
+use super::wide::{and, lane_f64, lanes_f64, not, or, to_lane, CentredLanes, Mask, W, WV};
+use crate::lanes::{Lane, V3};
 use crate::ray::MISS;
 
 /// How near a double root the closed form gives up (`roots_lanes_conditioned`).
@@ -168,6 +170,115 @@ pub(super) fn hit<const N: usize>(
         }
     }
     (W(out), ill)
+}
+
+/// `sor_lanes::hit` for the lanes `lanes`, and the lanes it declines (bit `i` for lane `i`).
+/// Out of line, so that its code stays out of the renderer's loops (a wide sor solve
+/// inlined there once slowed the lathe kernels, whose code was unchanged), with AVX2 where
+/// the CPU has it (the same operations, so the same bits).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub(super) fn closed_form<L: Lane>(
+    segments: &[Segment],
+    caps: Caps,
+    c: &Candidates,
+    lanes: u8,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+) -> (L, u8) {
+    #[cfg(target_arch = "x86_64")]
+    if L::WIDTH == 8 && std::arch::is_x86_feature_detected!("avx2") {
+        // SAFETY: the CPU supports AVX2, checked just above.
+        return unsafe { closed_form_avx2(segments, caps, c, lanes, o, d, t_min, t_max) };
+    }
+    closed_form_in(segments, caps, c, lanes, o, d, t_min, t_max)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[allow(clippy::too_many_arguments)]
+unsafe fn closed_form_avx2<L: Lane>(
+    segments: &[Segment],
+    caps: Caps,
+    c: &Candidates,
+    lanes: u8,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+) -> (L, u8) {
+    closed_form_in(segments, caps, c, lanes, o, d, t_min, t_max)
+}
+
+/// Most calls have few lanes the cull keeps (three or four of eight on the kernel scene):
+/// those are gathered into two or four lanes (the same arithmetic per lane, so the same
+/// bits) and solved in one or half the vector operations.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn closed_form_in<L: Lane>(
+    segments: &[Segment],
+    caps: Caps,
+    c: &Candidates,
+    lanes: u8,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+) -> (L, u8) {
+    if L::WIDTH == 1 {
+        let (o, d, lo, hi) = (lanes_f64::<L, 1>(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
+        let may = |k: usize| c.lanes(k) & 1;
+        let (t, ill) = hit::<1>(segments, caps, may, [lanes & 1 != 0], o, d, lo, hi, L::round_f64);
+        return (to_lane(t), ill[0] as u8);
+    }
+    match lanes.count_ones() {
+        0..=2 => closed_form_few::<L, 2>(segments, caps, c, lanes, o, d, t_min, t_max),
+        3..=4 => closed_form_few::<L, 4>(segments, caps, c, lanes, o, d, t_min, t_max),
+        _ => closed_form_few::<L, 8>(segments, caps, c, lanes, o, d, t_min, t_max),
+    }
+}
+
+/// `closed_form_in` for at most `M` lanes of eight, gathered into `M`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn closed_form_few<L: Lane, const M: usize>(
+    segments: &[Segment],
+    caps: Caps,
+    c: &Candidates,
+    lanes: u8,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+) -> (L, u8) {
+    let (mut at, mut n) = ([0usize; M], 0);
+    for i in 0..L::WIDTH {
+        if lanes >> i & 1 != 0 && n < M {
+            at[n] = i;
+            n += 1;
+        }
+    }
+    let (o, d, lo, hi) = (lanes_f64::<L, 8>(o), lanes_f64::<L, 8>(d), lane_f64::<L, 8>(t_min), lane_f64::<L, 8>(t_max));
+    let g = |w: W<8>| W(at.map(|i| w.0[i]));
+    let gv = |v: WV<8>| WV { x: g(v.x), y: g(v.y), z: g(v.z) };
+    let may = |k: usize| {
+        let all = c.lanes(k);
+        let mut m = 0u8;
+        for (slot, &i) in at.iter().enumerate() {
+            m |= (all >> i & 1) << slot;
+        }
+        m
+    };
+    let live = std::array::from_fn(|slot| slot < n);
+    let (t, ill) = hit::<M>(segments, caps, may, live, gv(o), gv(d), g(lo), g(hi), L::round_f64);
+    let (mut out, mut bad) = ([MISS as f64; 8], 0u8);
+    for slot in 0..n {
+        out[at[slot]] = t.0[slot];
+        bad |= (ill[slot] as u8) << at[slot];
+    }
+    (to_lane(W(out)), bad)
 }
 
 #[cfg(test)]

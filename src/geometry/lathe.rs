@@ -11,6 +11,7 @@ use glam::{DAffine3, DVec2, DVec3, Vec3};
 use super::bernstein::{one_root_unit, roots_between, roots_unit_to, to_bernstein, FOR_F32, MAX as MAX_B};
 use super::cuboid::{frame_for, BoxFrame};
 use super::lathe_linear::{self, Cone};
+use super::lathe_quartic::{self, Quad};
 use super::revolved::{along, candidates, object_ray, solve_left, Band, Candidates, LaneCandidates};
 use super::roots::MAX_DEGREE;
 use super::spline::{along_monotone, closest_t, even_odd, Piece};
@@ -38,6 +39,9 @@ pub struct Lathe {
     /// Where every piece is straight, each as a cone (`lathe_linear`, eight lanes at once);
     /// empty otherwise.
     cones: Vec<Cone>,
+    /// Where every piece is quadratic, each with its quartic's terms (`lathe_quartic`, eight
+    /// lanes at once); empty otherwise.
+    quads: Vec<Quad>,
     /// For a straight outline that bounds a simple polygon (`lathe_linear::outward_right`),
     /// each piece's outward unit normal in `(r, y)`: the normal without a tangent, a square
     /// root or an even-odd test. Empty otherwise.
@@ -102,6 +106,51 @@ impl Squares {
     }
 }
 
+/// One ray (object space) as every piece's polynomial takes it (`Squares`): the multiples of
+/// `y²`, `y`, `1` and `r²`, whether it runs level with the axis, and its distance from the axis.
+#[derive(Clone, Copy)]
+struct PieceRay {
+    o: DVec3,
+    d: DVec3,
+    dh2: f64,
+    level: bool,
+    band: RadialRay,
+    inv_dy: f64,
+    k_y2: f64,
+    k_y: f64,
+    k_1: f64,
+    k_r2: f64,
+}
+
+impl PieceRay {
+    #[inline(always)]
+    fn new(o: DVec3, d: DVec3) -> PieceRay {
+        let dh2 = d.x * d.x + d.z * d.z;
+        let (ax, az) = (o.x * d.y - o.y * d.x, o.z * d.y - o.y * d.z);
+        PieceRay {
+            o,
+            d,
+            dh2,
+            level: d.y.abs() <= 1e-9 * dh2.sqrt(),
+            band: RadialRay::new(o, d),
+            inv_dy: 1.0 / d.y,
+            k_y2: dh2,
+            k_y: 2.0 * (ax * d.x + az * d.z),
+            k_1: ax * ax + az * az,
+            k_r2: d.y * d.y,
+        }
+    }
+}
+
+/// What one piece answers a ray (`Lathe::solve_piece`).
+enum Cross {
+    Miss,
+    /// The nearest crossing below the bound.
+    At(f64),
+    /// A shadow ray is certainly blocked (`one_root_unit`); the slab's far end.
+    Sure(f64),
+}
+
 impl Lathe {
     pub fn new(render_from_object: DAffine3, pieces: &[Piece]) -> Lathe {
         let r = pieces.iter().fold(0.0f64, |m, p| m.max(p.lo.x.abs()).max(p.hi.x.abs()));
@@ -126,6 +175,27 @@ impl Lathe {
         } else {
             Vec::new()
         };
+        let quads = if pieces.iter().all(|p| p.degree == 2) {
+            let first5 = |c: &[f64; 7]| [c[0], c[1], c[2], c[3], c[4]];
+            let b5 = |c: &[f64; MAX_B + 1]| [c[0], c[1], c[2], c[3], c[4]];
+            pieces
+                .iter()
+                .zip(&squares)
+                .map(|(p, q)| Quad {
+                    y: first5(&q.y),
+                    y2: first5(&q.y2),
+                    r2: first5(&q.r2),
+                    y_b: b5(&q.y_b),
+                    y2_b: b5(&q.y2_b),
+                    r2_b: b5(&q.r2_b),
+                    y_lo: p.lo.y,
+                    y_hi: p.hi.y,
+                    rising: p.at(1.0).y > p.at(0.0).y,
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
         let xf = render_from_object * local;
         let xf = affine_f32(&xf);
         let (r, h) = ((r / s) as f32, ((yhi - ylo) / (2.0 * s)) as f32);
@@ -146,6 +216,7 @@ impl Lathe {
             whole: Band::around(&bands),
             bands,
             cones,
+            quads,
             min: min - pad,
             max: max + pad,
         }
@@ -169,104 +240,163 @@ impl Lathe {
         any: Option<fn(f64) -> f64>,
     ) -> Option<f64> {
         let mut best = s_max;
-        let dh2 = d.x * d.x + d.z * d.z;
-        let level = d.y.abs() <= 1e-9 * dh2.sqrt();
-        let band = RadialRay::new(o, d);
-        let inv_dy = 1.0 / d.y;
-        // The polynomial's multiples of y², y, 1 and r² (`Squares`).
-        let (ax, az) = (o.x * d.y - o.y * d.x, o.z * d.y - o.y * d.z);
-        let (k_y2, k_y, k_1, k_r2) = (dh2, 2.0 * (ax * d.x + az * d.z), ax * ax + az * az, d.y * d.y);
-        let mut roots = [0.0; MAX_DEGREE];
+        let ray = PieceRay::new(o, d);
         for k in along(self.pieces.len(), d.y) {
             if !may.may_meet(k) {
                 continue;
             }
-            let (p, sq) = (&self.pieces[k], &self.squares[k]);
-            // The piece's height slab along the ray.
-            let mut slab = (f64::NEG_INFINITY, f64::INFINITY);
-            if level {
-                if o.y < p.lo.y || o.y > p.hi.y {
-                    continue;
-                }
-            } else {
-                // Widened by a part in 10⁹: a product by 1/d.y is not the quotient's bits.
-                let (a, b) = ((p.lo.y - o.y) * inv_dy, (p.hi.y - o.y) * inv_dy);
-                let pad = 1e-9 * (a.abs() + b.abs());
-                let (a, b) = (a.min(b) - pad, a.max(b) + pad);
-                if b <= s_min || a >= best {
-                    continue;
-                }
-                if band.misses(a.max(s_min), b.min(best), sq.r2_min, sq.r2_max) {
-                    continue;
-                }
-                slab = (a, b);
-            }
-            let mut hits = [f64::NAN; 2 * MAX_DEGREE];
-            let mut n = 0;
-            if level {
-                // y(t) = o.y, then |o_h + s·d_h|² = r(t)².
-                let (c, k) = p.combine(0.0, 1.0, -o.y);
-                let m = roots_between(&c[..k], 0.0, 1.0, &mut roots);
-                for &t in &roots[..m] {
-                    let r = p.at(t).x;
-                    let b = o.x * d.x + o.z * d.z;
-                    let c = o.x * o.x + o.z * o.z - r * r;
-                    let disc = b * b - dh2 * c;
-                    if disc >= 0.0 {
-                        let q = -(b + b.signum() * disc.sqrt());
-                        for s in [q / dh2, c / q] {
-                            hits[n] = s;
-                            n += 1;
-                        }
-                    }
-                }
-            } else {
-                let len = 2 * p.degree + 1;
-                // Highest power first, as the solvers take it.
-                let mut c = [0.0; 7];
-                for (i, slot) in c[..len].iter_mut().enumerate() {
-                    let k = len - 1 - i;
-                    *slot = k_y2 * sq.y2[k] + k_y * sq.y[k] - k_r2 * sq.r2[k];
-                }
-                c[len - 1] += k_1;
-                let m = if len <= 3 {
-                    // As the eight-lane solve skips and solves it (`lathe_linear`), for its bits.
-                    if !lathe_linear::may_cross(c[0], c[1], c[2]) {
-                        continue;
-                    }
-                    let mut m = 0;
-                    for (t, ok) in lathe_linear::roots_unit(W([c[0]]), W([c[1]]), W([c[2]])) {
-                        if ok[0] {
-                            roots[m] = t.0[0];
-                            m += 1;
-                        }
-                    }
-                    m
-                } else {
-                    let mut b = [0.0; MAX_B + 1];
-                    for (k, slot) in b[..len].iter_mut().enumerate() {
-                        *slot = k_y2 * sq.y2_b[k] + k_y * sq.y_b[k] - k_r2 * sq.r2_b[k] + k_1;
-                    }
-                    if let Some(round) = any {
-                        // The root's crossing lies in the slab, which lies in the interval.
-                        if round(slab.0) > s_min && slab.1 < s_max && one_root_unit(&c[..len], b) {
-                            return Some(slab.1);
-                        }
-                    }
-                    roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
-                };
-                for &t in &roots[..m] {
-                    hits[n] = (p.at(t).y - o.y) * inv_dy;
-                    n += 1;
-                }
-            }
-            for &s in &hits[..n] {
-                if s > s_min && s < best {
-                    best = s;
-                }
+            match self.solve_piece(k, &ray, s_min, best, s_max, any) {
+                Cross::Sure(s) => return Some(s),
+                Cross::At(s) => best = s,
+                Cross::Miss => {}
             }
         }
         (best < s_max).then_some(best)
+    }
+
+    /// Piece `k` alone, as `solve` takes it with `best` found so far: its nearest crossing in
+    /// `(s_min, best)`, or (`any`) a crossing certainly inside `(s_min, s_max)`.
+    #[inline(always)]
+    fn solve_piece(
+        &self,
+        k: usize,
+        ray: &PieceRay,
+        s_min: f64,
+        best: f64,
+        s_max: f64,
+        any: Option<fn(f64) -> f64>,
+    ) -> Cross {
+        let PieceRay { o, d, dh2, level, band, inv_dy, k_y2, k_y, k_1, k_r2 } = *ray;
+        let mut roots = [0.0; MAX_DEGREE];
+        let (p, sq) = (&self.pieces[k], &self.squares[k]);
+        // The piece's height slab along the ray.
+        let mut slab = (f64::NEG_INFINITY, f64::INFINITY);
+        if level {
+            if o.y < p.lo.y || o.y > p.hi.y {
+                return Cross::Miss;
+            }
+        } else {
+            // Widened by a part in 10⁹: a product by 1/d.y is not the quotient's bits.
+            let (a, b) = ((p.lo.y - o.y) * inv_dy, (p.hi.y - o.y) * inv_dy);
+            let pad = 1e-9 * (a.abs() + b.abs());
+            let (a, b) = (a.min(b) - pad, a.max(b) + pad);
+            if b <= s_min || a >= best {
+                return Cross::Miss;
+            }
+            if band.misses(a.max(s_min), b.min(best), sq.r2_min, sq.r2_max) {
+                return Cross::Miss;
+            }
+            slab = (a, b);
+        }
+        let mut hits = [f64::NAN; 2 * MAX_DEGREE];
+        let mut n = 0;
+        if level {
+            // y(t) = o.y, then |o_h + s·d_h|² = r(t)².
+            let (c, k) = p.combine(0.0, 1.0, -o.y);
+            let m = roots_between(&c[..k], 0.0, 1.0, &mut roots);
+            for &t in &roots[..m] {
+                let r = p.at(t).x;
+                let b = o.x * d.x + o.z * d.z;
+                let c = o.x * o.x + o.z * o.z - r * r;
+                let disc = b * b - dh2 * c;
+                if disc >= 0.0 {
+                    let q = -(b + b.signum() * disc.sqrt());
+                    for s in [q / dh2, c / q] {
+                        hits[n] = s;
+                        n += 1;
+                    }
+                }
+            }
+        } else {
+            let len = 2 * p.degree + 1;
+            // Highest power first, as the solvers take it.
+            let mut c = [0.0; 7];
+            for (i, slot) in c[..len].iter_mut().enumerate() {
+                let k = len - 1 - i;
+                *slot = k_y2 * sq.y2[k] + k_y * sq.y[k] - k_r2 * sq.r2[k];
+            }
+            c[len - 1] += k_1;
+            let m = if len <= 3 {
+                // As the eight-lane solve skips and solves it (`lathe_linear`), for its bits.
+                if !lathe_linear::may_cross(c[0], c[1], c[2]) {
+                    return Cross::Miss;
+                }
+                let mut m = 0;
+                for (t, ok) in lathe_linear::roots_unit(W([c[0]]), W([c[1]]), W([c[2]])) {
+                    if ok[0] {
+                        roots[m] = t.0[0];
+                        m += 1;
+                    }
+                }
+                m
+            } else {
+                let mut b = [0.0; MAX_B + 1];
+                for (k, slot) in b[..len].iter_mut().enumerate() {
+                    *slot = k_y2 * sq.y2_b[k] + k_y * sq.y_b[k] - k_r2 * sq.r2_b[k] + k_1;
+                }
+                if let Some(round) = any {
+                    // The root's crossing lies in the slab, which lies in the interval.
+                    if round(slab.0) > s_min && slab.1 < s_max && one_root_unit(&c[..len], b) {
+                        return Cross::Sure(slab.1);
+                    }
+                }
+                roots_unit_to(&c[..len], b, FOR_F32, &mut roots)
+            };
+            for &t in &roots[..m] {
+                hits[n] = (p.at(t).y - o.y) * inv_dy;
+                n += 1;
+            }
+        }
+        let mut near = best;
+        for &s in &hits[..n] {
+            if s > s_min && s < near {
+                near = s;
+            }
+        }
+        if near < best {
+            Cross::At(near)
+        } else {
+            Cross::Miss
+        }
+    }
+
+    /// Piece `k` alone for one lane of the eight-lane quartic solve (`lathe_quartic`), where
+    /// that declined: its first crossing in `(s_min, s_max)` that `round` puts above `s_min`
+    /// (`hit_lanes_f64`'s retries), or (`any`) one certainly there.
+    #[allow(clippy::too_many_arguments)]
+    fn piece_alone(
+        &self,
+        k: usize,
+        o: DVec3,
+        d: DVec3,
+        s_min: f64,
+        s_max: f64,
+        round: fn(f64) -> f64,
+        any: bool,
+    ) -> Option<f64> {
+        let ray = PieceRay::new(o, d);
+        let mut from = s_min;
+        for _ in 0..4 {
+            match self.solve_piece(k, &ray, from, s_max, s_max, any.then_some(round)) {
+                Cross::Sure(s) => return Some(s),
+                Cross::At(s) if round(s) > s_min => return Some(s),
+                Cross::At(s) => from = s,
+                Cross::Miss => return None,
+            }
+        }
+        None
+    }
+
+    /// The lanes (bit `i` for lane `i`) level with the axis: `solve`'s test.
+    #[inline(always)]
+    fn level_lanes<L: Lane>(d: V3<L>) -> u8 {
+        // A loop, not a fold's closure (compiled out of line, without AVX2).
+        let mut level = 0u8;
+        for i in 0..L::WIDTH {
+            let (x, y, z) = (d.x.get_f64(i), d.y.get_f64(i), d.z.get_f64(i));
+            level |= u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i;
+        }
+        level
     }
 
     /// Every lane not level with the axis answered at once (`lathe_linear`), with the lanes
@@ -274,12 +404,7 @@ impl Lathe {
     /// compiled out of line, without AVX2.
     #[inline(always)]
     fn hit_cones<L: Lane>(&self, c: &Candidates, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> (L, u8) {
-        // A loop, not a fold's closure (compiled out of line, without AVX2).
-        let mut level = 0u8;
-        for i in 0..L::WIDTH {
-            let (x, y, z) = (d.x.get_f64(i), d.y.get_f64(i), d.z.get_f64(i));
-            level |= u8::from(y.abs() <= 1e-9 * (x * x + z * z).sqrt()) << i;
-        }
+        let level = Lathe::level_lanes(d);
         let t = if L::WIDTH == 8 {
             let skip = std::array::from_fn(|i| level >> i & 1 != 0);
             let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
@@ -287,6 +412,27 @@ impl Lathe {
         } else {
             let (o, d, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
             to_lane(lathe_linear::hit::<1>(&self.cones, c, [level != 0], o, d, lo, hi, L::round_f64))
+        };
+        (t, level)
+    }
+
+    /// Every lane not level with the axis answered at once (`lathe_quartic`), with the lanes
+    /// left to `solve` (level: `solve`'s test), as `hit_cones`.
+    #[inline(always)]
+    fn hit_quads<L: Lane>(&self, c: &Candidates, o: V3<L>, d: V3<L>, t_min: L, t_max: L, any: bool) -> (L, u8) {
+        let level = Lathe::level_lanes(d);
+        let alone = |i: usize, k: usize, lo: f64, hi: f64| {
+            let v = |w: V3<L>| DVec3::new(w.x.get_f64(i), w.y.get_f64(i), w.z.get_f64(i));
+            self.piece_alone(k, v(o), v(d), lo, hi, L::round_f64, any)
+        };
+        let (ow, dw) = (lanes_f64(o), lanes_f64(d));
+        let t = if L::WIDTH == 8 {
+            let skip = std::array::from_fn(|i| level >> i & 1 != 0);
+            let (lo, hi) = (lane_f64(t_min), lane_f64(t_max));
+            to_lane(lathe_quartic::hit::<8>(&self.quads, c, skip, ow, dw, lo, hi, L::round_f64, any, alone))
+        } else {
+            let (o1, d1, lo, hi) = (lanes_f64(o), lanes_f64(d), lane_f64(t_min), lane_f64(t_max));
+            to_lane(lathe_quartic::hit::<1>(&self.quads, c, [level != 0], o1, d1, lo, hi, L::round_f64, any, alone))
         };
         (t, level)
     }
@@ -385,8 +531,13 @@ impl Lathe {
         let Some((c, lanes)) = candidates(&self.whole, &self.bands, o, d, t_min, t_max) else {
             return L::splat(MISS);
         };
-        let (answers, left) =
-            if self.cones.is_empty() { (L::splat(MISS), lanes) } else { self.hit_cones(&c, o, d, t_min, t_max) };
+        let (answers, left) = if !self.cones.is_empty() {
+            self.hit_cones(&c, o, d, t_min, t_max)
+        } else if !self.quads.is_empty() {
+            self.hit_quads(&c, o, d, t_min, t_max, any)
+        } else {
+            (L::splat(MISS), lanes)
+        };
         let round: Option<fn(f64) -> f64> = if any { Some(L::round_f64) } else { None };
         solve_left(&c, left & lanes, answers, o, d, t_min, t_max, |m, o, d, lo, hi| self.solve(m, o, d, lo, hi, round))
     }
@@ -413,188 +564,4 @@ impl Shape for Lathe {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::desc::SplineKind;
-    use crate::geometry::spline::open_pieces;
-    use crate::ray::Ray;
-
-    /// A cylinder of radius 1 from y = 0 to 2 as a closed linear outline.
-    fn can(xf: DAffine3) -> Lathe {
-        let p = |r: f64, y: f64| DVec2::new(r, y);
-        let pts = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 2.0), p(0.0, 2.0)];
-        Lathe::new(xf, &open_pieces(SplineKind::Linear, &pts).expect("lathe"))
-    }
-
-    #[test]
-    fn walls_level_rays_axis_rays_and_extremes() {
-        let l = can(DAffine3::IDENTITY);
-        let hit = |o: Vec3, d: Vec3| l.intersect(&Ray::new(o, d.normalize()), 0.0, f32::INFINITY);
-        // Level ray (d.y = 0): the wall at x = -1.
-        assert!((hit(Vec3::new(-5.0, 1.0, 0.0), Vec3::X).expect("level") - 4.0).abs() < 1e-5);
-        assert!((l.normal_at(Vec3::new(-1.0, 1.0, 0.0)) - -Vec3::X).length() < 1e-5);
-        // Slanted: enters the wall at y = 1.5.
-        let t = hit(Vec3::new(0.0, 2.5, -2.0), Vec3::new(0.0, -1.0, 1.0)).expect("slant");
-        assert!((t - 2f32.sqrt()).abs() < 1e-4, "{t}");
-        // Down the axis: the top disc of the outline.
-        assert!((hit(Vec3::new(0.0, 5.0, 0.0), -Vec3::Y).expect("axis") - 3.0).abs() < 1e-5);
-        assert!((l.normal_at(Vec3::new(0.3, 2.0, 0.0)) - Vec3::Y).length() < 1e-5);
-        // Beside it, parallel to the axis: a miss.
-        assert_eq!(hit(Vec3::new(1.5, 5.0, 0.0), -Vec3::Y), None);
-        // Grazing the wall: a miss or a hit on it.
-        let g = hit(Vec3::new(-5.0, 1.0, 1.0), Vec3::X);
-        assert!(g.is_none_or(|t| (t - 5.0).abs() < 1e-2), "{g:?}");
-        assert!(
-            l.inside(V3::from_vec3(Vec3::new(0.5, 1.0, 0.2))) && !l.inside(V3::from_vec3(Vec3::new(1.5, 1.0, 0.0)))
-        );
-        for (s, at) in [(1e-4, 0.0), (1e5, 0.0), (1.0, 1e6)] {
-            let xf = DAffine3::from_translation(DVec3::splat(at)) * DAffine3::from_scale(DVec3::splat(s));
-            let l = can(xf);
-            let o = Vec3::new(-5.0, 1.0, 0.0) * s as f32 + Vec3::splat(at as f32);
-            let t = l.intersect(&Ray::new(o, Vec3::X), 0.0, f32::INFINITY).expect("far");
-            let want = 4.0 * s as f32;
-            assert!((t - want).abs() <= want * 1e-4 + at as f32 * 1e-6, "{s} {at}: {t}");
-        }
-    }
-
-    /// The straight pieces solved eight lanes at once (`lathe_linear`) give the scalar solve's
-    /// bits, in packets and single rays, over seeded random rays at the kernel vase (scaled,
-    /// moved, seen from near and far), some level with the axis (left to the scalar solve),
-    /// some nearly so, some along it.
-    #[test]
-    fn cones_give_the_scalar_solves_bits() {
-        use crate::lanes::F8;
-        use crate::ray::MISS;
-        let p = |r: f64, y: f64| DVec2::new(r, y);
-        let vase = [p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
-        let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1)) * DAffine3::from_scale(DVec3::splat(2.0));
-        let wide = Lathe::new(xf, &open_pieces(SplineKind::Linear, &vase).expect("lathe"));
-        assert_eq!(wide.cones.len(), wide.pieces.len());
-        let scalar = Lathe { cones: Vec::new(), ..wide.clone() };
-        let mut rand = crate::geometry::test_support::uniform(0x94d0_49bb_1331_11ebu64);
-        let (lo, hi) = wide.bounds();
-        let mut hits = 0;
-        for case in 0..2000 {
-            let rays: [Ray; 8] = std::array::from_fn(|i| {
-                let at = |a: f64, b: f64, c: f64| lo + (hi - lo) * Vec3::new(a as f32, b as f32, c as f32);
-                let far = [1.0, 30.0][case % 2];
-                let o = at(rand() * 1.4 - 0.2, rand() * 1.4 - 0.2, rand() * 1.4 - 0.2 - far);
-                let mut d = (at(rand(), rand(), rand()) - o).normalize();
-                match (case + i) % 7 {
-                    0 => d.y = 0.0,
-                    1 => d.y *= 1e-9,
-                    2 => d = Vec3::new(0.0, -1.0, 0.0),
-                    _ => {}
-                }
-                Ray::new(o, d.normalize())
-            });
-            let packet = RayLanes::<F8> {
-                o: V3::from_lanes(|i| rays[i].origin),
-                d: V3::from_lanes(|i| rays[i].dir),
-                inv: V3::from_lanes(|i| rays[i].inv_dir),
-            };
-            let t_min = F8::from_fn(|i| [0.0, 0.5, 2.0][(case + i) % 3]);
-            let (a, b) = (wide.hit(&packet, t_min, F8::splat(MISS)), scalar.hit(&packet, t_min, F8::splat(MISS)));
-            for (i, r) in rays.iter().enumerate() {
-                let one = wide.hit(&r.lanes(), t_min.get(i), MISS);
-                assert_eq!(a.get(i).to_bits(), b.get(i).to_bits(), "case {case} lane {i}: {r:?}");
-                assert_eq!(one.to_bits(), b.get(i).to_bits(), "case {case} lane {i}: {r:?}");
-                hits += usize::from(one != MISS);
-            }
-        }
-        assert!(hits > 2000, "{hits}");
-    }
-
-    /// `blocks` misses exactly where `hit` does for the curved kernel vases: seeded random rays
-    /// at them, a third ending inside their box, and shadow rays leaving their hits every way.
-    #[test]
-    fn blocks_as_hit_does() {
-        use crate::geometry::test_support::{blocks_rays, check_blocks};
-        let p = |r: f64, y: f64| DVec2::new(r, y);
-        let vase = [p(0.0, -0.1), p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
-        for (kind, pts) in [(SplineKind::Quadratic, &vase[..6]), (SplineKind::Cubic, &vase[..])] {
-            let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1));
-            let l = Lathe::new(xf, &open_pieces(kind, pts).expect("lathe"));
-            let (lo, hi) = l.bounds();
-            let rays = blocks_rays(&l, lo, hi, 400, 77);
-            let hits = check_blocks(&l, &rays);
-            assert!(hits > 100 && hits < rays.len() - 100, "{kind:?}: {hits} of {}", rays.len());
-        }
-    }
-
-    /// Every spline kind of the kernel vase (each outline closed by the axis), seeded random rays from around it: eight-lane
-    /// packets give the single rays' distances bit for bit, and a ray from a point outside
-    /// crosses the surface an even number of times, from inside an odd number (grazing rays
-    /// and starts on the surface decide nothing and are passed over).
-    #[test]
-    fn packets_match_single_rays_and_crossings_match_inside() {
-        use crate::lanes::F8;
-        use crate::ray::MISS;
-        let p = |r: f64, y: f64| DVec2::new(r, y);
-        let vase = [p(0.0, 0.0), p(0.45, 0.0), p(0.3, 0.4), p(0.45, 0.75), p(0.25, 0.95), p(0.0, 0.95)];
-        let cubic = [&[p(0.0, -0.1)][..], &vase, &[p(0.0, 1.05)]].concat();
-        let bezier = [
-            p(0.0, 0.0),
-            p(0.6, 0.0),
-            p(0.1, 0.5),
-            p(0.45, 0.75),
-            p(0.45, 0.75),
-            p(0.3, 1.0),
-            p(0.2, 0.9),
-            p(0.0, 0.95),
-        ];
-        let mut seed = 0x853c_49e6_748f_ea9bu64;
-        let mut rand = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u32 << 24) as f32
-        };
-        let mut checked = 0;
-        for (kind, pts) in [
-            (SplineKind::Linear, &vase[..]),
-            (SplineKind::Quadratic, &cubic[..cubic.len() - 1]),
-            (SplineKind::Cubic, &cubic[..]),
-            (SplineKind::Bezier, &bezier[..]),
-        ] {
-            let xf = DAffine3::from_translation(DVec3::new(0.3, -0.2, 0.1)) * DAffine3::from_scale(DVec3::splat(2.0));
-            let l = Lathe::new(xf, &open_pieces(kind, pts).expect("lathe"));
-            let (lo, hi) = l.bounds();
-            for _ in 0..300 {
-                let at = |t: Vec3| lo + (hi - lo) * t;
-                let rays: [Ray; 8] = std::array::from_fn(|_| {
-                    let o = at(Vec3::new(rand(), rand(), rand()) * 1.4 - Vec3::splat(0.2));
-                    let target = at(Vec3::new(rand(), rand(), rand()));
-                    Ray::new(o, (target - o).normalize())
-                });
-                let packet = RayLanes::<F8> {
-                    o: V3::from_lanes(|i| rays[i].origin),
-                    d: V3::from_lanes(|i| rays[i].dir),
-                    inv: V3::from_lanes(|i| rays[i].inv_dir),
-                };
-                let wide = l.hit(&packet, F8::splat(0.0), F8::splat(MISS));
-                for (i, r) in rays.iter().enumerate() {
-                    let single = l.hit(&r.lanes(), 0.0, MISS);
-                    assert_eq!(wide.get(i).to_bits(), single.to_bits(), "{kind:?} lane {i}");
-                    let mut crossings = Vec::new();
-                    let mut t = 0.0;
-                    while crossings.len() < 16 {
-                        let Some(next) = l.intersect(r, t, f32::INFINITY) else { break };
-                        crossings.push(next);
-                        t = next;
-                    }
-                    let scale = 1.0 + r.origin.length();
-                    if crossings.first().is_some_and(|&c| c < 1e-3 * scale)
-                        || crossings.windows(2).any(|w| w[1] - w[0] < 1e-3 * scale)
-                    {
-                        continue;
-                    }
-                    let inside = l.inside(V3::from_vec3(r.origin));
-                    assert_eq!(inside, crossings.len() % 2 == 1, "{kind:?} {r:?}: {crossings:?}");
-                    checked += 1;
-                }
-            }
-        }
-        assert!(checked > 8000, "{checked}");
-    }
-}
+mod tests;

@@ -88,6 +88,7 @@ pub mod julia;
 mod julia_cells;
 pub mod lathe;
 pub mod lathe_linear;
+pub mod lathe_quartic;
 pub mod mesh;
 pub mod parametric;
 pub mod plane;

@@ -7,6 +7,14 @@
 //!
 //! `lanes_f64` carries a ray's object-space origin and direction from any `Lane` into `W`,
 //! and `to_lane` the answers back.
+//!
+//! The operations are plain loops, not `std::array::from_fn`: once enough kernels used `W`,
+//! LLVM stopped inlining `from_fn`'s machinery into some of them and called it out of line,
+//! without AVX2 (scenes/kernels/quartic.pov: 10 → 33 M instructions in `try_from_fn`, 22 %
+//! more CPU time).
+
+// Lane loops index several per-lane arrays at once; iterators would hide which lane is meant.
+#![allow(clippy::needless_range_loop)]
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -25,7 +33,11 @@ macro_rules! w_binop {
             type Output = W<N>;
             #[inline(always)]
             fn $f(self, o: W<N>) -> W<N> {
-                W(std::array::from_fn(|i| self.0[i] $op o.0[i]))
+                let mut out = self.0;
+                for i in 0..N {
+                    out[i] = self.0[i] $op o.0[i];
+                }
+                W(out)
             }
         }
     };
@@ -50,11 +62,19 @@ impl<const N: usize> W<N> {
     }
     #[inline(always)]
     pub fn map(self, f: impl Fn(f64) -> f64) -> W<N> {
-        W(std::array::from_fn(|i| f(self.0[i])))
+        let mut out = self.0;
+        for i in 0..N {
+            out[i] = f(self.0[i]);
+        }
+        W(out)
     }
     #[inline(always)]
     pub fn zip(self, o: W<N>, f: impl Fn(f64, f64) -> f64) -> W<N> {
-        W(std::array::from_fn(|i| f(self.0[i], o.0[i])))
+        let mut out = self.0;
+        for i in 0..N {
+            out[i] = f(self.0[i], o.0[i]);
+        }
+        W(out)
     }
     #[inline(always)]
     pub fn sqrt(self) -> W<N> {
@@ -81,35 +101,61 @@ impl<const N: usize> W<N> {
     }
     #[inline(always)]
     pub fn lt(self, o: W<N>) -> Mask<N> {
-        std::array::from_fn(|i| self.0[i] < o.0[i])
+        let mut out = [false; N];
+        for i in 0..N {
+            out[i] = self.0[i] < o.0[i];
+        }
+        out
     }
     #[inline(always)]
     pub fn le(self, o: W<N>) -> Mask<N> {
-        std::array::from_fn(|i| self.0[i] <= o.0[i])
+        let mut out = [false; N];
+        for i in 0..N {
+            out[i] = self.0[i] <= o.0[i];
+        }
+        out
     }
     /// `a` where `m`, else `b`.
     #[inline(always)]
     pub fn select(m: Mask<N>, a: W<N>, b: W<N>) -> W<N> {
-        W(std::array::from_fn(|i| if m[i] { a.0[i] } else { b.0[i] }))
+        let mut out = b.0;
+        for i in 0..N {
+            if m[i] {
+                out[i] = a.0[i];
+            }
+        }
+        W(out)
     }
 }
 
 /// Lane-wise `a && b`.
 #[inline(always)]
 pub fn and<const N: usize>(a: Mask<N>, b: Mask<N>) -> Mask<N> {
-    std::array::from_fn(|i| a[i] & b[i])
+    let mut out = a;
+    for i in 0..N {
+        out[i] = a[i] & b[i];
+    }
+    out
 }
 
 /// Lane-wise `a || b`.
 #[inline(always)]
 pub fn or<const N: usize>(a: Mask<N>, b: Mask<N>) -> Mask<N> {
-    std::array::from_fn(|i| a[i] | b[i])
+    let mut out = a;
+    for i in 0..N {
+        out[i] = a[i] | b[i];
+    }
+    out
 }
 
 /// Lane-wise `!m`.
 #[inline(always)]
 pub fn not<const N: usize>(m: Mask<N>) -> Mask<N> {
-    m.map(|b| !b)
+    let mut out = m;
+    for i in 0..N {
+        out[i] = !m[i];
+    }
+    out
 }
 
 /// A shape solved in f64 lanes in its object space: `solve` answers each lane's nearest hit of

@@ -219,22 +219,36 @@ pub fn solve_lane_f64<L: Lane>(
     t_max: L,
     solve: &impl Fn(usize, glam::DVec3, glam::DVec3, f64, f64) -> Option<f64>,
 ) -> f64 {
+    solve_lane_tagged_f64(i, o, d, t_min, t_max, &|i, o, d, lo, hi| solve(i, o, d, lo, hi).map(|t| (t, ()))).0
+}
+
+/// `solve_lane_f64` where `solve` also names what its root lies on (a prism's side or cap):
+/// the lane's hit and the tag of the root taken, `None` where it missed.
+#[inline(always)]
+pub fn solve_lane_tagged_f64<L: Lane, T>(
+    i: usize,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+    solve: &impl Fn(usize, glam::DVec3, glam::DVec3, f64, f64) -> Option<(f64, T)>,
+) -> (f64, Option<T>) {
     let v = |v: V3<L>| glam::DVec3::new(v.x.get_f64(i), v.y.get_f64(i), v.z.get_f64(i));
     let (lo, hi) = (t_min.get_f64(i), t_max.get_f64(i));
     // An empty interval holds no root: lanes a packet does not trace (a blocked shadow
     // ray, a lane culled by its box) cost no solve.
     if !(lo < hi) {
-        return MISS as f64;
+        return (MISS as f64, None);
     }
     let mut from = lo;
     for _ in 0..4 {
-        let Some(t) = solve(i, v(o), v(d), from, hi) else { break };
+        let Some((t, tag)) = solve(i, v(o), v(d), from, hi) else { break };
         if L::round_f64(t) > lo {
-            return L::round_f64(t).min(hi);
+            return (L::round_f64(t).min(hi), Some(tag));
         }
         from = t;
     }
-    MISS as f64
+    (MISS as f64, None)
 }
 
 /// `normal` of a shape that computes its object-space normal per point in f64.

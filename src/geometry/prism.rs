@@ -30,6 +30,10 @@ use super::{affine_f32, transformed_bounds, CullBox, Shape};
 use crate::lanes::{Lane, V3};
 use crate::ray::{RayLanes, MISS};
 
+/// The faces `hit_faces` names for the caps at `h1` and `h2` (a side's face is its arc's index).
+pub const FACE_H1: u32 = u32::MAX - 2;
+pub const FACE_H2: u32 = u32::MAX - 1;
+
 #[derive(Clone, Debug)]
 pub struct Prism {
     pub frame: BoxFrame,
@@ -45,8 +49,10 @@ pub struct Prism {
     cells: cells::Cells,
     /// Each arc's outward side where it is settled (`outward`), for the normal.
     outward: Vec<u8>,
-    /// The straight arcs apart (`sides::Line`), and the curved ones' boxes (`sides::Curve`).
+    /// The straight arcs apart (`sides::Line`) with each one's index in `arcs`, and the curved
+    /// ones' boxes (`sides::Curve`).
     lines: Vec<sides::Line>,
+    line_arcs: Vec<u32>,
     curves: Vec<sides::Curve>,
     /// Heights in object space, `h1 < h2`.
     h1: f64,
@@ -110,9 +116,11 @@ impl Prism {
         let slabs: Vec<arc::Slab> = arcs.iter().map(arc::Slab::of).collect();
         let cells = cells::Cells::new(&arcs, &slabs, |q| Self::crossings(&bands, &arcs, q));
         let outward = outward::sides(&arcs, cells.lists(), |q| Self::crossings(&bands, &arcs, q));
+        let (lines, line_arcs) = sides::Line::all(&arcs);
         Prism {
             frame: frame_for(xf),
-            lines: sides::Line::all(&arcs),
+            lines,
+            line_arcs,
             diamond: (!conic).then(|| diamond::Diamond::new(&arcs, h1, h2)),
             curves: sides::Curve::all(&arcs),
             bands,
@@ -171,7 +179,14 @@ impl Prism {
     }
 
     /// The nearest `s` in `(s_min, s_max)` where `o + s·d` (object space) meets the prism.
+    #[cfg(test)]
     fn solve(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<f64> {
+        self.solve_face(o, d, s_min, s_max).map(|(s, _)| s)
+    }
+
+    /// `solve`, and the face that `s` lies on: the arc's index in `arcs` for a side,
+    /// `FACE_H1` or `FACE_H2` for a cap.
+    fn solve_face(&self, o: DVec3, d: DVec3, s_min: f64, s_max: f64) -> Option<(f64, u32)> {
         // An empty interval (a lane `hit` dropped) has nothing in it.
         if s_min.is_nan() || s_max.is_nan() || s_min >= s_max {
             return None;
@@ -199,7 +214,7 @@ impl Prism {
                 let q = o + s * d;
                 self.inside_2d(self.section(DVec3::new(q.x, h, q.z)))
             };
-            hit.then_some(s)
+            hit.then_some((s, if h == self.h1 { FACE_H1 } else { FACE_H2 }))
         };
         if let Some(s) = near.and_then(cap) {
             return Some(s);
@@ -232,35 +247,56 @@ impl Prism {
         // Lines first, then the curves nearest first: the nearest crossing is the least whatever
         // the order, so the bits are the same as in one pass.
         let ray = sides::SideRay { o, d, plane: (a, b, k), f_lo, f_hi, dd: d.x * d.x + d.z * d.z, lo };
-        let slab_hi = hi;
-        self.cross_lines(&ray, &mut hi);
+        let mut near = sides::Nearest { s: hi, arc: 0 };
+        self.cross_lines(&ray, &mut near);
         if !self.curves.is_empty() {
-            self.cross_curves(&ray, &mut hi);
+            self.cross_curves(&ray, &mut near);
         }
-        if hi < slab_hi {
-            Some(hi)
+        if near.s < hi {
+            Some((near.s, near.arc))
         } else {
             far_cap()
         }
+    }
+
+    /// `Shape::hit` and each lane's face (`solve_face`; `u32::MAX` where it missed), which
+    /// `normal_on` takes instead of searching the arcs for the nearest again.
+    #[inline(always)]
+    pub fn hit_faces<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> (L, [u32; 8]) {
+        let mut faces = [u32::MAX; 8];
+        // Most lanes of a packet that reaches a prism miss its box: all lanes at once first.
+        let o = ray.o.transform_point(&self.frame.object_from_render);
+        let d = ray.d.transform_vector(&self.frame.object_from_render);
+        let Some(t_max) = self.cull.live(o, d, t_min, t_max) else { return (L::splat(MISS), faces) };
+        let t_max = match &self.diamond {
+            Some(diamond) => match diamond.live(o, d, t_min, t_max) {
+                Some(t_max) => t_max,
+                None => return (L::splat(MISS), faces),
+            },
+            None => t_max,
+        };
+        // The object-space ray as `hit_lanes_f64` would transform it again.
+        let solve = |_, o, d, lo, hi| self.solve_face(o, d, lo, hi);
+        let t = L::from_fn_f64(|i| {
+            let (t, face) = super::solve_lane_tagged_f64(i, o, d, t_min, t_max, &solve);
+            faces[i] = face.unwrap_or(u32::MAX);
+            t
+        });
+        (t, faces)
+    }
+
+    /// `Shape::normal` at points on face `face` (`hit_faces`): that arc's normal or that cap's,
+    /// with no search for the nearest (a fifth of a prism frame went to it); the search where
+    /// the face is not known (`u32::MAX`).
+    pub fn normal_on<L: Lane>(&self, face: u32, p: V3<L>) -> V3<L> {
+        super::normal_lanes_f64(&self.frame, p, |q| self.normal_face(face, q))
     }
 }
 
 impl Shape for Prism {
     #[inline(always)]
     fn hit<L: Lane>(&self, ray: &RayLanes<L>, t_min: L, t_max: L) -> L {
-        // Most lanes of a packet that reaches a prism miss its box: all lanes at once first.
-        let o = ray.o.transform_point(&self.frame.object_from_render);
-        let d = ray.d.transform_vector(&self.frame.object_from_render);
-        let Some(t_max) = self.cull.live(o, d, t_min, t_max) else { return L::splat(MISS) };
-        let t_max = match &self.diamond {
-            Some(diamond) => match diamond.live(o, d, t_min, t_max) {
-                Some(t_max) => t_max,
-                None => return L::splat(MISS),
-            },
-            None => t_max,
-        };
-        // The object-space ray as `hit_lanes_f64` would transform it again.
-        super::solve_lanes_f64(o, d, t_min, t_max, |_, o, d, lo, hi| self.solve(o, d, lo, hi))
+        self.hit_faces(ray, t_min, t_max).0
     }
 
     fn normal<L: Lane>(&self, p: V3<L>) -> V3<L> {

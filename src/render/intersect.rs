@@ -20,7 +20,8 @@ pub enum HitShape {
     Prim(u32),
     Plane(u32),
     /// A hit on a mesh or height field (`prim`) resolved to its face (`Scene::resolve`), whose
-    /// normal shades it.
+    /// normal shades it; or on a prism, with the side or cap it crossed (`Prism::hit_faces`),
+    /// whose normal needs no search then.
     Face {
         prim: u32,
         face: u32,
@@ -42,15 +43,19 @@ impl Scene {
     }
 
     /// `hit_prim`, with what `resolve` would make of each lane's hit, found in the same search:
-    /// per lane the CSG leaf where `p` is a CSG node, and the face where it is a mesh or height
-    /// field (`u32::MAX` elsewhere). A leaf that is itself a mesh still needs `resolve` for its
-    /// face.
+    /// per lane the CSG leaf where `p` is a CSG node, and the face where it is a mesh, height
+    /// field or prism (`u32::MAX` elsewhere). A leaf that is itself a mesh still needs `resolve`
+    /// for its face; a leaf that is a prism is shaded without one (`Prism::normal_on`).
     #[inline(always)]
     pub fn hit_prim_resolved<L: Lane>(&self, p: &PrimRef, ray: &RayLanes<L>, t_max: L) -> (L, [u32; 8], [u32; 8]) {
         let none = [u32::MAX; 8];
         match p.kind {
             ShapeKind::Mesh | ShapeKind::HeightField => {
                 let (t, faces) = self.meshes[p.index as usize].hit_faces(ray, L::splat(0.0), t_max);
+                (t, none, faces)
+            }
+            ShapeKind::Prism => {
+                let (t, faces) = self.prisms[p.index as usize].hit_faces(ray, L::splat(0.0), t_max);
                 (t, none, faces)
             }
             ShapeKind::Csg => {
@@ -152,6 +157,18 @@ impl Scene {
         t
     }
 
+    /// `test_prim`, with the face of a hit on a prism as packets learn it (`hit_prim_resolved`;
+    /// `u32::MAX` for other kinds, whose faces `resolve` finds).
+    #[inline]
+    fn test_prim_face(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<(f32, u32)> {
+        if p.kind != ShapeKind::Prism {
+            return self.test_prim(p, ray, t_max, stats).map(|t| (t, u32::MAX));
+        }
+        let (t, faces) = self.prisms[p.index as usize].hit_faces(&ray.lanes(), 0.0, t_max);
+        stats.count_test(p.kind, t != MISS);
+        (t != MISS).then_some((t, faces[0]))
+    }
+
     /// `blocks_prim` for one ray, counted in `stats`.
     fn test_blocks(&self, p: &PrimRef, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> bool {
         let hit = self.blocks_prim(p, &ray.lanes(), t_max) != MISS;
@@ -162,6 +179,9 @@ impl Scene {
     /// The nearest hit with `0 < t < t_max`.
     pub fn intersect(&self, ray: &Ray, t_max: f32, stats: &mut RenderStats) -> Option<Hit> {
         let mut best: Option<Hit> = None;
+        // The face of a hit on a prism (`test_prim_face`), kept apart so that ties still
+        // compare primitives.
+        let mut face = u32::MAX;
         let mut t_best = t_max;
         for (i, plane) in self.planes.iter().enumerate() {
             let t = plane.intersect(ray, 0.0, t_best);
@@ -173,20 +193,25 @@ impl Scene {
         }
         // Unbounded primitives, nearest strictly first (open interval), so ties keep the plane.
         for prim in self.unbounded.clone() {
-            if let Some(t) = self.test_prim(&self.prims[prim as usize], ray, t_best, stats) {
+            if let Some((t, f)) = self.test_prim_face(&self.prims[prim as usize], ray, t_best, stats) {
                 t_best = t;
                 best = Some(Hit { t, shape: HitShape::Prim(prim) });
+                face = f;
             }
         }
         stats.nodes_visited += self.accel.traverse(ray, t_best, |prim, t_max| {
-            let t = self.test_prim(&self.prims[prim as usize], ray, t_max, stats)?;
+            let (t, f) = self.test_prim_face(&self.prims[prim as usize], ray, t_max, stats)?;
             // Ties go to the lower index so every accelerator picks the same primitive.
             if best.is_none_or(|b| t < b.t || (t == b.t && b.shape > HitShape::Prim(prim))) {
                 best = Some(Hit { t, shape: HitShape::Prim(prim) });
+                face = f;
             }
             Some(t)
         }) as u64;
-        best.map(|hit| self.resolve(ray, hit))
+        best.map(|hit| match hit.shape {
+            HitShape::Prim(prim) if face != u32::MAX => Hit { t: hit.t, shape: HitShape::Face { prim, face } },
+            _ => self.resolve(ray, hit),
+        })
     }
 
     /// Whether `resolve` can change a hit on primitive `prim`: a CSG node or a mesh (a hit on a
@@ -230,7 +255,12 @@ impl Scene {
         let t = match hit.shape {
             HitShape::Plane(i) => self.planes[i as usize].hit(&r, 0.0, f64::INFINITY),
             HitShape::Face { prim, face } => {
-                self.meshes[self.prims[prim as usize].index as usize].refine_face(face, &r)
+                let p = &self.prims[prim as usize];
+                match p.kind {
+                    // A prism's face names no part of its solve: the whole prism again.
+                    ShapeKind::Prism => self.hit_prim(p, &r, f64::INFINITY),
+                    _ => self.meshes[p.index as usize].refine_face(face, &r),
+                }
             }
             // A CSG leaf's nearest root may lie outside the node: look only near the hit.
             HitShape::Prim(i) if i >= self.first_leaf => {
@@ -318,7 +348,8 @@ impl Scene {
                 p.kind.normal_per_lane()
                     && (p.kind != ShapeKind::Poly || self.polys[p.index as usize].normal_per_lane())
             }
-            HitShape::Face { .. } | HitShape::Plane(_) => false,
+            HitShape::Face { prim, .. } => self.prims[prim as usize].kind == ShapeKind::Prism,
+            HitShape::Plane(_) => false,
         }
     }
 
@@ -329,7 +360,10 @@ impl Scene {
             HitShape::Plane(i) => V3::splat(self.planes[i as usize].normal),
             HitShape::Face { prim, face } => {
                 let r = &self.prims[prim as usize];
-                let n = self.meshes[r.index as usize].normal(face, p);
+                let n = match r.kind {
+                    ShapeKind::Prism => self.prisms[r.index as usize].normal_on(face, p),
+                    _ => self.meshes[r.index as usize].normal(face, p),
+                };
                 if r.flip {
                     n.neg()
                 } else {

@@ -19,7 +19,7 @@ pub use crate::render::stats::RayKind;
 use crate::render::stats::RenderStats;
 use crate::render::Quality;
 use crate::scene::atmosphere::MISS_DEPTH;
-use crate::scene::build::{Light, Scene};
+use crate::scene::build::{Light, Scene, ShapeKind};
 use crate::scene::material::{Blend, Material, Select};
 use crate::shading::light::{self, AreaGrid};
 use crate::shading::normal::perturb_normal;
@@ -186,7 +186,8 @@ impl<'a> Tracer<'a> {
     fn uv_pigment(&self, material: &Material, uv: &UvMap, shape: HitShape, p: Vec3) -> Rgbft {
         let scene = self.scene;
         let face = match shape {
-            HitShape::Face { prim, face } => {
+            // A prism's faces are its sides and caps, not a mesh's.
+            HitShape::Face { prim, face } if scene.prims[prim as usize].kind != ShapeKind::Prism => {
                 let data = &scene.meshes[scene.prims[prim as usize].index as usize].data;
                 let t = &data.triangles[face as usize];
                 let corners = [t.v0, t.v0 + t.e1, t.v0 + t.e2].map(|v| v.as_dvec3());

@@ -1,9 +1,11 @@
-//! The prism's normal: the nearest of its caps and sides to a surface point, found among the
-//! arcs of the point's cell (`cells::Cells`) where that settles it, among all arcs otherwise.
+//! The prism's normal: that of the face the hit named (`Prism::hit_faces`), or where none was
+//! named (a CSG leaf's hit, a shadow ray's) the nearest of its caps and sides to a surface
+//! point, found among the arcs of the point's cell (`cells::Cells`) where that settles it,
+//! among all arcs otherwise.
 
 use glam::{DVec2, DVec3};
 
-use super::{arc, outward, Prism};
+use super::{arc, outward, Prism, FACE_H1, FACE_H2};
 
 impl Prism {
     /// Takes arc `i`'s nearest point to `w` as `side` where it is nearer than `best`.
@@ -55,6 +57,22 @@ impl Prism {
         }
     }
 
+    /// The outward object-space normal at `q` on face `face` (`solve_face`): a cap's, or the
+    /// side's over arc `face` at the arc's point nearest `q`'s section point; `normal_object`'s
+    /// for a face not named (`u32::MAX`) or an arc with no tangent there.
+    pub(super) fn normal_face(&self, face: u32, q: DVec3) -> DVec3 {
+        match face {
+            FACE_H1 => -DVec3::Y,
+            FACE_H2 => DVec3::Y,
+            i if (i as usize) < self.arcs.len() => {
+                let w = self.section(q);
+                let t = arc::nearest_t(&self.arcs[i as usize], w);
+                self.side_normal(i, t, q).unwrap_or_else(|| self.normal_object(q))
+            }
+            _ => self.normal_object(q),
+        }
+    }
+
     /// The outward object-space normal at `q` on the surface: the nearest of the sides and caps.
     pub(super) fn normal_object(&self, q: DVec3) -> DVec3 {
         let w = self.section(q);
@@ -86,33 +104,35 @@ impl Prism {
         if !settled {
             self.nearest_of::<32>(0..self.arcs.len() as u32, w, scale, &mut best, &mut side);
         }
-        if let Some((i, t)) = side {
-            let p = &self.arcs[i as usize];
-            let tan = p.tangent(t);
-            let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
-            if n2 == DVec2::ZERO {
-                return normal;
-            }
-            // Outward: the side of the curve where the section is not inside, settled for the
-            // arc when the prism was built, or tested beside the point.
-            let at = p.at(t);
-            let flip = match self.outward[i as usize] {
-                outward::KEEP => false,
-                outward::FLIP => true,
-                _ => {
-                    let eps = 1e-6 * (1.0 + at.abs().max_element());
-                    self.inside_2d(at + eps * n2)
-                }
-            };
-            if flip {
-                n2 = -n2;
-            }
-            normal = if self.conic {
-                DVec3::new(n2.x, -n2.dot(at), n2.y) * q.y.signum()
-            } else {
-                DVec3::new(n2.x, 0.0, n2.y)
-            };
+        match side {
+            Some((i, t)) => self.side_normal(i, t, q).unwrap_or(normal),
+            None => normal,
         }
-        normal
+    }
+
+    /// The outward object-space normal of the side over arc `i` at its parameter `t`, for the
+    /// surface point `q`; `None` where the arc has no tangent there.
+    fn side_normal(&self, i: u32, t: f64, q: DVec3) -> Option<DVec3> {
+        let p = &self.arcs[i as usize];
+        let tan = p.tangent(t);
+        let mut n2 = DVec2::new(tan.y, -tan.x).normalize_or_zero();
+        if n2 == DVec2::ZERO {
+            return None;
+        }
+        // Outward: the side of the curve where the section is not inside, settled for the
+        // arc when the prism was built, or tested beside the point.
+        let at = p.at(t);
+        let flip = match self.outward[i as usize] {
+            outward::KEEP => false,
+            outward::FLIP => true,
+            _ => {
+                let eps = 1e-6 * (1.0 + at.abs().max_element());
+                self.inside_2d(at + eps * n2)
+            }
+        };
+        if flip {
+            n2 = -n2;
+        }
+        Some(if self.conic { DVec3::new(n2.x, -n2.dot(at), n2.y) * q.y.signum() } else { DVec3::new(n2.x, 0.0, n2.y) })
     }
 }

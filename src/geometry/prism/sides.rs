@@ -34,11 +34,13 @@ pub struct Line {
 }
 
 impl Line {
-    /// The lines of the straight arcs of `arcs`, by their boxes' least `u`.
-    pub fn all(arcs: &[Piece]) -> Vec<Line> {
-        let mut lines: Vec<Line> = arcs.iter().filter(|p| p.degree == 1).map(Line::of).collect();
-        lines.sort_by(|a, b| a.lo.x.total_cmp(&b.lo.x));
-        lines
+    /// The lines of the straight arcs of `arcs`, by their boxes' least `u`, and each one's
+    /// index in `arcs` (apart, so a record stays 80 bytes: it is read only for a crossing taken).
+    pub fn all(arcs: &[Piece]) -> (Vec<Line>, Vec<u32>) {
+        let mut lines: Vec<(Line, u32)> =
+            (arcs.iter().enumerate()).filter(|(_, p)| p.degree == 1).map(|(i, p)| (Line::of(p), i as u32)).collect();
+        lines.sort_by(|a, b| a.0.lo.x.total_cmp(&b.0.lo.x));
+        lines.into_iter().unzip()
     }
 
     /// The line of a degree-1 piece.
@@ -107,14 +109,21 @@ pub struct SideRay {
     pub lo: f64,
 }
 
+/// The nearest crossing found so far: its `s` (the interval's upper end until one is found)
+/// and the index in `Prism::arcs` of the arc it lies on, which the hit hands on to the normal.
+pub struct Nearest {
+    pub s: f64,
+    pub arc: u32,
+}
+
 impl Prism {
-    /// Lowers `hi` to the nearest crossing in `(r.lo, hi)` of the straight sides, skipping
+    /// Lowers `near` to the nearest crossing in `(r.lo, near.s)` of the straight sides, skipping
     /// those whose box the ray's footprint misses (an infinite footprint, a cone's, skips none)
     /// and those the plane passes on one side.
     #[inline]
-    pub(super) fn cross_lines(&self, r: &SideRay, hi: &mut f64) {
+    pub(super) fn cross_lines(&self, r: &SideRay, near: &mut Nearest) {
         let ((a, b, k), f_lo, f_hi) = (r.plane, r.f_lo, r.f_hi);
-        for l in &self.lines {
+        for (j, l) in self.lines.iter().enumerate() {
             // Sorted by `lo.x`: the rest start past the footprint too.
             if l.lo.x > f_hi.x {
                 break;
@@ -132,7 +141,9 @@ impl Prism {
             let t = e0 / (e0 - e1);
             if (0.0..=1.0).contains(&t) {
                 let w = DVec2::new(l.step.x * t + l.c0.x, l.step.y * t + l.c0.y);
-                self.take(w, r, hi);
+                if self.take(w, r, &mut near.s) {
+                    near.arc = self.line_arcs[j];
+                }
             }
         }
     }
@@ -141,7 +152,7 @@ impl Prism {
     /// control points' projections on the ray's direction in the section (convex hull), scaled
     /// by `dd`: an arc wholly before `lo` needs no solve, and the arcs are solved nearest first,
     /// until the next starts past the nearest crossing found.
-    pub(super) fn cross_curves(&self, r: &SideRay, hi: &mut f64) {
+    pub(super) fn cross_curves(&self, r: &SideRay, near: &mut Nearest) {
         let (o, d, (a, b, k), f_lo, f_hi, dd, lo) = (r.o, r.d, r.plane, r.f_lo, r.f_hi, r.dd, r.lo);
         let mut queue = [(0.0, 0u32); 16];
         let mut queued = 0;
@@ -160,7 +171,7 @@ impl Prism {
                 continue;
             }
             if self.conic {
-                self.cross(c, r, hi);
+                self.cross(c, r, near);
                 continue;
             }
             let (mut q_lo, mut q_hi, mut size) = (f64::INFINITY, f64::NEG_INFINITY, 0.0f64);
@@ -172,11 +183,11 @@ impl Prism {
             }
             // Padded far above the rounding of `q` and of the root's point.
             let pad = 1e-9 * size;
-            if q_hi + pad < lo * dd || q_lo - pad > *hi * dd {
+            if q_hi + pad < lo * dd || q_lo - pad > near.s * dd {
                 continue;
             }
             if queued == queue.len() {
-                self.cross(c, r, hi);
+                self.cross(c, r, near);
             } else {
                 queue[queued] = (q_lo - pad, j as u32);
                 queued += 1;
@@ -185,17 +196,17 @@ impl Prism {
         let queue = &mut queue[..queued];
         queue.sort_unstable_by(|x, y| x.0.total_cmp(&y.0));
         for &(start, j) in queue.iter() {
-            if start > *hi * dd {
+            if start > near.s * dd {
                 break;
             }
-            self.cross(&self.curves[j as usize], r, hi);
+            self.cross(&self.curves[j as usize], r, near);
         }
     }
 
-    /// Lowers `hi` to the nearest crossing in `(lo, hi)` of the side over curved arc `curve` by
+    /// Lowers `near` to the nearest crossing in `(lo, near.s)` of the side over curved arc `curve` by
     /// the ray `o + s·d`, whose plane through the sweep axis is `a·u + b·v + k = 0` in the
     /// section (`dd = d.x² + d.z²`, for a linear sweep).
-    fn cross(&self, curve: &Curve, r: &SideRay, hi: &mut f64) {
+    fn cross(&self, curve: &Curve, r: &SideRay, near: &mut Nearest) {
         let (a, b, k) = r.plane;
         let p = &self.arcs[curve.index as usize];
         let mut roots = [0.0; MAX_DEGREE];
@@ -220,14 +231,16 @@ impl Prism {
             }
         };
         for &t in &roots[..m] {
-            self.take(p.at(t), r, hi);
+            if self.take(p.at(t), r, &mut near.s) {
+                near.arc = curve.index;
+            }
         }
     }
 
     /// Lowers `hi` to the ray's `s` at the side's point over `w` (a crossing of the ray's plane
-    /// with an arc) where it lies in `(lo, hi)` and within the heights.
+    /// with an arc) where it lies in `(lo, hi)` and within the heights; whether it did.
     #[inline]
-    fn take(&self, w: DVec2, r: &SideRay, hi: &mut f64) {
+    fn take(&self, w: DVec2, r: &SideRay, hi: &mut f64) -> bool {
         let (o, d) = (r.o, r.d);
         let s = if self.conic {
             // o + s·d = y·(u, 1, v) for the y it reaches: s from the better-conditioned axis.
@@ -245,7 +258,9 @@ impl Prism {
             let y = o.y + s * d.y;
             if y >= self.h1 && y <= self.h2 {
                 *hi = s;
+                return true;
             }
         }
+        false
     }
 }

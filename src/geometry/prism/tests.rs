@@ -161,3 +161,57 @@ fn curved_sides_holes_and_the_nearest_point() {
     assert!((t - 3.0).abs() < 1e-4, "{t}");
     assert!((p.normal_at(Vec3::new(2.0, 0.5, 0.0)) - Vec3::X).length() < 1e-3);
 }
+
+/// Seeded random rays at a star with a curved hole, closed and conic: the face each hit names
+/// is the surface it lies on (the cap's height to rounding, or within 10⁻⁹ of that arc); away from the
+/// edges its normal is the search's (`normal_object`), to the bit; and eight-lane packets name
+/// the single rays' faces.
+#[test]
+fn hit_faces_name_the_surface_and_its_normal() {
+    let mut rand = uniform(0x9e37_79b9_7f4a_7c15u64);
+    let pieces = star_with_hole();
+    for conic in [false, true] {
+        let (h1, h2) = if conic { (0.5, 1.5) } else { (0.0, 0.6) };
+        let p = Prism::new(DAffine3::IDENTITY, &pieces, h1, h2, conic, false);
+        let (mut sides, mut caps, mut same) = (0, 0, 0);
+        let mut rays = Vec::new();
+        for _ in 0..4000 {
+            let y = h1 + (h2 - h1) * rand();
+            let reach = if conic { 0.5 * y } else { 0.5 };
+            let target = DVec3::new((rand() * 2.0 - 1.0) * reach, y, (rand() * 2.0 - 1.0) * reach);
+            let o = DVec3::new(rand() * 4.0 - 2.0, rand() * 4.0 - 1.0, rand() * 4.0 - 2.0);
+            let ray = Ray::new(o.as_vec3(), (target - o).normalize().as_vec3());
+            rays.push(ray);
+            let f = &p.frame.object_from_render;
+            let (o, d) = (f.transform_point3(ray.origin).as_dvec3(), f.transform_vector3(ray.dir).as_dvec3());
+            let Some((s, face)) = p.solve_face(o, d, 0.0, f64::INFINITY) else { continue };
+            let q = o + s * d;
+            match face {
+                FACE_H1 => assert!((q.y - p.h1).abs() < 1e-12, "{o} {d}: {}", q.y),
+                FACE_H2 => assert!((q.y - p.h2).abs() < 1e-12, "{o} {d}: {}", q.y),
+                i => {
+                    let (arc, w) = (&p.arcs[i as usize], p.section(q));
+                    let gap = (arc.at(arc::nearest_t(arc, w)) - w).length();
+                    assert!(gap < 1e-9, "{o} {d}: {gap}");
+                }
+            }
+            (sides, caps) = if face < FACE_H1 { (sides + 1, caps) } else { (sides, caps + 1) };
+            let (got, want) = (p.normal_face(face, q), p.normal_object(q));
+            same += (got == want) as usize;
+        }
+        assert!(sides > 200 && caps > 200, "{sides} sides, {caps} caps");
+        assert!(same * 100 >= (sides + caps) * 95, "{same} of {} the search's", sides + caps);
+        for chunk in rays.chunks_exact(8) {
+            let packet = RayLanes::<F8> {
+                o: V3::from_lanes(|i| chunk[i].origin),
+                d: V3::from_lanes(|i| chunk[i].dir),
+                inv: V3::from_lanes(|i| chunk[i].inv_dir),
+            };
+            let (wide, faces) = p.hit_faces(&packet, F8::splat(0.0), F8::splat(MISS));
+            for (i, r) in chunk.iter().enumerate() {
+                let (t, face) = p.hit_faces(&r.lanes(), 0.0, MISS);
+                assert_eq!((wide.get(i).to_bits(), faces[i]), (t.to_bits(), face[0]));
+            }
+        }
+    }
+}

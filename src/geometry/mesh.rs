@@ -15,12 +15,12 @@ use glam::{Affine3A, Vec3};
 
 use super::cuboid::{frame_for, BoxFrame};
 use super::height_field::HeightGrid;
-use super::triangle::Triangle;
+use super::triangle::{Triangle, TriangleLanes};
 use super::{transformed_bounds, Shape};
 use crate::accel::aabb::node_slabs;
 use crate::accel::aabb::Aabb;
 use crate::accel::bvh::{Bvh, BvhNode};
-use crate::lanes::{next_up, Lane, F8, V3};
+use crate::lanes::{next_up, Lane, F8, M8, V3};
 use crate::ray::{Ray, RayLanes, MISS};
 
 mod lanes;

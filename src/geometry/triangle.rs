@@ -34,17 +34,37 @@ impl Triangle {
     /// Not normalised: the caller carries it into render space first, if it must.
     #[inline(always)]
     pub fn interpolate<L: Lane>(&self, normals: &[Vec3; 3], p: V3<L>) -> V3<L> {
-        let geometric = V3::splat(self.normal);
+        let corners = TriangleLanes { v0: V3::splat(self.v0), e1: V3::splat(self.e1), e2: V3::splat(self.e2) };
         let [n0, n1, n2] = *normals;
-        let q = p.sub(V3::splat(self.v0));
-        let (e1, e2) = (V3::splat(self.e1), V3::splat(self.e2));
-        let (d00, d01, d11) = (self.e1.dot(self.e1), self.e1.dot(self.e2), self.e2.dot(self.e2));
-        let inv = 1.0 / (d00 * d11 - d01 * d01);
+        corners.interpolate(V3::splat(self.normal), &[V3::splat(n0), V3::splat(n1), V3::splat(n2)], p)
+    }
+}
+
+/// A triangle per lane (`Triangle`'s corner and edges), for the lanes of a packet that hit
+/// different faces of one mesh: `interpolate` over them is each lane's own triangle's, bit for
+/// bit, so a packet's normals need not be asked one lane at a time.
+#[derive(Clone, Copy, Debug)]
+pub struct TriangleLanes<L: Lane> {
+    pub v0: V3<L>,
+    pub e1: V3<L>,
+    pub e2: V3<L>,
+}
+
+impl<L: Lane> TriangleLanes<L> {
+    /// `Triangle::interpolate` of each lane's triangle, with its geometric normal `geometric`
+    /// and vertex normals `normals`.
+    #[inline(always)]
+    pub fn interpolate(&self, geometric: V3<L>, normals: &[V3<L>; 3], p: V3<L>) -> V3<L> {
+        let [n0, n1, n2] = *normals;
+        let (e1, e2) = (self.e1, self.e2);
+        let q = p.sub(self.v0);
+        let (d00, d01, d11) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+        let inv = L::splat(1.0) / (d00 * d11 - d01 * d01);
         let (d20, d21) = (q.dot(e1), q.dot(e2));
-        let u = (L::splat(d11) * d20 - L::splat(d01) * d21) * L::splat(inv);
-        let v = (L::splat(d00) * d21 - L::splat(d01) * d20) * L::splat(inv);
+        let u = (d11 * d20 - d01 * d21) * inv;
+        let v = (d00 * d21 - d01 * d20) * inv;
         let w = L::splat(1.0) - u - v;
-        let n = V3::splat(n0).scale(w).add(V3::splat(n1).scale(u)).add(V3::splat(n2).scale(v));
+        let n = n0.scale(w).add(n1.scale(u)).add(n2.scale(v));
         let n = V3::select(n.dot(geometric).lt(L::splat(0.0)), n.neg(), n);
         // A zero interpolated normal (opposite vertex normals) falls back to the face's.
         V3::select(L::lt(L::splat(0.0), n.dot(n)), n, geometric)

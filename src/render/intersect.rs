@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use crate::geometry::Shape;
-use crate::lanes::{Lane, V3};
+use crate::lanes::{Lane, F8, M8, V3};
 use crate::ray::{Ray, RayLanes, MISS};
 use crate::render::stats::RenderStats;
 use crate::scene::build::{PrimRef, Scene, ShapeKind};
@@ -350,6 +350,19 @@ impl Scene {
             }
             HitShape::Face { prim, .. } => self.prims[prim as usize].kind == ShapeKind::Prism,
             HitShape::Plane(_) => false,
+        }
+    }
+
+    /// `normal_lanes` for eight points on mesh primitive `prim`, each on its own face
+    /// (`faces[i]`, for the lanes of `lanes`): the same bits as asking face by face.
+    #[inline(always)]
+    pub fn normal_faces(&self, prim: u32, faces: &[u32; 8], lanes: M8, p: V3<F8>) -> V3<F8> {
+        let r = &self.prims[prim as usize];
+        let n = self.meshes[r.index as usize].normal_faces(faces, lanes, p);
+        if r.flip {
+            n.neg()
+        } else {
+            n
         }
     }
 

@@ -275,6 +275,15 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
             // whatever the width, is asked for its own lanes only.
             let mut geometric = V3::splat(Vec3::Y);
             for (id, same_id) in Groups::of(&ids[r], in_lanes) {
+                // A mesh's lanes mostly hit faces of their own: gathered, eight at a time.
+                let mut lead = 0;
+                while lead < 7 && !same_id.lane(lead) {
+                    lead += 1;
+                }
+                if faces[r][lead] != NO_HIT && same_id.count() > 2 {
+                    geometric = V3::select(same_id, scene.normal_faces(id, &faces[r], same_id, p), geometric);
+                    continue;
+                }
                 for (face, group) in Groups::of(&faces[r], same_id) {
                     let Some(shape) = hit_shape(id, face) else { continue };
                     if group.count() > 2 && !scene.normal_per_lane(shape) {

@@ -74,70 +74,168 @@ pub fn may_reach<L: Lane>(reach: &Reach, threshold: f32, o: V3<L>, d: V3<L>, t_m
         // SAFETY: the CPU supports AVX2, checked just above.
         return unsafe { may_reach_avx2(reach, threshold, o, d, t_min, t_max) };
     }
-    may_reach_in(reach, threshold, o, d, t_min, t_max)
+    may_reach_in::<L, false>(reach, threshold, o, d, t_min, t_max)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn may_reach_avx2<L: Lane>(reach: &Reach, threshold: f32, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L::Mask {
-    may_reach_in(reach, threshold, o, d, t_min, t_max)
+    may_reach_in::<L, true>(reach, threshold, o, d, t_min, t_max)
 }
 
-#[inline(always)]
-fn may_reach_in<L: Lane>(reach: &Reach, threshold: f32, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> L::Mask {
-    let zero = L::splat(0.0);
-    let mut most = zero;
-    let mut unsure = zero.lt(zero);
-    for (m, group) in &reach.groups {
-        // In the group's space: the ray's point nearest the origin `c0`, `t_c` along it, the
-        // ray's stretch about it `[lo, hi]`, `v` its direction, and the slack for what `c0` was
-        // computed from. What follows then works with numbers of the blob's size, not the ray
-        // origin's distance.
+/// A group's ray as each component's test reads it: in the group's space, the ray's point
+/// nearest the origin `c0`, its direction `v` and `1/(v·v)`, the ray's stretch about `c0`
+/// `[lo, hi]`, `v`'s largest component and the slack for what `c0` was computed from. What
+/// follows then works with numbers of the blob's size, not the ray origin's distance.
+struct GroupRay<L> {
+    c0: V3<L>,
+    v: V3<L>,
+    inv_vv: L,
+    lo: L,
+    hi: L,
+    v_size: L,
+    pad0: L,
+}
+
+/// The summed bound on the positive fields, and the lanes kept as unsure whatever it is.
+struct Sum<L: Lane> {
+    most: L,
+    unsure: L::Mask,
+}
+
+impl<L: Lane> GroupRay<L> {
+    #[inline(always)]
+    fn new(m: &Affine3A, o: V3<L>, d: V3<L>, t_min: L, t_max: L) -> GroupRay<L> {
         let oc = o.transform_point(m);
         let v = d.transform_vector(m);
         let inv_vv = v.dot(v).recip();
         let t_c = -oc.dot(v) * inv_vv;
         let c0 = oc.add(v.scale(t_c));
-        let (lo, hi) = (t_min - t_c, t_max - t_c);
         let v_size = v.max_abs();
         let pad0 = L::splat(SLACK) * (oc.max_abs() + t_c.abs() * v_size);
-        let clamp = |t: L| t.max(lo).min(hi);
+        GroupRay { c0, v, inv_vv, lo: t_min - t_c, hi: t_max - t_c, v_size, pad0 }
+    }
+
+    #[inline(always)]
+    fn clamp(&self, t: L) -> L {
+        t.max(self.lo).min(self.hi)
+    }
+
+    /// Adds component `c`'s most along the ray to `sum`, given the vector `w` from its middle to
+    /// `c0`, and `p`, the ray's point nearest its segment less that nearest point, at `t`.
+    #[inline(always)]
+    fn add(&self, c: &Component, w: V3<L>, p: V3<L>, t: L, sum: &mut Sum<L>) {
+        let zero = L::splat(0.0);
+        // Lowered in proportion to what `p` was computed from.
+        let sizes = L::splat(c.half + c.mid.abs().max_element());
+        let pad = self.pad0 + L::splat(SLACK) * (w.max_abs() + t.abs() * self.v_size + sizes);
+        let near = p.dot(p).sqrt() - pad;
+        let near = L::select(near.lt(zero), zero, near);
+        let g = L::splat(1.0) - near * near * L::splat(c.inv_r2);
+        // A NaN `g` stays NaN (`lt` is false for it), and keeps the lane below.
+        let g = L::select(g.lt(zero), zero, g);
+        sum.most = sum.most + L::splat(c.strength) * g * g;
+    }
+
+    /// A sphere component (`half` 0): the ray's point nearest its centre.
+    #[inline(always)]
+    fn sphere(&self, c: &Component, sum: &mut Sum<L>) {
+        let w = self.c0.sub(V3::splat(c.mid));
+        let t = self.clamp(-w.dot(self.v) * self.inv_vv);
+        self.add(c, w, w.add(self.v.scale(t)), t, sum);
+    }
+
+    /// A cylinder component: the closest points of two segments (the ray's point nearest the
+    /// middle where they are near parallel), then the segment's parameter clamped and the ray's
+    /// found again from it.
+    #[inline(always)]
+    fn cylinder(&self, c: &Component, sum: &mut Sum<L>) {
+        let (v, inv_vv) = (self.v, self.inv_vv);
+        let w = self.c0.sub(V3::splat(c.mid));
+        let wv = w.dot(v);
+        let a = V3::splat(c.axis);
+        let (va, wa) = (v.dot(a), w.dot(a));
+        let sin2 = L::splat(1.0) - va * va * inv_vv;
+        let skew = L::splat(PARALLEL).lt(sin2);
+        sum.unsure = L::or(sum.unsure, L::not(skew));
+        let t = L::select(skew, (va * wa * inv_vv - wv * inv_vv) / sin2, -wv * inv_vv);
+        let h = wa + self.clamp(t) * va;
+        let half = L::splat(c.half);
+        let (below, above) = (h.lt(-half), half.lt(h));
+        let end = L::select(below, -half, half);
+        let t = self.clamp(L::select(L::or(below, above), (end * va - wv) * inv_vv, t));
+        let h = L::select(below, -half, L::select(above, half, h));
+        self.add(c, w, w.add(v.scale(t)).sub(a.scale(h)), t, sum);
+    }
+}
+
+// Out of line with AVX2, each reading its inputs from memory and writing its sum back: inlined
+// into `may_reach_avx2`'s loops, the eight lanes of every value carried from one component to
+// the next were kept as eight scalars and gathered back into a vector at each use (230
+// `vinsertps` in a 940-instruction function; 9.0 of scenes/kernels/blob_sphere.pov's 61 M
+// instructions at 160×120, 1 333 a call). Out of line, 3.0 M (447 a call), the same bits.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+unsafe fn group_avx2<L: Lane>(m: &Affine3A, o: &V3<L>, d: &V3<L>, t_min: &L, t_max: &L, out: &mut GroupRay<L>) {
+    *out = GroupRay::new(m, *o, *d, *t_min, *t_max);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+unsafe fn sphere_avx2<L: Lane>(g: &GroupRay<L>, c: &Component, sum: &mut Sum<L>) {
+    g.sphere(c, sum)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+#[inline(never)]
+unsafe fn cylinder_avx2<L: Lane>(g: &GroupRay<L>, c: &Component, sum: &mut Sum<L>) {
+    g.cylinder(c, sum)
+}
+
+/// `AVX2`: the group and component steps are called out of line with AVX2 (only from
+/// `may_reach_avx2`).
+#[inline(always)]
+fn may_reach_in<L: Lane, const AVX2: bool>(
+    reach: &Reach,
+    threshold: f32,
+    o: V3<L>,
+    d: V3<L>,
+    t_min: L,
+    t_max: L,
+) -> L::Mask {
+    let zero = L::splat(0.0);
+    let mut sum = Sum { most: zero, unsure: zero.lt(zero) };
+    for (m, group) in &reach.groups {
+        #[cfg(target_arch = "x86_64")]
+        if AVX2 {
+            let mut g = GroupRay { c0: o, v: d, inv_vv: zero, lo: zero, hi: zero, v_size: zero, pad0: zero };
+            // SAFETY: `AVX2` is set only by `may_reach_avx2`, which runs where the CPU has it.
+            unsafe { group_avx2(m, &o, &d, &t_min, &t_max, &mut g) };
+            for c in group {
+                // SAFETY: as above.
+                unsafe {
+                    if c.half == 0.0 {
+                        sphere_avx2(&g, c, &mut sum);
+                    } else {
+                        cylinder_avx2(&g, c, &mut sum);
+                    }
+                }
+            }
+            continue;
+        }
+        let g = GroupRay::new(m, o, d, t_min, t_max);
         for c in group {
-            let w = c0.sub(V3::splat(c.mid));
-            let wv = w.dot(v);
-            let (p, t) = if c.half == 0.0 {
-                let t = clamp(-wv * inv_vv);
-                (w.add(v.scale(t)), t)
+            if c.half == 0.0 {
+                g.sphere(c, &mut sum);
             } else {
-                // Closest points of two segments (the ray's point nearest the middle where
-                // they are near parallel), then the segment's parameter clamped and the ray's
-                // found again from it.
-                let a = V3::splat(c.axis);
-                let (va, wa) = (v.dot(a), w.dot(a));
-                let sin2 = L::splat(1.0) - va * va * inv_vv;
-                let skew = L::splat(PARALLEL).lt(sin2);
-                unsure = L::or(unsure, L::not(skew));
-                let t = L::select(skew, (va * wa * inv_vv - wv * inv_vv) / sin2, -wv * inv_vv);
-                let h = wa + clamp(t) * va;
-                let half = L::splat(c.half);
-                let (below, above) = (h.lt(-half), half.lt(h));
-                let end = L::select(below, -half, half);
-                let t = clamp(L::select(L::or(below, above), (end * va - wv) * inv_vv, t));
-                let h = L::select(below, -half, L::select(above, half, h));
-                (w.add(v.scale(t)).sub(a.scale(h)), t)
-            };
-            // Lowered in proportion to what `p` was computed from.
-            let sizes = L::splat(c.half + c.mid.abs().max_element());
-            let pad = pad0 + L::splat(SLACK) * (w.max_abs() + t.abs() * v_size + sizes);
-            let near = p.dot(p).sqrt() - pad;
-            let near = L::select(near.lt(zero), zero, near);
-            let g = L::splat(1.0) - near * near * L::splat(c.inv_r2);
-            // A NaN `g` stays NaN (`lt` is false for it), and keeps the lane below.
-            let g = L::select(g.lt(zero), zero, g);
-            most = most + L::splat(c.strength) * g * g;
+                g.cylinder(c, &mut sum);
+            }
         }
     }
-    let reaches = L::or(unsure, L::not(most.lt(L::splat(threshold * (1.0 - SLACK)))));
+    let reaches = L::or(sum.unsure, L::not(sum.most.lt(L::splat(threshold * (1.0 - SLACK)))));
     // Lanes with an empty interval (a packet's idle lanes, `t_max` −inf) hold no root, nor does
     // a ray from a point at infinity or NaN: the f64 solve finds no piece of any component on
     // it. Each is a miss, not kept as unsure for its NaNs.

@@ -167,6 +167,41 @@ impl Mesh {
         };
         n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
+
+    /// `normal` at eight render-space points, each on its own face (`faces[i]`; lanes outside
+    /// `lanes` repeat the first lane of `lanes`, which must hold one): the faces' corners and
+    /// vertex normals gathered into lanes, then the same operations as `normal` lane by lane,
+    /// so the same bits. A row of a packet over a mesh hits a different face in almost every
+    /// lane, and asking lane by lane was a fifteenth of a smooth mesh's frame.
+    #[inline(always)]
+    pub fn normal_faces(&self, faces: &[u32; 8], lanes: M8, p: V3<F8>) -> V3<F8> {
+        let first = (0..8).find(|&i| lanes.lane(i)).map_or(0, |i| faces[i]);
+        let zero = V3::splat(Vec3::ZERO);
+        let (mut corners, mut geometric) = (TriangleLanes { v0: zero, e1: zero, e2: zero }, zero);
+        let mut normals = [zero; 3];
+        let mut smooth = M8::default();
+        for i in 0..8 {
+            let f = if lanes.lane(i) { faces[i] } else { first } as usize;
+            let tri = &self.data.triangles[f];
+            corners.v0.set_lane(i, tri.v0);
+            corners.e1.set_lane(i, tri.e1);
+            corners.e2.set_lane(i, tri.e2);
+            geometric.set_lane(i, tri.normal);
+            let k = self.data.smooth_of[f];
+            let vertex = if k == FLAT { [tri.normal; 3] } else { self.data.smooth[k as usize] };
+            for (n, v) in normals.iter_mut().zip(vertex) {
+                n.set_lane(i, v);
+            }
+            smooth.0[i] = -((k != FLAT) as i32);
+        }
+        let n = if smooth.any() {
+            let q = p.transform_point(&self.frame.object_from_render);
+            V3::select(smooth, corners.interpolate(geometric, &normals, q), geometric)
+        } else {
+            geometric
+        };
+        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+    }
 }
 
 impl Shape for Mesh {

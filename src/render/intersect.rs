@@ -353,6 +353,13 @@ impl Scene {
         }
     }
 
+    /// Whether `normal_faces` takes hits on primitive `prim` (a mesh or height field; a prism's
+    /// faces, its sides and caps, are asked one by one).
+    #[inline(always)]
+    pub fn gathers_face_normals(&self, prim: u32) -> bool {
+        matches!(self.prims[prim as usize].kind, ShapeKind::Mesh | ShapeKind::HeightField)
+    }
+
     /// `normal_lanes` for eight points on mesh primitive `prim`, each on its own face
     /// (`faces[i]`, for the lanes of `lanes`): the same bits as asking face by face.
     #[inline(always)]

@@ -280,7 +280,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                 while lead < 7 && !same_id.lane(lead) {
                     lead += 1;
                 }
-                if faces[r][lead] != NO_HIT && same_id.count() > 2 {
+                if faces[r][lead] != NO_HIT && same_id.count() > 2 && scene.gathers_face_normals(id) {
                     geometric = V3::select(same_id, scene.normal_faces(id, &faces[r], same_id, p), geometric);
                     continue;
                 }

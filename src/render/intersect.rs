@@ -361,16 +361,12 @@ impl Scene {
     }
 
     /// `normal_lanes` for eight points on mesh primitive `prim`, each on its own face
-    /// (`faces[i]`, for the lanes of `lanes`): the same bits as asking face by face.
+    /// (`faces[i]`, for the lanes of `lanes`; `lead` is one of those lanes): the same bits as
+    /// asking face by face.
     #[inline(always)]
-    pub fn normal_faces(&self, prim: u32, faces: &[u32; 8], lanes: M8, p: V3<F8>) -> V3<F8> {
+    pub fn normal_faces(&self, prim: u32, faces: &[u32; 8], lanes: M8, lead: usize, p: V3<F8>) -> V3<F8> {
         let r = &self.prims[prim as usize];
-        let n = self.meshes[r.index as usize].normal_faces(faces, lanes, p);
-        if r.flip {
-            n.neg()
-        } else {
-            n
-        }
+        as_placed(r, self.meshes[r.index as usize].normal_faces(faces, lanes, faces[lead], p))
     }
 
     /// `normal_at` for one or eight points on the same shape.
@@ -384,11 +380,7 @@ impl Scene {
                     ShapeKind::Prism => self.prisms[r.index as usize].normal_on(face, p),
                     _ => self.meshes[r.index as usize].normal(face, p),
                 };
-                if r.flip {
-                    n.neg()
-                } else {
-                    n
-                }
+                as_placed(r, n)
             }
             HitShape::Prim(i) => {
                 let r = &self.prims[i as usize];
@@ -418,11 +410,7 @@ impl Scene {
                     // Hits are resolved to leaves before anything asks for a normal.
                     ShapeKind::Csg => V3::splat(Vec3::Y),
                 };
-                if r.flip {
-                    n.neg()
-                } else {
-                    n
-                }
+                as_placed(r, n)
             }
         }
     }
@@ -450,5 +438,15 @@ impl PartialOrd for HitShape {
             HitShape::Face { prim, face } => (2, *prim, *face),
         };
         key(self).partial_cmp(&key(other))
+    }
+}
+
+/// A shape's own normal `n` as primitive `r` shows it: turned in where `r` is flipped.
+#[inline(always)]
+fn as_placed<L: Lane>(r: &PrimRef, n: V3<L>) -> V3<L> {
+    if r.flip {
+        n.neg()
+    } else {
+        n
     }
 }

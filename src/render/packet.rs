@@ -281,7 +281,7 @@ fn trace_block_generic(tracer: &mut Tracer, rays: &[Ray8; 8], rows: usize, lanes
                     lead += 1;
                 }
                 if faces[r][lead] != NO_HIT && same_id.count() > 2 && scene.gathers_face_normals(id) {
-                    geometric = V3::select(same_id, scene.normal_faces(id, &faces[r], same_id, p), geometric);
+                    geometric = V3::select(same_id, scene.normal_faces(id, &faces[r], same_id, lead, p), geometric);
                     continue;
                 }
                 for (face, group) in Groups::of(&faces[r], same_id) {

@@ -165,23 +165,28 @@ impl Mesh {
             FLAT => V3::splat(tri.normal),
             k => tri.interpolate(&self.data.smooth[k as usize], p.transform_point(&self.frame.object_from_render)),
         };
+        self.unit_in_render(n)
+    }
+
+    /// An object-space normal carried to render space, unit length (`Vec3::Y` if it vanishes).
+    #[inline(always)]
+    fn unit_in_render<L: Lane>(&self, n: V3<L>) -> V3<L> {
         n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
     }
 
     /// `normal` at eight render-space points, each on its own face (`faces[i]`; lanes outside
-    /// `lanes` repeat the first lane of `lanes`, which must hold one): the faces' corners and
+    /// `lanes` take face `fill`, any face of the mesh, the caller's first lane's): the faces' corners and
     /// vertex normals gathered into lanes, then the same operations as `normal` lane by lane,
     /// so the same bits. A row of a packet over a mesh hits a different face in almost every
     /// lane, and asking lane by lane was a fifteenth of a smooth mesh's frame.
     #[inline(always)]
-    pub fn normal_faces(&self, faces: &[u32; 8], lanes: M8, p: V3<F8>) -> V3<F8> {
-        let first = (0..8).find(|&i| lanes.lane(i)).map_or(0, |i| faces[i]);
+    pub fn normal_faces(&self, faces: &[u32; 8], lanes: M8, fill: u32, p: V3<F8>) -> V3<F8> {
         let zero = V3::splat(Vec3::ZERO);
         let (mut corners, mut geometric) = (TriangleLanes { v0: zero, e1: zero, e2: zero }, zero);
         let mut normals = [zero; 3];
         let mut smooth = M8::default();
         for i in 0..8 {
-            let f = if lanes.lane(i) { faces[i] } else { first } as usize;
+            let f = if lanes.lane(i) { faces[i] } else { fill } as usize;
             let tri = &self.data.triangles[f];
             corners.v0.set_lane(i, tri.v0);
             corners.e1.set_lane(i, tri.e1);
@@ -200,7 +205,7 @@ impl Mesh {
         } else {
             geometric
         };
-        n.mat3_mul(&self.frame.normal_to_render).normalize_or(V3::splat(Vec3::Y))
+        self.unit_in_render(n)
     }
 }
 

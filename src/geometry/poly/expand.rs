@@ -41,9 +41,9 @@ pub(super) fn along_ray<const N: usize, const K: usize, const T: usize>(
     debug_assert!(order < K && T == K * (K + 1) / 2);
     let zero = W::splat(0.0);
     // powers[axis][tri(e, m)]: coefficient of s^m in (p + s·u)^e. Only the rows up to the
-    // order are written, and only those are read (no exponent exceeds the order, asserted
-    // per term below), so the table is not zeroed first: for a cubic that memset (2.9 KB, a table sized
-    // for degree 4, per packet row) was a thirtieth of scenes/kernels/cubic.pov's frame.
+    // order are written, and only those are read (no exponent exceeds the order, asserted per
+    // term below), so the table is not zeroed first: for a cubic that memset (2.9 KB, a table
+    // sized for degree 4, per packet row) was a thirtieth of scenes/kernels/cubic.pov's frame.
     let mut powers = [[MaybeUninit::<W<N>>::uninit(); T]; 3];
     for axis in 0..3 {
         let table = &mut powers[axis];
